@@ -1,0 +1,187 @@
+/* ----------------------------------------------------------------------
+   granpen analysis: granpen-trace v1 reader.
+------------------------------------------------------------------------- */
+
+#include "trace_reader.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+namespace granpen {
+
+namespace {
+
+std::string trim(const std::string &s)
+{
+  const char *ws = " \t\r";
+  auto a = s.find_first_not_of(ws);
+  if (a == std::string::npos) return "";
+  auto b = s.find_last_not_of(ws);
+  return s.substr(a, b - a + 1);
+}
+
+[[noreturn]] void fail(const std::string &name, int line, const std::string &what)
+{
+  throw InputError(name + ":" + std::to_string(line) + ": " + what);
+}
+
+double to_number(const std::string &field, const std::string &name, int line,
+                 const std::string &what)
+{
+  const std::string f = trim(field);
+  char *end = nullptr;
+  errno = 0;
+  double v = std::strtod(f.c_str(), &end);
+  if (f.empty() || end != f.c_str() + f.size() || errno == ERANGE)
+    fail(name, line, what + " '" + f + "' is not a number");
+  if (!std::isfinite(v)) fail(name, line, what + " '" + f + "' is not finite");
+  return v;
+}
+
+std::vector<std::string> split(const std::string &s, char sep)
+{
+  std::vector<std::string> out;
+  std::string cur;
+  std::istringstream in(s);
+  while (std::getline(in, cur, sep)) out.push_back(cur);
+  if (!s.empty() && s.back() == sep) out.emplace_back();
+  return out;
+}
+
+}    // namespace
+
+double Trace::number(const std::string &key, double fallback) const
+{
+  auto it = keys.find(key);
+  if (it == keys.end()) return fallback;
+  char *end = nullptr;
+  double v = std::strtod(it->second.c_str(), &end);
+  return (end && *end == '\0' && std::isfinite(v)) ? v : fallback;
+}
+
+Trace parse_trace(const std::string &text, const std::string &name)
+{
+  Trace tr;
+  tr.path = name;
+  std::istringstream in(text);
+  std::string line;
+  int lineno = 0;
+
+  if (!std::getline(in, line)) fail(name, 1, "empty file, expected '# granpen-trace v1'");
+  ++lineno;
+  if (trim(line) != "# granpen-trace v1")
+    fail(name, lineno, "first line must be '# granpen-trace v1', found '" + trim(line) + "'");
+
+  // header: '# key = value' lines, then the column-name line
+  int colline = 0;
+  while (std::getline(in, line)) {
+    ++lineno;
+    std::string s = trim(line);
+    if (s.empty()) continue;
+    if (s[0] == '#') {
+      auto eq = s.find('=');
+      if (eq == std::string::npos) continue;    // a plain comment
+      std::string key = trim(s.substr(1, eq - 1));
+      std::string val = trim(s.substr(eq + 1));
+      if (!key.empty()) tr.keys[key] = val;
+      continue;
+    }
+    for (auto &c : split(s, ',')) tr.columns.push_back(trim(c));
+    colline = lineno;
+    break;
+  }
+  if (!colline) fail(name, lineno, "no column-name line (t,z,F) after the header");
+
+  for (const char *req : {"units", "v0", "D", "g"})
+    if (!tr.keys.count(req)) fail(name, colline, std::string("missing required header key '") + req + "'");
+  tr.units = tr.keys["units"];
+  if (tr.units != "cgs" && tr.units != "si")
+    fail(name, colline, "unknown unit system '" + tr.units + "' (expected cgs or si)");
+  tr.v0 = to_number(tr.keys["v0"], name, colline, "header v0");
+  tr.D = to_number(tr.keys["D"], name, colline, "header D");
+  tr.g = to_number(tr.keys["g"], name, colline, "header g");
+
+  int it = -1, iz = -1, iF = -1;
+  for (int i = 0; i < (int) tr.columns.size(); ++i) {
+    const auto &c = tr.columns[i];
+    if (c == "t") it = i;
+    else if (c == "z") iz = i;
+    else if (c == "F") iF = i;
+  }
+  if (it < 0 || iz < 0 || iF < 0)
+    fail(name, colline, "column line must name t, z and F");
+
+  const std::size_t ncol = tr.columns.size();
+  while (std::getline(in, line)) {
+    ++lineno;
+    std::string s = trim(line);
+    if (s.empty() || s[0] == '#') continue;
+    auto fields = split(s, ',');
+    if (fields.size() < ncol)
+      fail(name, lineno, "row has " + std::to_string(fields.size()) + " fields, expected " +
+                             std::to_string(ncol));
+    for (std::size_t i = 0; i < ncol; ++i) {
+      double v = to_number(fields[i], name, lineno, "column " + tr.columns[i] + " value");
+      if ((int) i == it) {
+        if (!tr.t.empty() && !(v > tr.t.back()))
+          fail(name, lineno, "t does not increase (" + trim(fields[i]) + " after previous row)");
+        tr.t.push_back(v);
+      } else if ((int) i == iz) {
+        tr.z.push_back(v);
+      } else if ((int) i == iF) {
+        tr.F.push_back(v);
+      } else {
+        tr.other[tr.columns[i]].push_back(v);
+      }
+    }
+  }
+  if (tr.t.size() < 10)
+    fail(name, lineno, "only " + std::to_string(tr.t.size()) + " data rows, at least 10 needed");
+  return tr;
+}
+
+Trace read_trace(const std::string &path)
+{
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw InputError(path + ": cannot open trace file");
+  std::ostringstream ss;
+  ss << f.rdbuf();
+  return parse_trace(ss.str(), path);
+}
+
+Trace to_cgs(const Trace &in)
+{
+  if (in.units == "cgs") return in;
+  Trace t = in;
+  const double L = 100.0, F = 1.0e5, RHO = 1.0e-3;    // m -> cm, N -> dyne, kg/m^3 -> g/cm^3
+  t.units = "cgs";
+  t.v0 *= L;
+  t.D *= L;
+  t.g *= L;
+  for (auto &z : t.z) z *= L;
+  for (auto &f : t.F) f *= F;
+  auto scale_key = [&](const char *key, double s) {
+    auto it = t.keys.find(key);
+    if (it == t.keys.end()) return;
+    char *end = nullptr;
+    double v = std::strtod(it->second.c_str(), &end);
+    if (end && *end == '\0') {
+      std::ostringstream o;
+      o.precision(12);
+      o << v * s;
+      it->second = o.str();
+    }
+  };
+  t.keys["units"] = "cgs";
+  scale_key("v0", L);
+  scale_key("D", L);
+  scale_key("g", L);
+  scale_key("d_g", L);
+  scale_key("rho_g", RHO);
+  return t;
+}
+
+}    // namespace granpen

@@ -1,0 +1,39 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANPEN package: the bed surface height z_s, as defined by the bench
+   scenario: the mean, over an N x N grid of columns spanning the box in
+   x and y, of the highest grain top (z + radius) in each column.
+   Pure C++: the per-rank column maxima are combined by the caller with
+   MPI_MAX, then surface_from_columns() takes the mean.
+------------------------------------------------------------------------- */
+
+#ifndef GRANPEN_BED_SURFACE_H
+#define GRANPEN_BED_SURFACE_H
+
+#include <cstddef>
+#include <vector>
+
+namespace granpen {
+
+struct SurfaceGrid {
+  double xlo, xhi, ylo, yhi;
+  int n;    // columns per side
+};
+
+// Value of an empty column (no grain seen): below any real height.
+constexpr double EMPTY_COLUMN = -1.0e300;
+
+// Column index (0 .. n*n-1) of point (x, y); points on or beyond the edges
+// go to the edge column.
+int column_of(const SurfaceGrid &grid, double x, double y);
+
+// Raise colmax (size n*n, start at EMPTY_COLUMN) by the grain tops given.
+void column_max_tops(const SurfaceGrid &grid, const double *x, const double *y,
+                     const double *top, std::size_t count, std::vector<double> &colmax);
+
+// Mean over non-empty columns; nempty gets the number of empty ones.
+// Returns NaN when every column is empty.
+double surface_from_columns(const std::vector<double> &colmax, int &nempty);
+
+}    // namespace granpen
+
+#endif

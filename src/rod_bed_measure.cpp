@@ -1,0 +1,134 @@
+/* ----------------------------------------------------------------------
+   GRANPEN package: rod and bed measurements shared by the styles.
+------------------------------------------------------------------------- */
+
+#include "rod_bed_measure.h"
+
+#include "atom.h"
+#include "bed_surface.h"
+#include "domain.h"
+#include "fix.h"
+#include "granpen_compat.h"
+#include "lammps.h"
+#include "modify.h"
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <mpi.h>
+#include <vector>
+
+using namespace LAMMPS_NS;
+
+static constexpr double FOUR_THIRDS_PI = 4.18879020478639098;
+
+gp::RodShape gp::measure_rod(LAMMPS *lmp, int groupbit)
+{
+  Atom *atom = lmp->atom;
+  double **x = atom->x;
+  double *radius = atom->radius;
+  int *mask = atom->mask;
+  const int nlocal = atom->nlocal;
+
+  double local[3] = {0.0, 0.0, 0.0}, sum[3];
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit) {
+      local[0] += 1.0;
+      local[1] += x[i][0];
+      local[2] += x[i][1];
+    }
+  MPI_Allreduce(local, sum, 3, MPI_DOUBLE, MPI_SUM, lmp->world);
+
+  RodShape s;
+  s.count = static_cast<bigint>(sum[0]);
+  if (s.count == 0) return s;
+  s.xc = sum[1] / sum[0];
+  s.yc = sum[2] / sum[0];
+
+  // one MAX reduction: outer radius and -(lowest point)
+  double lmax[2] = {0.0, -std::numeric_limits<double>::max()}, gmax[2];
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit) {
+      double rad = radius ? radius[i] : 0.0;
+      double r = std::hypot(x[i][0] - s.xc, x[i][1] - s.yc) + rad;
+      if (r > lmax[0]) lmax[0] = r;
+      if (-(x[i][2] - rad) > lmax[1]) lmax[1] = -(x[i][2] - rad);
+    }
+  MPI_Allreduce(lmax, gmax, 2, MPI_DOUBLE, MPI_MAX, lmp->world);
+  s.D = 2.0 * gmax[0];
+  s.ztip = -gmax[1];
+  return s;
+}
+
+double gp::lowest_point(LAMMPS *lmp, int groupbit)
+{
+  Atom *atom = lmp->atom;
+  double lmin = std::numeric_limits<double>::max(), gmin;
+  for (int i = 0; i < atom->nlocal; i++)
+    if (atom->mask[i] & groupbit) {
+      double z = atom->x[i][2] - (atom->radius ? atom->radius[i] : 0.0);
+      if (z < lmin) lmin = z;
+    }
+  MPI_Allreduce(&lmin, &gmin, 1, MPI_DOUBLE, MPI_MIN, lmp->world);
+  return gmin;
+}
+
+gp::GrainStats gp::grain_stats(LAMMPS *lmp, int groupbit, int excludebit)
+{
+  Atom *atom = lmp->atom;
+  double local[4] = {0.0, 0.0, 0.0, 0.0}, sum[4];
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit) || (atom->mask[i] & excludebit)) continue;
+    double r = atom->radius ? atom->radius[i] : 0.0;
+    double vol = FOUR_THIRDS_PI * r * r * r;
+    double m = atom->rmass ? atom->rmass[i] : atom->mass[atom->type[i]];
+    local[0] += 1.0;
+    local[1] += vol;
+    local[2] += 2.0 * r;
+    local[3] += vol > 0.0 ? m / vol : 0.0;
+  }
+  MPI_Allreduce(local, sum, 4, MPI_DOUBLE, MPI_SUM, lmp->world);
+  GrainStats s;
+  s.count = static_cast<bigint>(sum[0]);
+  s.volume = sum[1];
+  if (sum[0] > 0.0) {
+    s.d_mean = sum[2] / sum[0];
+    s.rho_mean = sum[3] / sum[0];
+  }
+  return s;
+}
+
+double gp::bed_surface(LAMMPS *lmp, int groupbit, int excludebit, int ngrid, int &nempty,
+                            double &top_max)
+{
+  Atom *atom = lmp->atom;
+  Domain *domain = lmp->domain;
+  ::granpen::SurfaceGrid grid{domain->boxlo[0], domain->boxhi[0], domain->boxlo[1],
+                              domain->boxhi[1], ngrid};
+  std::vector<double> xs, ys, tops;
+  for (int i = 0; i < atom->nlocal; i++) {
+    if (!(atom->mask[i] & groupbit) || (atom->mask[i] & excludebit)) continue;
+    xs.push_back(atom->x[i][0]);
+    ys.push_back(atom->x[i][1]);
+    tops.push_back(atom->x[i][2] + (atom->radius ? atom->radius[i] : 0.0));
+  }
+  std::vector<double> local(ngrid * ngrid, ::granpen::EMPTY_COLUMN), global(ngrid * ngrid);
+  ::granpen::column_max_tops(grid, xs.data(), ys.data(), tops.data(), xs.size(), local);
+  MPI_Allreduce(local.data(), global.data(), ngrid * ngrid, MPI_DOUBLE, MPI_MAX, lmp->world);
+  top_max = ::granpen::EMPTY_COLUMN;
+  for (double h : global)
+    if (h > top_max) top_max = h;
+  return ::granpen::surface_from_columns(global, nempty);
+}
+
+double gp::gravity_magnitude(LAMMPS *lmp)
+{
+  for (int i = 0; i < gp::nfix(lmp); i++) {
+    Fix *f = gp::fix_at(lmp, i);
+    if (strcmp(f->style, "gravity") != 0) continue;
+    int dim = 0;
+    auto gvec = static_cast<double *>(f->extract("gvec", dim));
+    if (gvec) return std::sqrt(gvec[0] * gvec[0] + gvec[1] * gvec[1] + gvec[2] * gvec[2]);
+  }
+  return 0.0;
+}

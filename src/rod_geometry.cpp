@@ -1,0 +1,67 @@
+/* ----------------------------------------------------------------------
+   GRANPEN package: geometry of a rod built from overlapping spheres.
+------------------------------------------------------------------------- */
+
+#include "rod_geometry.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace granpen {
+
+static constexpr double TWO_PI = 6.283185307179586;
+static constexpr double TINY = 1.0e-9;
+
+int ring_count(double r, double spacing)
+{
+  if (r < TINY) return 1;
+  int n = static_cast<int>(std::lround(TWO_PI * r / spacing));
+  return n < 1 ? 1 : n;
+}
+
+std::vector<double> disc_radii(double rshell, double spacing)
+{
+  // stop half a spacing inside the shell ring, which closes the disc
+  std::vector<double> radii;
+  for (int j = 0; j * spacing <= rshell - 0.5 * spacing + TINY; ++j) radii.push_back(j * spacing);
+  return radii;
+}
+
+static void add_ring(std::vector<RodSphere> &out, double r, double z, double spacing, double phase)
+{
+  int n = ring_count(r, spacing);
+  for (int k = 0; k < n; ++k) {
+    double a = (TWO_PI * k) / n + phase;
+    out.push_back({r * std::cos(a), r * std::sin(a), z});
+  }
+}
+
+std::vector<RodSphere> build_rod(const RodSpec &s)
+{
+  if (!(s.sphere > 0.0)) throw std::invalid_argument("rod sphere diameter must be > 0");
+  if (!(s.spacing > 0.0)) throw std::invalid_argument("rod sphere spacing must be > 0");
+  if (!(s.diameter > s.sphere))
+    throw std::invalid_argument("rod diameter must exceed the sphere diameter");
+  if (!(s.length >= s.sphere))
+    throw std::invalid_argument("rod length must be at least one sphere diameter");
+  if (s.spacing > s.sphere)
+    throw std::invalid_argument("rod spacing larger than the sphere diameter leaves gaps");
+
+  const double rshell = 0.5 * (s.diameter - s.sphere);
+  const int nlayers = static_cast<int>(std::floor((s.length - s.sphere) / s.spacing + TINY)) + 1;
+  const std::vector<double> disc = disc_radii(rshell, s.spacing);
+
+  std::vector<RodSphere> out;
+  for (int layer = 0; layer < nlayers; ++layer) {
+    const double z = 0.5 * s.sphere + layer * s.spacing;
+    const int nring = ring_count(rshell, s.spacing);
+    const double phase = (layer % 2) ? 0.5 * TWO_PI / nring : 0.0;
+    add_ring(out, rshell, z, s.spacing, phase);
+    if (layer == 0 || s.filled)
+      for (double r : disc) add_ring(out, r, z, s.spacing, 0.0);
+  }
+  return out;
+}
+
+}    // namespace granpen

@@ -1,0 +1,41 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANPEN package: geometry of a rod built from overlapping spheres.
+   Pure C++ (no LAMMPS types), so it is unit-tested on its own.
+------------------------------------------------------------------------- */
+
+#ifndef GRANPEN_ROD_GEOMETRY_H
+#define GRANPEN_ROD_GEOMETRY_H
+
+#include <vector>
+
+namespace granpen {
+
+struct RodSpec {
+  double diameter = 2.0;    // outer diameter D: sphere surfaces reach radius D/2
+  double length = 6.0;      // from the tip (lowest sphere bottom) to the top sphere top
+  double sphere = 0.4;      // diameter of each sphere
+  double spacing = 0.2;     // distance between rings and between neighbours in a ring
+  bool filled = false;      // false: hollow shell closed by a bottom disc; true: solid
+};
+
+// Sphere centre relative to the rod: x, y from the axis, z above the tip.
+struct RodSphere {
+  double x, y, z;
+};
+
+// Number of spheres on a ring of radius r at the given spacing (1 at r = 0).
+int ring_count(double r, double spacing);
+
+// Radii of the rings in one disc layer, from the axis out, ending just inside rshell.
+std::vector<double> disc_radii(double rshell, double spacing);
+
+// Sphere centres of the rod. Shell rings sit at radius D/2 - sphere/2, every
+// `spacing` in z from z = sphere/2, alternate rings rotated by half a spacing.
+// The shell is closed by a disc (rings at 0, spacing, 2 spacing, ...) in the
+// lowest layer, or in every layer when filled. Throws std::invalid_argument
+// for a spec that cannot be built.
+std::vector<RodSphere> build_rod(const RodSpec &spec);
+
+}    // namespace granpen
+
+#endif

@@ -1,0 +1,56 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANPEN package: writer of force traces in the granpen-trace v1 CSV
+   format (shared/formats/trace-csv.md). Pure C++ and stdio; the caller
+   decides which rank writes.
+------------------------------------------------------------------------- */
+
+#ifndef GRANPEN_TRACE_WRITER_H
+#define GRANPEN_TRACE_WRITER_H
+
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace granpen {
+
+struct TraceHeader {
+  std::string units;    // "cgs" or "si"
+  double v0 = 0.0, D = 0.0, g = 0.0;
+  // optional keys, written in this order when set
+  std::vector<std::pair<std::string, std::string>> extra;
+  std::vector<std::string> columns = {"t", "z", "F"};
+};
+
+// The header block (comment lines and the column-name line), newline-terminated.
+std::string format_trace_header(const TraceHeader &h);
+
+// One CSV row; values printed with enough digits to round-trip a double's
+// first 10 significant figures.
+std::string format_trace_row(const std::vector<double> &values);
+
+// Writes a trace, flushing after every `flush_rows` rows so that a killed
+// run loses at most that many rows. Appending to an existing trace keeps its
+// header and rows.
+class TraceWriter {
+ public:
+  TraceWriter() = default;
+  ~TraceWriter();
+  TraceWriter(const TraceWriter &) = delete;
+  TraceWriter &operator=(const TraceWriter &) = delete;
+
+  // Returns false (errno set) when the file cannot be opened.
+  bool open(const std::string &path, const TraceHeader &h, bool append, int flush_rows = 1);
+  void row(const std::vector<double> &values);
+  void close();
+  bool is_open() const { return fp_ != nullptr; }
+
+ private:
+  std::FILE *fp_ = nullptr;
+  int flush_rows_ = 1;
+  int pending_ = 0;
+};
+
+}    // namespace granpen
+
+#endif

@@ -1,0 +1,82 @@
+// Rod geometry: the bench scenario's rod as built for the reference data.
+#include "rod_geometry.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+using granpen::build_rod;
+using granpen::RodSpec;
+
+TEST(RodGeometry, RingCountsFollowSpacing)
+{
+  EXPECT_EQ(granpen::ring_count(0.0, 0.2), 1);
+  EXPECT_EQ(granpen::ring_count(0.2, 0.2), 6);
+  EXPECT_EQ(granpen::ring_count(0.4, 0.2), 13);
+  EXPECT_EQ(granpen::ring_count(0.6, 0.2), 19);
+  EXPECT_EQ(granpen::ring_count(0.8, 0.2), 25);
+}
+
+TEST(RodGeometry, BenchRodIs764Spheres)
+{
+  RodSpec s;    // defaults: D 2, length 6, sphere 0.4, spacing 0.2, shell
+  auto rod = build_rod(s);
+  ASSERT_EQ(rod.size(), 764u);
+
+  // 29 shell rings of 25 at r = 0.8, 0.2 apart, from z = 0.2; the disc in the lowest layer
+  std::map<long, int> per_layer;
+  double rmax = 0.0, zmin = 1e9, zmax = -1e9;
+  for (auto &p : rod) {
+    per_layer[std::lround(p.z / 0.2)]++;
+    rmax = std::max(rmax, std::hypot(p.x, p.y));
+    zmin = std::min(zmin, p.z);
+    zmax = std::max(zmax, p.z);
+  }
+  EXPECT_EQ(per_layer.size(), 29u);
+  EXPECT_EQ(per_layer[1], 25 + 1 + 6 + 13 + 19);
+  EXPECT_EQ(per_layer[2], 25);
+  EXPECT_NEAR(rmax + 0.2, 1.0, 1e-12);    // outer surface at D/2
+  EXPECT_NEAR(zmin - 0.2, 0.0, 1e-12);    // tip at z = 0
+  EXPECT_NEAR(zmax + 0.2, 6.0, 1e-12);    // top at the length
+}
+
+TEST(RodGeometry, AlternateRingsRotatedByHalfSpacing)
+{
+  auto rod = build_rod(RodSpec{});
+  const double half = M_PI / 25.0;
+  bool found0 = false, found1 = false;
+  for (auto &p : rod) {
+    if (std::hypot(p.x, p.y) < 0.79) continue;
+    double a = std::atan2(p.y, p.x);
+    if (std::fabs(p.z - 0.2) < 1e-9 && std::fabs(a) < 1e-9) found0 = true;
+    if (std::fabs(p.z - 0.4) < 1e-9 && std::fabs(a - half) < 1e-9) found1 = true;
+  }
+  EXPECT_TRUE(found0);
+  EXPECT_TRUE(found1);
+}
+
+TEST(RodGeometry, FilledRodRepeatsTheDiscInEveryLayer)
+{
+  RodSpec s;
+  s.filled = true;
+  auto rod = build_rod(s);
+  EXPECT_EQ(rod.size(), 29u * (25 + 1 + 6 + 13 + 19));
+}
+
+TEST(RodGeometry, RejectsImpossibleSpecs)
+{
+  RodSpec s;
+  s.sphere = 0.0;
+  EXPECT_THROW(build_rod(s), std::invalid_argument);
+  s = RodSpec{};
+  s.diameter = 0.3;
+  EXPECT_THROW(build_rod(s), std::invalid_argument);
+  s = RodSpec{};
+  s.spacing = 0.5;    // gaps between spheres
+  EXPECT_THROW(build_rod(s), std::invalid_argument);
+  s = RodSpec{};
+  s.length = 0.1;
+  EXPECT_THROW(build_rod(s), std::invalid_argument);
+}

@@ -1,0 +1,135 @@
+// Trace writer and reader: a round trip, unit conversion, and every
+// rejection the format demands, each naming file and line.
+#include "trace_reader.h"
+#include "trace_writer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+
+using namespace granpen;
+
+namespace {
+
+std::string good_header(const std::string &units = "cgs")
+{
+  return "# granpen-trace v1\n# units = " + units +
+         "\n# v0 = 100\n# D = 2.0\n# d_g = 0.4\n# rho_g = 3.0\n# g = 981\n# run = 1\n"
+         "# source = test\n";
+}
+
+std::string rows(int n, double dt = 1e-4)
+{
+  std::ostringstream o;
+  for (int i = 0; i < n; ++i) o << i * dt << "," << -0.5 + i * 0.01 << "," << 10.0 * i << "\n";
+  return o.str();
+}
+
+void expect_rejected(const std::string &text, const std::string &pattern)
+{
+  try {
+    parse_trace(text, "bad.csv");
+    FAIL() << "accepted: expected an error matching " << pattern;
+  } catch (InputError &e) {
+    EXPECT_TRUE(std::regex_search(e.what(), std::regex(pattern))) << e.what();
+  }
+}
+
+}    // namespace
+
+TEST(TraceIO, WriterOutputReadsBackExactly)
+{
+  const std::string path = testing::TempDir() + "granpen_roundtrip.csv";
+  TraceHeader h;
+  h.units = "cgs";
+  h.v0 = 100.0;
+  h.D = 2.0;
+  h.g = 981.0;
+  h.extra = {{"d_g", "0.4"}, {"run", "3"}};
+  {
+    TraceWriter w;
+    ASSERT_TRUE(w.open(path, h, false));
+    for (int i = 0; i < 20; ++i) w.row({i * 1e-4, -0.5 + i * 0.01, std::sin(i) * 1234.5678901});
+  }
+  Trace t = read_trace(path);
+  ASSERT_EQ(t.t.size(), 20u);
+  EXPECT_EQ(t.units, "cgs");
+  EXPECT_EQ(t.v0, 100.0);
+  EXPECT_EQ(t.keys["run"], "3");
+  for (int i = 0; i < 20; ++i) {
+    EXPECT_NEAR(t.t[i], i * 1e-4, 1e-15);
+    EXPECT_NEAR(t.F[i], std::sin(i) * 1234.5678901, 1e-6);
+  }
+  std::remove(path.c_str());
+}
+
+TEST(TraceIO, AppendKeepsHeaderAndRows)
+{
+  const std::string path = testing::TempDir() + "granpen_append.csv";
+  TraceHeader h{"cgs", 50.0, 2.0, 981.0};
+  {
+    TraceWriter w;
+    ASSERT_TRUE(w.open(path, h, false));
+    for (int i = 0; i < 6; ++i) w.row({i * 1e-4, 0.0, 1.0});
+  }
+  {
+    TraceWriter w;
+    ASSERT_TRUE(w.open(path, h, true));
+    for (int i = 6; i < 12; ++i) w.row({i * 1e-4, 0.0, 1.0});
+  }
+  EXPECT_EQ(read_trace(path).t.size(), 12u);
+  std::remove(path.c_str());
+}
+
+TEST(TraceIO, ColumnsInAnyOrderAndExtraColumns)
+{
+  std::string text = good_header() + "F,extra,z,t\n";
+  for (int i = 0; i < 12; ++i) text += std::to_string(i * 2.0) + ",7," + std::to_string(i * 0.1) + "," + std::to_string(i * 1e-3) + "\n";
+  Trace t = parse_trace(text, "order.csv");
+  EXPECT_DOUBLE_EQ(t.F[5], 10.0);
+  EXPECT_DOUBLE_EQ(t.z[5], 0.5);
+  EXPECT_DOUBLE_EQ(t.t[5], 5e-3);
+  EXPECT_DOUBLE_EQ(t.other["extra"][3], 7.0);
+}
+
+TEST(TraceIO, SiConvertsToCgs)
+{
+  std::string text = "# granpen-trace v1\n# units = si\n# v0 = 1.0\n# D = 0.02\n# g = 9.81\n# d_g = 0.004\n# rho_g = 3000\nt,z,F\n";
+  for (int i = 0; i < 10; ++i) text += std::to_string(i * 1e-4) + "," + std::to_string(0.001 * i) + ",0.5\n";
+  Trace c = to_cgs(parse_trace(text, "si.csv"));
+  EXPECT_DOUBLE_EQ(c.v0, 100.0);
+  EXPECT_DOUBLE_EQ(c.D, 2.0);
+  EXPECT_DOUBLE_EQ(c.g, 981.0);
+  EXPECT_NEAR(c.z[3], 0.3, 1e-12);
+  EXPECT_DOUBLE_EQ(c.F[0], 5.0e4);
+  EXPECT_NEAR(c.number("d_g", 0), 0.4, 1e-12);
+  EXPECT_NEAR(c.number("rho_g", 0), 3.0, 1e-12);
+}
+
+TEST(TraceIO, RejectsWhatTheFormatForbids)
+{
+  expect_rejected("# granpen-trace v2\n" + good_header().substr(19) + "t,z,F\n" + rows(12),
+                  "bad\\.csv:1: first line");
+  expect_rejected("# granpen-trace v1\n# units = cgs\n# v0 = 1\n# D = 2\nt,z,F\n" + rows(12),
+                  "bad\\.csv:5: missing required header key 'g'");
+  expect_rejected(good_header("imperial") + "t,z,F\n" + rows(12), "bad\\.csv:10: unknown unit system 'imperial'");
+  expect_rejected(good_header() + "t,z,F\n" + rows(5) + "0.0005,0.0,abc\n" + rows(6, 1.0).substr(0),
+                  "bad\\.csv:16: column F value 'abc' is not a number");
+  expect_rejected(good_header() + "t,z,F\n" + rows(5) + "0.0005,nan,1\n" + rows(6),
+                  "bad\\.csv:16: column z value 'nan' is not finite");
+  expect_rejected(good_header() + "t,z,F\n" + rows(5) + "0.0005,0.1\n", "bad\\.csv:16: row has 2 fields, expected 3");
+  expect_rejected(good_header() + "t,z,F\n" + rows(5) + "0.0001,0.1,1\n", "bad\\.csv:16: t does not increase");
+  expect_rejected(good_header() + "t,z,F\n" + rows(9), "bad\\.csv:19: only 9 data rows");
+  expect_rejected(good_header() + "t,z,G\n" + rows(12), "bad\\.csv:10: column line must name t, z and F");
+  expect_rejected("", "bad\\.csv:1: empty file");
+}
+
+TEST(TraceIO, MissingFileIsNamed)
+{
+  EXPECT_THROW(read_trace("/nonexistent/x.csv"), InputError);
+}
