@@ -14,9 +14,26 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <dlfcn.h>
 #include <mpi.h>
 
 using namespace LAMMPS_NS;
+
+// The `clear` command rebuilds LAMMPS's style maps and so would drop the package's
+// styles. Input::clear() ends with lmp->post_create(), called through liblammps's PLT,
+// so this executable interposes that one function: it runs liblammps's own and then
+// registers the styles again. (lmp_granpen is linked with its symbols exported.)
+void LAMMPS::post_create()
+{
+  using PostCreate = void (*)(LAMMPS *);
+  static auto original = (PostCreate) dlsym(RTLD_NEXT, "_ZN9LAMMPS_NS6LAMMPS11post_createEv");
+  if (!original) {
+    fprintf(stderr, "lmp_granpen: cannot find LAMMPS::post_create in liblammps: %s\n", dlerror());
+    MPI_Abort(MPI_COMM_WORLD, 1);
+  }
+  original(this);
+  granpen::register_styles(this);
+}
 
 int main(int argc, char **argv)
 {

@@ -28,7 +28,7 @@ static constexpr double FOUR_THIRDS_PI = 4.18879020478639098;
 void CreateRod::command(int narg, char **arg)
 {
   if (!domain->box_exist) error->all(FLERR, "Create_rod command before simulation box is defined");
-  if (!atom->sphere_flag) error->all(FLERR, "Create_rod requires atom style sphere");
+  if (!gp::sphere_atoms(atom)) error->all(FLERR, "Create_rod requires atom style sphere");
   if (domain->triclinic) error->all(FLERR, "Create_rod does not support triclinic boxes");
   if (narg < 9)
     error->all(FLERR, "Illegal create_rod command: expected type D length sphere spacing x y "

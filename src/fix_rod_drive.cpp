@@ -44,7 +44,7 @@ FixRodDrive::FixRodDrive(LAMMPS *lmp, int narg, char **arg) :
     act_pos(0.0), act_vel(0.0), rod_acc(0.0), held_act(0.0), held(false), surface(0.0),
     surface_set(false), ztip0(0.0), win_sum{0.0, 0.0, 0.0}, restored(false), diameter(0.0),
     gmag(0.0), xc(0.0), yc(0.0), nwindow(1), fgrain{0.0, 0.0, 0.0}, fsensor(0.0),
-    halt_pending(false), xoriginal(nullptr), initial_row(false)
+    halt_pending(false), trace_opened(false), xoriginal(nullptr), initial_row(false)
 {
   if (narg < 4) error->all(FLERR, "Illegal fix rod/drive command: missing v0");
 
@@ -131,10 +131,16 @@ FixRodDrive::FixRodDrive(LAMMPS *lmp, int narg, char **arg) :
     }
   }
 
-  if (!atom->sphere_flag) error->all(FLERR, "Fix rod/drive requires atom style sphere");
+  if (!gp::sphere_atoms(atom)) error->all(FLERR, "Fix rod/drive requires atom style sphere");
   if (group->count(igroup) == 0) error->all(FLERR, "Fix rod/drive group {} is empty", arg[1]);
-  if (grainbit & groupbit && grain_group != "all")
-    error->all(FLERR, "Fix rod/drive grains group {} contains rod atoms", grain_group);
+  if (grain_group != "all") {
+    bigint nboth_local = 0, nboth = 0;
+    for (int i = 0; i < atom->nlocal; i++)
+      if ((atom->mask[i] & grainbit) && (atom->mask[i] & groupbit)) nboth_local++;
+    MPI_Allreduce(&nboth_local, &nboth, 1, MPI_LMP_BIGINT, MPI_SUM, world);
+    if (nboth > 0)
+      error->all(FLERR, "Fix rod/drive grains group {} contains {} rod atoms", grain_group, nboth);
+  }
 
   time_integrate = 1;
   restart_global = 1;
@@ -265,7 +271,10 @@ void FixRodDrive::setup(int /*vflag*/)
   sum_grain_force();
   update_sensor();
   if (mount) rod_acc = (fsensor - fgrain[2]) / mmount;
-  if (!trace_file.empty()) open_trace();
+  if (!trace_file.empty() && !trace_opened) {
+    open_trace();
+    trace_opened = true;
+  }
 }
 
 /* ---------------------------------------------------------------------- */
@@ -409,8 +418,9 @@ void FixRodDrive::update_sensor()
 
 void FixRodDrive::open_trace()
 {
-  if (comm->me != 0 || (writer && writer->is_open())) return;
-  auto grains = gp::grain_stats(lmp, grainbit, groupbit);
+  // called once, on every rank (the statistics below are collective)
+  auto grains = gp::grain_stats(lmp, grainbit, groupbit);    // collective: before the rank test
+  if (comm->me != 0) return;
   ::granpen::TraceHeader h;
   h.units = update->unit_style;
   h.v0 = v0;

@@ -96,6 +96,7 @@ class FixRodDrive : public Fix {
   double fgrain[3];     // grain force on the rod: x, y, z (z up = resisting)
   double fsensor;       // force a sensor in series reads
   bool halt_pending;
+  bool trace_opened;    // open_trace() has run (on every rank)
   double **xoriginal;
   std::unique_ptr<::granpen::TraceWriter> writer;
   bool initial_row;    // the t = 0 row has been written (or a step was taken)

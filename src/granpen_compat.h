@@ -8,6 +8,7 @@
 #ifndef LMP_GRANPEN_COMPAT_H
 #define LMP_GRANPEN_COMPAT_H
 
+#include "atom.h"
 #include "compute.h"
 #include "error.h"
 #include "fix.h"
@@ -25,10 +26,17 @@
 namespace LAMMPS_NS {
 namespace gp {
 
-// LAMMPS before 2Jun2022 has no Modify::get_fix_by_id / get_compute_by_id.
+// Each cutoff below is the first LAMMPS *release* carrying the change, found in
+// LAMMPS's git history (docs/compat.md lists the commits). A development tree
+// carries the date of the release before it (version.h then also says
+// LAMMPS_UPDATE "Development"), so it takes the older branch: every #else branch
+// here only uses API that current LAMMPS still has.
+
+// Modify::get_fix_by_id / get_compute_by_id: LAMMPS PR #3001 (commit 5b40e4cb,
+// merged 2 Nov 2021), first released in 14Dec2021. Debian's 29Sep2021 lacks them.
 inline Fix *fix_by_id(LAMMPS *lmp, const std::string &id)
 {
-#if LAMMPS_VERSION_NUMBER >= 20220602
+#if LAMMPS_VERSION_NUMBER >= 20211214
   return lmp->modify->get_fix_by_id(id);
 #else
   int i = lmp->modify->find_fix(id);
@@ -38,7 +46,7 @@ inline Fix *fix_by_id(LAMMPS *lmp, const std::string &id)
 
 inline Compute *compute_by_id(LAMMPS *lmp, const std::string &id)
 {
-#if LAMMPS_VERSION_NUMBER >= 20220602
+#if LAMMPS_VERSION_NUMBER >= 20211214
   return lmp->modify->get_compute_by_id(id);
 #else
   int i = lmp->modify->find_compute(id);
@@ -46,29 +54,64 @@ inline Compute *compute_by_id(LAMMPS *lmp, const std::string &id)
 #endif
 }
 
+// Modify::nfix and Modify::fix[] are public in every supported version.
 inline int nfix(LAMMPS *lmp) { return lmp->modify->nfix; }
 inline Fix *fix_at(LAMMPS *lmp, int i) { return lmp->modify->fix[i]; }
 
-// utils::logical appeared after 29Sep2021; same accepted words.
+// utils::logical(file, line, const char *, do_abort, lmp): LAMMPS PR #2951
+// (commit cef10099, merged 30 Sep 2021, the day after 29Sep2021), first released
+// in 27Oct2021; the std::string overload only came with 7Jan2022, so pass c_str().
+// It has always accepted exactly these words.
 inline bool logical(const char *file, int line, const std::string &word, LAMMPS *lmp)
 {
-#if LAMMPS_VERSION_NUMBER >= 20220324
-  return utils::logical(file, line, word, false, lmp) != 0;
+#if LAMMPS_VERSION_NUMBER >= 20211027
+  return utils::logical(file, line, word.c_str(), false, lmp) != 0;
 #else
+  if (word.empty())
+    lmp->error->all(file, line,
+                    "Expected boolean parameter instead of NULL or empty string in input script "
+                    "or data file");
   if (word == "yes" || word == "on" || word == "true" || word == "1") return true;
   if (word == "no" || word == "off" || word == "false" || word == "0") return false;
-  lmp->error->all(file, line, "Expected boolean parameter instead of '{}' in input script", word);
+  lmp->error->all(file, line,
+                  "Expected boolean parameter instead of '{}' in input script or data file", word);
   return false;
 #endif
 }
 
-// utils::missing_cmd_args appeared after 29Sep2021.
+// utils::missing_cmd_args: commit dc4752ef (LAMMPS PR #3227, merged 23 Apr 2022),
+// first released in 4May2022. Same message on both sides.
 inline void need_args(const char *file, int line, const std::string &cmd, int iarg, int nneeded,
                       int narg, LAMMPS *lmp)
 {
-  if (iarg + nneeded > narg)
-    lmp->error->all(file, line, "Illegal {} command: missing argument(s)", cmd);
+  if (iarg + nneeded <= narg) return;
+#if LAMMPS_VERSION_NUMBER >= 20220504
+  utils::missing_cmd_args(file, line, cmd, lmp->error);
+#else
+  lmp->error->all(file, line, "Illegal {} command: missing argument(s)", cmd);
+#endif
 }
+
+// "atom style sphere": Atom::sphere_flag was removed in 7Feb2024 (commit 0d8f549e,
+// LAMMPS PR #4054, merged 26 Jan 2024; LAMMPS itself now tests radius_flag and
+// omega_flag). Atom styles sphere, line and tri, the ones that set sphere_flag
+// where it exists, set radius_flag, rmass_flag and omega_flag in every supported
+// version, and those are the per-atom arrays the GRANPEN styles use. So this test
+// is the same on every version and needs no cutoff (which also covers development
+// trees dated 21 Nov 2023 that already lack sphere_flag).
+inline bool sphere_atoms(const Atom *atom)
+{
+  return atom->radius_flag && atom->rmass_flag && atom->omega_flag;
+}
+
+// Return type of Fix::dof(int): int up to 21Nov2023, bigint from 7Feb2024
+// (commit 8b89c330, LAMMPS PR #4037, merged 15 Jan 2024). For a future
+// `dof_t dof(int) override;` -- no GRANPEN fix overrides dof() today.
+#if LAMMPS_VERSION_NUMBER >= 20240207
+using dof_t = bigint;
+#else
+using dof_t = int;
+#endif
 
 }    // namespace gp
 }    // namespace LAMMPS_NS
