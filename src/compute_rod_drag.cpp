@@ -113,15 +113,10 @@ void ComputeRodDrag::compute_vector()
 {
   invoked_vector = update->ntimestep;
 
-  double **f = atom->f;
-  int *mask = atom->mask;
-  double local[4] = {0.0, 0.0, 0.0, count_contacts()}, sum[4];
-  for (int i = 0; i < atom->nlocal; i++)
-    if (mask[i] & groupbit) {
-      local[0] += f[i][2];
-      local[1] += f[i][0];
-      local[2] += f[i][1];
-    }
+  // one reduction: force x, y, z and the contact count
+  double local[4], sum[4];
+  gp::local_group_force(lmp, groupbit, local);
+  local[3] = count_contacts();
   MPI_Allreduce(local, sum, 4, MPI_DOUBLE, MPI_SUM, world);
 
   double depth, speed, dia, g = gmag;
@@ -136,14 +131,14 @@ void ComputeRodDrag::compute_vector()
     dia = diameter;
   }
 
-  vector[0] = sum[0];
-  vector[1] = sum[1];
-  vector[2] = sum[2];
+  vector[0] = sum[2];
+  vector[1] = sum[0];
+  vector[2] = sum[1];
   vector[3] = sum[3];
   vector[4] = depth;
   vector[5] = (g > 0.0) ? depth / speed * std::sqrt(g / dia) : 0.0;
   const double fz = alpha * mu * rho_g * g * dia * dia * depth;
-  vector[6] = (depth > 0.0 && fz > 0.0) ? sum[0] / fz : 0.0;
+  vector[6] = (depth > 0.0 && fz > 0.0) ? sum[2] / fz : 0.0;
 }
 
 /* ----------------------------------------------------------------------

@@ -143,6 +143,7 @@ FixRodDrive::FixRodDrive(LAMMPS *lmp, int narg, char **arg) :
   }
 
   time_integrate = 1;
+  create_attribute = 1;    // set_arrays() for rod atoms created later
   restart_global = 1;
   restart_peratom = 1;
   vector_flag = 1;
@@ -204,7 +205,7 @@ void FixRodDrive::init()
     Fix *other = gp::fix_at(lmp, ifix);
     if (other == this) continue;
     bool integrates = other->time_integrate != 0;
-    bool weighs = strcmp(other->style, "gravity") == 0;
+    bool weighs = utils::strmatch(other->style, "^gravity");
     if (!integrates && !weighs) continue;
     bigint nlocal = 0, nboth = 0;
     for (int i = 0; i < atom->nlocal; i++)
@@ -395,15 +396,8 @@ void FixRodDrive::place_rod()
 
 void FixRodDrive::sum_grain_force()
 {
-  double **f = atom->f;
-  int *mask = atom->mask;
-  double local[3] = {0.0, 0.0, 0.0};
-  for (int i = 0; i < atom->nlocal; i++)
-    if (mask[i] & groupbit) {
-      local[0] += f[i][0];
-      local[1] += f[i][1];
-      local[2] += f[i][2];
-    }
+  double local[3];
+  gp::local_group_force(lmp, groupbit, local);
   MPI_Allreduce(local, fgrain, 3, MPI_DOUBLE, MPI_SUM, world);
 }
 
@@ -442,10 +436,20 @@ void FixRodDrive::open_trace()
     h.extra.emplace_back("mount", fmt::format("{:.10g} {:.10g} {:.10g}", kmount, cmount, mmount));
     h.columns = {"t", "z", "F", "F_grain", "v_rod"};
   }
-  writer = std::make_unique<::granpen::TraceWriter>();
-  // a restarted push continues its trace rather than overwriting it
-  const bool append = restored && elapsed > 0.0;
-  if (!writer->open(trace_file, h, append))
+  writer.reset(new ::granpen::TraceWriter());    // C++11: LAMMPS 29Sep2021 builds with it
+  // a restarted push continues its trace: rows the interrupted run wrote after the
+  // restart point are superseded by the ones this run writes, and are dropped (said)
+  bool ok;
+  if (restored && elapsed > 0.0) {
+    long dropped = 0;
+    ok = writer->open_resume(trace_file, h, elapsed, dropped);
+    if (ok && dropped > 0)
+      utils::logmesg(lmp, "Fix rod/drive {}: trace {}: replacing {} rows written after t = {} "
+                     "by the resumed run\n", id, trace_file, dropped, elapsed);
+  } else {
+    ok = writer->open(trace_file, h, false);
+  }
+  if (!ok)
     error->one(FLERR, "Fix rod/drive cannot open trace file {}: {}", trace_file,
                utils::getsyserror());
   if (!initial_row) {
@@ -514,9 +518,10 @@ void FixRodDrive::restart(char *buf)
   if ((int) list[0] != RESTART_VERSION)
     error->all(FLERR, "Fix rod/drive restart data has version {}, expected {}", (int) list[0],
                RESTART_VERSION);
-  if ((list[1] != 0.0) != mount)
-    error->all(FLERR, "Fix rod/drive {} restarted {} the mount keyword it was written with", id,
-               mount ? "with" : "without");
+  const bool written_with_mount = list[1] != 0.0;
+  if (written_with_mount != mount)
+    error->all(FLERR, "Fix rod/drive {}: the restart was written {} the mount keyword; give the "
+               "fix the same keywords", id, written_with_mount ? "with" : "without");
   elapsed = list[2];
   rod_disp = list[3];
   rod_vel = list[4];

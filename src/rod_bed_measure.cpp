@@ -60,6 +60,19 @@ gp::RodShape gp::measure_rod(LAMMPS *lmp, int groupbit)
   return s;
 }
 
+void gp::local_group_force(LAMMPS *lmp, int groupbit, double out[3])
+{
+  double **f = lmp->atom->f;
+  int *mask = lmp->atom->mask;
+  out[0] = out[1] = out[2] = 0.0;
+  for (int i = 0; i < lmp->atom->nlocal; i++)
+    if (mask[i] & groupbit) {
+      out[0] += f[i][0];
+      out[1] += f[i][1];
+      out[2] += f[i][2];
+    }
+}
+
 double gp::lowest_point(LAMMPS *lmp, int groupbit)
 {
   Atom *atom = lmp->atom;
@@ -125,7 +138,7 @@ double gp::gravity_magnitude(LAMMPS *lmp)
 {
   for (int i = 0; i < gp::nfix(lmp); i++) {
     Fix *f = gp::fix_at(lmp, i);
-    if (strcmp(f->style, "gravity") != 0) continue;
+    if (!utils::strmatch(f->style, "^gravity")) continue;    // gravity, gravity/omp, gravity/kk
     int dim = 0;
     auto gvec = static_cast<double *>(f->extract("gvec", dim));
     if (gvec) return std::sqrt(gvec[0] * gvec[0] + gvec[1] * gvec[1] + gvec[2] * gvec[2]);

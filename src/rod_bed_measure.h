@@ -27,6 +27,9 @@ namespace gp {
     double rho_mean = 0.0;    // mean material density
   };
 
+  // Sum of f over this rank's atoms of the group (x, y, z); the caller reduces.
+  void local_group_force(LAMMPS *lmp, int groupbit, double out[3]);
+
   // Atoms with (mask & bit) and not (mask & exclude).
   RodShape measure_rod(LAMMPS *lmp, int groupbit);
   double lowest_point(LAMMPS *lmp, int groupbit);

@@ -5,6 +5,7 @@
 #include "trace_writer.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <sys/stat.h>
 
 namespace granpen {
@@ -51,6 +52,61 @@ bool TraceWriter::open(const std::string &path, const TraceHeader &h, bool appen
   if (!(append && has_content)) std::fputs(format_trace_header(h).c_str(), fp_);
   std::fflush(fp_);
   return true;
+}
+
+bool TraceWriter::open_resume(const std::string &path, const TraceHeader &h, double t_resume,
+                              long &dropped, int flush_rows)
+{
+  dropped = 0;
+  std::FILE *in = std::fopen(path.c_str(), "r");
+  if (!in) return open(path, h, false, flush_rows);
+
+  // keep comment lines, the column line and rows up to t_resume; t is the column named "t"
+  std::string kept, line;
+  int tcol = -1;
+  char buf[4096];
+  const double tol = 1.0e-9 * (t_resume > 0.0 ? t_resume : 1.0);
+  while (std::fgets(buf, sizeof(buf), in)) {
+    line = buf;
+    if (line.empty() || line[0] == '#' || line == "\n") {
+      kept += line;
+      continue;
+    }
+    if (tcol < 0) {    // the column-name line
+      int col = 0;
+      std::size_t start = 0;
+      while (true) {
+        std::size_t end = line.find_first_of(",\r\n", start);
+        if (line.compare(start, end - start, "t") == 0) tcol = col;
+        if (end == std::string::npos || line[end] != ',') break;
+        start = end + 1;
+        ++col;
+      }
+      kept += line;
+      if (tcol < 0) tcol = 0;
+      continue;
+    }
+    std::size_t start = 0;
+    for (int c = 0; c < tcol && start != std::string::npos; ++c) {
+      start = line.find(',', start);
+      if (start != std::string::npos) ++start;
+    }
+    const double t = start == std::string::npos ? 0.0 : std::strtod(line.c_str() + start, nullptr);
+    if (t <= t_resume + tol) kept += line;
+    else ++dropped;
+  }
+  std::fclose(in);
+  if (kept.empty()) return open(path, h, false, flush_rows);
+
+  const std::string tmp = path + ".resume.tmp";
+  std::FILE *out = std::fopen(tmp.c_str(), "w");
+  if (!out) return false;
+  const bool written = std::fputs(kept.c_str(), out) >= 0;
+  if (std::fclose(out) != 0 || !written || std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    return false;
+  }
+  return open(path, h, true, flush_rows);
 }
 
 void TraceWriter::row(const std::vector<double> &values)

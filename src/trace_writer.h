@@ -41,6 +41,14 @@ class TraceWriter {
 
   // Returns false (errno set) when the file cannot be opened.
   bool open(const std::string &path, const TraceHeader &h, bool append, int flush_rows = 1);
+
+  // Continue a trace from time t_resume: keep the existing header and the rows with
+  // t <= t_resume, drop (and count in `dropped`) the rows after it, which the resumed
+  // run writes again, then append. A missing or empty file starts afresh with h.
+  // The kept part is rewritten through a temporary file and rename, so an interrupted
+  // resume never leaves a half-written trace.
+  bool open_resume(const std::string &path, const TraceHeader &h, double t_resume, long &dropped,
+                   int flush_rows = 1);
   void row(const std::vector<double> &values);
   void close();
   bool is_open() const { return fp_ != nullptr; }

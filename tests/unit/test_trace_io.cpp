@@ -133,3 +133,36 @@ TEST(TraceIO, MissingFileIsNamed)
 {
   EXPECT_THROW(read_trace("/nonexistent/x.csv"), InputError);
 }
+
+TEST(TraceIO, ResumeDropsRowsAfterTheRestartPointAndAppends)
+{
+  const std::string path = testing::TempDir() + "granpen_resume.csv";
+  TraceHeader h{"cgs", 100.0, 2.0, 981.0};
+  h.columns = {"z", "t", "F"};    // t not first: the resume finds it by name
+  {
+    TraceWriter w;
+    ASSERT_TRUE(w.open(path, h, false));
+    for (int i = 0; i < 20; ++i) w.row({0.01 * i, i * 1e-4, 5.0});
+  }
+  long dropped = -1;
+  {
+    TraceWriter w;
+    ASSERT_TRUE(w.open_resume(path, h, 9e-4, dropped));
+    for (int i = 10; i < 15; ++i) w.row({0.01 * i, i * 1e-4, 6.0});
+  }
+  EXPECT_EQ(dropped, 10);
+  Trace t = read_trace(path);    // t increases throughout: the reader would reject repeats
+  ASSERT_EQ(t.t.size(), 15u);
+  EXPECT_DOUBLE_EQ(t.F[9], 5.0);
+  EXPECT_DOUBLE_EQ(t.F[10], 6.0);
+  // resuming into a file that does not exist starts afresh
+  std::remove(path.c_str());
+  {
+    TraceWriter w;
+    ASSERT_TRUE(w.open_resume(path, h, 9e-4, dropped));
+    for (int i = 10; i < 20; ++i) w.row({0.01 * i, i * 1e-4, 6.0});
+  }
+  EXPECT_EQ(dropped, 0);
+  EXPECT_EQ(read_trace(path).t.size(), 10u);
+  std::remove(path.c_str());
+}

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Cost per step of a bench push with fix rod/drive + compute rod/drag (and its 10 kHz
+# trace) against the same push with stock fix move linear + compute reduce + fix
+# ave/time, in one run: the two are run alternately REPEAT times each on the same bed,
+# and the ratio of median loop times per step is reported. Target: <= 1.02.
+#   bench/drive_overhead.sh [LMP_GRANPEN] [REPEAT]      (./granpen build first)
+set -euo pipefail
+HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+ROOT=$(dirname "$HERE")
+LMP=${1:-$ROOT/build/lmp_granpen}
+REPEAT=${2:-3}
+WORK=${GRANPEN_BENCH_WORK:-$ROOT/runs/bench}
+mkdir -p "$WORK"; cd "$WORK"
+export OMP_NUM_THREADS=1
+
+if [ ! -f bed_bench.restart ]; then
+  echo "pouring the bench bed (once, about a minute or more)"
+  "$LMP" -in "$ROOT/inputs/in.pour" -var inputs "$ROOT/inputs" -var preset bench -var out bed_bench \
+    -log pour.log -screen none
+fi
+steps_of() { awk '/^Loop time of/ {t=$4; n=$9} END {printf "%.9g\n", t/n}' "$1"; }
+
+granpen=() stock=()
+for r in $(seq 1 "$REPEAT"); do
+  "$LMP" -in "$ROOT/inputs/in.push" -var inputs "$ROOT/inputs" -var preset bench -var bed bed_bench.restart \
+    -var v0 100 -var trace granpen_$r.csv -log granpen_$r.log -screen none
+  granpen+=("$(steps_of granpen_$r.log)")
+  "$LMP" -in "$HERE/in.push_stock" -var inputs "$ROOT/inputs" -var bed bed_bench.restart -var v0 100 \
+    -var nsteps "$(awk '/^Loop time of/ {n=$9} END {print n}' granpen_$r.log)" \
+    -var trace stock_$r.txt -log stock_$r.log -screen none
+  stock+=("$(steps_of stock_$r.log)")
+  echo "round $r/$REPEAT: rod/drive ${granpen[-1]} s/step, stock ${stock[-1]} s/step"
+done
+median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2 ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2)}'; }
+mg=$(median "${granpen[@]}") ms=$(median "${stock[@]}")
+atoms=$(awk '/^Loop time of/ {print $12}' granpen_1.log | tail -1)
+echo "median s/step: rod/drive+rod/drag $mg, fix move+compute reduce $ms; ratio $(awk -v a="$mg" -v b="$ms" 'BEGIN{printf "%.4f", a/b}') (target <= 1.02)"
+echo "throughput: $(awk -v a="$mg" -v n="$atoms" 'BEGIN{printf "%.3g", n/a}') atom-steps/s with $atoms atoms"
