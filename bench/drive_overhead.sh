@@ -7,7 +7,7 @@
 set -euo pipefail
 HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 ROOT=$(dirname "$HERE")
-LMP=${1:-$ROOT/build/lmp_granpen}
+LMP=$(realpath "${1:-$ROOT/build/lmp_granpen}")
 REPEAT=${2:-3}
 WORK=${GRANPEN_BENCH_WORK:-$ROOT/runs/bench}
 mkdir -p "$WORK"; cd "$WORK"
@@ -19,8 +19,10 @@ if [ ! -f bed_bench.restart ]; then
     -log pour.log -screen none
 fi
 steps_of() { awk '/^Loop time of/ {t=$4; n=$9} END {printf "%.9g\n", t/n}' "$1"; }
+# the "Modify" row of LAMMPS's timing breakdown (fixes: integration, drive, output), per step
+modify_of() { awk -F'|' '/^Loop time of/ {n=$0; sub(/.* for /,"",n); sub(/ steps.*/,"",n)} /^Modify/ {m=$3} END {printf "%.9g\n", m/n}' "$1"; }
 
-granpen=() stock=()
+granpen=() stock=() ratios=() mod_g=() mod_s=()
 for r in $(seq 1 "$REPEAT"); do
   "$LMP" -in "$ROOT/inputs/in.push" -var inputs "$ROOT/inputs" -var preset bench -var bed bed_bench.restart \
     -var v0 100 -var trace granpen_$r.csv -log granpen_$r.log -screen none
@@ -29,10 +31,16 @@ for r in $(seq 1 "$REPEAT"); do
     -var nsteps "$(awk '/^Loop time of/ {n=$9} END {print n}' granpen_$r.log)" \
     -var trace stock_$r.txt -log stock_$r.log -screen none
   stock+=("$(steps_of stock_$r.log)")
-  echo "round $r/$REPEAT: rod/drive ${granpen[-1]} s/step, stock ${stock[-1]} s/step"
+  mod_g+=("$(modify_of granpen_$r.log)") mod_s+=("$(modify_of stock_$r.log)")
+  ratios+=("$(awk -v a="${granpen[-1]}" -v b="${stock[-1]}" 'BEGIN{printf "%.4f", a/b}')")
+  echo "round $r/$REPEAT: rod/drive ${granpen[-1]} s/step, stock ${stock[-1]} s/step, ratio ${ratios[-1]}" \
+       "(Modify section: ${mod_g[-1]} vs ${mod_s[-1]} s/step)"
 done
 median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2 ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2)}'; }
 mg=$(median "${granpen[@]}") ms=$(median "${stock[@]}")
 atoms=$(awk '/^Loop time of/ {print $12}' granpen_1.log | tail -1)
-echo "median s/step: rod/drive+rod/drag $mg, fix move+compute reduce $ms; ratio $(awk -v a="$mg" -v b="$ms" 'BEGIN{printf "%.4f", a/b}') (target <= 1.02)"
+sorted=$(printf '%s\n' "${ratios[@]}" | sort -g | tr '\n' ' ')
+echo "median s/step: rod/drive+rod/drag $mg, fix move+compute reduce $ms"
+echo "ratio per round (sorted): $sorted; median $(median "${ratios[@]}") (target <= 1.02)"
+echo "Modify section per step, median: rod/drive $(median "${mod_g[@]}"), stock $(median "${mod_s[@]}")"
 echo "throughput: $(awk -v a="$mg" -v n="$atoms" 'BEGIN{printf "%.3g", n/a}') atom-steps/s with $atoms atoms"
