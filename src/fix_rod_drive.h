@@ -57,6 +57,10 @@ class FixRodDrive : public Fix {
   double rod_diameter() const { return diameter; }
   double gravity() const { return gmag; }
   bool surface_known() const { return surface_set; }
+  double surface_height() const { return surface; }
+  double axis_x() const { return xc; }
+  double axis_y() const { return yc; }
+  double tip_height() const { return ztip0 - rod_disp; }    // lowest point of the rod now
 
  private:
   // parameters

@@ -171,3 +171,36 @@ TEST_F(PushBed, MountSensorBalancesRodMomentum)
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank == 0) std::remove(trace.c_str());
 }
+
+TEST_F(PushBed, HydrostaticColumnCarriesTheWeightAbove)
+{
+  // A bed at rest in a laterally periodic box: the vertical normal stress at height z is
+  // the weight of the grains above per unit area. compute flow/azimuthal gives sigma_zz
+  // (column 14) from compute stress/atom and the mass per bin (column 4) in one cylinder.
+  LmpSession s;
+  s.cmds({"newton off", "read_restart " + bed_path(), "neighbor 0.08 bin", "neigh_modify delay 0",
+          "comm_modify vel yes", "group grains type 1",
+          "fix floor grains wall/gran hertz/history 1e9 1e9 1000 1000 0.3 1 zplane 0.0 NULL",
+          "fix grav grains gravity 981 vector 0 0 -1", "fix integ grains nve/sphere",
+          "compute stress grains stress/atom NULL",
+          "compute flow grains flow/azimuthal axis 3.0 3.0 rbin 3.0 zbin 0.4 zlo 0.0 zhi 4.0 stress stress",
+          "thermo_style custom step c_flow[1][14]", "timestep 2e-6", "run 0"});
+  auto a = (double **) lammps_extract_compute(s.lmp, "flow", LMP_STYLE_GLOBAL, LMP_TYPE_ARRAY);
+  const int nz = 10;
+  const double area = M_PI * 3.0 * 3.0, g = 981.0;
+  int checked = 0;
+  for (int iz = 2; iz < nz; ++iz) {
+    if (a[iz][3] <= 0.0) continue;
+    double above = 0.5 * a[iz][3];
+    for (int k = iz + 1; k < nz; ++k) above += a[k][3];
+    const double weight = g * above / area;
+    if (weight < 0.3 * g * a[2][3] / area) continue;    // too near the surface to average
+    EXPECT_NEAR(a[iz][13], weight, 0.25 * weight) << "z = " << a[iz][1];
+    if (std::getenv("GRANPEN_TEST_VERBOSE") && s.rank() == 0)
+      std::printf("z = %.2f: sigma_zz = %.4g, weight above = %.4g, p = %.4g\n", a[iz][1], a[iz][13], weight, a[iz][10]);
+    // the pressure is compressive and of the same order
+    EXPECT_GT(a[iz][10], 0.2 * weight);
+    ++checked;
+  }
+  EXPECT_GE(checked, 3);
+}

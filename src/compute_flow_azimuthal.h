@@ -1,0 +1,49 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   GRANPEN package: compute flow/azimuthal
+   Azimuthally averaged flow fields in (r, z) about the rod axis.
+   See docs/compute_flow_azimuthal.rst.
+------------------------------------------------------------------------- */
+
+#ifdef COMPUTE_CLASS
+// clang-format off
+ComputeStyle(flow/azimuthal,ComputeFlowAzimuthal);
+// clang-format on
+#else
+
+#ifndef LMP_COMPUTE_FLOW_AZIMUTHAL_H
+#define LMP_COMPUTE_FLOW_AZIMUTHAL_H
+
+#include "compute.h"
+
+#include <string>
+#include <vector>
+
+namespace LAMMPS_NS {
+
+class ComputeFlowAzimuthal : public Compute {
+ public:
+  ComputeFlowAzimuthal(class LAMMPS *, int, char **);
+  ~ComputeFlowAzimuthal() override;
+  void init() override;
+  void compute_array() override;
+  double memory_usage() override;
+
+ private:
+  std::string drive_id, voronoi_id, stress_id;
+  class FixRodDrive *drive;
+  class Compute *voronoi, *stress;
+  bool have_axis, tip_frame;
+  double xaxis, yaxis;
+  double rmin, rmax, dr, zlo, zhi, dz;
+  bool have_rmax, have_zlo, have_zhi;
+  int nr, nz, nbins;
+  double d_g, rho_g;
+  std::vector<double> local, global;
+
+  void setup_bins();
+};
+
+}    // namespace LAMMPS_NS
+
+#endif
+#endif

@@ -1,0 +1,309 @@
+/* ----------------------------------------------------------------------
+   GRANPEN package: compute momentum/vbin
+
+   Global array: for the grains of the group in a selection (outside a
+   cylinder of radius R about the rod axis, and/or inside a region), one
+   row per vertical-velocity class, fastest first: count, mass and upward
+   momentum sum(m v_z). The classes are those of the paper's "Temporal
+   Flows" section relative to the push speed v0 (or user thresholds, or
+   log-spaced bins). Global scalar: mu g M_move, M_move = mass of the
+   selected grains with v_z > v0/320, the paper's comparison for the drag.
+   One pass over owned atoms and one MPI_Allreduce per timestep.
+------------------------------------------------------------------------- */
+
+#include "compute_momentum_vbin.h"
+
+#include "atom.h"
+#include "domain.h"
+#include "error.h"
+#include "fix_rod_drive.h"
+#include "granpen_compat.h"
+#include "memory.h"
+#include "region.h"
+#include "rod_bed_measure.h"
+#include "update.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+using namespace LAMMPS_NS;
+
+static constexpr int NCOLS = 3;
+static constexpr int NDEFAULT = 4;
+// the paper's class bounds as divisors of v0: fast >= v0/10 > intermediate >= v0/80 >
+// slow > v0/320 >= noise > v0/640; M_move counts v_z > v0/320
+static const double DEFAULT_DIV[NDEFAULT] = {10.0, 80.0, 320.0, 640.0};
+static constexpr double MOVE_DIV = 320.0;
+
+// Domain::get_region_by_id came with LAMMPS PR #3001 (commit 212d6990, merged
+// 2 Nov 2021), first released in 14Dec2021, like gp::fix_by_id; 29Sep2021 has
+// find_region() and the public regions[] list, which later releases removed.
+// (A candidate for granpen_compat.h.)
+static Region *region_by_id(LAMMPS *lmp, const std::string &id)
+{
+#if LAMMPS_VERSION_NUMBER >= 20211214
+  return lmp->domain->get_region_by_id(id);
+#else
+  int i = lmp->domain->find_region(id);
+  return (i < 0) ? nullptr : lmp->domain->regions[i];
+#endif
+}
+
+/* ---------------------------------------------------------------------- */
+
+ComputeMomentumVbin::ComputeMomentumVbin(LAMMPS *lmp, int narg, char **arg) :
+    Compute(lmp, narg, arg), v0(0.0), drive(nullptr), region(nullptr), have_axis(false),
+    have_rmin(false), axis_user{0.0, 0.0}, rmin_user(0.0), xaxis(0.0), yaxis(0.0), rmin(0.0),
+    cylinder(false), logbins(false), nclass(NDEFAULT), vmove(0.0), mu(0.3), g_user(-1.0),
+    gmag(0.0), tally_step(-1), mmove(0.0)
+{
+  if (narg < 4) error->all(FLERR, "Illegal compute momentum/vbin command: missing v0");
+  v0 = utils::numeric(FLERR, arg[3], false, lmp);
+  if (v0 <= 0.0) error->all(FLERR, "Compute momentum/vbin v0 must be > 0, got {}", arg[3]);
+
+  bool have_thresholds = false, have_mthreshold = false;
+  double frac[NDEFAULT] = {0.0, 0.0, 0.0, 0.0};
+  double fmin = 0.0, fmax = 0.0, mfrac = 0.0;
+
+  int iarg = 4;
+  while (iarg < narg) {
+    const std::string key = arg[iarg];
+    const std::string cmd = "compute momentum/vbin " + key;
+    if (key == "drive") {
+      gp::need_args(FLERR, cmd, iarg, 2, narg, lmp);
+      drive_id = arg[iarg + 1];
+      iarg += 2;
+    } else if (key == "axis") {
+      gp::need_args(FLERR, cmd, iarg, 3, narg, lmp);
+      axis_user[0] = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      axis_user[1] = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      have_axis = true;
+      iarg += 3;
+    } else if (key == "rmin") {
+      gp::need_args(FLERR, cmd, iarg, 2, narg, lmp);
+      rmin_user = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (rmin_user < 0.0)
+        error->all(FLERR, "Compute momentum/vbin rmin must be >= 0, got {}", arg[iarg + 1]);
+      have_rmin = true;
+      iarg += 2;
+    } else if (key == "region") {
+      gp::need_args(FLERR, cmd, iarg, 2, narg, lmp);
+      region_id = arg[iarg + 1];
+      if (!region_by_id(lmp, region_id))
+        error->all(FLERR, "Compute momentum/vbin region {} does not exist", region_id);
+      iarg += 2;
+    } else if (key == "thresholds") {
+      gp::need_args(FLERR, cmd, iarg, 1 + NDEFAULT, narg, lmp);
+      bool ok = true;
+      for (int k = 0; k < NDEFAULT; k++) {
+        frac[k] = utils::numeric(FLERR, arg[iarg + 1 + k], false, lmp);
+        if (!(frac[k] > 0.0) || (k > 0 && !(frac[k] < frac[k - 1]))) ok = false;
+      }
+      if (!ok)
+        error->all(FLERR,
+                   "Compute momentum/vbin thresholds must be > 0 and strictly decreasing, got {} "
+                   "{} {} {}",
+                   arg[iarg + 1], arg[iarg + 2], arg[iarg + 3], arg[iarg + 4]);
+      have_thresholds = true;
+      iarg += 1 + NDEFAULT;
+    } else if (key == "logbins") {
+      gp::need_args(FLERR, cmd, iarg, 4, narg, lmp);
+      nclass = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (nclass < 1)
+        error->all(FLERR, "Compute momentum/vbin logbins N must be >= 1, got {}", arg[iarg + 1]);
+      fmin = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
+      fmax = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
+      if (!(fmin > 0.0 && fmin < fmax))
+        error->all(FLERR, "Compute momentum/vbin logbins needs 0 < fmin < fmax, got {} {}",
+                   arg[iarg + 2], arg[iarg + 3]);
+      logbins = true;
+      iarg += 4;
+    } else if (key == "mthreshold") {
+      gp::need_args(FLERR, cmd, iarg, 2, narg, lmp);
+      mfrac = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(mfrac > 0.0))
+        error->all(FLERR, "Compute momentum/vbin mthreshold must be > 0, got {}", arg[iarg + 1]);
+      have_mthreshold = true;
+      iarg += 2;
+    } else if (key == "mu") {
+      gp::need_args(FLERR, cmd, iarg, 2, narg, lmp);
+      mu = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (mu < 0.0) error->all(FLERR, "Compute momentum/vbin mu must be >= 0, got {}", arg[iarg + 1]);
+      iarg += 2;
+    } else if (key == "g") {
+      gp::need_args(FLERR, cmd, iarg, 2, narg, lmp);
+      g_user = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
+      if (!(g_user > 0.0))
+        error->all(FLERR, "Compute momentum/vbin g must be > 0, got {}", arg[iarg + 1]);
+      iarg += 2;
+    } else {
+      error->all(FLERR, "Unknown compute momentum/vbin keyword: {}", arg[iarg]);
+    }
+  }
+
+  if (have_thresholds && logbins)
+    error->all(FLERR, "Compute momentum/vbin takes thresholds or logbins, not both");
+  if (drive_id.empty() && !have_axis && region_id.empty())
+    error->all(FLERR, "Compute momentum/vbin needs drive FIXID, axis X Y with rmin R, or region ID");
+  if (have_axis && !have_rmin && drive_id.empty())
+    error->all(FLERR, "Compute momentum/vbin axis needs rmin R (or drive FIXID for the rod radius)");
+  if (have_rmin && !have_axis && drive_id.empty())
+    error->all(FLERR, "Compute momentum/vbin rmin needs axis X Y (or drive FIXID for the rod axis)");
+  cylinder = !drive_id.empty() || have_axis;
+
+  // class bounds in velocity units; the defaults divide v0 so that they are exact
+  // whenever v0 / 10 etc. are
+  if (logbins) {
+    edges.resize(nclass + 1);
+    const double q = std::pow(fmax / fmin, 1.0 / nclass);
+    for (int k = 0; k < nclass; k++) edges[k] = v0 * (fmin * std::pow(q, k));
+    edges[nclass] = v0 * fmax;
+  } else {
+    thr.resize(NDEFAULT);
+    for (int k = 0; k < NDEFAULT; k++) thr[k] = have_thresholds ? v0 * frac[k] : v0 / DEFAULT_DIV[k];
+  }
+  if (have_mthreshold) vmove = v0 * mfrac;
+  else if (have_thresholds) vmove = thr[2];
+  else vmove = v0 / MOVE_DIV;
+
+  local.assign(NCOLS * nclass + 1, 0.0);
+  global.assign(NCOLS * nclass + 1, 0.0);
+
+  array_flag = 1;
+  size_array_rows = nclass;
+  size_array_cols = NCOLS;
+  extarray = 1;
+  scalar_flag = 1;
+  extscalar = 1;
+  memory->create(array, nclass, NCOLS, "momentum/vbin:array");
+  for (int r = 0; r < nclass; r++)
+    for (int c = 0; c < NCOLS; c++) array[r][c] = 0.0;
+}
+
+ComputeMomentumVbin::~ComputeMomentumVbin()
+{
+  memory->destroy(array);
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeMomentumVbin::init()
+{
+  drive = nullptr;
+  if (!drive_id.empty()) {
+    Fix *f = gp::fix_by_id(lmp, drive_id);
+    if (!f) error->all(FLERR, "Compute momentum/vbin drive fix {} does not exist", drive_id);
+    if (strcmp(f->style, "rod/drive") != 0)
+      error->all(FLERR, "Compute momentum/vbin drive fix {} is {}, not rod/drive", drive_id,
+                 f->style);
+    drive = static_cast<FixRodDrive *>(f);
+  }
+  region = nullptr;
+  if (!region_id.empty()) {
+    region = region_by_id(lmp, region_id);
+    if (!region) error->all(FLERR, "Compute momentum/vbin region {} does not exist", region_id);
+  }
+  if (cylinder) {
+    xaxis = have_axis ? axis_user[0] : drive->axis_x();
+    yaxis = have_axis ? axis_user[1] : drive->axis_y();
+    rmin = have_rmin ? rmin_user : 0.5 * drive->rod_diameter();
+  }
+
+  // g: the keyword, else the drive's (known from its setup on), else the first fix gravity
+  gmag = g_user > 0.0 ? g_user : gp::gravity_magnitude(lmp);
+  if (gmag <= 0.0 && !drive)
+    error->all(FLERR, "Compute momentum/vbin needs g: define fix gravity or give the g keyword");
+
+  // a new run may follow changes made at the same timestep (set, velocity, ...)
+  // tally_step = -1;
+}
+
+/* ---------------------------------------------------------------------- */
+
+void ComputeMomentumVbin::compute_array()
+{
+  invoked_array = update->ntimestep;
+  tally();
+}
+
+double ComputeMomentumVbin::compute_scalar()
+{
+  invoked_scalar = update->ntimestep;
+  tally();
+  double g = gmag;
+  if (g_user <= 0.0 && drive && drive->gravity() > 0.0) g = drive->gravity();
+  if (g <= 0.0)
+    error->all(FLERR, "Compute momentum/vbin needs g: define fix gravity or give the g keyword");
+  scalar = mu * g * mmove;
+  return scalar;
+}
+
+/* ----------------------------------------------------------------------
+   row of a grain moving at vz (0 = fastest), or -1 when it is in no class
+------------------------------------------------------------------------- */
+
+int ComputeMomentumVbin::classify(double vz) const
+{
+  if (logbins) {
+    if (!(vz >= edges[0] && vz < edges[nclass])) return -1;
+    // class k covers [edges[k], edges[k+1]): estimate, then settle on the stored edges
+    const double span = std::log(edges[nclass] / edges[0]);
+    int k = static_cast<int>(std::floor(nclass * std::log(vz / edges[0]) / span));
+    if (k < 0) k = 0;
+    if (k > nclass - 1) k = nclass - 1;
+    while (k > 0 && vz < edges[k]) k--;
+    while (k < nclass - 1 && vz >= edges[k + 1]) k++;
+    return nclass - 1 - k;
+  }
+  if (vz >= thr[0]) return 0;
+  if (vz > thr[1]) return 1;
+  if (vz > thr[2]) return 2;
+  if (vz > thr[3]) return 3;
+  return -1;
+}
+
+/* ----------------------------------------------------------------------
+   one pass over owned atoms, one reduction; once per timestep (and run)
+------------------------------------------------------------------------- */
+
+void ComputeMomentumVbin::tally()
+{
+  if (tally_step == update->ntimestep) return;
+
+  double **x = atom->x;
+  double **v = atom->v;
+  int *mask = atom->mask;
+  int *type = atom->type;
+  double *rmass = atom->rmass;
+  double *mass = atom->mass;
+  const int nlocal = atom->nlocal;
+  const double r2min = rmin * rmin;
+
+  std::fill(local.begin(), local.end(), 0.0);
+  if (region) region->prematch();
+  for (int i = 0; i < nlocal; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    if (cylinder) {
+      double dx = x[i][0] - xaxis, dy = x[i][1] - yaxis, dz = 0.0;
+      domain->minimum_image(dx, dy, dz);
+      if (dx * dx + dy * dy <= r2min) continue;
+    }
+    if (region && !region->match(x[i][0], x[i][1], x[i][2])) continue;
+    const double vz = v[i][2];
+    const double m = rmass ? rmass[i] : mass[type[i]];
+    if (vz > vmove) local[NCOLS * nclass] += m;
+    const int row = classify(vz);
+    if (row < 0) continue;
+    double *p = &local[NCOLS * row];
+    p[0] += 1.0;
+    p[1] += m;
+    p[2] += m * vz;
+  }
+  MPI_Allreduce(local.data(), global.data(), (int) global.size(), MPI_DOUBLE, MPI_SUM, world);
+
+  for (int r = 0; r < nclass; r++)
+    for (int c = 0; c < NCOLS; c++) array[r][c] = global[NCOLS * r + c];
+  mmove = global[NCOLS * nclass];
+  tally_step = update->ntimestep;
+}

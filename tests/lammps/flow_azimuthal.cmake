@@ -1,0 +1,41 @@
+# compute flow/azimuthal: bad input gets a clear error (decks on 1 and 2 ranks)
+granpen_error_test(flow_no_axis "Compute flow/azimuthal needs axis FIXID \\(a fix rod/drive\\) or axis X Y"
+  "compute f grains flow/azimuthal rbin 0.5 zbin 0.5")
+granpen_error_test(flow_rbin_zero "Compute flow/azimuthal rbin must be > 0, got 0"
+  "compute f grains flow/azimuthal axis 4 4 rbin 0 zbin 0.5")
+granpen_error_test(flow_zbin_negative "Compute flow/azimuthal zbin must be > 0, got -1"
+  "compute f grains flow/azimuthal axis 4 4 rbin 0.5 zbin -1")
+granpen_error_test(flow_rmax_outside "Compute flow/azimuthal rmax 5 reaches outside the box"
+  "compute f grains flow/azimuthal axis 4 4 rbin 0.5 zbin 0.5 rmax 5")
+granpen_error_test(flow_z_outside "Compute flow/azimuthal bins z = -1 to 4 lie outside the box z = 0 to 16"
+  "compute f grains flow/azimuthal axis 4 4 rbin 0.5 zbin 0.5 zlo -1 zhi 4")
+granpen_error_test(flow_tip_needs_drive "Compute flow/azimuthal frame tip needs axis FIXID"
+  "compute f grains flow/azimuthal axis 4 4 rbin 0.5 zbin 0.5 frame tip zlo -2 zhi 2")
+granpen_error_test(flow_voronoi_missing "Compute flow/azimuthal voronoi compute vor does not exist"
+  "compute f grains flow/azimuthal axis 4 4 rbin 0.5 zbin 0.5 voronoi vor" "thermo_style custom step c_f[1][3]" "run 0")
+granpen_error_test(flow_stress_missing "Compute flow/azimuthal stress compute st does not exist"
+  "compute f grains flow/azimuthal axis 4 4 rbin 0.5 zbin 0.5 stress st" "thermo_style custom step c_f[1][3]" "run 0")
+granpen_error_test(flow_stress_wrong "Compute flow/azimuthal stress compute ke is not a per-atom stress"
+  "compute ke grains ke/atom" "compute f grains flow/azimuthal axis 4 4 rbin 0.5 zbin 0.5 stress ke"
+  "thermo_style custom step c_f[1][3]" "run 0")
+granpen_error_test(flow_axis_not_drive "Compute flow/azimuthal axis fix grav is gravity, not rod/drive"
+  "fix grav grains gravity 981 vector 0 0 -1" "compute f grains flow/azimuthal axis grav rbin 0.5 zbin 0.5"
+  "thermo_style custom step c_f[1][3]" "run 0")
+granpen_error_test(flow_unknown_keyword "Unknown compute flow/azimuthal keyword: theta"
+  "compute f grains flow/azimuthal axis 4 4 rbin 0.5 zbin 0.5 theta 4")
+
+# the example push that writes the flow observables, on 1 and 2 ranks
+foreach(np 1 2)
+  add_test(NAME example_push_flow_np${np}
+    COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${np} $<TARGET_FILE:lmp_granpen>
+      -in ${PROJECT_SOURCE_DIR}/inputs/examples/in.push_flow -var inputs ${PROJECT_SOURCE_DIR}/inputs
+      -var bed ${BEDS}/bed_tiny.restart -var trace ${DECKRUN}/flow_np${np}.csv -log ${DECKRUN}/flow_np${np}.log)
+  set_tests_properties(example_push_flow_np${np} PROPERTIES ENVIRONMENT "${GRANPEN_TEST_ENV}" LABELS lammps
+    PROCESSORS ${np} FIXTURES_REQUIRED tiny_bed FIXTURES_SETUP flow_np${np}
+    PASS_REGULAR_EXPRESSION "granpen push: done, depth 2.000 cm")
+endforeach()
+# the flow files of 1 and 2 ranks agree (same push, round-off): compare the last block
+add_test(NAME example_push_flow_ranks_agree
+  COMMAND awk -f ${CMAKE_CURRENT_SOURCE_DIR}/compare_ave_time.awk ${DECKRUN}/flow_np1.csv.flow.txt
+    ${DECKRUN}/flow_np2.csv.flow.txt)
+set_tests_properties(example_push_flow_ranks_agree PROPERTIES LABELS lammps FIXTURES_REQUIRED "flow_np1;flow_np2")
