@@ -36,20 +36,6 @@ static constexpr int NDEFAULT = 4;
 static const double DEFAULT_DIV[NDEFAULT] = {10.0, 80.0, 320.0, 640.0};
 static constexpr double MOVE_DIV = 320.0;
 
-// Domain::get_region_by_id came with LAMMPS PR #3001 (commit 212d6990, merged
-// 2 Nov 2021), first released in 14Dec2021, like gp::fix_by_id; 29Sep2021 has
-// find_region() and the public regions[] list, which later releases removed.
-// (A candidate for granpen_compat.h.)
-static Region *region_by_id(LAMMPS *lmp, const std::string &id)
-{
-#if LAMMPS_VERSION_NUMBER >= 20211214
-  return lmp->domain->get_region_by_id(id);
-#else
-  int i = lmp->domain->find_region(id);
-  return (i < 0) ? nullptr : lmp->domain->regions[i];
-#endif
-}
-
 /* ---------------------------------------------------------------------- */
 
 ComputeMomentumVbin::ComputeMomentumVbin(LAMMPS *lmp, int narg, char **arg) :
@@ -90,7 +76,7 @@ ComputeMomentumVbin::ComputeMomentumVbin(LAMMPS *lmp, int narg, char **arg) :
     } else if (key == "region") {
       gp::need_args(FLERR, cmd, iarg, 2, narg, lmp);
       region_id = arg[iarg + 1];
-      if (!region_by_id(lmp, region_id))
+      if (!gp::region_by_id(lmp, region_id))
         error->all(FLERR, "Compute momentum/vbin region {} does not exist", region_id);
       iarg += 2;
     } else if (key == "thresholds") {
@@ -144,12 +130,12 @@ ComputeMomentumVbin::ComputeMomentumVbin(LAMMPS *lmp, int narg, char **arg) :
 
   if (have_thresholds && logbins)
     error->all(FLERR, "Compute momentum/vbin takes thresholds or logbins, not both");
-  if (drive_id.empty() && !have_axis && region_id.empty())
-    error->all(FLERR, "Compute momentum/vbin needs drive FIXID, axis X Y with rmin R, or region ID");
   if (have_axis && !have_rmin && drive_id.empty())
     error->all(FLERR, "Compute momentum/vbin axis needs rmin R (or drive FIXID for the rod radius)");
   if (have_rmin && !have_axis && drive_id.empty())
     error->all(FLERR, "Compute momentum/vbin rmin needs axis X Y (or drive FIXID for the rod axis)");
+  if (drive_id.empty() && !have_axis && region_id.empty())
+    error->all(FLERR, "Compute momentum/vbin needs drive FIXID, axis X Y with rmin R, or region ID");
   cylinder = !drive_id.empty() || have_axis;
 
   // class bounds in velocity units; the defaults divide v0 so that they are exact
@@ -201,7 +187,7 @@ void ComputeMomentumVbin::init()
   }
   region = nullptr;
   if (!region_id.empty()) {
-    region = region_by_id(lmp, region_id);
+    region = gp::region_by_id(lmp, region_id);
     if (!region) error->all(FLERR, "Compute momentum/vbin region {} does not exist", region_id);
   }
   if (cylinder) {
@@ -216,7 +202,7 @@ void ComputeMomentumVbin::init()
     error->all(FLERR, "Compute momentum/vbin needs g: define fix gravity or give the g keyword");
 
   // a new run may follow changes made at the same timestep (set, velocity, ...)
-  // tally_step = -1;
+  tally_step = -1;
 }
 
 /* ---------------------------------------------------------------------- */
@@ -257,7 +243,7 @@ int ComputeMomentumVbin::classify(double vz) const
     return nclass - 1 - k;
   }
   if (vz >= thr[0]) return 0;
-  if (vz > thr[1]) return 1;
+  if (vz >= thr[1]) return 1;
   if (vz > thr[2]) return 2;
   if (vz > thr[3]) return 3;
   return -1;

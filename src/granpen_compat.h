@@ -10,6 +10,7 @@
 
 #include "atom.h"
 #include "compute.h"
+#include "domain.h"
 #include "error.h"
 #include "fix.h"
 #include "lammps.h"
@@ -24,6 +25,7 @@
 #endif
 
 namespace LAMMPS_NS {
+class Region;
 namespace gp {
 
 // Each cutoff below is the first LAMMPS *release* carrying the change, found in
@@ -55,6 +57,18 @@ inline Compute *compute_by_id(LAMMPS *lmp, const std::string &id)
 }
 
 // Modify::nfix and Modify::fix[] are public in every supported version.
+// Domain::get_region_by_id came with LAMMPS PR #3001 (merged 2 Nov 2021), first released
+// in 14Dec2021; 29Sep2021 has find_region() and the public regions[] list.
+inline Region *region_by_id(LAMMPS *lmp, const std::string &id)
+{
+#if LAMMPS_VERSION_NUMBER >= 20211214
+  return lmp->domain->get_region_by_id(id);
+#else
+  int i = lmp->domain->find_region(id);
+  return (i < 0) ? nullptr : lmp->domain->regions[i];
+#endif
+}
+
 inline int nfix(LAMMPS *lmp) { return lmp->modify->nfix; }
 inline Fix *fix_at(LAMMPS *lmp, int i) { return lmp->modify->fix[i]; }
 

@@ -1,50 +1,30 @@
 // granpen-cli: the post-processor's command-line front end (./granpen SUBCOMMAND).
 // A thin layer: every subcommand parses its arguments and calls the analysis library.
-#include "trace_reader.h"
+#include "subcommands.h"
 
-#include <algorithm>
-#include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <string>
-#include <vector>
 
 namespace {
 
+struct Subcommand {
+  const char *name;
+  int (*run)(int, char **);
+  const char *summary;
+};
+
+const Subcommand SUBCOMMANDS[] = {
+    {"check", granpen::cli::check, "validate force traces (granpen-trace v1) and summarise them"},
+    {"fit", granpen::cli::fit, "fit the depth term k_z, alpha, the peak and the fluctuation wavelength"},
+    {"calibration", granpen::cli::calibration, "summarise a friction-calibration sweep: phi_0(mu), k_z(mu)"},
+    {"sweep", granpen::cli::sweep, "run a sweep of pours and pushes from a sweep file"},
+};
+
 void usage(std::FILE *out)
 {
-  std::fputs("usage: granpen SUBCOMMAND [ARGS]\n"
-             "subcommands:\n"
-             "  check TRACE...   validate force traces (granpen-trace v1) and summarise them\n"
-             "  help             this text\n"
-             "Run `granpen SUBCOMMAND --help` for a subcommand's options.\n",
-             out);
-}
-
-int check(int argc, char **argv)
-{
-  if (argc < 1 || !std::strcmp(argv[0], "--help")) {
-    std::puts("usage: granpen check TRACE...\n"
-              "Reads each trace as every granpen tool does, rejecting malformed input with the\n"
-              "file and line, and prints: units, v0, D, g, rows, depth range and largest F (cgs).\n"
-              "Exit status 0 when every file is valid, 1 otherwise.");
-    return argc < 1 ? 2 : 0;
-  }
-  int bad = 0;
-  for (int i = 0; i < argc; ++i) {
-    try {
-      auto tr = granpen::to_cgs(granpen::read_trace(argv[i]));
-      double fmax = 0.0;
-      for (double f : tr.F) fmax = std::max(fmax, f);
-      std::printf("%s: ok: v0 = %g cm/s, D = %g cm, g = %g cm/s^2, %zu rows, z from %.4g to %.4g cm, "
-                  "max F = %.6g dyne\n",
-                  argv[i], tr.v0, tr.D, tr.g, tr.t.size(), tr.z.front(), tr.z.back(), fmax);
-    } catch (granpen::InputError &e) {
-      std::fprintf(stderr, "granpen check: %s\n", e.what());
-      ++bad;
-    }
-  }
-  return bad ? 1 : 0;
+  std::fputs("usage: granpen SUBCOMMAND [ARGS]\nsubcommands:\n", out);
+  for (const auto &s : SUBCOMMANDS) std::fprintf(out, "  %-12s %s\n", s.name, s.summary);
+  std::fputs("Run `granpen SUBCOMMAND --help` for a subcommand's options.\n", out);
 }
 
 }    // namespace
@@ -55,9 +35,9 @@ int main(int argc, char **argv)
     usage(stdout);
     return argc < 2 ? 2 : 0;
   }
-  const std::string sub = argv[1];
-  if (sub == "check") return check(argc - 2, argv + 2);
-  std::fprintf(stderr, "granpen: unknown subcommand '%s'\n", sub.c_str());
+  for (const auto &s : SUBCOMMANDS)
+    if (!std::strcmp(argv[1], s.name)) return s.run(argc - 2, argv + 2);
+  std::fprintf(stderr, "granpen: unknown subcommand '%s'\n", argv[1]);
   usage(stderr);
   return 2;
 }
