@@ -121,6 +121,16 @@ FixRodDrive::FixRodDrive(LAMMPS *lmp, int narg, char **arg) :
       utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       mu_str = arg[iarg + 1];
       iarg += 2;
+    } else if (key == "header") {
+      // extra key = value lines in the trace header (a sweep records its bed and seed)
+      gp::need_args(FLERR, "fix rod/drive header", iarg, 3, narg, lmp);
+      const std::string hkey = arg[iarg + 1], hval = arg[iarg + 2];
+      if (!utils::strmatch(hkey, "^[A-Za-z][A-Za-z0-9_]*$"))
+        error->all(FLERR, "Fix rod/drive header key {} must be a word of letters, digits and _", hkey);
+      if (hval.find_first_of("\n\r") != std::string::npos)
+        error->all(FLERR, "Fix rod/drive header value for {} must be one line", hkey);
+      user_header.emplace_back(hkey, hval);
+      iarg += 3;
     } else if (key == "run") {
       gp::need_args(FLERR, "fix rod/drive run", iarg, 2, narg, lmp);
       utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
@@ -427,6 +437,7 @@ void FixRodDrive::open_trace()
   }
   if (!mu_str.empty()) h.extra.emplace_back("mu", mu_str);
   if (!run_str.empty()) h.extra.emplace_back("run", run_str);
+  for (const auto &kv : user_header) h.extra.push_back(kv);
   h.extra.emplace_back("source", fmt::format("granpen fix rod/drive, LAMMPS {}", LAMMPS_VERSION));
   h.extra.emplace_back("surface", num(surface));
   h.extra.emplace_back("dt", num(update->dt));

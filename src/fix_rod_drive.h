@@ -17,6 +17,8 @@ FixStyle(rod/drive,FixRodDrive);
 
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace granpen {
 class TraceWriter;
@@ -78,6 +80,7 @@ class FixRodDrive : public Fix {
   double g_user;       // g for the trace header and t~; < 0: from fix gravity
   double d_user;       // rod diameter; < 0: measured
   std::string mu_str, run_str;
+  std::vector<std::pair<std::string, std::string>> user_header;
 
   // state kept through restart
   double elapsed;                  // time since the push began

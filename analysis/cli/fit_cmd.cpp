@@ -1,10 +1,386 @@
-// granpen fit: placeholder until implemented (prints an error, exit 2).
+// granpen fit TRACE...: the paper's observables of each force trace: the depth term
+// k_z and alpha, the transient peak, the fluctuation wavelength (core/trace_fit.h).
 #include "subcommands.h"
+#include "trace_fit.h"
+#include "trace_reader.h"
 
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
 
-int granpen::cli::fit(int, char **)
+namespace {
+
+namespace fs = std::filesystem;
+using granpen::TraceFit;
+
+const char *HELP =
+    "usage: granpen fit TRACE... [--zmin Z] [--zmax Z] [--mu MU] [--rho RHO] [--json FILE] [--csv FILE]\n"
+    "Fits each force trace (granpen-trace v1; SI traces are converted to cgs). A folder\n"
+    "argument stands for every *.csv in it. Per trace:\n"
+    "  k_z    slope of F on z over the window (linear least squares), with its standard error\n"
+    "  alpha  k_z / (mu rho_g g D^2), the paper's depth-term prefactor (35 +- 5 at 40 cm/s)\n"
+    "  peak   largest F and its depth over 0 < z < 0.7 R (R = D/2), the transient yield peak\n"
+    "  wavelength  dominant wavelength of F about the fit in the window (resampled to the\n"
+    "         median dz, mean removed, Hann window, FFT; the lowest two bins excluded);\n"
+    "         the paper sees fluctuations of wavelength about d_g\n"
+    "options:\n"
+    "  --zmin Z    window start, cm (default 3, the paper's z >= 3 cm)\n"
+    "  --zmax Z    window end, cm (default: the deepest depth of each trace)\n"
+    "  --mu MU     grain friction for alpha (default: header key mu, else 0.3)\n"
+    "  --rho RHO   grain density for alpha, g/cm^3 (default: header key rho_g, else 3.0)\n"
+    "              d_g comes from header key d_g, else 0.4 cm; the summary says which\n"
+    "              values were defaults\n"
+    "  --json FILE write the results as JSON (units cgs; undefined values are 0 with a\n"
+    "              false *_ok flag; unreadable traces under \"errors\")\n"
+    "  --csv FILE  write one CSV row per fitted trace\n"
+    "Exit status: 0 when every trace was read, 1 when a trace (or an output file) failed,\n"
+    "2 for a usage error. Quantities that cannot be fitted (e.g. a window without data)\n"
+    "are reported as undefined and do not change the exit status.\n";
+
+const double DEFAULT_MU = 0.3, DEFAULT_RHO = 3.0, DEFAULT_DG = 0.4;
+
+struct Result {
+  std::string file;
+  double v0 = 0, D = 0, g = 0;
+  double mu = 0, rho_g = 0, d_g = 0;
+  std::string mu_src, rho_src, dg_src;    // "option", "header" or "default"
+  TraceFit fit;
+};
+
+struct Failure {
+  std::string file, message;
+};
+
+bool parse_number(const char *text, double &out)
 {
-  std::fprintf(stderr, "granpen fit: not implemented yet\n");
+  char *end = nullptr;
+  errno = 0;
+  out = std::strtod(text, &end);
+  return *text && end && *end == '\0' && errno != ERANGE && std::isfinite(out);
+}
+
+// header value: returns false (message set) when present but not a number
+bool header_value(const granpen::Trace &tr, const char *key, double fallback, double &out,
+                  std::string &src, std::string &message)
+{
+  auto it = tr.keys.find(key);
+  if (it == tr.keys.end()) {
+    out = fallback;
+    src = "default";
+    return true;
+  }
+  if (!parse_number(it->second.c_str(), out)) {
+    message = tr.path + ": header key " + key + " = '" + it->second + "' is not a number";
+    return false;
+  }
+  src = "header";
+  return true;
+}
+
+std::string fmt(const char *f, double v)
+{
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, std::isfinite(v) ? v : 0.0);
+  return buf;
+}
+
+// JSON string with escapes; invalid UTF-8 bytes become U+FFFD
+std::string json_string(const std::string &s)
+{
+  std::string o = "\"";
+  for (std::size_t i = 0; i < s.size();) {
+    const unsigned char c = (unsigned char) s[i];
+    if (c == '"') o += "\\\"";
+    else if (c == '\\') o += "\\\\";
+    else if (c == '\n') o += "\\n";
+    else if (c == '\r') o += "\\r";
+    else if (c == '\t') o += "\\t";
+    else if (c == '\b') o += "\\b";
+    else if (c == '\f') o += "\\f";
+    else if (c < 0x20 || c == 0x7f) {
+      char u[8];
+      std::snprintf(u, sizeof u, "\\u%04x", (unsigned) c);
+      o += u;
+    }
+    else if (c < 0x80) o += (char) c;
+    else {
+      // a valid UTF-8 sequence passes through
+      const std::size_t len = (c >= 0xf0 && c <= 0xf4) ? 4 : (c >= 0xe0 && c <= 0xef) ? 3 : (c >= 0xc2 && c <= 0xdf) ? 2 : 0;
+      bool ok = len && i + len <= s.size();
+      for (std::size_t k = 1; ok && k < len; ++k) ok = ((unsigned char) s[i + k] & 0xc0) == 0x80;
+      if (ok) {    // no overlong forms, surrogates or code points above U+10FFFF
+        const unsigned char c1 = (unsigned char) s[i + 1];
+        ok = !(c == 0xe0 && c1 < 0xa0) && !(c == 0xed && c1 >= 0xa0) && !(c == 0xf0 && c1 < 0x90) &&
+             !(c == 0xf4 && c1 >= 0x90);
+      }
+      if (ok) {
+        o.append(s, i, len);
+        i += len;
+        continue;
+      }
+      o += "\\ufffd";
+    }
+    ++i;
+  }
+  return o + "\"";
+}
+
+std::string json_number(double v) { return fmt("%.10g", v); }
+
+std::string csv_field(const std::string &s)
+{
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string o = "\"";
+  for (char c : s) o += (c == '"') ? std::string("\"\"") : std::string(1, c);
+  return o + "\"";
+}
+
+std::string window_text(double zlo, double zhi)
+{
+  return std::isfinite(zhi) ? fmt("%g", zlo) + ".." + fmt("%g", zhi) + " cm" : "z >= " + fmt("%g", zlo) + " cm";
+}
+
+void print_result(const Result &r)
+{
+  const TraceFit &f = r.fit;
+  std::string line = r.file + ": v0 = " + fmt("%g", r.v0) + " cm/s";
+  if (f.slope_ok)
+    line += ", k_z = " + fmt("%.4g", f.k_z) + " +- " + fmt("%.2g", f.k_z_se) + " dyne/cm (z " +
+            fmt("%.3g", f.z_first) + ".." + fmt("%.3g", f.z_last) + " cm, " + std::to_string(f.n_window) + " rows)";
+  else
+    line += ", k_z undefined";
+  if (f.alpha_ok) line += ", alpha = " + fmt("%.3g", f.alpha) + " +- " + fmt("%.2g", f.alpha_se);
+  else line += ", alpha undefined";
+  if (f.peak_ok)
+    line += ", peak F = " + fmt("%.4g", f.peak_F) + " dyne at z = " + fmt("%.3g", f.peak_z) + " cm";
+  else line += ", peak undefined";
+  if (f.wavelength_ok)
+    line += ", wavelength = " + fmt("%.3g", f.wavelength) + " cm (" + fmt("%.3g", f.wavelength_dg) + " d_g)";
+  else line += ", wavelength undefined";
+  std::puts(line.c_str());
+
+  std::vector<std::string> defs;
+  if (r.mu_src == "default") defs.push_back("mu = " + fmt("%g", r.mu));
+  if (r.rho_src == "default") defs.push_back("rho_g = " + fmt("%g", r.rho_g) + " g/cm^3");
+  if (r.dg_src == "default") defs.push_back("d_g = " + fmt("%g", r.d_g) + " cm");
+  if (!defs.empty()) {
+    std::string d = "  defaults used (not in the header):";
+    for (std::size_t i = 0; i < defs.size(); ++i) d += (i ? ", " : " ") + defs[i];
+    std::puts(d.c_str());
+  }
+  for (const auto &n : f.notes) std::printf("  note: %s\n", n.c_str());
+}
+
+bool write_json(const std::string &path, const std::vector<Result> &results,
+                const std::vector<Failure> &failures, double zmin, double zmax)
+{
+  std::ofstream o(path, std::ios::binary);
+  if (!o) return false;
+  o << "{\n  \"tool\": \"granpen fit\",\n"
+    << "  \"units\": {\"z\": \"cm\", \"F\": \"dyne\", \"k_z\": \"dyne/cm\", \"v0\": \"cm/s\", "
+       "\"g\": \"cm/s^2\", \"rho_g\": \"g/cm^3\", \"wavelength\": \"cm\"},\n"
+    << "  \"window\": {\"zmin\": " << json_number(zmin)
+    << ", \"zmax\": " << (std::isfinite(zmax) ? json_number(zmax) : std::string("null")) << "},\n"
+    << "  \"traces\": [";
+  auto b = [](bool v) { return v ? "true" : "false"; };
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    const Result &r = results[i];
+    const TraceFit &f = r.fit;
+    o << (i ? ",\n" : "\n") << "    {\"file\": " << json_string(r.file) << ", \"v0\": " << json_number(r.v0)
+      << ", \"D\": " << json_number(r.D) << ", \"g\": " << json_number(r.g) << ",\n"
+      << "     \"mu\": " << json_number(r.mu) << ", \"mu_source\": " << json_string(r.mu_src)
+      << ", \"rho_g\": " << json_number(r.rho_g) << ", \"rho_g_source\": " << json_string(r.rho_src)
+      << ", \"d_g\": " << json_number(r.d_g) << ", \"d_g_source\": " << json_string(r.dg_src) << ",\n"
+      << "     \"zlo\": " << json_number(f.zlo) << ", \"zhi\": " << json_number(f.zhi)
+      << ", \"n_window\": " << f.n_window << ", \"z_first\": " << json_number(f.z_first)
+      << ", \"z_last\": " << json_number(f.z_last) << ",\n"
+      << "     \"slope_ok\": " << b(f.slope_ok) << ", \"k_z\": " << json_number(f.k_z)
+      << ", \"k_z_se\": " << json_number(f.k_z_se) << ", \"intercept\": " << json_number(f.intercept)
+      << ", \"intercept_se\": " << json_number(f.intercept_se) << ", \"rms\": " << json_number(f.rms) << ",\n"
+      << "     \"alpha_ok\": " << b(f.alpha_ok) << ", \"alpha\": " << json_number(f.alpha)
+      << ", \"alpha_se\": " << json_number(f.alpha_se) << ",\n"
+      << "     \"peak_ok\": " << b(f.peak_ok) << ", \"n_peak\": " << f.n_peak
+      << ", \"peak_zmax\": " << json_number(f.peak_zmax) << ", \"peak_F\": " << json_number(f.peak_F)
+      << ", \"peak_z\": " << json_number(f.peak_z) << ",\n"
+      << "     \"wavelength_ok\": " << b(f.wavelength_ok) << ", \"wavelength\": " << json_number(f.wavelength)
+      << ", \"wavelength_d_g\": " << json_number(f.wavelength_dg) << ", \"spectrum\": {\"dz\": "
+      << json_number(f.spectrum.dz) << ", \"n\": " << f.spectrum.n << ", \"length\": "
+      << json_number(f.spectrum.length) << ", \"bin\": " << f.spectrum.bin
+      << ", \"power_fraction\": " << json_number(f.spectrum.power_fraction) << "},\n"
+      << "     \"notes\": [";
+    for (std::size_t k = 0; k < f.notes.size(); ++k) o << (k ? ", " : "") << json_string(f.notes[k]);
+    o << "]}";
+  }
+  o << (results.empty() ? "],\n" : "\n  ],\n") << "  \"errors\": [";
+  for (std::size_t i = 0; i < failures.size(); ++i)
+    o << (i ? ",\n" : "\n") << "    {\"file\": " << json_string(failures[i].file)
+      << ", \"message\": " << json_string(failures[i].message) << "}";
+  o << (failures.empty() ? "]\n}\n" : "\n  ]\n}\n");
+  return (bool) o.flush();
+}
+
+bool write_csv(const std::string &path, const std::vector<Result> &results)
+{
+  std::ofstream o(path, std::ios::binary);
+  if (!o) return false;
+  o << "file,v0,D,g,mu,mu_source,rho_g,rho_g_source,d_g,d_g_source,zlo,zhi,n_window,z_first,z_last,"
+       "slope_ok,k_z,k_z_se,intercept,intercept_se,rms,alpha_ok,alpha,alpha_se,"
+       "peak_ok,peak_F,peak_z,wavelength_ok,wavelength,wavelength_d_g,spectrum_length,power_fraction\n";
+  for (const auto &r : results) {
+    const TraceFit &f = r.fit;
+    const auto n = [](double v) { return json_number(v); };
+    o << csv_field(r.file) << ',' << n(r.v0) << ',' << n(r.D) << ',' << n(r.g) << ',' << n(r.mu) << ','
+      << r.mu_src << ',' << n(r.rho_g) << ',' << r.rho_src << ',' << n(r.d_g) << ',' << r.dg_src << ','
+      << n(f.zlo) << ',' << n(f.zhi) << ',' << f.n_window << ',' << n(f.z_first) << ',' << n(f.z_last) << ','
+      << f.slope_ok << ',' << n(f.k_z) << ',' << n(f.k_z_se) << ',' << n(f.intercept) << ','
+      << n(f.intercept_se) << ',' << n(f.rms) << ',' << f.alpha_ok << ',' << n(f.alpha) << ','
+      << n(f.alpha_se) << ',' << f.peak_ok << ',' << n(f.peak_F) << ',' << n(f.peak_z) << ','
+      << f.wavelength_ok << ',' << n(f.wavelength) << ',' << n(f.wavelength_dg) << ','
+      << n(f.spectrum.length) << ',' << n(f.spectrum.power_fraction) << '\n';
+  }
+  return (bool) o.flush();
+}
+
+int usage_error(const std::string &what)
+{
+  std::fprintf(stderr, "granpen fit: %s\n(granpen fit --help for usage)\n", what.c_str());
   return 2;
+}
+
+}    // namespace
+
+int granpen::cli::fit(int argc, char **argv)
+{
+  if (argc < 1) {
+    std::fputs(HELP, stderr);
+    return 2;
+  }
+  double zmin = 3.0, zmax = std::numeric_limits<double>::infinity();
+  double mu_opt = 0.0, rho_opt = 0.0;
+  bool have_mu = false, have_rho = false;
+  std::string json_path, csv_path;
+  std::vector<std::string> inputs;
+
+  for (int i = 0; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a == "--help" || a == "-h") {
+      std::fputs(HELP, stdout);
+      return 0;
+    }
+    if (a.size() > 2 && a.compare(0, 2, "--") == 0) {
+      std::string name = a, value;
+      bool inline_value = false;
+      const auto eq = a.find('=');
+      if (eq != std::string::npos) {
+        name = a.substr(0, eq);
+        value = a.substr(eq + 1);
+        inline_value = true;
+      }
+      if (name != "--zmin" && name != "--zmax" && name != "--mu" && name != "--rho" && name != "--json" &&
+          name != "--csv")
+        return usage_error("unknown option '" + name + "'");
+      if (!inline_value) {
+        if (i + 1 >= argc) return usage_error(name + " needs a value");
+        value = argv[++i];
+      }
+      if (name == "--json" || name == "--csv") {
+        if (value.empty()) return usage_error(name + " needs a file name");
+        (name == "--json" ? json_path : csv_path) = value;
+        continue;
+      }
+      double v;
+      if (!parse_number(value.c_str(), v)) return usage_error(name + " '" + value + "' is not a number");
+      if (name == "--zmin") zmin = v;
+      else if (name == "--zmax") zmax = v;
+      else if (name == "--mu") mu_opt = v, have_mu = true;
+      else rho_opt = v, have_rho = true;
+      continue;
+    }
+    inputs.push_back(a);
+  }
+  if (inputs.empty()) return usage_error("no trace given");
+  if (!(zmin < zmax)) return usage_error("--zmin must be below --zmax");
+  if (have_mu && !(mu_opt > 0)) return usage_error("--mu must be positive");
+  if (have_rho && !(rho_opt > 0)) return usage_error("--rho must be positive");
+
+  std::vector<Result> results;
+  std::vector<Failure> failures;
+
+  // expand folders into their *.csv files (sorted)
+  std::vector<std::string> files;
+  for (const auto &in : inputs) {
+    std::error_code ec;
+    if (fs::is_directory(in, ec)) {
+      std::vector<std::string> found;
+      for (const auto &e : fs::directory_iterator(in, ec))
+        if (e.path().extension() == ".csv" && e.is_regular_file(ec)) found.push_back(e.path().string());
+      if (ec) {
+        failures.push_back({in, in + ": cannot list folder: " + ec.message()});
+        continue;
+      }
+      std::sort(found.begin(), found.end());
+      if (found.empty()) failures.push_back({in, in + ": folder holds no *.csv file"});
+      files.insert(files.end(), found.begin(), found.end());
+    } else {
+      files.push_back(in);
+    }
+  }
+  for (const auto &f : failures) std::fprintf(stderr, "granpen fit: %s\n", f.message.c_str());
+
+  std::printf("granpen fit: window %s; %zu trace%s\n", window_text(zmin, zmax).c_str(), files.size(),
+              files.size() == 1 ? "" : "s");
+  for (const auto &file : files) {
+    Result r;
+    r.file = file;
+    try {
+      const Trace tr = to_cgs(read_trace(file));
+      std::string msg;
+      if (!header_value(tr, "mu", DEFAULT_MU, r.mu, r.mu_src, msg) ||
+          !header_value(tr, "rho_g", DEFAULT_RHO, r.rho_g, r.rho_src, msg) ||
+          !header_value(tr, "d_g", DEFAULT_DG, r.d_g, r.dg_src, msg))
+        throw InputError(msg);
+      if (have_mu) r.mu = mu_opt, r.mu_src = "option";
+      if (have_rho) r.rho_g = rho_opt, r.rho_src = "option";
+      r.v0 = tr.v0;
+      r.D = tr.D;
+      r.g = tr.g;
+      TraceFitParams p;
+      p.zlo = zmin;
+      p.zhi = zmax;
+      p.v0 = tr.v0;
+      p.D = tr.D;
+      p.g = tr.g;
+      p.mu = r.mu;
+      p.rho_g = r.rho_g;
+      p.d_g = r.d_g;
+      r.fit = fit_trace(tr.z, tr.F, p);
+    } catch (std::exception &e) {
+      std::fprintf(stderr, "granpen fit: %s\n", e.what());
+      failures.push_back({file, e.what()});
+      continue;
+    }
+    print_result(r);
+    results.push_back(r);
+  }
+
+  int status = failures.empty() ? 0 : 1;
+  if (!failures.empty())
+    std::printf("granpen fit: %zu input%s failed (see above)\n", failures.size(), failures.size() == 1 ? "" : "s");
+  if (!json_path.empty()) {
+    if (write_json(json_path, results, failures, zmin, zmax)) std::printf("wrote %s\n", json_path.c_str());
+    else std::fprintf(stderr, "granpen fit: cannot write %s\n", json_path.c_str()), status = 1;
+  }
+  if (!csv_path.empty()) {
+    if (write_csv(csv_path, results)) std::printf("wrote %s\n", csv_path.c_str());
+    else std::fprintf(stderr, "granpen fit: cannot write %s\n", csv_path.c_str()), status = 1;
+  }
+  return status;
 }

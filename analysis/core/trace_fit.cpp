@@ -1,0 +1,212 @@
+/* ----------------------------------------------------------------------
+   granpen analysis: observables of one force trace (see trace_fit.h).
+------------------------------------------------------------------------- */
+
+#include "trace_fit.h"
+
+#include "linear_fit.h"
+
+#include <unsupported/Eigen/FFT>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <numeric>
+#include <stdexcept>
+#include <utility>
+
+namespace granpen {
+
+namespace {
+
+constexpr double PI = 3.14159265358979323846;
+
+std::string fmt(double v)
+{
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+}    // namespace
+
+Wavelength dominant_wavelength(const std::vector<double> &z, const std::vector<double> &y)
+{
+  Wavelength w;
+  if (z.size() != y.size()) throw std::invalid_argument("dominant_wavelength: z and y differ in length");
+
+  // sort by z, average repeated depths
+  std::vector<std::pair<double, double>> pts;
+  pts.reserve(z.size());
+  for (std::size_t i = 0; i < z.size(); ++i)
+    if (std::isfinite(z[i]) && std::isfinite(y[i])) pts.emplace_back(z[i], y[i]);
+  std::sort(pts.begin(), pts.end());
+  std::vector<double> zs, ys;
+  for (std::size_t i = 0; i < pts.size();) {
+    std::size_t j = i;
+    double sum = 0.0;
+    while (j < pts.size() && pts[j].first == pts[i].first) sum += pts[j++].second;
+    zs.push_back(pts[i].first);
+    ys.push_back(sum / (double) (j - i));
+    i = j;
+  }
+  if (zs.size() < 8) {
+    w.note = "too few distinct depths (" + std::to_string(zs.size()) + ", at least 8 needed)";
+    return w;
+  }
+
+  // uniform grid of spacing the median dz
+  std::vector<double> dzs(zs.size() - 1);
+  for (std::size_t i = 0; i + 1 < zs.size(); ++i) dzs[i] = zs[i + 1] - zs[i];
+  std::sort(dzs.begin(), dzs.end());
+  const std::size_t m = dzs.size();
+  const double dz = (m % 2) ? dzs[m / 2] : 0.5 * (dzs[m / 2 - 1] + dzs[m / 2]);
+  const double span = zs.back() - zs.front();
+  const std::size_t n = (std::size_t) std::floor(span / dz * (1.0 + 1e-12)) + 1;
+  w.dz = dz;
+  w.n = n;
+  w.length = (double) n * dz;
+  if (n < 8) {
+    w.note = "too few grid points (" + std::to_string(n) + ", at least 8 needed)";
+    return w;
+  }
+  std::vector<double> grid(n);
+  std::size_t j = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double zi = std::min(zs.front() + (double) i * dz, zs.back());
+    while (j + 2 < zs.size() && zs[j + 1] < zi) ++j;
+    const double u = (zi - zs[j]) / (zs[j + 1] - zs[j]);
+    grid[i] = ys[j] + std::clamp(u, 0.0, 1.0) * (ys[j + 1] - ys[j]);
+  }
+
+  // mean removed, Hann window, power spectrum
+  const double mean = std::accumulate(grid.begin(), grid.end(), 0.0) / (double) n;
+  for (std::size_t i = 0; i < n; ++i)
+    grid[i] = (grid[i] - mean) * 0.5 * (1.0 - std::cos(2.0 * PI * (double) i / (double) (n - 1)));
+  Eigen::FFT<double> fft;
+  std::vector<std::complex<double>> spec;
+  fft.fwd(spec, grid);
+  const std::size_t kmax = n / 2;
+  std::vector<double> P(kmax + 1);
+  for (std::size_t k = 0; k <= kmax; ++k) P[k] = std::norm(spec[k]);
+  double total = 0.0;
+  for (std::size_t k = 1; k <= kmax; ++k) total += P[k];
+  if (!(total > 0.0)) {
+    w.note = "no fluctuations (zero power)";
+    return w;
+  }
+
+  // largest local maximum at k >= 2
+  std::size_t best = 0;
+  for (std::size_t k = 2; k <= kmax; ++k) {
+    const bool rises = P[k] > P[k - 1];
+    const bool falls = (k == kmax) || P[k] >= P[k + 1];
+    if (rises && falls && (best == 0 || P[k] > P[best])) best = k;
+  }
+  if (!best) {
+    w.note = "the power spectrum has no peak above its lowest two bins";
+    return w;
+  }
+  double delta = 0.0;
+  if (best < kmax && P[best - 1] > 0.0 && P[best + 1] > 0.0) {
+    const double lm = std::log(P[best - 1]), l0 = std::log(P[best]), lp = std::log(P[best + 1]);
+    const double den = lm - 2.0 * l0 + lp;
+    if (den < 0.0) delta = std::clamp(0.5 * (lm - lp) / den, -0.5, 0.5);
+  }
+  w.ok = true;
+  w.bin = best;
+  w.wavelength = w.length / ((double) best + delta);
+  w.power_fraction = P[best] / total;
+  return w;
+}
+
+TraceFit fit_trace(const std::vector<double> &z, const std::vector<double> &F, const TraceFitParams &p)
+{
+  if (z.size() != F.size()) throw std::invalid_argument("fit_trace: z and F differ in length");
+  TraceFit r;
+  r.params = p;
+  double zdeep = 0.0, zshallow = 0.0;
+  bool any = false;
+  for (double v : z)
+    if (std::isfinite(v)) {
+      zdeep = any ? std::max(zdeep, v) : v;
+      zshallow = any ? std::min(zshallow, v) : v;
+      any = true;
+    }
+  r.zlo = std::isfinite(p.zlo) ? p.zlo : zshallow;
+  r.zhi = std::isfinite(p.zhi) ? p.zhi : zdeep;
+
+  // depth term over the window
+  std::vector<double> zw, Fw;
+  for (std::size_t i = 0; i < z.size(); ++i)
+    if (z[i] >= p.zlo && z[i] <= p.zhi && std::isfinite(F[i])) {
+      zw.push_back(z[i]);
+      Fw.push_back(F[i]);
+    }
+  r.n_window = zw.size();
+  if (!zw.empty()) {
+    r.z_first = *std::min_element(zw.begin(), zw.end());
+    r.z_last = *std::max_element(zw.begin(), zw.end());
+  }
+  LinearFit lf;
+  try {
+    lf = linear_fit(zw, Fw);
+    r.slope_ok = true;
+    r.k_z = lf.b;
+    r.k_z_se = lf.se_b;
+    r.intercept = lf.a;
+    r.intercept_se = lf.se_a;
+    r.rms = lf.rms;
+  } catch (std::invalid_argument &) {
+    r.notes.push_back("k_z undefined: " + std::to_string(zw.size()) + " points in the window z = " +
+                      fmt(p.zlo) + ".." + (std::isfinite(p.zhi) ? fmt(p.zhi) : std::string("end")) +
+                      " cm (at least 3 at distinct depths needed; deepest z = " + fmt(zdeep) + " cm)");
+  }
+
+  // alpha = k_z / (mu rho_g g D^2)
+  const double scale = p.mu * p.rho_g * p.g * p.D * p.D;
+  if (r.slope_ok && scale > 0.0 && std::isfinite(scale)) {
+    r.alpha_ok = true;
+    r.alpha = r.k_z / scale;
+    r.alpha_se = r.k_z_se / scale;
+  } else if (r.slope_ok) {
+    r.notes.push_back("alpha undefined: mu rho_g g D^2 = " + fmt(scale) + " is not positive");
+  } else {
+    r.notes.push_back("alpha undefined: no k_z");
+  }
+
+  // transient peak over 0 < z < 0.7 R
+  r.peak_zmax = 0.7 * 0.5 * p.D;
+  for (std::size_t i = 0; i < z.size(); ++i)
+    if (z[i] > 0.0 && z[i] < r.peak_zmax && std::isfinite(F[i])) {
+      if (!r.n_peak || F[i] > r.peak_F) {
+        r.peak_F = F[i];
+        r.peak_z = z[i];
+      }
+      ++r.n_peak;
+    }
+  r.peak_ok = r.n_peak > 0;
+  if (!r.peak_ok)
+    r.notes.push_back("peak undefined: no points at 0 < z < 0.7 R = " + fmt(r.peak_zmax) + " cm");
+
+  // fluctuation wavelength of the residuals about the fit
+  if (r.slope_ok) {
+    std::vector<double> res(zw.size());
+    for (std::size_t i = 0; i < zw.size(); ++i) res[i] = Fw[i] - (lf.a + lf.b * zw[i]);
+    r.spectrum = dominant_wavelength(zw, res);
+    r.wavelength_ok = r.spectrum.ok;
+    if (r.spectrum.ok) {
+      r.wavelength = r.spectrum.wavelength;
+      if (p.d_g > 0.0) r.wavelength_dg = r.wavelength / p.d_g;
+    } else {
+      r.notes.push_back("wavelength undefined: " + r.spectrum.note);
+    }
+  } else {
+    r.spectrum.note = "no linear fit in the window";
+    r.notes.push_back("wavelength undefined: no linear fit in the window");
+  }
+  return r;
+}
+
+}    // namespace granpen

@@ -1,0 +1,40 @@
+// granpen sweep: runs a planned sweep with lmp_granpen: pours each bed once, branches
+// every push from its saved bed, runs up to `jobs` processes at once, shows progress,
+// resumes what an interrupted sweep left (finished runs skipped, pushes continued from
+// their checkpoints), and keeps a JSON manifest of every run. Processes are started
+// with argument vectors (fork/execv): no value of the sweep file reaches a shell.
+#ifndef GRANPEN_SWEEP_RUNNER_H
+#define GRANPEN_SWEEP_RUNNER_H
+
+#include "sweep_spec.h"
+
+#include <string>
+
+namespace granpen {
+
+struct RunnerOptions {
+  std::string lmp;         // lmp_granpen
+  std::string mpirun;      // empty: run lmp_granpen directly
+  int ranks = 1;           // MPI ranks per run (with mpirun)
+  std::string inputs;      // the inputs/ folder (decks, presets, observe sets)
+  std::string out_root;    // the sweep folder is out_root/NAME
+  int jobs = 1;            // runs at once
+  int checkpoint = 5000;   // push checkpoint interval (steps)
+  int only_index = -1;     // run just this planned run (as a SLURM array task does)
+  double progress_seconds = 5.0;
+};
+
+// Returns 0 when every run is done, 1 when any failed (all others still run).
+int run_sweep(const SweepSpec &spec, const RunnerOptions &opt);
+
+// Writes a script that submits the sweep to SLURM as two job arrays, the pours and
+// then (after them) the pushes, each task running `granpen-cli sweep SPEC --only K`.
+void write_slurm_script(const SweepSpec &spec, const RunnerOptions &opt, const std::string &cli,
+                        const std::string &file);
+
+// JSON string literal with escapes
+std::string json_string(const std::string &s);
+
+}    // namespace granpen
+
+#endif

@@ -1,0 +1,184 @@
+// granpen sweep: parsing, validation and planning of sweep files.
+#include "sweep_spec.h"
+
+#include "trace_reader.h"    // InputError
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <set>
+#include <sstream>
+
+namespace granpen {
+
+namespace {
+
+[[noreturn]] void fail(const std::string &path, int line, const std::string &what)
+{
+  throw InputError(path + ":" + std::to_string(line) + ": " + what);
+}
+
+std::string trim(const std::string &s)
+{
+  auto a = s.find_first_not_of(" \t\r");
+  if (a == std::string::npos) return "";
+  return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
+}
+
+std::vector<std::string> words(const std::string &s)
+{
+  std::istringstream in(s);
+  std::vector<std::string> out;
+  std::string w;
+  while (in >> w) out.push_back(w);
+  return out;
+}
+
+}    // namespace
+
+bool safe_name(const std::string &s)
+{
+  if (s.empty() || s.size() > 64 || s[0] == '-') return false;
+  for (unsigned char c : s)
+    if (!(std::isalnum(c) || c == '_' || c == '-')) return false;
+  return true;
+}
+
+bool positive_number(const std::string &s)
+{
+  if (s.empty() || s.size() > 32) return false;
+  for (unsigned char c : s)
+    if (!(std::isdigit(c) || c == '.' || c == 'e' || c == 'E' || c == '-' || c == '+')) return false;
+  if (!std::isdigit((unsigned char) s[0]) && s[0] != '.') return false;
+  char *end = nullptr;
+  double v = std::strtod(s.c_str(), &end);
+  return end == s.c_str() + s.size() && std::isfinite(v) && v > 0.0;
+}
+
+SweepSpec parse_sweep(const std::string &text, const std::string &path,
+                      bool (*preset_exists)(const std::string &),
+                      bool (*observe_exists)(const std::string &))
+{
+  SweepSpec spec;
+  spec.path = path;
+  std::istringstream in(text);
+  std::string raw;
+  int lineno = 0;
+  std::map<std::string, int> seen;
+  std::map<std::string, int> where;
+  while (std::getline(in, raw)) {
+    ++lineno;
+    std::string line = raw.substr(0, raw.find('#'));
+    line = trim(line);
+    if (line.empty()) continue;
+    auto eq = line.find('=');
+    if (eq == std::string::npos) fail(path, lineno, "expected 'key = value', found '" + line + "'");
+    const std::string key = trim(line.substr(0, eq));
+    const std::vector<std::string> vals = words(line.substr(eq + 1));
+    if (seen.count(key))
+      fail(path, lineno, "key '" + key + "' given again (first on line " + std::to_string(seen[key]) + ")");
+    seen[key] = lineno;
+    if (vals.empty()) fail(path, lineno, "key '" + key + "' has no value");
+
+    auto numbers = [&](std::vector<std::string> &dst) {
+      std::set<std::string> unique;
+      for (const auto &v : vals) {
+        if (!positive_number(v))
+          fail(path, lineno, "'" + key + "' value '" + v + "' is not a positive number");
+        if (!unique.insert(v).second) fail(path, lineno, "'" + key + "' lists " + v + " twice");
+        dst.push_back(v);
+      }
+    };
+    auto one = [&]() -> const std::string & {
+      if (vals.size() != 1) fail(path, lineno, "'" + key + "' takes one value");
+      return vals[0];
+    };
+
+    if (key == "name") {
+      if (!safe_name(one()))
+        fail(path, lineno, "name '" + vals[0] + "' may use only letters, digits, _ and - (it names a folder)");
+      spec.name = vals[0];
+    } else if (key == "preset") {
+      for (const auto &v : vals) {
+        if (!safe_name(v)) fail(path, lineno, "preset '" + v + "' is not a preset name");
+        if (preset_exists && !preset_exists(v))
+          fail(path, lineno, "unknown preset '" + v + "' (no inputs/presets/" + v + ".lmp)");
+        spec.presets.push_back(v);
+      }
+    } else if (key == "mu") {
+      numbers(spec.mu);
+    } else if (key == "seeds") {
+      for (const auto &v : vals) {
+        if (v.empty() || v.size() > 9 || v.find_first_not_of("0123456789") != std::string::npos || v[0] == '0')
+          fail(path, lineno, "seed '" + v + "' is not a positive integer below 1e9");
+      }
+      numbers(spec.seeds);
+    } else if (key == "v0") {
+      numbers(spec.v0);
+    } else if (key == "g") {
+      numbers(spec.g);
+    } else if (key == "D") {
+      numbers(spec.D);
+    } else if (key == "depth") {
+      if (!positive_number(one())) fail(path, lineno, "depth '" + vals[0] + "' is not a positive number");
+      spec.depth = vals[0];
+    } else if (key == "observe") {
+      if (!safe_name(one())) fail(path, lineno, "observe '" + vals[0] + "' is not a name");
+      if (observe_exists && !observe_exists(vals[0]))
+        fail(path, lineno, "unknown observe set '" + vals[0] + "' (no inputs/observe/" + vals[0] + ".lmp)");
+      spec.observe = vals[0];
+    } else {
+      fail(path, lineno, "unknown key '" + key + "' (known: name preset mu seeds v0 g D depth observe)");
+    }
+  }
+  if (spec.name.empty()) fail(path, lineno, "missing 'name'");
+  if (spec.presets.empty()) fail(path, lineno, "missing 'preset'");
+  if (spec.v0.empty()) fail(path, lineno, "missing 'v0'");
+  if (spec.seeds.empty()) spec.seeds = {"1"};
+  return spec;
+}
+
+std::vector<PlannedRun> plan_sweep(const SweepSpec &spec)
+{
+  std::vector<PlannedRun> pours, pushes;
+  const std::vector<std::string> mus = spec.mu.empty() ? std::vector<std::string>{""} : spec.mu;
+  const std::vector<std::string> gs = spec.g.empty() ? std::vector<std::string>{""} : spec.g;
+  const std::vector<std::string> Ds = spec.D.empty() ? std::vector<std::string>{""} : spec.D;
+  for (const auto &p : spec.presets)
+    for (const auto &mu : mus)
+      for (const auto &seed : spec.seeds) {
+        PlannedRun bed{PlannedRun::POUR};
+        bed.preset = p;
+        bed.mu = mu;
+        bed.seed = seed;
+        bed.id = "bed_" + p + (mu.empty() ? "" : "_mu" + mu) + "_s" + seed;
+        pours.push_back(bed);
+        for (const auto &v : spec.v0)
+          for (const auto &g : gs)
+            for (const auto &D : Ds) {
+              PlannedRun push = bed;
+              push.kind = PlannedRun::PUSH;
+              push.bed = bed.id;
+              push.v0 = v;
+              push.g = g;
+              push.D = D;
+              push.depth = spec.depth;
+              push.id = p + (mu.empty() ? "" : "_mu" + mu) + "_s" + seed + "_v" + v + (g.empty() ? "" : "_g" + g) +
+                        (D.empty() ? "" : "_D" + D);
+              pushes.push_back(push);
+            }
+      }
+  pours.insert(pours.end(), pushes.begin(), pushes.end());
+  return pours;
+}
+
+PushAction push_action(bool done_marker, bool trace_exists, bool checkpoint_exists)
+{
+  if (done_marker && trace_exists) return PushAction::SKIP_DONE;
+  if (checkpoint_exists && trace_exists) return PushAction::RESUME;
+  if (trace_exists) return PushAction::RESTART_FRESH;    // the runner keeps the old trace aside
+  return PushAction::START;
+}
+
+}    // namespace granpen

@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# An interrupted sweep resumes cleanly: after a full tiny sweep, one push is made to look
+# interrupted (its done marker removed, its trace cut after the checkpoint and a few rows
+# of a "later" run appended), and the sweep is run again. It must resume that push from its
+# checkpoint, skip the rest, and leave a valid trace agreeing with the original one.
+#   resume_interrupted.sh CLI TRACE_AGREE SWEEP_FILE OUT
+set -euo pipefail
+CLI=$1 AGREE=$2 SPEC=$3 OUT=$4
+rm -rf "$OUT"
+"$CLI" sweep "$SPEC" --out "$OUT" --jobs 2 --checkpoint 4000 | tail -2
+dir="$OUT/tiny_demo/traces"
+t="$dir/tiny_mu0.3_s1_v100_D2.0.csv"
+cp "$t" "$OUT/original.csv"
+[ -f "$t.a.restart" ] || { echo "no checkpoint was written"; exit 1; }
+rm "$t.done"
+"$CLI" sweep "$SPEC" --out "$OUT" --jobs 2 --checkpoint 4000 | tee "$OUT/second.txt"
+grep -q "(4 already done)" "$OUT/second.txt" || { echo "finished runs were not skipped"; exit 1; }
+grep -q "start tiny_mu0.3_s1_v100_D2.0 (resumed from" "$OUT/second.txt" || { echo "the push was not resumed"; exit 1; }
+grep -q "replacing [0-9]* rows" "$OUT/tiny_demo/logs/tiny_mu0.3_s1_v100_D2.0.log" || { echo "no rows were replaced"; exit 1; }
+"$AGREE" "$OUT/original.csv" "$t" --rtol 1e-4 --min-rows 100
