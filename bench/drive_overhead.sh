@@ -5,20 +5,11 @@
 # and the ratio of median loop times per step is reported. Target: <= 1.02.
 #   bench/drive_overhead.sh [LMP_GRANPEN] [REPEAT]      (./granpen build first)
 set -euo pipefail
-HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-ROOT=$(dirname "$HERE")
-LMP=$(realpath "${1:-$ROOT/build/lmp_granpen}")
+LMP=$(realpath "${1:-$(dirname "${BASH_SOURCE[0]}")/../build/lmp_granpen}")
 REPEAT=${2:-3}
-WORK=${GRANPEN_BENCH_WORK:-$ROOT/runs/bench}
-mkdir -p "$WORK"; cd "$WORK"
-export OMP_NUM_THREADS=1
-
-if [ ! -f bed_bench.restart ]; then
-  echo "pouring the bench bed (once, about a minute or more)"
-  "$LMP" -in "$ROOT/inputs/in.pour" -var inputs "$ROOT/inputs" -var preset bench -var out bed_bench \
-    -log pour.log -screen none
-fi
-steps_of() { awk '/^Loop time of/ {t=$4; n=$9} END {printf "%.9g\n", t/n}' "$1"; }
+. "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+ensure_bench_bed
+cd "$WORK"
 # the "Modify" row of LAMMPS's timing breakdown (fixes: integration, drive, output), per step
 modify_of() { awk -F'|' '/^Loop time of/ {n=$0; sub(/.* for /,"",n); sub(/ steps.*/,"",n)} /^Modify/ {m=$3} END {printf "%.9g\n", m/n}' "$1"; }
 
@@ -26,17 +17,16 @@ granpen=() stock=() ratios=() mod_g=() mod_s=()
 for r in $(seq 1 "$REPEAT"); do
   "$LMP" -in "$ROOT/inputs/in.push" -var inputs "$ROOT/inputs" -var preset bench -var bed bed_bench.restart \
     -var v0 100 -var trace granpen_$r.csv -log granpen_$r.log -screen none
-  granpen+=("$(steps_of granpen_$r.log)")
+  granpen+=("$(per_step granpen_$r.log)")
   "$LMP" -in "$HERE/in.push_stock" -var inputs "$ROOT/inputs" -var bed bed_bench.restart -var v0 100 \
     -var nsteps "$(awk '/^Loop time of/ {n=$9} END {print n}' granpen_$r.log)" \
     -var trace stock_$r.txt -log stock_$r.log -screen none
-  stock+=("$(steps_of stock_$r.log)")
+  stock+=("$(per_step stock_$r.log)")
   mod_g+=("$(modify_of granpen_$r.log)") mod_s+=("$(modify_of stock_$r.log)")
-  ratios+=("$(awk -v a="${granpen[-1]}" -v b="${stock[-1]}" 'BEGIN{printf "%.4f", a/b}')")
+  ratios+=("$(ratio "${granpen[-1]}" "${stock[-1]}")")
   echo "round $r/$REPEAT: rod/drive ${granpen[-1]} s/step, stock ${stock[-1]} s/step, ratio ${ratios[-1]}" \
        "(Modify section: ${mod_g[-1]} vs ${mod_s[-1]} s/step)"
 done
-median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2 ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2)}'; }
 mg=$(median "${granpen[@]}") ms=$(median "${stock[@]}")
 atoms=$(awk '/^Loop time of/ {print $12}' granpen_1.log | tail -1)
 sorted=$(printf '%s\n' "${ratios[@]}" | sort -g | tr '\n' ' ')

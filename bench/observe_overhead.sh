@@ -7,21 +7,11 @@
 # Targets: <= 1.03 and <= 1.10.
 #   bench/observe_overhead.sh [LMP_GRANPEN] [REPEAT]      (./granpen build first)
 set -euo pipefail
-HERE=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
-ROOT=$(dirname "$HERE")
-LMP=$(realpath "${1:-$ROOT/build/lmp_granpen}")
+LMP=$(realpath "${1:-$(dirname "${BASH_SOURCE[0]}")/../build/lmp_granpen}")
 REPEAT=${2:-3}
-WORK=${GRANPEN_BENCH_WORK:-$ROOT/runs/bench}
-mkdir -p "$WORK"; cd "$WORK"
-export OMP_NUM_THREADS=1
-
-if [ ! -f bed_bench.restart ]; then
-  echo "pouring the bench bed (once, about a minute)"
-  "$LMP" -in "$ROOT/inputs/in.pour" -var inputs "$ROOT/inputs" -var preset bench -var out bed_bench \
-    -log pour.log -screen none
-fi
-per_step() { awk '/^Loop time of/ {t=$4; n=$9} END {printf "%.9g\n", t/n}' "$1"; }
-median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2 ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2)}'; }
+. "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+ensure_bench_bed
+cd "$WORK"
 push() {    # push NAME OBSERVE-FILE
   "$LMP" -in "$ROOT/inputs/in.push" -var inputs "$ROOT/inputs" -var preset bench -var bed bed_bench.restart \
     -var v0 100 -var trace "obs_$1.csv" -var observe "$ROOT/inputs/observe/$2" -log "obs_$1.log" -screen none
@@ -32,8 +22,8 @@ for r in $(seq 1 "$REPEAT"); do
   base=$(push "none_$r" none.lmp)
   flow=$(push "flow_$r" flow.lmp)
   vor=$(push "voronoi_$r" flow_voronoi.lmp)
-  r_flow+=("$(awk -v a="$flow" -v b="$base" 'BEGIN{printf "%.4f", a/b}')")
-  r_vor+=("$(awk -v a="$vor" -v b="$base" 'BEGIN{printf "%.4f", a/b}')")
+  r_flow+=("$(ratio "$flow" "$base")")
+  r_vor+=("$(ratio "$vor" "$base")")
   echo "round $r/$REPEAT: s/step none $base, flow+momentum $flow (${r_flow[-1]}), +voronoi $vor (${r_vor[-1]})"
 done
 echo "flow+momentum every 100 steps: ratios $(printf '%s\n' "${r_flow[@]}" | sort -g | tr '\n' ' ')median $(median "${r_flow[@]}") (target <= 1.03)"

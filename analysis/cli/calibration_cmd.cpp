@@ -297,31 +297,33 @@ std::string run_gnuplot(const fs::path &dir, const std::string &script, bool &mi
   }
   if (pid == 0) {
     close(fds[0]);
-    int err = 0;
-    if (chdir(where.c_str()) != 0) err = errno;
+    int msg[2] = {0, 0};    // {stage: 0 chdir, 1 exec; errno}
+    if (chdir(where.c_str()) != 0) msg[1] = errno;
     else {
       execvp(args[0], args.data());
-      err = errno;
+      msg[0] = 1;
+      msg[1] = errno;
     }
-    if (write(fds[1], &err, sizeof err) < 0) {
+    if (write(fds[1], msg, sizeof msg) < 0) {
     }
     _exit(127);
   }
   close(fds[1]);
-  int child_err = 0;
+  int msg[2] = {0, 0};
   ssize_t got;
-  do got = read(fds[0], &child_err, sizeof child_err);
+  do got = read(fds[0], msg, sizeof msg);
   while (got < 0 && errno == EINTR);
   close(fds[0]);
   int status = 0;
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
-  if (got == (ssize_t) sizeof child_err) {
-    if (child_err == ENOENT) {
+  if (got == (ssize_t) sizeof msg) {
+    if (msg[0] == 0) return "cannot enter " + where + ": " + std::strerror(msg[1]);
+    if (msg[1] == ENOENT) {
       missing = true;
       return "gnuplot is missing (not found on PATH)";
     }
-    return std::string("cannot run gnuplot: ") + std::strerror(child_err);
+    return std::string("cannot run gnuplot: ") + std::strerror(msg[1]);
   }
   if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
   if (WIFEXITED(status)) return "gnuplot failed (exit status " + std::to_string(WEXITSTATUS(status)) + ")";

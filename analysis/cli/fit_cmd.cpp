@@ -163,7 +163,8 @@ void print_result(const Result &r)
     line += ", peak F = " + fmt("%.4g", f.peak_F) + " dyne at z = " + fmt("%.3g", f.peak_z) + " cm";
   else line += ", peak undefined";
   if (f.wavelength_ok)
-    line += ", wavelength = " + fmt("%.3g", f.wavelength) + " cm (" + fmt("%.3g", f.wavelength_dg) + " d_g)";
+    line += ", wavelength = " + fmt("%.3g", f.wavelength) + " cm (" + fmt("%.3g", f.wavelength_dg) + " d_g, " +
+            fmt("%.0f", 100.0 * f.spectrum.power_fraction) + "% of the power)";
   else line += ", wavelength undefined";
   std::puts(line.c_str());
 
@@ -214,7 +215,8 @@ bool write_json(const std::string &path, const std::vector<Result> &results,
       << ", \"wavelength_d_g\": " << json_number(f.wavelength_dg) << ", \"spectrum\": {\"dz\": "
       << json_number(f.spectrum.dz) << ", \"n\": " << f.spectrum.n << ", \"length\": "
       << json_number(f.spectrum.length) << ", \"bin\": " << f.spectrum.bin
-      << ", \"power_fraction\": " << json_number(f.spectrum.power_fraction) << "},\n"
+      << ", \"power_fraction\": " << json_number(f.spectrum.power_fraction)
+      << ", \"lowest_bin\": " << b(f.spectrum.lowest_bin) << "},\n"
       << "     \"notes\": [";
     for (std::size_t k = 0; k < f.notes.size(); ++k) o << (k ? ", " : "") << json_string(f.notes[k]);
     o << "]}";

@@ -97,23 +97,22 @@ Wavelength dominant_wavelength(const std::vector<double> &z, const std::vector<d
     return w;
   }
 
-  // largest local maximum at k >= 2
-  std::size_t best = 0;
-  for (std::size_t k = 2; k <= kmax; ++k) {
-    const bool rises = P[k] > P[k - 1];
-    const bool falls = (k == kmax) || P[k] >= P[k + 1];
-    if (rises && falls && (best == 0 || P[k] > P[best])) best = k;
-  }
-  if (!best) {
-    w.note = "the power spectrum has no peak above its lowest two bins";
+  // largest power at k >= 2
+  std::size_t best = 2;
+  for (std::size_t k = 3; k <= kmax; ++k)
+    if (P[k] > P[best]) best = k;
+  if (!(P[best] > 0.0)) {
+    w.note = "no power above the lowest two bins";
     return w;
   }
+  // refined between bins when it is a local maximum with both neighbours
   double delta = 0.0;
-  if (best < kmax && P[best - 1] > 0.0 && P[best + 1] > 0.0) {
+  if (best < kmax && P[best] > P[best - 1] && P[best] >= P[best + 1] && P[best - 1] > 0.0 && P[best + 1] > 0.0) {
     const double lm = std::log(P[best - 1]), l0 = std::log(P[best]), lp = std::log(P[best + 1]);
     const double den = lm - 2.0 * l0 + lp;
     if (den < 0.0) delta = std::clamp(0.5 * (lm - lp) / den, -0.5, 0.5);
   }
+  w.lowest_bin = best == 2;
   w.ok = true;
   w.bin = best;
   w.wavelength = w.length / ((double) best + delta);
@@ -199,6 +198,9 @@ TraceFit fit_trace(const std::vector<double> &z, const std::vector<double> &F, c
     if (r.spectrum.ok) {
       r.wavelength = r.spectrum.wavelength;
       if (p.d_g > 0.0) r.wavelength_dg = r.wavelength / p.d_g;
+      if (r.spectrum.lowest_bin)
+        r.notes.push_back("wavelength at the lowest bin allowed (about the window length " +
+                          fmt(r.spectrum.length) + " cm / 2): longer wavelengths are not resolved");
     } else {
       r.notes.push_back("wavelength undefined: " + r.spectrum.note);
     }

@@ -33,9 +33,10 @@ struct TraceFitParams {
 
 // Dominant wavelength of y(z): y resampled by linear interpolation onto a uniform
 // grid of spacing the median dz (after sorting by z and averaging repeated z), mean
-// removed, Hann window, FFT power spectrum; the largest local maximum of the power
-// at frequency bins k >= 2 (bins 0 and 1 excluded), refined between bins by a
-// parabola through the log power of the bin and its neighbours.
+// removed, Hann window, FFT power spectrum; the bin of largest power among the
+// frequency bins k >= 2 (bins 0 and 1, the mean and the record-length trend, are
+// excluded), refined between bins by a parabola through the log power of the bin
+// and its neighbours when it is a local maximum.
 struct Wavelength {
   bool ok = false;
   double wavelength = 0.0;    // same unit as z
@@ -44,6 +45,7 @@ struct Wavelength {
   std::size_t n = 0;          // grid points
   std::size_t bin = 0;        // FFT bin of the peak
   double power_fraction = 0.0;    // peak bin's power / total power at bins >= 1
+  bool lowest_bin = false;        // the peak is bin 2: the window is too short to say more
   std::string note;               // why not ok
 };
 Wavelength dominant_wavelength(const std::vector<double> &z, const std::vector<double> &y);

@@ -115,6 +115,17 @@ bool on_path(const std::string &prog)
   return false;
 }
 
+// the last progress line a pour printed ("granpen pour: chunk 5/60: ..."), shortened
+std::string pour_status(const std::string &log)
+{
+  std::ifstream f(log);
+  std::string line, last;
+  while (std::getline(f, line))
+    if (line.compare(0, 14, "granpen pour: ") == 0) last = line.substr(14);
+  auto colon = last.find(':');
+  return last.substr(0, colon);
+}
+
 struct Job {
   PlannedRun run;
   std::vector<std::string> argv;
@@ -226,6 +237,7 @@ int run_sweep(const SweepSpec &spec, const RunnerOptions &opt)
       var("g_push", r.g);
       var("D", r.D);
       var("depth", r.depth);
+      var("mu_push", r.mu_push);
       var("run", r.seed);
       var("trace", j.trace);
       var("checkpoint", std::to_string(opt.checkpoint));
@@ -296,9 +308,11 @@ int run_sweep(const SweepSpec &spec, const RunnerOptions &opt)
           if (info.count(k) && positive_number(info[k])) std::fprintf(f, ", \"%s\": %s", k, info[k].c_str());
         std::fprintf(f, ", \"bed\": %s", json_string(dir + "/beds/" + r.id + ".restart").c_str());
       } else {
-        std::fprintf(f, ", \"bed\": %s, \"v0\": %s, \"g\": %s, \"D\": %s, \"depth\": %s, \"trace\": %s",
+        std::fprintf(f, ", \"bed\": %s, \"v0\": %s, \"g\": %s, \"D\": %s, \"depth\": %s, \"mu_push\": %s, "
+                        "\"trace\": %s",
                      json_string(r.bed).c_str(), json_string(r.v0).c_str(), json_string(r.g).c_str(),
-                     json_string(r.D).c_str(), json_string(r.depth).c_str(), json_string(j.trace).c_str());
+                     json_string(r.D).c_str(), json_string(r.depth).c_str(), json_string(r.mu_push).c_str(),
+                     json_string(j.trace).c_str());
       }
       std::fprintf(f, ", \"log\": %s, \"wall_seconds_run\": %.3f, \"exit_code\": %d, \"error\": %s}%s\n",
                    json_string(j.log).c_str(), j.wall, j.exit_code, json_string(j.error).c_str(),
@@ -404,7 +418,9 @@ int run_sweep(const SweepSpec &spec, const RunnerOptions &opt)
         if (j.status == "running") {
           char b[160];
           double z = pour ? NAN : last_depth(j.trace);
+          const std::string ps = pour ? pour_status(j.log) : "";
           if (std::isfinite(z)) std::snprintf(b, sizeof(b), " %s z=%.2f", j.run.id.c_str(), z);
+          else if (!ps.empty()) std::snprintf(b, sizeof(b), " %s (%s)", j.run.id.c_str(), ps.c_str());
           else std::snprintf(b, sizeof(b), " %s %s", j.run.id.c_str(), fmt_seconds(seconds_since(j.start)).c_str());
           now += b;
         }

@@ -120,6 +120,8 @@ SweepSpec parse_sweep(const std::string &text, const std::string &path,
       numbers(spec.g);
     } else if (key == "D") {
       numbers(spec.D);
+    } else if (key == "mu_push") {
+      numbers(spec.mu_push);
     } else if (key == "depth") {
       if (!positive_number(one())) fail(path, lineno, "depth '" + vals[0] + "' is not a positive number");
       spec.depth = vals[0];
@@ -129,7 +131,7 @@ SweepSpec parse_sweep(const std::string &text, const std::string &path,
         fail(path, lineno, "unknown observe set '" + vals[0] + "' (no inputs/observe/" + vals[0] + ".lmp)");
       spec.observe = vals[0];
     } else {
-      fail(path, lineno, "unknown key '" + key + "' (known: name preset mu seeds v0 g D depth observe)");
+      fail(path, lineno, "unknown key '" + key + "' (known: name preset mu seeds v0 g D depth mu_push observe)");
     }
   }
   if (spec.name.empty()) fail(path, lineno, "missing 'name'");
@@ -145,6 +147,7 @@ std::vector<PlannedRun> plan_sweep(const SweepSpec &spec)
   const std::vector<std::string> mus = spec.mu.empty() ? std::vector<std::string>{""} : spec.mu;
   const std::vector<std::string> gs = spec.g.empty() ? std::vector<std::string>{""} : spec.g;
   const std::vector<std::string> Ds = spec.D.empty() ? std::vector<std::string>{""} : spec.D;
+  const std::vector<std::string> mps = spec.mu_push.empty() ? std::vector<std::string>{""} : spec.mu_push;
   for (const auto &p : spec.presets)
     for (const auto &mu : mus)
       for (const auto &seed : spec.seeds) {
@@ -156,8 +159,10 @@ std::vector<PlannedRun> plan_sweep(const SweepSpec &spec)
         pours.push_back(bed);
         for (const auto &v : spec.v0)
           for (const auto &g : gs)
-            for (const auto &D : Ds) {
+            for (const auto &D : Ds)
+              for (const auto &mp : mps) {
               PlannedRun push = bed;
+              push.mu_push = mp;
               push.kind = PlannedRun::PUSH;
               push.bed = bed.id;
               push.v0 = v;
@@ -165,7 +170,7 @@ std::vector<PlannedRun> plan_sweep(const SweepSpec &spec)
               push.D = D;
               push.depth = spec.depth;
               push.id = p + (mu.empty() ? "" : "_mu" + mu) + "_s" + seed + "_v" + v + (g.empty() ? "" : "_g" + g) +
-                        (D.empty() ? "" : "_D" + D);
+                        (D.empty() ? "" : "_D" + D) + (mp.empty() ? "" : "_mp" + mp);
               pushes.push_back(push);
             }
       }

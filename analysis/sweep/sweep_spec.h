@@ -10,6 +10,8 @@
 //   g       = 981               push gravities (default: preset's; the bed keeps its own)
 //   D       = 2.0               rod diameters (default: preset's)
 //   depth   = 4.0               push depth (default: preset's)
+//   mu_push = 0.2 0.3           friction during the push, raised in the poured bed
+//                               (default: the pour's)
 //   observe = none              an inputs/observe/NAME.lmp to include in every push
 // Every value is checked: numbers are parsed whole as finite positive numbers, names
 // against a safe character set; no value ever reaches a shell.
@@ -27,7 +29,7 @@ struct SweepSpec {
   std::vector<std::string> presets;
   std::vector<std::string> mu;       // kept as written (validated numbers): they name files
   std::vector<std::string> seeds;
-  std::vector<std::string> v0, g, D;
+  std::vector<std::string> v0, g, D, mu_push;
   std::string depth;                 // empty: the preset's
   std::string observe = "none";
 };
@@ -37,7 +39,7 @@ struct PlannedRun {
   std::string id;          // unique, file-name safe
   std::string preset, mu, seed;
   std::string bed;         // for a push: the id of its pour
-  std::string v0, g, D, depth;
+  std::string v0, g, D, depth, mu_push;
 };
 
 // Parses and validates; throws InputError naming path:line. preset_exists and

@@ -49,6 +49,15 @@ TEST(SweepSpec, PlanPoursEachBedOnceAndBranchesPushes)
   EXPECT_EQ(spec.observe, "flow");
 }
 
+TEST(SweepSpec, RaisingMuInAPouredBedIsAPushDimension)
+{
+  auto plan = plan_sweep(parse(BASE + "mu = 0.1\nmu_push = 0.2 0.5\n"));
+  ASSERT_EQ(plan.size(), 3u);
+  EXPECT_EQ(plan[1].id, "tiny_mu0.1_s1_v100_mp0.2");
+  EXPECT_EQ(plan[2].mu_push, "0.5");
+  EXPECT_EQ(plan[2].bed, "bed_tiny_mu0.1_s1");
+}
+
 TEST(SweepSpec, DefaultsAndOptionalKeys)
 {
   auto spec = parse(BASE);

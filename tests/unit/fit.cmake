@@ -1,0 +1,59 @@
+# granpen fit and granpen calibration: kernels (unit tests) and the CLI end to end
+# on synthetic inputs written at configure time. Included from CMakeLists.txt.
+add_executable(test_fit test_fit.cpp)
+target_link_libraries(test_fit PRIVATE granpen_analysis GTest::gtest_main)
+gtest_discover_tests(test_fit PROPERTIES LABELS unit)
+
+add_executable(test_calibration test_calibration.cpp)
+target_link_libraries(test_calibration PRIVATE granpen_analysis GTest::gtest_main)
+gtest_discover_tests(test_calibration PROPERTIES LABELS unit)
+
+# A synthetic cgs trace: z = -0.5 .. 5 cm at 0.01 cm (t = 1e-4 s steps, v0 = 100 cm/s),
+# F = K z plus a zero-mean pattern orthogonal to z over the window, so the fitted
+# k_z is K. Written with integers only: z = ZI/100 cm, F = K/100 * ZI dyne.
+function(granpen_synthetic_trace path kz_per_100 extra_header with_pattern)
+  set(text "# granpen-trace v1\n# units = cgs\n# v0 = 100\n# D = 2\n# g = 981\n# d_g = 0.4\n# rho_g = 3\n${extra_header}t,z,F\n")
+  foreach(i RANGE 0 550)
+    math(EXPR zi "${i} - 50")
+    if(zi GREATER 0)
+      if(with_pattern)
+        math(EXPR f "${kz_per_100} * ${zi} + 37 * ((${i} * 7) % 5 - 2)")
+      else()
+        math(EXPR f "${kz_per_100} * ${zi}")
+      endif()
+    else()
+      set(f 0)
+    endif()
+    string(APPEND text "${i}e-4,${zi}e-2,${f}\n")
+  endforeach()
+  file(WRITE ${path} "${text}")
+endfunction()
+
+# fit: k_z = 25300 dyne/cm over the default window z >= 3 cm
+set(GRANPEN_FIT_DIR ${CMAKE_CURRENT_BINARY_DIR}/fit_cli)
+granpen_synthetic_trace(${GRANPEN_FIT_DIR}/kz25300.csv 253 "# mu = 0.3\n" ON)
+add_test(NAME cli_fit_synthetic COMMAND granpen-cli fit ${GRANPEN_FIT_DIR}/kz25300.csv
+  --json ${GRANPEN_FIT_DIR}/fit.json --csv ${GRANPEN_FIT_DIR}/fit.csv)
+set_tests_properties(cli_fit_synthetic PROPERTIES LABELS "unit;cli"
+  PASS_REGULAR_EXPRESSION "kz25300\\.csv: v0 = 100 cm/s, k_z = 2\\.5[0-9]*e\\+04 \\+- ")
+# a bad trace is reported with file:line and the good one is still fitted
+file(WRITE ${GRANPEN_FIT_DIR}/bad/broken.csv
+  "# granpen-trace v1\n# units = cgs\n# v0 = 100\n# D = 2\n# g = 981\nt,z,F\n0,0,0\n0.0001,0.01\n")
+add_test(NAME cli_fit_bad_and_good COMMAND granpen-cli fit ${GRANPEN_FIT_DIR}/bad ${GRANPEN_FIT_DIR}/kz25300.csv)
+set_tests_properties(cli_fit_bad_and_good PROPERTIES LABELS "unit;cli"
+  PASS_REGULAR_EXPRESSION "(broken\\.csv:8: row has 2 fields, expected 3.*kz25300\\.csv: v0 = 100 cm/s, k_z = 2\\.5[0-9]*e\\+04|kz25300\\.csv: v0 = 100 cm/s, k_z = 2\\.5[0-9]*e\\+04.*broken\\.csv:8: row has 2 fields, expected 3)")
+
+# calibration: two beds at mu = 0.3 (phi_0 0.58, 0.60), pushes with k_z = 20000 and
+# 22000 dyne/cm: phi_0 0.5900 +- 0.0141, k_z 2.1e+04 +- 1.4e+03, alpha = k_z /
+# (0.3 * 3 * 981 * 4) = 5.95 +- 0.4
+set(GRANPEN_CAL_DIR ${CMAKE_CURRENT_BINARY_DIR}/calibration_cli/sweep)
+file(WRITE ${GRANPEN_CAL_DIR}/beds/bed_a.info
+  "# granpen bed: preset bench, seed 1, mu 0.3\npreset = bench\nseed = 1\nmu = 0.3\ngrains = 6300\nz_s = 5.7\nphi_0 = 0.58\nwall_seconds = 300\nsteps = 100000\n")
+file(WRITE ${GRANPEN_CAL_DIR}/beds/bed_b.info
+  "# granpen bed: preset bench, seed 2, mu 0.3\npreset = bench\nseed = 2\nmu = 0.3\ngrains = 6300\nz_s = 5.6\nphi_0 = 0.60\nwall_seconds = 300\nsteps = 100000\n")
+granpen_synthetic_trace(${GRANPEN_CAL_DIR}/traces/push_a.csv 200 "# mu = 0.3\n# seed = 1\n# bed = bed_a\n" OFF)
+granpen_synthetic_trace(${GRANPEN_CAL_DIR}/traces/push_b.csv 220 "# mu = 0.3\n# seed = 2\n# bed = bed_b.restart\n" OFF)
+add_test(NAME cli_calibration_synthetic COMMAND granpen-cli calibration ${GRANPEN_CAL_DIR}
+  --out ${CMAKE_CURRENT_BINARY_DIR}/calibration_cli/out)
+set_tests_properties(cli_calibration_synthetic PROPERTIES LABELS "unit;cli"
+  PASS_REGULAR_EXPRESSION "\\| 0\\.3 \\| 2 \\| 0\\.5900 \\+- 0\\.0141 \\| 2 \\| 100 \\| 2\\.1e\\+04 \\+- 1\\.4e\\+03 \\| 5\\.95 \\+- 0\\.4 \\|")

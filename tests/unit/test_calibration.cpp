@@ -1,0 +1,163 @@
+// The friction-calibration kernel on hand-made records (two mu values, two seeds
+// each) against hand-computed means and sample standard deviations, and the bed
+// .info reader (in.pour's format; rejections naming file:line).
+#include "bed_info.h"
+#include "calibration.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <regex>
+#include <string>
+
+using namespace granpen;
+
+namespace {
+
+CalibrationBed bed(const char *name, double mu, double seed, double phi)
+{
+  CalibrationBed b;
+  b.name = name;
+  b.mu = mu;
+  b.seed = seed;
+  b.phi_0 = phi;
+  return b;
+}
+
+CalibrationPush push(const char *bedname, double mu, double seed, double v0, double k, double alpha)
+{
+  CalibrationPush p;
+  p.name = std::string(bedname) + ".csv";
+  p.bed = bedname;
+  p.mu = mu;
+  p.seed = seed;
+  p.v0 = v0;
+  p.k_z = k;
+  p.alpha = alpha;
+  return p;
+}
+
+const char *GOOD_INFO = "# granpen bed: preset bench, seed 4242, mu 0.3\n"
+                        "preset = bench\nseed = 4242\nmu = 0.3\ngrains = 6300\n"
+                        "z_s = 5.69832257381603\nphi_0 = 0.578884793470033\n"
+                        "wall_seconds = 58.8\nsteps = 100000\n";
+
+void expect_rejected(const std::string &text, const std::string &pattern)
+{
+  try {
+    parse_bed_info(text, "beds/bad.info");
+    FAIL() << "accepted; expected an error matching " << pattern;
+  } catch (InputError &e) {
+    EXPECT_TRUE(std::regex_search(e.what(), std::regex(pattern))) << e.what();
+  }
+}
+
+}    // namespace
+
+TEST(Calibration, MeanAndSampleSd)
+{
+  const Stat s = mean_sd({1.0, 2.0, 4.0});
+  EXPECT_EQ(s.n, 3u);
+  EXPECT_NEAR(s.mean, 7.0 / 3.0, 1e-12);
+  EXPECT_NEAR(s.sd, std::sqrt((16.0 / 9 + 1.0 / 9 + 25.0 / 9) / 2.0), 1e-12);
+  EXPECT_EQ(mean_sd({5.0}).sd, 0.0);
+  EXPECT_EQ(mean_sd({5.0}).mean, 5.0);
+  EXPECT_EQ(mean_sd({}).n, 0u);
+}
+
+TEST(Calibration, TwoMuTwoSeeds)
+{
+  // given out of order; the second mu differs from 0.4 by rounding only
+  const std::vector<CalibrationBed> beds = {bed("b4s2", 0.4, 2, 0.57), bed("b2s1", 0.2, 1, 0.60),
+                                            bed("b4s1", 0.4000000000001, 1, 0.56), bed("b2s2", 0.2, 2, 0.62)};
+  const std::vector<CalibrationPush> pushes = {push("b2s1", 0.2, 1, 100, 1000, 10), push("b4s1", 0.4, 1, 100, 2000, 20),
+                                               push("b2s2", 0.2, 2, 100, 1200, 12), push("b4s2", 0.4, 2, 100, 2600, 26)};
+  const auto rows = calibration_table(beds, pushes);
+  ASSERT_EQ(rows.size(), 2u);
+
+  // mu = 0.2: phi_0 0.60, 0.62 -> 0.61 +- sqrt(2 * 0.01^2 / 1); k_z 1000, 1200 -> 1100 +- 141.42
+  EXPECT_NEAR(rows[0].mu, 0.2, 1e-12);
+  EXPECT_EQ(rows[0].v0, 100.0);
+  EXPECT_EQ(rows[0].phi_0.n, 2u);
+  EXPECT_NEAR(rows[0].phi_0.mean, 0.61, 1e-12);
+  EXPECT_NEAR(rows[0].phi_0.sd, 0.01 * std::sqrt(2.0), 1e-12);
+  EXPECT_EQ(rows[0].k_z.n, 2u);
+  EXPECT_NEAR(rows[0].k_z.mean, 1100.0, 1e-9);
+  EXPECT_NEAR(rows[0].k_z.sd, 100.0 * std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(rows[0].alpha.mean, 11.0, 1e-12);
+  EXPECT_NEAR(rows[0].alpha.sd, std::sqrt(2.0), 1e-12);
+
+  // mu = 0.4: phi_0 0.56, 0.57 -> 0.565 +- 0.0070711; k_z 2000, 2600 -> 2300 +- 424.26
+  EXPECT_NEAR(rows[1].mu, 0.4, 1e-9);
+  EXPECT_EQ(rows[1].phi_0.n, 2u);
+  EXPECT_NEAR(rows[1].phi_0.mean, 0.565, 1e-12);
+  EXPECT_NEAR(rows[1].phi_0.sd, 0.005 * std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(rows[1].k_z.mean, 2300.0, 1e-9);
+  EXPECT_NEAR(rows[1].k_z.sd, 300.0 * std::sqrt(2.0), 1e-9);
+  EXPECT_NEAR(rows[1].alpha.mean, 23.0, 1e-12);
+  EXPECT_EQ(rows[1].beds.size(), 2u);
+  EXPECT_EQ(rows[1].pushes.size(), 2u);
+}
+
+TEST(Calibration, SeveralSpeedsAndMissingPushes)
+{
+  const std::vector<CalibrationBed> beds = {bed("a", 0.1, 1, 0.62), bed("b", 0.5, 1, 0.55)};
+  const std::vector<CalibrationPush> pushes = {push("a", 0.1, 1, 200, 900, 9), push("a", 0.1, 1, 50, 800, 8)};
+  const auto rows = calibration_table(beds, pushes);
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0].v0, 50.0);    // sorted by mu then v0
+  EXPECT_EQ(rows[1].v0, 200.0);
+  EXPECT_EQ(rows[0].phi_0.n, 1u);
+  EXPECT_EQ(rows[0].phi_0.sd, 0.0);
+  EXPECT_NEAR(rows[2].mu, 0.5, 1e-12);    // a mu without pushes
+  EXPECT_EQ(rows[2].k_z.n, 0u);
+  EXPECT_EQ(rows[2].v0, 0.0);
+  EXPECT_TRUE(calibration_table({}, {}).empty());
+}
+
+TEST(BedInfo, ReadsInPourFormat)
+{
+  const BedInfo b = parse_bed_info(GOOD_INFO, "sweep/beds/bed_mu0.3_s4242.info");
+  EXPECT_EQ(b.name, "bed_mu0.3_s4242");
+  EXPECT_EQ(b.preset, "bench");
+  EXPECT_DOUBLE_EQ(b.mu, 0.3);
+  EXPECT_DOUBLE_EQ(b.phi_0, 0.578884793470033);
+  EXPECT_DOUBLE_EQ(b.z_s, 5.69832257381603);
+  EXPECT_EQ(b.seed, 4242.0);
+  EXPECT_EQ(b.grains, 6300.0);
+  EXPECT_EQ(b.steps, 100000.0);
+  EXPECT_DOUBLE_EQ(b.wall_seconds, 58.8);
+  EXPECT_EQ(bed_name("runs/bed_3.restart"), "bed_3");
+  EXPECT_EQ(bed_name(" bed_3 "), "bed_3");
+}
+
+TEST(BedInfo, RejectsMalformedLinesWithFileAndLine)
+{
+  expect_rejected("# granpen bed\nmu = 0.3\ngrains 6300\nphi_0 = 0.6\n",
+                  "^beds/bad\\.info:3: expected 'key = value', found 'grains 6300'");
+  expect_rejected("mu = 0.3\n= 4\nphi_0 = 0.6\n", "^beds/bad\\.info:2: empty key");
+  expect_rejected("mu = 0.3\nphi_0 = 0.6\nmu = 0.4\n", "^beds/bad\\.info:3: key 'mu' given twice");
+  expect_rejected("mu = 0.3x\nphi_0 = 0.6\n", "^beds/bad\\.info:1: mu '0\\.3x' is not a finite number");
+  expect_rejected("mu = 0.3\nphi_0 = nan\n", "^beds/bad\\.info:2: phi_0 'nan' is not a finite number");
+  expect_rejected("mu = 0.3\nz_s = 5.7\n", "^beds/bad\\.info: missing key 'phi_0'");
+  expect_rejected("phi_0 = 0.6\n", "^beds/bad\\.info: missing key 'mu'");
+}
+
+TEST(BedInfo, ReadsFileAndNamesIt)
+{
+  const std::string path = testing::TempDir() + "granpen_bed_bad.info";
+  {
+    std::ofstream f(path);
+    f << "# granpen bed\nmu = 0.3\nphi_0 = 0.6\nz_s 5.7\n";
+  }
+  try {
+    read_bed_info(path);
+    FAIL() << "accepted a malformed line";
+  } catch (InputError &e) {
+    EXPECT_EQ(std::string(e.what()).rfind(path + ":4: ", 0), 0u) << e.what();
+  }
+  std::remove(path.c_str());
+  EXPECT_THROW(read_bed_info(path), InputError);
+}
