@@ -18,6 +18,7 @@
 #include "compute_flow_azimuthal.h"
 
 #include "atom.h"
+#include "comm.h"
 #include "domain.h"
 #include "error.h"
 #include "fix_rod_drive.h"
@@ -30,6 +31,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+
+#include <voro++.hh>
 
 using namespace LAMMPS_NS;
 
@@ -44,7 +47,7 @@ ComputeFlowAzimuthal::ComputeFlowAzimuthal(LAMMPS *lmp, int narg, char **arg) :
     Compute(lmp, narg, arg), drive(nullptr), voronoi(nullptr), stress(nullptr), have_axis(false),
     tip_frame(false), xaxis(0.0), yaxis(0.0), rmin(0.0), rmax(0.0), dr(0.0), zlo(0.0), zhi(0.0),
     dz(0.0), have_rmax(false), have_zlo(false), have_zhi(false), nr(0), nz(0), nbins(0),
-    d_g(-1.0), rho_g(-1.0)
+    d_g(-1.0), rho_g(-1.0), voro_direct(false)
 {
   int iarg = 3;
   while (iarg < narg) {
@@ -88,7 +91,8 @@ ComputeFlowAzimuthal::ComputeFlowAzimuthal(LAMMPS *lmp, int narg, char **arg) :
       else if (strcmp(val, "tip") == 0) tip_frame = true;
       else error->all(FLERR, "Compute flow/azimuthal frame must be lab or tip, got {}", val);
     } else if (key == "voronoi") {
-      voronoi_id = val;
+      voro_direct = strcmp(val, "voro++") == 0;
+      if (!voro_direct) voronoi_id = val;
     } else if (key == "stress") {
       stress_id = val;
     } else if (key == "d_g") {
@@ -215,9 +219,12 @@ void ComputeFlowAzimuthal::compute_array()
   double *radius = atom->radius, *rmass = atom->rmass;
   int *mask = atom->mask;
   const double *prd = domain->prd;
+  const int nlocal = atom->nlocal;
 
-  std::fill(local.begin(), local.end(), 0.0);
-  for (int i = 0; i < atom->nlocal; i++) {
+  // the bin of each owned grain (-1: outside the bins), and its offset from the axis
+  atom_bin.assign(nlocal, -1);
+  std::vector<double> off((size_t) 2 * nlocal);
+  for (int i = 0; i < nlocal; i++) {
     if (!(mask[i] & groupbit)) continue;
     double dx = x[i][0] - xc, dy = x[i][1] - yc;
     if (domain->xperiodic) dx -= prd[0] * std::round(dx / prd[0]);    // nearest image of the axis
@@ -227,7 +234,19 @@ void ComputeFlowAzimuthal::compute_array()
     if (r < rmin || r >= rmax || z < zlo || z >= zhi) continue;
     const int ir = std::min(nr - 1, static_cast<int>((r - rmin) / dr));
     const int iz = std::min(nz - 1, static_cast<int>((z - zlo) / dz));
-    double *acc = &local[(size_t) (iz * nr + ir) * NACC];
+    atom_bin[i] = iz * nr + ir;
+    off[2 * i] = dx;
+    off[2 * i + 1] = dy;
+  }
+  if (voro_direct) tessellate();
+
+  std::fill(local.begin(), local.end(), 0.0);
+  for (int i = 0; i < nlocal; i++) {
+    if (atom_bin[i] < 0) continue;
+    const double dx = off[2 * i], dy = off[2 * i + 1];
+    const double r = std::sqrt(dx * dx + dy * dy);
+    const double z = x[i][2] - zref;
+    double *acc = &local[(size_t) atom_bin[i] * NACC];
     const double m = rmass[i];
     const double c = r > 0.0 ? dx / r : 1.0, s = r > 0.0 ? dy / r : 0.0;
     const double vr = v[i][0] * c + v[i][1] * s, vt = -v[i][0] * s + v[i][1] * c;
@@ -239,6 +258,7 @@ void ComputeFlowAzimuthal::compute_array()
     acc[A_MVT] += m * vt;
     acc[A_MV2] += m * (v[i][0] * v[i][0] + v[i][1] * v[i][1] + v[i][2] * v[i][2]);
     if (vor) acc[A_VOR] += vor[i][0];
+    if (voro_direct) acc[A_VOR] += cellvol[i];
     if (sts) {
       acc[A_TRS] += sts[i][0] + sts[i][1] + sts[i][2];
       acc[A_SZZ] += sts[i][2];
@@ -263,7 +283,7 @@ void ComputeFlowAzimuthal::compute_array()
       row[2] = g[A_COUNT];
       row[3] = M;
       row[4] = g[A_VOL] / vbin;
-      row[5] = (vor && g[A_VOR] > 0.0) ? g[A_VOL] / g[A_VOR] : 0.0;
+      row[5] = ((vor || voro_direct) && g[A_VOR] > 0.0) ? g[A_VOL] / g[A_VOR] : 0.0;
       row[6] = M > 0.0 ? g[A_MVR] / M : 0.0;
       row[7] = M > 0.0 ? g[A_MVZ] / M : 0.0;
       row[8] = M > 0.0 ? g[A_MVT] / M : 0.0;
@@ -300,6 +320,82 @@ void ComputeFlowAzimuthal::compute_array()
       const double p = row[10];
       row[12] = p > 0.0 ? row[11] * d_g / std::sqrt(p / rho_g) : 0.0;
     }
+}
+
+/* ----------------------------------------------------------------------
+   voronoi voro++: the radical Voronoi tessellation (Voro++'s container_poly, atom radii)
+   of the group's owned and ghost atoms, in the container compute voronoi/atom uses (the
+   sub-domain widened by the ghost cutoff, cut by the box in non-periodic directions),
+   closed in non-periodic directions 1.5 grain diameters beyond the outermost grain, with
+   cells computed only for the owned atoms that fall in a bin and without neighbour
+   bookkeeping: the same volumes inside the bed at under half the cost.
+------------------------------------------------------------------------- */
+
+void ComputeFlowAzimuthal::tessellate()
+{
+  const int nlocal = atom->nlocal, nall = nlocal + atom->nghost;
+  double **x = atom->x;
+  double *radius = atom->radius;
+  int *mask = atom->mask;
+  cellvol.assign(nlocal, 0.0);
+
+  double lo[3], hi[3];
+  for (int d = 0; d < 3; d++) {
+    const double e = 1.0e-6 * domain->prd[d];
+    lo[d] = domain->sublo[d] - comm->cutghost[d] - e;
+    hi[d] = domain->subhi[d] + comm->cutghost[d] + e;
+    if (!domain->periodicity[d]) {
+      lo[d] = std::max(lo[d], domain->boxlo[d]);
+      hi[d] = std::min(hi[d], domain->boxhi[d]);
+    }
+  }
+  // in a non-periodic direction, close the container one grain diameter beyond the
+  // outermost grain: the open cells at a free surface end there instead of at the box edge
+  double amin[3] = {1e300, 1e300, 1e300}, amax[3] = {-1e300, -1e300, -1e300}, rmaxg = 0.0;
+  for (int i = 0; i < nall; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    for (int d = 0; d < 3; d++) {
+      amin[d] = std::min(amin[d], x[i][d]);
+      amax[d] = std::max(amax[d], x[i][d]);
+    }
+    rmaxg = std::max(rmaxg, radius[i]);
+  }
+  // the same lid on every rank, whatever the decomposition
+  double ext[4] = {-amin[0], -amin[1], -amin[2], 0.0}, gext[4];
+  ext[3] = rmaxg;
+  MPI_Allreduce(ext, gext, 4, MPI_DOUBLE, MPI_MAX, world);
+  double gmax[3];
+  MPI_Allreduce(amax, gmax, 3, MPI_DOUBLE, MPI_MAX, world);
+  for (int d = 0; d < 3; d++) {
+    amin[d] = -gext[d];
+    amax[d] = gmax[d];
+  }
+  rmaxg = gext[3];
+  for (int d = 0; d < 3; d++)
+    if (!domain->periodicity[d] && amax[d] >= amin[d]) {
+      lo[d] = std::max(lo[d], amin[d] - 3.0 * rmaxg);
+      hi[d] = std::min(hi[d], amax[d] + 3.0 * rmaxg);
+    }
+  // spatial hash of about 8 atoms per block, as compute voronoi/atom chooses it
+  const double V = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
+  int nb[3];
+  for (int d = 0; d < 3; d++)
+    nb[d] = std::max(1, static_cast<int>(std::lround((hi[d] - lo[d]) * std::cbrt(nall / (V * 8.0)))));
+  voro::container_poly con(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2], nb[0], nb[1], nb[2], false, false,
+                           false, 8);
+  for (int i = 0; i < nall; i++) {
+    if (!(mask[i] & groupbit)) continue;
+    if (x[i][0] < lo[0] || x[i][0] > hi[0] || x[i][1] < lo[1] || x[i][1] > hi[1] || x[i][2] < lo[2] ||
+        x[i][2] > hi[2])
+      continue;
+    con.put(i, x[i][0], x[i][1], x[i][2], radius[i]);
+  }
+  voro::c_loop_all loop(con);
+  voro::voronoicell cell;
+  if (loop.start()) do {
+      const int i = loop.pid();
+      if (i < nlocal && atom_bin[i] >= 0 && con.compute_cell(cell, loop)) cellvol[i] = cell.volume();
+    } while (loop.inc());
 }
 
 double ComputeFlowAzimuthal::memory_usage()

@@ -39,8 +39,12 @@ class ComputeFlowAzimuthal : public Compute {
   int nr, nz, nbins;
   double d_g, rho_g;
   std::vector<double> local, global;
+  bool voro_direct;                 // voronoi voro++: tessellate here, only the binned grains
+  std::vector<double> cellvol;      // per owned atom: its cell volume (voro_direct)
+  std::vector<int> atom_bin;        // per owned atom: its bin, or -1
 
   void setup_bins();
+  void tessellate();
 };
 
 }    // namespace LAMMPS_NS

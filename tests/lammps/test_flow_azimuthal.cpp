@@ -131,3 +131,19 @@ TEST(FlowAzimuthal, FccLatticeVoronoiPackingIs07405)
   // grains assigned by centre: annuli cut the lattice unevenly, so only the whole matches
   EXPECT_NEAR(vol / vbins, phi, 0.02 * phi);
 }
+
+TEST(FlowAzimuthal, FccLatticeDirectVoroPlusPlus)
+{
+  // the same lattice through the compute's own Voro++ tessellation
+  LmpSession s;
+  s.cmds({"units cgs", "atom_style sphere", "atom_modify map array", "boundary p p p",
+          "newton off", "comm_modify vel yes", "region box block 0 8 0 8 0 8 units box",
+          "create_box 1 box", "lattice fcc 0.5", "create_atoms 1 box",
+          "set type 1 diameter " + std::to_string(0.5 / std::sqrt(2.0)), "set type 1 density 3.0",
+          "pair_style zero 1.0", "pair_coeff * *", "neighbor 0.1 bin",
+          "compute flow all flow/azimuthal axis 4.0 4.0 rbin 0.5 rmax 3.5 zbin 1.0 voronoi voro++",
+          "run 0"});
+  const double d = 0.5 / std::sqrt(2.0), used = std::stod(std::to_string(d));
+  const double phi = M_PI / (3.0 * std::sqrt(2.0)) * std::pow(used / d, 3);
+  for (int b = 0; b < rows(s); ++b) EXPECT_NEAR(cell(s, b, 5), phi, 1e-10) << "bin " << b;
+}
