@@ -92,7 +92,7 @@ int granpen::cli::sweep(int argc, char **argv)
     if (!f) throw InputError(spec_path + ": cannot open sweep file");
     std::ostringstream text;
     text << f.rdbuf();
-    const SweepSpec spec = parse_sweep(text.str(), spec_path, preset_exists, observe_exists);
+    SweepSpec spec = parse_sweep(text.str(), spec_path, preset_exists, observe_exists);
     if (plan_only) {
       int k = 0;
       for (const auto &r : plan_sweep(spec))
@@ -104,6 +104,13 @@ int granpen::cli::sweep(int argc, char **argv)
       ssize_t n = readlink("/proc/self/exe", self, sizeof(self) - 1);
       const std::string cli = n > 0 ? std::string(self, n) : "granpen-cli";
       if (opt.mpirun.empty()) opt.mpirun = "srun";
+      // the jobs run wherever SLURM starts them: give them absolute paths
+      // (lmp_granpen given as a bare name is looked up on the cluster's PATH)
+      for (std::string *p : {&opt.out_root, &opt.inputs, &opt.lmp, &spec.path}) {
+        if (p->empty() || (*p)[0] == '/' || (p == &opt.lmp && p->find('/') == std::string::npos)) continue;
+        char cwd[4096];
+        if (getcwd(cwd, sizeof(cwd))) *p = std::string(cwd) + "/" + *p;
+      }
       write_slurm_script(spec, opt, cli, slurm);
       std::printf("granpen sweep: wrote %s (submit it on the cluster: bash %s)\n", slurm.c_str(), slurm.c_str());
       return 0;

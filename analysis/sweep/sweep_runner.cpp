@@ -212,7 +212,11 @@ int run_sweep(const SweepSpec &spec, const RunnerOptions &opt)
     j.log = dir + "/logs/" + r.id + ".log";
     j.out = dir + "/logs/" + r.id + ".out";
     std::vector<std::string> a;
-    if (!opt.mpirun.empty()) a = {opt.mpirun, "-np", std::to_string(opt.ranks)};
+    if (!opt.mpirun.empty()) {
+      // srun counts tasks with -n, mpirun/mpiexec with -np
+      const std::string base = opt.mpirun.substr(opt.mpirun.rfind('/') + 1);
+      a = {opt.mpirun, base == "srun" ? "-n" : "-np", std::to_string(opt.ranks)};
+    }
     a.push_back(opt.lmp);
     auto var = [&](const std::string &k, const std::string &v) {
       if (!v.empty()) a.insert(a.end(), {"-var", k, v});
@@ -279,6 +283,12 @@ int run_sweep(const SweepSpec &spec, const RunnerOptions &opt)
     }
   }
 
+  for (auto &j : jobs) {
+    if (j.status != "skipped") continue;
+    auto kv = read_info(j.run.kind == PlannedRun::POUR ? j.info : j.done);
+    if (kv.count("wall_seconds")) j.wall = std::atof(kv["wall_seconds"].c_str());
+  }
+
   std::vector<size_t> order;
   for (size_t i = 0; i < jobs.size(); ++i)
     if (opt.only_index < 0 || (int) i == opt.only_index) order.push_back(i);
@@ -286,7 +296,10 @@ int run_sweep(const SweepSpec &spec, const RunnerOptions &opt)
     throw InputError("--only " + std::to_string(opt.only_index) + ": the sweep has " +
                      std::to_string(jobs.size()) + " runs");
 
+  // the LAMMPS version from any log already there (all runs may be skipped)
   std::string lammps_version;
+  for (const auto &j : jobs)
+    if (lammps_version.empty() && exists(j.log)) lammps_version = first_line_matching(slurp(j.log), "LAMMPS (");
   auto write_manifest = [&]() {
     const std::string tmp = dir + "/manifest.json.tmp";
     std::FILE *f = std::fopen(tmp.c_str(), "w");
