@@ -1,5 +1,6 @@
 // granpen calibration SWEEP_DIR: the friction-calibration table of a sweep folder,
 // phi_0 and k_z against mu (core/calibration.h, core/trace_fit.h, io/bed_info.h).
+#include "json_text.h"
 #include "bed_info.h"
 #include "calibration.h"
 #include "subcommands.h"
@@ -23,6 +24,9 @@
 #include <sys/types.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+using granpen::json_number;
+using granpen::json_string;
 
 namespace {
 
@@ -59,50 +63,9 @@ bool parse_number(const std::string &text, double &out)
   return !text.empty() && end == text.c_str() + text.size() && errno != ERANGE && std::isfinite(out);
 }
 
-std::string fmt(const char *f, double v)
-{
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, std::isfinite(v) ? v : 0.0);
-  return buf;
-}
 
-std::string num(double v) { return fmt("%.10g", v); }
+std::string num(double v) { return granpen::json_number("%.10g", v); }
 
-std::string json_string(const std::string &s)
-{
-  std::string o = "\"";
-  for (std::size_t i = 0; i < s.size();) {
-    const unsigned char c = (unsigned char) s[i];
-    if (c == '"') o += "\\\"";
-    else if (c == '\\') o += "\\\\";
-    else if (c == '\n') o += "\\n";
-    else if (c == '\r') o += "\\r";
-    else if (c == '\t') o += "\\t";
-    else if (c < 0x20 || c == 0x7f) {
-      char u[8];
-      std::snprintf(u, sizeof u, "\\u%04x", (unsigned) c);
-      o += u;
-    } else if (c < 0x80) o += (char) c;
-    else {
-      const std::size_t len = (c >= 0xf0 && c <= 0xf4) ? 4 : (c >= 0xe0 && c <= 0xef) ? 3 : (c >= 0xc2 && c <= 0xdf) ? 2 : 0;
-      bool ok = len && i + len <= s.size();
-      for (std::size_t k = 1; ok && k < len; ++k) ok = ((unsigned char) s[i + k] & 0xc0) == 0x80;
-      if (ok) {
-        const unsigned char c1 = (unsigned char) s[i + 1];
-        ok = !(c == 0xe0 && c1 < 0xa0) && !(c == 0xed && c1 >= 0xa0) && !(c == 0xf0 && c1 < 0x90) &&
-             !(c == 0xf4 && c1 >= 0x90);
-      }
-      if (ok) {
-        o.append(s, i, len);
-        i += len;
-        continue;
-      }
-      o += "\\ufffd";
-    }
-    ++i;
-  }
-  return o + "\"";
-}
 
 std::string csv_field(const std::string &s)
 {
@@ -138,7 +101,7 @@ std::vector<std::string> files_with(const fs::path &dir, const std::string &ext,
 std::string pm(const granpen::Stat &s, const char *mf, const char *sf)
 {
   if (!s.n) return "-";
-  return fmt(mf, s.mean) + " +- " + fmt(sf, s.sd);
+  return json_number(mf, s.mean) + " +- " + json_number(sf, s.sd);
 }
 
 std::string markdown(const std::vector<CalibrationRow> &rows, double zmin, double zmax)
@@ -146,10 +109,10 @@ std::string markdown(const std::vector<CalibrationRow> &rows, double zmin, doubl
   std::string o = "| mu | n beds | phi_0 (mean +- sd) | n pushes | v0 (cm/s) | k_z (dyne/cm, mean +- sd) | "
                   "alpha (mean +- sd) |\n|---:|---:|---|---:|---:|---|---|\n";
   for (const auto &r : rows)
-    o += "| " + fmt("%g", r.mu) + " | " + std::to_string(r.phi_0.n) + " | " + pm(r.phi_0, "%.4f", "%.4f") +
-         " | " + std::to_string(r.k_z.n) + " | " + (r.pushes.empty() ? std::string("-") : fmt("%g", r.v0)) +
+    o += "| " + json_number("%g", r.mu) + " | " + std::to_string(r.phi_0.n) + " | " + pm(r.phi_0, "%.4f", "%.4f") +
+         " | " + std::to_string(r.k_z.n) + " | " + (r.pushes.empty() ? std::string("-") : json_number("%g", r.v0)) +
          " | " + pm(r.k_z, "%.4g", "%.2g") + " | " + pm(r.alpha, "%.3g", "%.2g") + " |\n";
-  o += "\nk_z: slope of F on z over z = " + fmt("%g", zmin) + ".." + fmt("%g", zmax) +
+  o += "\nk_z: slope of F on z over z = " + json_number("%g", zmin) + ".." + json_number("%g", zmax) +
        " cm; alpha = k_z / (mu rho_g g D^2); sd over beds/pushes (n - 1).\n";
   return o;
 }
@@ -267,7 +230,7 @@ std::string gnuplot_script(const std::vector<CalibrationRow> &rows)
     for (std::size_t i = 0; i < v0s.size(); ++i) {
       const char *c = colours[i % 6];
       o << (i ? ", \\\n     " : "") << "$kz" << i << " using 1:2:3 with yerrorbars pt 7 ps 1.5 lw 2 lc rgb \"" << c
-        << "\" title \"v_0 = " << fmt("%g", v0s[i]) << " cm/s: mean +- sd over seeds\", \\\n     $pts" << i
+        << "\" title \"v_0 = " << json_number("%g", v0s[i]) << " cm/s: mean +- sd over seeds\", \\\n     $pts" << i
         << " using 1:2 with points pt 6 ps 1.2 lc rgb \"" << c << "\" title \"each seed's push\"";
     }
     o << "\n";
@@ -443,8 +406,8 @@ int granpen::cli::calibration(int argc, char **argv)
       }
       if (!key("seed", p.seed) && bed) p.seed = bed->seed;
       if (bed && std::fabs(bed->mu - p.mu) > 1e-9 * std::fabs(p.mu))
-        notes.push_back(f + ": pushed at mu = " + fmt("%g", p.mu) + " into bed '" + p.bed + "' poured at mu = " +
-                        fmt("%g", bed->mu) + " (grouped by the push's mu)");
+        notes.push_back(f + ": pushed at mu = " + json_number("%g", p.mu) + " into bed '" + p.bed + "' poured at mu = " +
+                        json_number("%g", bed->mu) + " (grouped by the push's mu)");
       double rho_g = 3.0;
       if (!key("rho_g", rho_g)) notes.push_back(f + ": no rho_g header key; alpha uses rho_g = 3 g/cm^3");
 

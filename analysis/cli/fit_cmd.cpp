@@ -1,5 +1,6 @@
 // granpen fit TRACE...: the paper's observables of each force trace: the depth term
 // k_z and alpha, the transient peak, the fluctuation wavelength (core/trace_fit.h).
+#include "json_text.h"
 #include "subcommands.h"
 #include "trace_fit.h"
 #include "trace_reader.h"
@@ -15,6 +16,9 @@
 #include <limits>
 #include <string>
 #include <vector>
+
+using granpen::json_number;
+using granpen::json_string;
 
 namespace {
 
@@ -85,55 +89,9 @@ bool header_value(const granpen::Trace &tr, const char *key, double fallback, do
   return true;
 }
 
-std::string fmt(const char *f, double v)
-{
-  char buf[64];
-  std::snprintf(buf, sizeof buf, f, std::isfinite(v) ? v : 0.0);
-  return buf;
-}
 
-// JSON string with escapes; invalid UTF-8 bytes become U+FFFD
-std::string json_string(const std::string &s)
-{
-  std::string o = "\"";
-  for (std::size_t i = 0; i < s.size();) {
-    const unsigned char c = (unsigned char) s[i];
-    if (c == '"') o += "\\\"";
-    else if (c == '\\') o += "\\\\";
-    else if (c == '\n') o += "\\n";
-    else if (c == '\r') o += "\\r";
-    else if (c == '\t') o += "\\t";
-    else if (c == '\b') o += "\\b";
-    else if (c == '\f') o += "\\f";
-    else if (c < 0x20 || c == 0x7f) {
-      char u[8];
-      std::snprintf(u, sizeof u, "\\u%04x", (unsigned) c);
-      o += u;
-    }
-    else if (c < 0x80) o += (char) c;
-    else {
-      // a valid UTF-8 sequence passes through
-      const std::size_t len = (c >= 0xf0 && c <= 0xf4) ? 4 : (c >= 0xe0 && c <= 0xef) ? 3 : (c >= 0xc2 && c <= 0xdf) ? 2 : 0;
-      bool ok = len && i + len <= s.size();
-      for (std::size_t k = 1; ok && k < len; ++k) ok = ((unsigned char) s[i + k] & 0xc0) == 0x80;
-      if (ok) {    // no overlong forms, surrogates or code points above U+10FFFF
-        const unsigned char c1 = (unsigned char) s[i + 1];
-        ok = !(c == 0xe0 && c1 < 0xa0) && !(c == 0xed && c1 >= 0xa0) && !(c == 0xf0 && c1 < 0x90) &&
-             !(c == 0xf4 && c1 >= 0x90);
-      }
-      if (ok) {
-        o.append(s, i, len);
-        i += len;
-        continue;
-      }
-      o += "\\ufffd";
-    }
-    ++i;
-  }
-  return o + "\"";
-}
 
-std::string json_number(double v) { return fmt("%.10g", v); }
+std::string num(double v) { return granpen::json_number("%.10g", v); }
 
 std::string csv_field(const std::string &s)
 {
@@ -145,33 +103,33 @@ std::string csv_field(const std::string &s)
 
 std::string window_text(double zlo, double zhi)
 {
-  return std::isfinite(zhi) ? fmt("%g", zlo) + ".." + fmt("%g", zhi) + " cm" : "z >= " + fmt("%g", zlo) + " cm";
+  return std::isfinite(zhi) ? json_number("%g", zlo) + ".." + json_number("%g", zhi) + " cm" : "z >= " + json_number("%g", zlo) + " cm";
 }
 
 void print_result(const Result &r)
 {
   const TraceFit &f = r.fit;
-  std::string line = r.file + ": v0 = " + fmt("%g", r.v0) + " cm/s";
+  std::string line = r.file + ": v0 = " + json_number("%g", r.v0) + " cm/s";
   if (f.slope_ok)
-    line += ", k_z = " + fmt("%.4g", f.k_z) + " +- " + fmt("%.2g", f.k_z_se) + " dyne/cm (z " +
-            fmt("%.3g", f.z_first) + ".." + fmt("%.3g", f.z_last) + " cm, " + std::to_string(f.n_window) + " rows)";
+    line += ", k_z = " + json_number("%.4g", f.k_z) + " +- " + json_number("%.2g", f.k_z_se) + " dyne/cm (z " +
+            json_number("%.3g", f.z_first) + ".." + json_number("%.3g", f.z_last) + " cm, " + std::to_string(f.n_window) + " rows)";
   else
     line += ", k_z undefined";
-  if (f.alpha_ok) line += ", alpha = " + fmt("%.3g", f.alpha) + " +- " + fmt("%.2g", f.alpha_se);
+  if (f.alpha_ok) line += ", alpha = " + json_number("%.3g", f.alpha) + " +- " + json_number("%.2g", f.alpha_se);
   else line += ", alpha undefined";
   if (f.peak_ok)
-    line += ", peak F = " + fmt("%.4g", f.peak_F) + " dyne at z = " + fmt("%.3g", f.peak_z) + " cm";
+    line += ", peak F = " + json_number("%.4g", f.peak_F) + " dyne at z = " + json_number("%.3g", f.peak_z) + " cm";
   else line += ", peak undefined";
   if (f.wavelength_ok)
-    line += ", wavelength = " + fmt("%.3g", f.wavelength) + " cm (" + fmt("%.3g", f.wavelength_dg) + " d_g, " +
-            fmt("%.0f", 100.0 * f.spectrum.power_fraction) + "% of the power)";
+    line += ", wavelength = " + json_number("%.3g", f.wavelength) + " cm (" + json_number("%.3g", f.wavelength_dg) + " d_g, " +
+            json_number("%.0f", 100.0 * f.spectrum.power_fraction) + "% of the power)";
   else line += ", wavelength undefined";
   std::puts(line.c_str());
 
   std::vector<std::string> defs;
-  if (r.mu_src == "default") defs.push_back("mu = " + fmt("%g", r.mu));
-  if (r.rho_src == "default") defs.push_back("rho_g = " + fmt("%g", r.rho_g) + " g/cm^3");
-  if (r.dg_src == "default") defs.push_back("d_g = " + fmt("%g", r.d_g) + " cm");
+  if (r.mu_src == "default") defs.push_back("mu = " + json_number("%g", r.mu));
+  if (r.rho_src == "default") defs.push_back("rho_g = " + json_number("%g", r.rho_g) + " g/cm^3");
+  if (r.dg_src == "default") defs.push_back("d_g = " + json_number("%g", r.d_g) + " cm");
   if (!defs.empty()) {
     std::string d = "  defaults used (not in the header):";
     for (std::size_t i = 0; i < defs.size(); ++i) d += (i ? ", " : " ") + defs[i];
@@ -188,34 +146,34 @@ bool write_json(const std::string &path, const std::vector<Result> &results,
   o << "{\n  \"tool\": \"granpen fit\",\n"
     << "  \"units\": {\"z\": \"cm\", \"F\": \"dyne\", \"k_z\": \"dyne/cm\", \"v0\": \"cm/s\", "
        "\"g\": \"cm/s^2\", \"rho_g\": \"g/cm^3\", \"wavelength\": \"cm\"},\n"
-    << "  \"window\": {\"zmin\": " << json_number(zmin)
-    << ", \"zmax\": " << (std::isfinite(zmax) ? json_number(zmax) : std::string("null")) << "},\n"
+    << "  \"window\": {\"zmin\": " << num(zmin)
+    << ", \"zmax\": " << (std::isfinite(zmax) ? num(zmax) : std::string("null")) << "},\n"
     << "  \"traces\": [";
   auto b = [](bool v) { return v ? "true" : "false"; };
   for (std::size_t i = 0; i < results.size(); ++i) {
     const Result &r = results[i];
     const TraceFit &f = r.fit;
-    o << (i ? ",\n" : "\n") << "    {\"file\": " << json_string(r.file) << ", \"v0\": " << json_number(r.v0)
-      << ", \"D\": " << json_number(r.D) << ", \"g\": " << json_number(r.g) << ",\n"
-      << "     \"mu\": " << json_number(r.mu) << ", \"mu_source\": " << json_string(r.mu_src)
-      << ", \"rho_g\": " << json_number(r.rho_g) << ", \"rho_g_source\": " << json_string(r.rho_src)
-      << ", \"d_g\": " << json_number(r.d_g) << ", \"d_g_source\": " << json_string(r.dg_src) << ",\n"
-      << "     \"zlo\": " << json_number(f.zlo) << ", \"zhi\": " << json_number(f.zhi)
-      << ", \"n_window\": " << f.n_window << ", \"z_first\": " << json_number(f.z_first)
-      << ", \"z_last\": " << json_number(f.z_last) << ",\n"
-      << "     \"slope_ok\": " << b(f.slope_ok) << ", \"k_z\": " << json_number(f.k_z)
-      << ", \"k_z_se\": " << json_number(f.k_z_se) << ", \"intercept\": " << json_number(f.intercept)
-      << ", \"intercept_se\": " << json_number(f.intercept_se) << ", \"rms\": " << json_number(f.rms) << ",\n"
-      << "     \"alpha_ok\": " << b(f.alpha_ok) << ", \"alpha\": " << json_number(f.alpha)
-      << ", \"alpha_se\": " << json_number(f.alpha_se) << ",\n"
+    o << (i ? ",\n" : "\n") << "    {\"file\": " << json_string(r.file) << ", \"v0\": " << num(r.v0)
+      << ", \"D\": " << num(r.D) << ", \"g\": " << num(r.g) << ",\n"
+      << "     \"mu\": " << num(r.mu) << ", \"mu_source\": " << json_string(r.mu_src)
+      << ", \"rho_g\": " << num(r.rho_g) << ", \"rho_g_source\": " << json_string(r.rho_src)
+      << ", \"d_g\": " << num(r.d_g) << ", \"d_g_source\": " << json_string(r.dg_src) << ",\n"
+      << "     \"zlo\": " << num(f.zlo) << ", \"zhi\": " << num(f.zhi)
+      << ", \"n_window\": " << f.n_window << ", \"z_first\": " << num(f.z_first)
+      << ", \"z_last\": " << num(f.z_last) << ",\n"
+      << "     \"slope_ok\": " << b(f.slope_ok) << ", \"k_z\": " << num(f.k_z)
+      << ", \"k_z_se\": " << num(f.k_z_se) << ", \"intercept\": " << num(f.intercept)
+      << ", \"intercept_se\": " << num(f.intercept_se) << ", \"rms\": " << num(f.rms) << ",\n"
+      << "     \"alpha_ok\": " << b(f.alpha_ok) << ", \"alpha\": " << num(f.alpha)
+      << ", \"alpha_se\": " << num(f.alpha_se) << ",\n"
       << "     \"peak_ok\": " << b(f.peak_ok) << ", \"n_peak\": " << f.n_peak
-      << ", \"peak_zmax\": " << json_number(f.peak_zmax) << ", \"peak_F\": " << json_number(f.peak_F)
-      << ", \"peak_z\": " << json_number(f.peak_z) << ",\n"
-      << "     \"wavelength_ok\": " << b(f.wavelength_ok) << ", \"wavelength\": " << json_number(f.wavelength)
-      << ", \"wavelength_d_g\": " << json_number(f.wavelength_dg) << ", \"spectrum\": {\"dz\": "
-      << json_number(f.spectrum.dz) << ", \"n\": " << f.spectrum.n << ", \"length\": "
-      << json_number(f.spectrum.length) << ", \"bin\": " << f.spectrum.bin
-      << ", \"power_fraction\": " << json_number(f.spectrum.power_fraction)
+      << ", \"peak_zmax\": " << num(f.peak_zmax) << ", \"peak_F\": " << num(f.peak_F)
+      << ", \"peak_z\": " << num(f.peak_z) << ",\n"
+      << "     \"wavelength_ok\": " << b(f.wavelength_ok) << ", \"wavelength\": " << num(f.wavelength)
+      << ", \"wavelength_d_g\": " << num(f.wavelength_dg) << ", \"spectrum\": {\"dz\": "
+      << num(f.spectrum.dz) << ", \"n\": " << f.spectrum.n << ", \"length\": "
+      << num(f.spectrum.length) << ", \"bin\": " << f.spectrum.bin
+      << ", \"power_fraction\": " << num(f.spectrum.power_fraction)
       << ", \"lowest_bin\": " << b(f.spectrum.lowest_bin) << "},\n"
       << "     \"notes\": [";
     for (std::size_t k = 0; k < f.notes.size(); ++k) o << (k ? ", " : "") << json_string(f.notes[k]);
@@ -238,7 +196,7 @@ bool write_csv(const std::string &path, const std::vector<Result> &results)
        "peak_ok,peak_F,peak_z,wavelength_ok,wavelength,wavelength_d_g,spectrum_length,power_fraction\n";
   for (const auto &r : results) {
     const TraceFit &f = r.fit;
-    const auto n = [](double v) { return json_number(v); };
+    const auto n = [](double v) { return num(v); };
     o << csv_field(r.file) << ',' << n(r.v0) << ',' << n(r.D) << ',' << n(r.g) << ',' << n(r.mu) << ','
       << r.mu_src << ',' << n(r.rho_g) << ',' << r.rho_src << ',' << n(r.d_g) << ',' << r.dg_src << ','
       << n(f.zlo) << ',' << n(f.zhi) << ',' << f.n_window << ',' << n(f.z_first) << ',' << n(f.z_last) << ','

@@ -1,6 +1,7 @@
 // granpen sweep: the runner (processes, progress, resume, manifest).
 #include "sweep_runner.h"
 
+#include "json_text.h"
 #include "trace_reader.h"
 
 #include <algorithm>
@@ -174,21 +175,6 @@ pid_t spawn(const std::vector<std::string> &argv, const std::string &out)
 
 }    // namespace
 
-std::string json_string(const std::string &s)
-{
-  std::string o = "\"";
-  for (unsigned char c : s) {
-    if (c == '"') o += "\\\"";
-    else if (c == '\\') o += "\\\\";
-    else if (c == '\n') o += "\\n";
-    else if (c < 0x20) {
-      char b[8];
-      std::snprintf(b, sizeof(b), "\\u%04x", c);
-      o += b;
-    } else o += (char) c;
-  }
-  return o + "\"";
-}
 
 int run_sweep(const SweepSpec &spec, const RunnerOptions &opt)
 {

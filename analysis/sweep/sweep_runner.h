@@ -32,9 +32,6 @@ int run_sweep(const SweepSpec &spec, const RunnerOptions &opt);
 void write_slurm_script(const SweepSpec &spec, const RunnerOptions &opt, const std::string &cli,
                         const std::string &file);
 
-// JSON string literal with escapes
-std::string json_string(const std::string &s);
-
 }    // namespace granpen
 
 #endif

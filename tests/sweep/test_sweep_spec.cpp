@@ -1,4 +1,5 @@
 // Sweep files: parsing, the plan, the resume decision, and hostile input in every field.
+#include "json_text.h"
 #include "sweep_runner.h"
 #include "sweep_spec.h"
 #include "trace_reader.h"
@@ -119,4 +120,5 @@ TEST(SweepSpec, ResumeDecision)
 TEST(SweepSpec, JsonStringsAreEscaped)
 {
   EXPECT_EQ(json_string("a\"b\\c\nd\x01"), "\"a\\\"b\\\\c\\nd\\u0001\"");
+  EXPECT_EQ(json_number("%.3g", 1.0 / 0.0), "0");
 }
