@@ -80,6 +80,18 @@ std::vector<CalibrationRow> calibration_table(const std::vector<CalibrationBed> 
         }
       row.k_z = mean_sd(ks);
       row.alpha = mean_sd(as);
+      if (row.beds.empty()) {
+        // mu raised in beds poured at another mu: phi_0 is that of the beds pushed into
+        std::vector<double> used;
+        for (const auto &b : beds)
+          for (const auto &p : row.pushes)
+            if (p.bed == b.name) {
+              row.beds.push_back(b);
+              used.push_back(b.phi_0);
+              break;
+            }
+        row.phi_0 = mean_sd(used);
+      }
       rows.push_back(row);
     }
   }

@@ -48,7 +48,8 @@ struct CalibrationRow {
 
 // Rows sorted by mu then v0. mu values (and v0 values) that agree to a relative
 // 1e-9 are one group. A mu with beds but no pushes gives one row with v0 = 0 and
-// empty k_z; a mu with pushes but no beds gives rows with empty phi_0.
+// empty k_z; a mu with pushes but no beds poured at it (mu raised in a poured bed) takes
+// phi_0 over the beds its pushes were pushed into.
 std::vector<CalibrationRow> calibration_table(const std::vector<CalibrationBed> &beds,
                                               const std::vector<CalibrationPush> &pushes);
 

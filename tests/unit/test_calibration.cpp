@@ -117,6 +117,20 @@ TEST(Calibration, SeveralSpeedsAndMissingPushes)
   EXPECT_TRUE(calibration_table({}, {}).empty());
 }
 
+TEST(Calibration, MuRaisedInPouredBedsTakesTheirPhi0)
+{
+  // beds poured at mu = 0.1, pushed at mu = 0.1 and (raised) 0.3
+  const std::vector<CalibrationBed> beds = {bed("a", 0.1, 1, 0.60), bed("b", 0.1, 2, 0.58)};
+  const std::vector<CalibrationPush> pushes = {push("a", 0.3, 1, 56, 900, 9), push("b", 0.3, 2, 56, 700, 7),
+                                               push("a", 0.1, 1, 56, 300, 3)};
+  const auto rows = calibration_table(beds, pushes);
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_NEAR(rows[1].mu, 0.3, 1e-12);
+  EXPECT_EQ(rows[1].phi_0.n, 2u);
+  EXPECT_NEAR(rows[1].phi_0.mean, 0.59, 1e-12);
+  EXPECT_NEAR(rows[1].k_z.mean, 800.0, 1e-9);
+}
+
 TEST(BedInfo, ReadsInPourFormat)
 {
   const BedInfo b = parse_bed_info(GOOD_INFO, "sweep/beds/bed_mu0.3_s4242.info");
