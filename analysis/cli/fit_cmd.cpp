@@ -1,6 +1,7 @@
 // granpen fit TRACE...: the paper's observables of each force trace: the depth term
 // k_z and alpha, the transient peak, the fluctuation wavelength (core/trace_fit.h).
 #include "json_text.h"
+#include "trace_files.h"
 #include "subcommands.h"
 #include "trace_fit.h"
 #include "trace_reader.h"
@@ -274,25 +275,9 @@ int granpen::cli::fit(int argc, char **argv)
   std::vector<Result> results;
   std::vector<Failure> failures;
 
-  // expand folders into their *.csv files (sorted)
-  std::vector<std::string> files;
-  for (const auto &in : inputs) {
-    std::error_code ec;
-    if (fs::is_directory(in, ec)) {
-      std::vector<std::string> found;
-      for (const auto &e : fs::directory_iterator(in, ec))
-        if (e.path().extension() == ".csv" && e.is_regular_file(ec)) found.push_back(e.path().string());
-      if (ec) {
-        failures.push_back({in, in + ": cannot list folder: " + ec.message()});
-        continue;
-      }
-      std::sort(found.begin(), found.end());
-      if (found.empty()) failures.push_back({in, in + ": folder holds no *.csv file"});
-      files.insert(files.end(), found.begin(), found.end());
-    } else {
-      files.push_back(in);
-    }
-  }
+  std::vector<std::string> problems;
+  const std::vector<std::string> files = expand_trace_paths(inputs, problems);
+  for (const auto &m : problems) failures.push_back({m.substr(0, m.find(": ")), m});
   for (const auto &f : failures) std::fprintf(stderr, "granpen fit: %s\n", f.message.c_str());
 
   std::printf("granpen fit: window %s; %zu trace%s\n", window_text(zmin, zmax).c_str(), files.size(),

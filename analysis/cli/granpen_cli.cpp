@@ -17,6 +17,7 @@ const Subcommand SUBCOMMANDS[] = {
     {"check", granpen::cli::check, "validate force traces (granpen-trace v1) and summarise them"},
     {"fit", granpen::cli::fit, "fit the depth term k_z, alpha, the peak and the fluctuation wavelength"},
     {"calibration", granpen::cli::calibration, "summarise a friction-calibration sweep: phi_0(mu), k_z(mu)"},
+    {"collapse", granpen::cli::collapse, "F/F_z against t~ = (z/v0) sqrt(g/D): crossover, collapse quality, peak law"},
     {"sweep", granpen::cli::sweep, "run a sweep of pours and pushes from a sweep file"},
 };
 

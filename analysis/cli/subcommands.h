@@ -10,6 +10,7 @@ namespace cli {
 int check(int argc, char **argv);          // check_cmd.cpp
 int fit(int argc, char **argv);            // fit_cmd.cpp
 int calibration(int argc, char **argv);    // calibration_cmd.cpp
+int collapse(int argc, char **argv);       // collapse_cmd.cpp
 int sweep(int argc, char **argv);          // sweep_cmd.cpp
 
 }    // namespace cli

@@ -57,3 +57,12 @@ add_test(NAME cli_calibration_synthetic COMMAND granpen-cli calibration ${GRANPE
   --out ${CMAKE_CURRENT_BINARY_DIR}/calibration_cli/out)
 set_tests_properties(cli_calibration_synthetic PROPERTIES LABELS "unit;cli"
   PASS_REGULAR_EXPRESSION "\\| 0\\.3 \\| 2 \\| 0\\.5900 \\+- 0\\.0141 \\| 2 \\| 100 \\| 2\\.1e\\+04 \\+- 1\\.4e\\+03 \\| 5\\.95 \\+- 0\\.4 \\|")
+
+add_executable(test_collapse test_collapse.cpp)
+target_link_libraries(test_collapse PRIVATE granpen_analysis GTest::gtest_main)
+gtest_discover_tests(test_collapse PROPERTIES LABELS unit)
+# the collapse front end on the committed bench v0 sweep (6 traces, 3 speeds)
+add_test(NAME cli_collapse_bench_sweep COMMAND granpen-cli collapse ${PROJECT_SOURCE_DIR}/data/sims/v0_bench
+  --alpha 18.6 --json ${CMAKE_CURRENT_BINARY_DIR}/collapse.json)
+set_tests_properties(cli_collapse_bench_sweep PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "granpen collapse: 6 traces.*collapse quality: spread.*peak law: peak ~ v0\\^[0-9.]+ \\+- [0-9.]+ \\(95%")

@@ -1,0 +1,137 @@
+/* ----------------------------------------------------------------------
+   granpen analysis: the t~ collapse (see collapse.h).
+------------------------------------------------------------------------- */
+
+#include "collapse.h"
+
+#include "linear_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+namespace granpen {
+
+double t95(int dof)
+{
+  static const double table[] = {12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
+                                 2.201,  2.179, 2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086,
+                                 2.080,  2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042};
+  if (dof < 1) return 0.0;
+  return dof <= 30 ? table[dof - 1] : 1.96;
+}
+
+namespace {
+
+// mean of y in bins of x of width w: bin index -> (sum, count)
+std::map<long, std::pair<double, int>> binned(const std::vector<double> &x, const std::vector<double> &y,
+                                              double w)
+{
+  std::map<long, std::pair<double, int>> b;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    auto &s = b[static_cast<long>(std::floor(x[i] / w))];
+    s.first += y[i];
+    s.second += 1;
+  }
+  return b;
+}
+
+// mean over bins (holding at least two curves) of the across-curve coefficient of variation
+double spread(const std::vector<std::map<long, std::pair<double, int>>> &curves)
+{
+  std::map<long, std::vector<double>> per_bin;
+  for (const auto &c : curves)
+    for (const auto &kv : c) per_bin[kv.first].push_back(kv.second.first / kv.second.second);
+  double sum = 0.0;
+  int n = 0;
+  for (const auto &kv : per_bin) {
+    const auto &v = kv.second;
+    if (v.size() < 2) continue;
+    double m = 0.0, s2 = 0.0;
+    for (double x : v) m += x;
+    m /= v.size();
+    for (double x : v) s2 += (x - m) * (x - m);
+    const double sd = std::sqrt(s2 / (v.size() - 1));
+    if (std::fabs(m) > 0.0) {
+      sum += sd / std::fabs(m);
+      ++n;
+    }
+  }
+  return n ? sum / n : 0.0;
+}
+
+}    // namespace
+
+CollapseResult collapse(const std::vector<CollapseInput> &inputs, const CollapseParams &p)
+{
+  CollapseResult res;
+  std::vector<std::map<long, std::pair<double, int>>> by_z, by_t;
+  std::vector<double> logv, logpeak;
+  std::vector<double> stars;
+  for (const auto &in : inputs) {
+    if (!(in.v0 > 0 && in.D > 0 && in.g > 0 && in.k_z > 0))
+      throw std::invalid_argument(in.name + ": collapse needs v0, D, g and k_z > 0");
+    CollapseCurve c;
+    c.name = in.name;
+    c.v0 = in.v0, c.D = in.D, c.g = in.g, c.k_z = in.k_z;
+    const double scale = std::sqrt(in.g / in.D) / in.v0;
+    std::vector<double> zs, ts, rs;
+    for (std::size_t i = 0; i < in.z.size(); ++i) {
+      const double z = in.z[i];
+      if (z > 0.0 && z < 0.35 * in.D && in.F[i] > c.peak) c.peak = in.F[i], c.peak_z = z;
+      if (z < p.zmin) continue;
+      zs.push_back(z);
+      ts.push_back(z * scale);
+      rs.push_back(in.F[i] / (in.k_z * z));
+    }
+    auto bz = binned(zs, rs, p.zbin), bt = binned(ts, rs, p.tbin);
+    for (const auto &kv : bt) {
+      c.t.push_back((kv.first + 0.5) * p.tbin);
+      c.ratio.push_back(kv.second.first / kv.second.second);
+    }
+    // crossover: first bin from which every later bin stays in the band (at least two bins)
+    for (std::size_t k = 0; k + 1 < c.ratio.size(); ++k) {
+      bool stays = true;
+      for (std::size_t j = k; j < c.ratio.size() && stays; ++j) stays = std::fabs(c.ratio[j] - 1.0) <= p.band;
+      if (stays) {
+        c.crossed = true;
+        c.t_star = c.t[k] - 0.5 * p.tbin;
+        break;
+      }
+    }
+    if (c.crossed) stars.push_back(c.t_star);
+    if (c.peak > 0.0) {
+      logv.push_back(std::log(in.v0));
+      logpeak.push_back(std::log(c.peak));
+    }
+    by_z.push_back(bz);
+    by_t.push_back(bt);
+    res.curves.push_back(c);
+  }
+  res.n_crossed = static_cast<int>(stars.size());
+  if (!stars.empty()) {
+    double m = 0.0, s2 = 0.0;
+    for (double s : stars) m += s;
+    m /= stars.size();
+    for (double s : stars) s2 += (s - m) * (s - m);
+    res.t_star_mean = m;
+    res.t_star_sd = stars.size() > 1 ? std::sqrt(s2 / (stars.size() - 1)) : 0.0;
+  }
+  res.spread_z = spread(by_z);
+  res.spread_t = spread(by_t);
+
+  std::vector<double> distinct = logv;
+  std::sort(distinct.begin(), distinct.end());
+  distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+  if (logv.size() >= 3 && distinct.size() >= 2) {
+    auto f = linear_fit(logv, logpeak);
+    res.peak_ok = true;
+    res.peak_exponent = f.b;
+    res.peak_exponent_se = f.se_b;
+    res.peak_exponent_ci95 = t95(static_cast<int>(f.n) - 2) * f.se_b;
+  }
+  return res;
+}
+
+}    // namespace granpen

@@ -1,0 +1,62 @@
+/* -*- c++ -*- ----------------------------------------------------------
+   granpen analysis: the collapse of F / F_z against t~ = (z / v0) sqrt(g / D)
+   over a set of traces (paper: Velocity Dependence). Plain arrays in:
+   - each curve F/F_z (F_z = k_z z) binned in t~; the crossover t~* of a curve
+     is the start of the first bin after which every later bin stays within
+     1 +- band;
+   - collapse quality: the spread of the curves (coefficient of variation across
+     curves, averaged over bins) binned against z, and against t~;
+   - the peak law: peak height (max F over 0 < z < 0.7 R) against v0 on log
+     axes, the exponent with its 95% confidence interval.
+   Knows nothing of files.
+------------------------------------------------------------------------- */
+
+#ifndef GRANPEN_COLLAPSE_H
+#define GRANPEN_COLLAPSE_H
+
+#include <string>
+#include <vector>
+
+namespace granpen {
+
+struct CollapseInput {
+  std::string name;
+  std::vector<double> z, F;    // cm, dyne
+  double v0 = 0.0, D = 0.0, g = 0.0;
+  double k_z = 0.0;            // dyne/cm: F_z = k_z z
+};
+
+struct CollapseParams {
+  double zmin = 0.2;       // ignore z below this (F_z -> 0)
+  double band = 0.2;       // |F/F_z - 1| <= band counts as joined
+  double tbin = 0.1;       // t~ bin width
+  double zbin = 0.25;      // z bin width for the spread before collapse
+};
+
+struct CollapseCurve {
+  std::string name;
+  double v0 = 0.0, D = 0.0, g = 0.0, k_z = 0.0;
+  std::vector<double> t, ratio;    // bin centres and mean F/F_z of non-empty t~ bins
+  bool crossed = false;
+  double t_star = 0.0;
+  double peak = 0.0, peak_z = 0.0;
+};
+
+struct CollapseResult {
+  std::vector<CollapseCurve> curves;
+  int n_crossed = 0;
+  double t_star_mean = 0.0, t_star_sd = 0.0;
+  double spread_z = 0.0, spread_t = 0.0;    // before (against z) and after (against t~)
+  bool peak_ok = false;                     // at least 3 curves with distinct v0
+  double peak_exponent = 0.0, peak_exponent_se = 0.0, peak_exponent_ci95 = 0.0;
+};
+
+// Throws std::invalid_argument for an input with non-positive v0, D, g or k_z.
+CollapseResult collapse(const std::vector<CollapseInput> &inputs, const CollapseParams &p);
+
+// Two-sided 95% quantile of Student's t with dof degrees of freedom (1.96 beyond 30).
+double t95(int dof);
+
+}    // namespace granpen
+
+#endif
