@@ -182,7 +182,7 @@ std::string gnuplot_script(const std::vector<CalibrationRow> &rows)
   const double pad = hi > lo ? 0.1 * (hi - lo) : std::max(0.05, 0.1 * std::fabs(lo));
   std::ostringstream o;
   o << "# granpen calibration: phi_0 and k_z against the grain friction mu (written by granpen calibration)\n"
-    << "set terminal pngcairo size 800,600 font \",12\"\nset grid\nset key top left box opaque\n"
+    << "set encoding utf8\nset terminal pngcairo size 1000,600 font \",12\"\nset grid\nset key outside right top box\nset offsets 0, 0, graph 0.05, graph 0.05\n"
     << "set xrange [" << num(lo - pad) << ":" << num(hi + pad) << "]\n"
     << "set xlabel \"grain friction coefficient {/Symbol m}\"\n\n";
 
@@ -200,7 +200,7 @@ std::string gnuplot_script(const std::vector<CalibrationRow> &rows)
   o << "EOD\n"
     << "set output \"calibration_phi0.png\"\nset title \"Bed packing fraction against friction\"\n"
     << "set ylabel \"packing fraction {/Symbol f}_0\"\n"
-    << "plot $phi using 1:2:3 with yerrorbars pt 7 ps 1.5 lw 2 lc rgb \"#1f77b4\" title \"mean +- sd over seeds\", \\\n"
+    << "plot $phi using 1:2:3 with yerrorbars pt 7 ps 1.5 lw 2 lc rgb \"#1f77b4\" title \"mean ± sd over seeds\", \\\n"
     << "     $beds using 1:2 with points pt 6 ps 1.2 lc rgb \"#555555\" title \"each seed's bed\"\n"
     << "unset output\n\n";
 
@@ -230,7 +230,7 @@ std::string gnuplot_script(const std::vector<CalibrationRow> &rows)
     for (std::size_t i = 0; i < v0s.size(); ++i) {
       const char *c = colours[i % 6];
       o << (i ? ", \\\n     " : "") << "$kz" << i << " using 1:2:3 with yerrorbars pt 7 ps 1.5 lw 2 lc rgb \"" << c
-        << "\" title \"v_0 = " << json_number("%g", v0s[i]) << " cm/s: mean +- sd over seeds\", \\\n     $pts" << i
+        << "\" title \"v_0 = " << json_number("%g", v0s[i]) << " cm/s: mean ± sd over seeds\", \\\n     $pts" << i
         << " using 1:2 with points pt 6 ps 1.2 lc rgb \"" << c << "\" title \"each seed's push\"";
     }
     o << "\n";
