@@ -215,6 +215,7 @@ int run_sweep(const SweepSpec &spec, const RunnerOptions &opt)
       var("mu", r.mu);
       var("seed", r.seed);
       var("out", dir + "/beds/" + r.id);
+      for (const auto &[k, v] : spec.set) var(k, v);
     } else {
       j.trace = dir + "/traces/" + r.id + ".csv";
       j.done = j.trace + ".done";
@@ -232,6 +233,8 @@ int run_sweep(const SweepSpec &spec, const RunnerOptions &opt)
       var("trace", j.trace);
       var("checkpoint", std::to_string(opt.checkpoint));
       var("observe", opt.inputs + "/observe/" + spec.observe + ".lmp");
+      for (const auto &[k, v] : spec.set) var(k, v);
+      for (const auto &[k, v] : spec.push_set) var(k, v);
       var("drive_extra", "header bed " + r.bed + " header seed " + r.seed + " header preset " + r.preset);
       j.target_depth = r.depth.empty() ? 0.0 : std::atof(r.depth.c_str());
     }

@@ -130,8 +130,24 @@ SweepSpec parse_sweep(const std::string &text, const std::string &path,
       if (observe_exists && !observe_exists(vals[0]))
         fail(path, lineno, "unknown observe set '" + vals[0] + "' (no inputs/observe/" + vals[0] + ".lmp)");
       spec.observe = vals[0];
+    } else if (key == "set" || key == "push_set") {
+      auto &dst = key == "set" ? spec.set : spec.push_set;
+      for (const auto &v : vals) {
+        const auto e = v.find('=');
+        const std::string name = v.substr(0, e), value = e == std::string::npos ? "" : v.substr(e + 1);
+        if (e == std::string::npos || !settable_variable(name))
+          fail(path, lineno, "'" + key + "' item '" + v + "' is not NAME=VALUE with a deck variable NAME "
+               "(letters, digits, _; not one the runner sets)");
+        if (!settable_value(value))
+          fail(path, lineno, "'" + key + "' value '" + value + "' of " + name + " is neither a number nor a name");
+        for (const auto &[n, _] : spec.set)
+          if (n == name) fail(path, lineno, "deck variable " + name + " set twice");
+        for (const auto &[n, _] : spec.push_set)
+          if (n == name) fail(path, lineno, "deck variable " + name + " set twice");
+        dst.emplace_back(name, value);
+      }
     } else {
-      fail(path, lineno, "unknown key '" + key + "' (known: name preset mu seeds v0 g D depth mu_push observe)");
+      fail(path, lineno, "unknown key '" + key + "' (known: name preset mu seeds v0 g D depth mu_push observe set push_set)");
     }
   }
   if (spec.name.empty()) fail(path, lineno, "missing 'name'");
@@ -176,6 +192,36 @@ std::vector<PlannedRun> plan_sweep(const SweepSpec &spec)
       }
   pours.insert(pours.end(), pushes.begin(), pushes.end());
   return pours;
+}
+
+bool settable_variable(const std::string &name)
+{
+  static const char *reserved[] = {"inputs", "preset", "mu", "seed", "out", "bed", "v0", "g_push", "D",
+                                   "depth", "mu_push", "run", "trace", "checkpoint", "observe",
+                                   "drive_extra", "resume", "from", "mu_c", "chain_kw", "roll_kw"};
+  if (!safe_name(name) || name.find('-') != std::string::npos || std::isdigit((unsigned char) name[0]))
+    return false;
+  for (const char *r : reserved)
+    if (name == r) return false;
+  return true;
+}
+
+bool settable_value(const std::string &value)
+{
+  if (value.empty() || value.size() > 32) return false;
+  if (safe_name(value) && std::isalpha((unsigned char) value[0])) {    // yes, no, ...
+    std::string low;
+    for (unsigned char c : value) low += (char) std::tolower(c);
+    return low != "nan" && low.rfind("inf", 0) != 0;    // not a number LAMMPS would read as one
+  }
+  // a finite number of either sign: the characters positive_number allows, checked the same way
+  const std::string mag = (value[0] == '-' || value[0] == '+') ? value.substr(1) : value;
+  if (mag.empty() || !(std::isdigit((unsigned char) mag[0]) || mag[0] == '.')) return false;
+  for (unsigned char c : mag)
+    if (!(std::isdigit(c) || c == '.' || c == 'e' || c == 'E' || c == '-' || c == '+')) return false;
+  char *end = nullptr;
+  const double v = std::strtod(value.c_str(), &end);
+  return end == value.c_str() + value.size() && std::isfinite(v);
 }
 
 PushAction push_action(bool done_marker, bool trace_exists, bool checkpoint_exists)

@@ -13,12 +13,16 @@
 //   mu_push = 0.2 0.3           friction during the push, raised in the poured bed
 //                               (default: the pour's)
 //   observe = none              an inputs/observe/NAME.lmp to include in every push
+//   set     = poly=0.1 walls=1  deck variables (-var NAME VALUE) of every pour and push: the
+//                               model knobs of in.pour and inputs/model/contact.lmp
+//   push_set = ramp=0.3         deck variables of the pushes only (the measurement chain)
 // Every value is checked: numbers are parsed whole as finite positive numbers, names
 // against a safe character set; no value ever reaches a shell.
 #ifndef GRANPEN_SWEEP_SPEC_H
 #define GRANPEN_SWEEP_SPEC_H
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace granpen {
@@ -32,6 +36,7 @@ struct SweepSpec {
   std::vector<std::string> v0, g, D, mu_push;
   std::string depth;                 // empty: the preset's
   std::string observe = "none";
+  std::vector<std::pair<std::string, std::string>> set, push_set;    // NAME, VALUE
 };
 
 struct PlannedRun {
@@ -53,6 +58,11 @@ std::vector<PlannedRun> plan_sweep(const SweepSpec &spec);
 
 // A name made only of letters, digits, '_' and '-', not starting with '-'.
 bool safe_name(const std::string &s);
+// A deck variable a sweep may set: a safe name that is not one the runner sets itself.
+bool settable_variable(const std::string &name);
+// A finite decimal number of any sign, or a safe name (yes, no, ...).
+bool settable_value(const std::string &value);
+
 // A whole, finite, positive decimal number (no sign, no exponent tricks beyond e/E).
 bool positive_number(const std::string &s);
 

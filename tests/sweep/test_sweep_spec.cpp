@@ -85,7 +85,29 @@ TEST(SweepSpec, RejectsShellMetacharactersAndPathTricksInEveryField)
     expect_rejected(BASE + "D = " + v + "\n", "s\\.sweep:4: 'D' value");
     expect_rejected(BASE + "depth = " + v + "\n", "s\\.sweep:4: (depth|'depth' takes one)");
     expect_rejected(BASE + "observe = " + v + "\n", "s\\.sweep:4: (observe|'observe' takes one)");
+    expect_rejected(BASE + "set = poly=" + v + "\n", "s\\.sweep:4: 'set' (value|item)");
+    expect_rejected(BASE + "push_set = " + v + "=1\n", "s\\.sweep:4: 'push_set' (value|item)");
   }
+}
+
+TEST(SweepSpec, DeckVariablesForTheModelAndTheMeasurementChain)
+{
+  auto spec = parse(BASE + "set = poly=0.1 walls=1 granular=yes kn=2.5e8 shift=-0.5 zero=0\npush_set = ramp=0.3\n");
+  ASSERT_EQ(spec.set.size(), 6u);
+  EXPECT_EQ(spec.set[0], std::make_pair(std::string("poly"), std::string("0.1")));
+  EXPECT_EQ(spec.set[2].second, "yes");
+  EXPECT_EQ(spec.set[4].second, "-0.5");
+  ASSERT_EQ(spec.push_set.size(), 1u);
+  EXPECT_EQ(spec.push_set[0].first, "ramp");
+  // variables the runner sets itself, malformed items, values that are neither
+  expect_rejected(BASE + "set = v0=3\n", "'set' item 'v0=3' is not NAME=VALUE");
+  expect_rejected(BASE + "set = trace=x\n", "'set' item");
+  expect_rejected(BASE + "set = poly\n", "'set' item 'poly' is not NAME=VALUE");
+  expect_rejected(BASE + "set = 1poly=2\n", "'set' item");
+  expect_rejected(BASE + "set = poly=nan\n", "neither a number nor a name");
+  expect_rejected(BASE + "set = poly=1e999\n", "neither a number nor a name");
+  expect_rejected(BASE + "set = poly=\n", "neither a number nor a name");
+  expect_rejected(BASE + "set = poly=0.1\npush_set = poly=0.2\n", "s\\.sweep:5: deck variable poly set twice");
 }
 
 TEST(SweepSpec, RejectsMalformedFiles)
