@@ -345,7 +345,9 @@ struct GzipSource : Source {
   {
     int err = Z_OK;
     const char *msg = gzerror(gz, &err);
-    return msg && *msg ? std::string(msg) : std::string("error ") + std::to_string(err);
+    std::string m = msg && *msg ? std::string(msg) : std::string("error ") + std::to_string(err);
+    if (m.compare(0, 4, "<fd:") == 0 && m.find(": ") != std::string::npos) m = m.substr(m.find(": ") + 2);
+    return m;    // without zlib's "<fd:N>: " prefix
   }
   std::size_t read(char *dst, std::size_t n) override
   {
@@ -471,7 +473,11 @@ struct DumpReader::Impl {
       posix_fadvise(fd, 0, 0, POSIX_FADV_SEQUENTIAL);
       src.reset(new PlainSource(fd));
     }
-    if (buf.empty()) buf.resize(kInitialBuffer + kSlack);
+    // 4 MiB reads, less for a small file (a gzip file's text may be much larger than it)
+    const std::uint64_t want = file_size ? std::min<std::uint64_t>(kInitialBuffer, std::max<std::uint64_t>(
+                                                                         std::uint64_t(1) << 16, 16 * file_size))
+                                         : kInitialBuffer;
+    if (buf.size() < want + kSlack) buf.assign(want + kSlack, '\0');
   }
 
   // close the current file; throws if a gzip stream turns out to be cut short
