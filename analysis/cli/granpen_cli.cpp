@@ -19,6 +19,8 @@ const Subcommand SUBCOMMANDS[] = {
     {"calibration", granpen::cli::calibration, "summarise a friction-calibration sweep: phi_0(mu), k_z(mu)"},
     {"collapse", granpen::cli::collapse, "F/F_z against t~ = (z/v0) sqrt(g/D): crossover, collapse quality, peak law"},
     {"sweep", granpen::cli::sweep, "run a sweep of pours and pushes from a sweep file"},
+    {"flow", granpen::cli::flow, "flow fields about the rod from LAMMPS dumps: lambda_vz, phi(I) at the edge, strip, annulus"},
+    {"momentum", granpen::cli::momentum, "upward momentum by v_z class from LAMMPS dumps; drag F against mu g M"},
 };
 
 void usage(std::FILE *out)
