@@ -21,6 +21,7 @@ const Subcommand SUBCOMMANDS[] = {
     {"sweep", granpen::cli::sweep, "run a sweep of pours and pushes from a sweep file"},
     {"flow", granpen::cli::flow, "flow fields about the rod from LAMMPS dumps: lambda_vz, phi(I) at the edge, strip, annulus"},
     {"momentum", granpen::cli::momentum, "upward momentum by v_z class from LAMMPS dumps; drag F against mu g M"},
+    {"plot", granpen::cli::plot, "figures as gnuplot scripts + data, run to PNG and SVG: force, ratio, peak, kz, flow, momentum"},
 };
 
 void usage(std::FILE *out)

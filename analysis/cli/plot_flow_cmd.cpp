@@ -1,0 +1,643 @@
+// granpen plot flow DIR and granpen plot momentum DIR: figures of the tables written by
+// granpen flow --out DIR and granpen momentum (plot_kinds.h). The fits drawn are the
+// library's (core/flow_fields.h fit_exponential, core/momentum_classes.h compare_drag,
+// core/linear_fit.h), as the tables' writers use them.
+#include "plot_kinds.h"
+
+#include "csv_table.h"
+#include "flow_fields.h"
+#include "json_text.h"
+#include "linear_fit.h"
+#include "momentum_classes.h"
+#include "trace_reader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace granpen {
+namespace plotcmd {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// the table DIR/NAME, or false (with a note) when the file does not exist
+bool open_table(const std::string &dir, const std::string &name, const std::vector<std::string> &required, Run &run,
+                CsvTable &t)
+{
+  const fs::path p = fs::path(dir) / name;
+  std::error_code ec;
+  if (!fs::exists(p, ec)) {
+    run.notes.push_back(p.string() + " not found: its figure skipped");
+    return false;
+  }
+  try {
+    t = read_csv_table(p.string(), required);
+    if (t.rows.empty()) {
+      run.problems.push_back(p.string() + ": no rows");
+      return false;
+    }
+    return true;
+  } catch (InputError &e) {
+    run.problems.push_back(e.what());
+    return false;
+  }
+}
+
+double quantile(std::vector<double> v, double q)
+{
+  v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !std::isfinite(x); }), v.end());
+  if (v.empty()) return NAN;
+  std::sort(v.begin(), v.end());
+  const double pos = q * (v.size() - 1);
+  const std::size_t k = static_cast<std::size_t>(pos);
+  return k + 1 < v.size() ? v[k] + (pos - k) * (v[k + 1] - v[k]) : v.back();
+}
+
+// sorted distinct values (within a tolerance of the spread)
+std::vector<double> distinct(std::vector<double> v)
+{
+  std::sort(v.begin(), v.end());
+  const double tol = v.empty() ? 0.0 : 1e-9 * std::max(1.0, v.back() - v.front());
+  std::vector<double> out;
+  for (double x : v)
+    if (out.empty() || x - out.back() > tol) out.push_back(x);
+  return out;
+}
+
+int find_index(const std::vector<double> &grid, double x)
+{
+  auto it = std::lower_bound(grid.begin(), grid.end(), x - 1e-9 * std::max(1.0, std::fabs(x)));
+  return it == grid.end() ? (int) grid.size() - 1 : (int) (it - grid.begin());
+}
+
+// a number after "key": in DIR/flow.json's "parameters" (granpen flow writes D, the
+// annulus radii, ...), NaN when absent; index picks an element of an array value
+double flow_parameter(const std::string &dir, const std::string &key, int index = -1)
+{
+  std::ifstream in(fs::path(dir) / "flow.json", std::ios::binary);
+  if (!in) return NAN;
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  const std::string j = ss.str();
+  const auto p = j.find("\"parameters\"");
+  if (p == std::string::npos) return NAN;
+  auto k = j.find("\"" + key + "\": ", p);
+  if (k == std::string::npos) return NAN;
+  k += key.size() + 4;
+  if (index >= 0) {
+    if (j[k] != '[') return NAN;
+    ++k;
+    for (int i = 0; i < index; ++i) {
+      k = j.find(',', k);
+      if (k == std::string::npos) return NAN;
+      ++k;
+    }
+  }
+  char *end = nullptr;
+  const double v = std::strtod(j.c_str() + k, &end);
+  return end != j.c_str() + k ? v : NAN;
+}
+
+// the rod diameter: --D, else granpen flow's flow.json, else a `# D = ` header key,
+// else 2 cm (with a note)
+double rod_diameter(const std::string &dir, const CsvTable &t, Run &run)
+{
+  if (run.opt.D > 0) return run.opt.D;
+  const double j = flow_parameter(dir, "D");
+  if (j > 0) return j;
+  const double h = t.key_number("D", 0.0);
+  if (h > 0) return h;
+  run.notes.push_back(t.path + ": rod diameter neither in " + dir + "/flow.json nor in a header: D = 2 cm assumed (--D)");
+  return 2.0;
+}
+
+// the t~ column, or z_tip when t~ is undefined throughout (granpen flow without v0 or g)
+bool time_axis(const CsvTable &t, std::vector<double> &x, std::string &label, Run &run)
+{
+  x = t.numbers("t_tilde");
+  if (std::any_of(x.begin(), x.end(), [](double v) { return std::isfinite(v); })) {
+    label = "t̃ = (z / v_0) √(g / D)";
+    return true;
+  }
+  if (!t.has("z_tip")) return false;
+  x = t.numbers("z_tip");
+  label = "rod tip depth z_{tip} (cm)";
+  run.notes.push_back(t.path + ": t_tilde undefined (nan): drawn against z_tip");
+  return false;
+}
+
+const char *VIRIDIS = "set palette defined (0 \"#440154\", 0.25 \"#3b528b\", 0.5 \"#21918c\", 0.75 \"#5ec962\", 1 \"#fde725\")\n";
+const char *DIVERGING = "set palette defined (-1 \"#2166ac\", -0.5 \"#92c5de\", 0 \"#f7f7f7\", 0.5 \"#f4a582\", 1 \"#b2182b\")\n";
+const char *MAGMA = "set palette defined (0 \"#000004\", 0.25 \"#51127c\", 0.5 \"#b73779\", 0.75 \"#fc8961\", 1 \"#fcfdbf\")\n";
+
+// ---------------------------------------------------------------- heatmaps
+
+void flow_heatmaps(const std::string &dir, Run &run)
+{
+  CsvTable t;
+  if (!open_table(dir, "flow_fields.csv", {"r", "z", "count", "phi", "vz", "gammadot", "I"}, run, t)) return;
+  std::vector<double> r, z, count, phi, vz, gd, I;
+  try {
+    r = t.numbers("r", false), z = t.numbers("z", false), count = t.numbers("count");
+    phi = t.numbers("phi"), vz = t.numbers("vz"), gd = t.numbers("gammadot"), I = t.numbers("I");
+  } catch (InputError &e) {
+    run.problems.push_back(e.what());
+    return;
+  }
+  const double D = rod_diameter(dir, t, run), R = 0.5 * D;
+  const auto rs = distinct(r), zs = distinct(z);
+  const std::size_t nr = rs.size(), nz = zs.size();
+  if (nr < 2 || nz < 2) {
+    run.problems.push_back(t.path + ": the (r, z) grid needs at least 2 values of each (has " + std::to_string(nr) + " x " +
+                           std::to_string(nz) + ")");
+    return;
+  }
+  const double dr = (rs.back() - rs.front()) / (nr - 1), dz = (zs.back() - zs.front()) / (nz - 1);
+  // grid [iz][ir] -> row, empty bins NaN
+  std::vector<int> at(nr * nz, -1);
+  for (std::size_t i = 0; i < r.size(); ++i) at[find_index(zs, z[i]) * nr + find_index(rs, r[i])] = (int) i;
+  PlotBlock blk;
+  blk.title = "flow fields on the (r, z) grid, z from the rod tip; empty bins (count 0) NaN; scans of r separated by blank lines";
+  blk.columns = {"r", "z", "phi", "vz", "gammadot", "I", "count"};
+  std::vector<double> fphi, fvz, fgd, fI;
+  for (std::size_t iz = 0; iz < nz; ++iz) {
+    if (iz) blk.rows.push_back({});
+    for (std::size_t ir = 0; ir < nr; ++ir) {
+      const int i = at[iz * nr + ir];
+      const bool full = i >= 0 && count[i] > 0;
+      auto val = [&](const std::vector<double> &v) { return full ? v[i] : NAN; };
+      blk.rows.push_back({rs[ir], zs[iz], val(phi), val(vz), val(gd), val(I), i >= 0 ? count[i] : 0.0});
+      if (full) fphi.push_back(phi[i]), fvz.push_back(std::fabs(vz[i])), fgd.push_back(gd[i]), fI.push_back(I[i]);
+    }
+  }
+  if (fphi.empty()) {
+    run.problems.push_back(t.path + ": every bin is empty (count 0)");
+    return;
+  }
+  const double x0 = rs.front() - 0.5 * dr, x1 = rs.back() + 0.5 * dr;
+  const double y0 = zs.front() - 0.5 * dz, y1 = zs.back() + 0.5 * dz;
+  PlotFiles f;
+  f.name = "flow_heatmaps";
+  f.about = "granpen plot flow: heatmaps of " + t.path + " in (r, z - z_tip), the rod (r < R = " + fmt("%g", R) +
+            " cm, z > 0) in grey;\ncolour ranges: phi from the 2nd to the 99th percentile of the filled bins, v_z symmetric "
+            "about 0,\ngamma-dot and I on log scales over three decades below their 99th percentile.";
+  f.add_block(blk);
+  std::ostringstream b;
+  // four in a row for a tall domain, else two by two
+  const bool row = (y1 - y0) > (x1 - x0);
+  f.width = row ? 1700 : 1200, f.height = row ? 600 : 1000;
+  b << "set multiplot layout " << (row ? "1,4" : "2,2") << " title " << gp_quote("Flow around the rod (" + fmt("%g", nr) + " x " + fmt("%g", nz) + " bins)")
+    << " font \",14\"\n";
+  struct Field {
+    const char *title, *cblabel;    // units in the title: a colour-bar label would crowd the next panel
+    int col;
+    std::string palette, range;
+    bool log;
+  };
+  const double plo = quantile(fphi, 0.02), phi_hi = quantile(fphi, 0.99);
+  const double vmax = std::max(1e-12, quantile(fvz, 0.99));
+  auto positive = [](std::vector<double> v) {
+    v.erase(std::remove_if(v.begin(), v.end(), [](double x) { return !(x > 0); }), v.end());
+    return v;
+  };
+  const auto gpos = positive(fgd), ipos = positive(fI);
+  const double gtop = quantile(gpos, 0.99), itop = quantile(ipos, 0.99);
+  std::vector<Field> fields = {
+      {"(a) packing fraction φ", "", 3, VIRIDIS, "[" + gp_number(plo) + ":" + gp_number(phi_hi > plo ? phi_hi : plo + 0.01) + "]", false},
+      {"(b) vertical velocity v_z (cm/s; > 0 up)", "", 4, DIVERGING, "[" + gp_number(-vmax) + ":" + gp_number(vmax) + "]", false},
+      {"(c) shear rate γ̇ (1/s)", "", 5, MAGMA, gpos.empty() ? "[*:*]" : "[" + gp_number(gtop / 1e3) + ":" + gp_number(gtop) + "]", !gpos.empty()},
+      {"(d) inertial number I", "", 6, MAGMA, ipos.empty() ? "[*:*]" : "[" + gp_number(itop / 1e3) + ":" + gp_number(itop) + "]", !ipos.empty()},
+  };
+  for (const auto &fd : fields) {
+    b << "\n# ---- " << fd.title << "\n"
+      << "unset logscale cb\nunset object\nunset label\n"
+      << "set title " << gp_quote(fd.title) << "\n"
+      << "set xlabel \"r (cm)\"\nset ylabel \"z − z_{tip} (cm)\"\nunset cblabel\n"
+      << "set size ratio -1\nset xrange [" << gp_number(x0) << ":" << gp_number(x1) << "]\nset yrange ["
+      << gp_number(y0) << ":" << gp_number(y1) << "]\nset tics out\nset key off\n"
+      << fd.palette << "set cbrange " << fd.range << "\n" << (fd.log ? "set logscale cb\nset format cb \"10^{%T}\"\n" : "set format cb \"%g\"\n");
+    if (y1 > 0)
+      b << "set object 1 rectangle from first 0, first 0 to first " << gp_number(std::min(R, x1)) << ", first " << gp_number(y1)
+        << " front fillcolor rgb \"#707070\" fillstyle solid 1.0 border lc rgb \"black\"\n"
+        << "set label 1 \"rod\" at first " << gp_number(0.5 * std::min(R, x1)) << ", first " << gp_number(0.5 * y1)
+        << " center front textcolor rgb \"white\"\n";
+    else
+      b << "set label 1 \"rod tip above (z = 0)\" at graph 0.02, graph 0.96 left front\n";
+    b << "plot data index 0 using 1:2:" << fd.col << " with image notitle\n";
+  }
+  b << "unset multiplot\n";
+  f.body = b.str();
+  run.make(f);
+  run.numbers.push_back("\"fields\": {\"bins_r\": " + std::to_string(nr) + ", \"bins_z\": " + std::to_string(nz) + ", \"D\": " +
+                        fmt("%g", D) + ", \"phi_range\": [" + fmt("%.4g", plo) + ", " + fmt("%.4g", phi_hi) +
+                        "], \"vz_abs_p99\": " + fmt("%.4g", vmax) + "}");
+}
+
+// ---------------------------------------------------------------- profile below the face
+
+void flow_profile(const std::string &dir, Run &run)
+{
+  CsvTable t;
+  if (!open_table(dir, "flow_profile_below.csv", {"z", "vz", "vz_se", "phi"}, run, t)) return;
+  std::vector<double> z, vz, se, phi;
+  try {
+    z = t.numbers("z", false), vz = t.numbers("vz"), se = t.numbers("vz_se"), phi = t.numbers("phi");
+  } catch (InputError &e) {
+    run.problems.push_back(e.what());
+    return;
+  }
+  const double D = rod_diameter(dir, t, run);
+  for (double &s : se)
+    if (!std::isfinite(s)) s = 0.0;
+  const ExpFit fit = fit_exponential(z, vz, se);
+  SeriesPanel a, b;
+  a.title = "(a) |v_z| below the face";
+  a.xlabel = b.xlabel = "z − z_{tip} (cm; below the rod face)";
+  a.ylabel = "|v_z| (cm/s)";
+  a.logy = true;
+  a.key = "top left Left reverse";    // |v_z| decays away from the face (z = 0, at the right)
+  b.title = "(b) packing fraction below the face";
+  b.ylabel = "φ";
+  b.key = "off";
+  PlotSeries s, sp;
+  s.style = "points", s.title = "|v_z| ± standard error", s.colour = plot_colour(0);
+  for (std::size_t i = 0; i < z.size(); ++i)
+    if (std::isfinite(vz[i]) && vz[i] != 0) s.x.push_back(z[i]), s.y.push_back(std::fabs(vz[i])), s.y_err.push_back(se[i]);
+  sp.style = "linespoints", sp.colour = plot_colour(2), sp.point_size = 1.0;
+  for (std::size_t i = 0; i < z.size(); ++i) sp.x.push_back(z[i]), sp.y.push_back(phi[i]);
+  a.series.push_back(s);
+  b.series.push_back(sp);
+  double vlo = INFINITY, vhi = 0;
+  for (std::size_t i = 0; i < s.y.size(); ++i) vlo = std::min(vlo, s.y[i]), vhi = std::max(vhi, s.y[i] + s.y_err[i]);
+  if (vhi > 0) {
+    a.ymin = vlo / 1.5, a.ymax = vhi * 1.5;
+    a.extra = log_tics("y", a.ymin, a.ymax, true);
+  }
+  std::string title = "Flow below the rod face";
+  std::string num = "\"profile\": {\"fit_ok\": false, \"note\": " + json_string(fit.note) + "}";
+  if (fit.ok) {
+    PlotSeries line;
+    line.colour = "#000000";
+    line.title = "fit |v_z| = " + fmt("%.3g", std::fabs(fit.A)) + " exp(z/λ), λ = " + fmt("%.3g", fit.lambda) + " ± " +
+                 fmt("%.2g", fit.lambda_se) + " cm";
+    for (int k = 0; k <= 100; ++k) {
+      const double x = fit.zmin + (fit.zmax - fit.zmin) * k / 100.0;
+      line.x.push_back(x), line.y.push_back(std::fabs(fit.A) * std::exp(x / fit.lambda));
+    }
+    a.series.push_back(line);
+    title += ": λ_{vz} = " + fmt("%.3g", fit.lambda) + " cm = " + fmt("%.2f", fit.lambda / D) + " D (paper: 0.98 D ± 0.15)";
+    num = "\"profile\": {\"fit_ok\": true, \"A\": " + fmt("%.6g", fit.A) + ", \"lambda\": " + fmt("%.6g", fit.lambda) +
+          ", \"lambda_se\": " + fmt("%.6g", fit.lambda_se) + ", \"lambda_over_D\": " + fmt("%.6g", fit.lambda / D) +
+          ", \"n\": " + std::to_string(fit.n) + "}";
+  } else {
+    run.notes.push_back(t.path + ": no exponential fit: " + fit.note);
+    title += " (no exponential fit: " + fit.note + ")";
+  }
+  SeriesFigure fig;
+  fig.name = "flow_profile";
+  fig.title = title;
+  fig.about = "granpen plot flow: v_z and phi below the rod face (" + t.path +
+              "), |v_z| on a log axis with the weighted\nexponential fit of the library (fit_exponential, as granpen flow).";
+  fig.width = 1300, fig.height = 560;
+  fig.panels = {a, b};
+  run.make(series_figure(fig));
+  run.numbers.push_back(num);
+}
+
+// ---------------------------------------------------------------- phi against I at the edge
+
+void flow_phi_I(const std::string &dir, Run &run)
+{
+  CsvTable t;
+  if (!open_table(dir, "flow_edge_phi_I.csv", {"I", "phi"}, run, t)) return;
+  std::vector<double> I, phi;
+  try {
+    I = t.numbers("I"), phi = t.numbers("phi");
+  } catch (InputError &e) {
+    run.problems.push_back(e.what());
+    return;
+  }
+  SeriesPanel p;
+  p.xlabel = "inertial number I";
+  p.ylabel = "packing fraction φ at the rod edge (r = R)";
+  p.key = "outside right top Left reverse";
+  p.xmin = 0;
+  PlotSeries s;
+  s.style = "points", s.title = "this run", s.colour = plot_colour(0);
+  std::vector<double> x, y;
+  for (std::size_t i = 0; i < I.size(); ++i)
+    if (std::isfinite(I[i]) && std::isfinite(phi[i])) x.push_back(I[i]), y.push_back(phi[i]);
+  s.x = x, s.y = y;
+  p.series.push_back(s);
+  PlotGuide paper;
+  paper.expression = "0.57 - 0.35*x";
+  paper.title = "paper: φ = 0.57 − 0.35 I";
+  paper.colour = "#d62728";
+  p.guides.push_back(paper);
+  std::string num = "\"edge\": {\"n\": " + std::to_string(x.size());
+  std::string title = "Packing fraction against inertial number at the rod edge";
+  const auto xd = distinct(x);
+  if (x.size() >= 3 && xd.size() >= 2) {
+    const LinearFit lf = linear_fit(x, y);
+    PlotGuide g;
+    g.expression = gp_number(lf.a) + " + " + gp_number(lf.b) + "*x";
+    g.title = "fit: φ = " + fmt("%.3f", lf.a) + (lf.b < 0 ? " − " : " + ") + fmt("%.3f", std::fabs(lf.b)) + " I";
+    g.colour = "#000000", g.dash = 1;
+    p.guides.push_back(g);
+    num += ", \"fit_ok\": true, \"intercept\": " + fmt("%.6g", lf.a) + ", \"intercept_se\": " + fmt("%.6g", lf.se_a) +
+           ", \"slope\": " + fmt("%.6g", lf.b) + ", \"slope_se\": " + fmt("%.6g", lf.se_b);
+    title += ": fit φ(0) = " + fmt("%.3f", lf.a) + " ± " + fmt("%.3f", lf.se_a) + ", slope " + fmt("%.2f", lf.b) +
+             " ± " + fmt("%.2f", lf.se_b);
+  } else {
+    num += ", \"fit_ok\": false";
+  }
+  SeriesFigure fig;
+  fig.name = "flow_phi_I";
+  fig.title = title;
+  fig.about = "granpen plot flow: phi against I at the rod's bottom edge (" + t.path +
+              "), the paper's line phi = 0.57 - 0.35 I and a least-squares line.";
+  fig.width = 1100, fig.height = 620;
+  fig.panels = {p};
+  run.make(series_figure(fig));
+  run.numbers.push_back(num + "}");
+}
+
+// ---------------------------------------------------------------- near-shaft strip
+
+void flow_strip(const std::string &dir, Run &run)
+{
+  CsvTable t;
+  if (!open_table(dir, "flow_strip.csv", {"z", "vz"}, run, t)) return;
+  std::vector<double> z, vz;
+  try {
+    z = t.numbers("z", false), vz = t.numbers("vz");
+  } catch (InputError &e) {
+    run.problems.push_back(e.what());
+    return;
+  }
+  SeriesPanel p;
+  p.xlabel = "v_z of the strip (cm/s; > 0 up)";
+  p.ylabel = "z − z_s (cm; height above the bed surface)";
+  p.key = "off";
+  PlotVLine zero;
+  zero.x = 0, zero.label = "v_z = 0";
+  p.vlines.push_back(zero);
+  PlotSeries s;
+  s.style = "linespoints", s.colour = plot_colour(0), s.point_size = 0.9;
+  for (std::size_t i = 0; i < z.size(); ++i) s.x.push_back(vz[i]), s.y.push_back(z[i]);
+  p.series.push_back(s);
+  SeriesFigure fig;
+  fig.name = "flow_strip";
+  fig.title = "Vertical velocity of the near-shaft strip against depth";
+  fig.about = "granpen plot flow: v_z of the grains 0.5-1.5 cm from the rod shaft (" + t.path + ") against depth.";
+  fig.width = 800, fig.height = 700;
+  fig.panels = {p};
+  run.make(series_figure(fig));
+}
+
+// ---------------------------------------------------------------- annulus means against t~
+
+void flow_annulus(const std::string &dir, Run &run)
+{
+  CsvTable t;
+  if (!open_table(dir, "flow_annulus.csv", {"t_tilde", "phi", "vz", "T"}, run, t)) return;
+  std::vector<double> tt, phi, vz, T;
+  std::string xlabel;
+  bool tilde = true;
+  try {
+    tilde = time_axis(t, tt, xlabel, run);
+    phi = t.numbers("phi"), vz = t.numbers("vz"), T = t.numbers("T");
+  } catch (InputError &e) {
+    run.problems.push_back(e.what());
+    return;
+  }
+  const char *titles[] = {"(a) packing fraction φ", "(b) vertical velocity v_z", "(c) granular temperature T"};
+  const char *labels[] = {"φ", "v_z (cm/s; > 0 up)", "T (cm^2/s^2)"};
+  const std::vector<double> *cols[] = {&phi, &vz, &T};
+  SeriesFigure fig;
+  fig.name = "flow_annulus";
+  const double r1 = flow_parameter(dir, "annulus", 0), r2 = flow_parameter(dir, "annulus", 1);
+  const std::string where = std::isfinite(r1) && std::isfinite(r2) ? "r = " + fmt("%g", r1) + "–" + fmt("%g", r2) + " cm"
+                                                                   : "r = 2–3 cm (granpen flow's default)";
+  fig.title = "Annulus " + where + " about the rod, against " + (tilde ? "rescaled time" : "depth");
+  fig.about = "granpen plot flow: means over the annulus (" + t.path + ") against t~ = (z/v0) sqrt(g/D).";
+  fig.width = 1500, fig.height = 520;
+  for (int k = 0; k < 3; ++k) {
+    SeriesPanel p;
+    p.title = titles[k];
+    p.xlabel = xlabel;
+    p.ylabel = labels[k];
+    p.key = "off";
+    PlotVLine v;
+    v.x = 1, v.label = "t̃ = 1";
+    if (tilde) p.vlines.push_back(v);
+    PlotSeries s;
+    s.style = "linespoints", s.colour = plot_colour(k), s.point_size = 0.8;
+    s.x = tt, s.y = *cols[k];
+    p.series.push_back(s);
+    if (k == 1) p.extra = "set xzeroaxis lt 1 lw 1 lc rgb \"#606060\"\n";
+    fig.panels.push_back(p);
+  }
+  run.make(series_figure(fig));
+}
+
+// ---------------------------------------------------------------- momentum
+
+struct ClassInfo {
+  std::string key, title, colour;
+};
+
+std::vector<ClassInfo> class_order(const std::vector<std::string> &names)
+{
+  static const char *known[] = {"fast", "intermediate", "slow", "noise"};
+  static const char *defs[] = {"fast: v_z ≥ v_0/10", "intermediate: v_0/80 ≤ v_z < v_0/10", "slow: v_0/320 < v_z < v_0/80",
+                               "noise: v_0/640 < v_z ≤ v_0/320"};
+  static const char *colours[] = {"#d62728", "#ff7f0e", "#1f77b4", "#7f7f7f"};
+  std::vector<std::string> seen;
+  for (const auto &n : names)
+    if (std::find(seen.begin(), seen.end(), n) == seen.end()) seen.push_back(n);
+  std::vector<ClassInfo> out;
+  for (int k = 0; k < 4; ++k)
+    for (const auto &s : seen)
+      if (s == known[k] || s == std::to_string(k)) out.push_back({s, defs[k], colours[k]});
+  int extra = 4;
+  for (const auto &s : seen)
+    if (std::none_of(out.begin(), out.end(), [&](const ClassInfo &c) { return c.key == s; }))
+      out.push_back({s, "class " + s, plot_colour(extra++)});
+  return out;
+}
+
+void momentum_classes_figure(const std::string &dir, Run &run)
+{
+  CsvTable t;
+  if (!open_table(dir, "momentum_classes.csv", {"t_tilde", "class", "count", "p_up"}, run, t)) return;
+  std::vector<double> tt, count, p;
+  std::vector<std::string> cls;
+  std::string xlabel;
+  bool tilde = true;
+  try {
+    tilde = time_axis(t, tt, xlabel, run);
+    count = t.numbers("count"), p = t.numbers("p_up"), cls = t.text("class");
+  } catch (InputError &e) {
+    run.problems.push_back(e.what());
+    return;
+  }
+  const auto order = class_order(cls);
+  SeriesPanel a, b;
+  a.title = "(a) upward momentum of each class";
+  b.title = "(b) grains in each class";
+  a.xlabel = b.xlabel = xlabel;
+  a.ylabel = "summed upward momentum Σ m v_z (g cm/s)";
+  b.ylabel = "grains";
+  a.key = "off";
+  b.key = "column";
+  PlotVLine v;
+  v.x = 1, v.label = "t̃ = 1";
+  if (tilde) a.vlines.push_back(v), b.vlines.push_back(v);
+  double pmin = INFINITY, pmax = 0, cmin = INFINITY, cmax = 0;
+  for (const auto &c : order) {
+    PlotSeries sa, sb;
+    sa.style = sb.style = "linespoints";
+    sa.point_size = sb.point_size = 0.7;
+    sa.colour = sb.colour = c.colour;
+    sb.title = c.title;
+    std::vector<std::pair<double, std::size_t>> rows;
+    for (std::size_t i = 0; i < cls.size(); ++i)
+      if (cls[i] == c.key) rows.push_back({tt[i], i});
+    std::sort(rows.begin(), rows.end());
+    for (const auto &r : rows) {
+      sa.x.push_back(r.first), sa.y.push_back(p[r.second]);
+      sb.x.push_back(r.first), sb.y.push_back(count[r.second]);
+      if (p[r.second] > 0) pmin = std::min(pmin, p[r.second]), pmax = std::max(pmax, p[r.second]);
+      if (count[r.second] > 0) cmin = std::min(cmin, count[r.second]), cmax = std::max(cmax, count[r.second]);
+    }
+    a.series.push_back(sa), b.series.push_back(sb);
+  }
+  // log axes when the classes span more than two decades (zeros then drop out)
+  a.logy = pmax > 0 && pmax / pmin > 100;
+  b.logy = cmax > 0 && cmax / cmin > 100;
+  if (a.logy) a.extra = "set format y \"10^{%T}\"\n";
+  if (b.logy) b.extra = "set format y \"10^{%T}\"\n";
+  SeriesFigure fig;
+  fig.name = "momentum_classes";
+  fig.title = "Grains moving up, by vertical-speed class (r > R)";
+  fig.about = "granpen plot momentum: the classes of " + t.path + " against t~; log axes when a quantity spans more "
+              "than two decades\n(then zero values are not drawn).";
+  fig.width = 1500, fig.height = 600;
+  fig.grid_width = 0.74;
+  fig.panels = {a, b};
+  run.make(series_figure(fig));
+}
+
+void momentum_drag_figure(const std::string &dir, Run &run)
+{
+  CsvTable t;
+  if (!open_table(dir, "momentum_drag.csv", {"t_tilde", "F", "mu_g_M"}, run, t)) return;
+  std::vector<double> tt, F, M;
+  try {
+    tt = t.numbers("t_tilde"), F = t.numbers("F"), M = t.numbers("mu_g_M");
+  } catch (InputError &e) {
+    run.problems.push_back(e.what());
+    return;
+  }
+  const DragComparison cmp = compare_drag(M, F);
+  // one unit for both axes (the 1:1 line is then the diagonal of equal numbers); each
+  // axis over its own data, so that points far from 1:1 stay readable
+  double top = 0, ftop = 0, mtop = 0;
+  for (std::size_t i = 0; i < F.size(); ++i) {
+    if (std::isfinite(F[i])) ftop = std::max(ftop, std::fabs(F[i]));
+    if (std::isfinite(M[i])) mtop = std::max(mtop, std::fabs(M[i]));
+  }
+  top = std::max(ftop, mtop);
+  const AxisScale sc = axis_scale(top, "dyne");
+  SeriesPanel p;
+  p.xlabel = "μ g M(v_z > v_0/320) (" + sc.unit + ")";
+  p.ylabel = "drag force F (" + sc.unit + ")";
+  p.xmin = p.ymin = 0;
+  p.xmax = mtop > 0 ? 1.05 * mtop / sc.factor : 1;
+  p.ymax = ftop > 0 ? 1.05 * ftop / sc.factor : 1;
+  PlotSeries before, after;
+  before.style = after.style = "points";
+  before.title = "t̃ < 1", after.title = "t̃ ≥ 1";
+  before.colour = "#ff7f0e", after.colour = "#1f77b4";
+  before.point_type = 9, after.point_type = 7;
+  for (std::size_t i = 0; i < F.size(); ++i) {
+    if (!std::isfinite(F[i]) || !std::isfinite(M[i])) continue;
+    PlotSeries &s = tt[i] < 1 ? before : after;
+    s.x.push_back(M[i] / sc.factor), s.y.push_back(F[i] / sc.factor);
+  }
+  p.series = {before, after};
+  PlotGuide one;
+  one.expression = "x", one.title = "1:1 (paper)", one.colour = "#404040";
+  p.guides.push_back(one);
+  std::string title = "Drag against μ g M of the moving grains";
+  std::string num = "\"drag\": {\"ok\": " + std::string(cmp.ok ? "true" : "false") + ", \"n\": " + std::to_string(cmp.n);
+  if (cmp.ok) {
+    PlotGuide g;
+    g.expression = gp_number(cmp.fit.b) + "*x";
+    g.title = "fit F = k μ g M, k = " + fmt("%.2f", cmp.fit.b) + " ± " + fmt("%.2f", cmp.fit.se_b);
+    g.colour = "#000000", g.dash = 1;
+    p.guides.push_back(g);
+    title += ": F / μgM = " + fmt("%.2f", cmp.ratio_mean) + " ± " + fmt("%.2f", cmp.ratio_se);
+    num += ", \"k\": " + fmt("%.6g", cmp.fit.b) + ", \"k_se\": " + fmt("%.6g", cmp.fit.se_b) + ", \"ratio_mean\": " +
+           fmt("%.6g", cmp.ratio_mean) + ", \"ratio_se\": " + fmt("%.6g", cmp.ratio_se);
+  } else {
+    run.notes.push_back(t.path + ": no drag comparison: " + cmp.note);
+  }
+  SeriesFigure fig;
+  fig.name = "momentum_drag";
+  fig.title = title;
+  fig.about = "granpen plot momentum: F against mu g M(v_z > v0/320) (" + t.path +
+              "), the 1:1 line and the fit through the origin\n(compare_drag, as granpen momentum).";
+  fig.width = 980, fig.height = 680;
+  fig.panels = {p};
+  run.make(series_figure(fig));
+  run.numbers.push_back(num + "}");
+}
+
+bool folder_ok(const std::vector<std::string> &inputs, Run &run)
+{
+  std::error_code ec;
+  if (!fs::is_directory(inputs[0], ec)) {
+    run.problems.push_back(inputs[0] + ": not a folder");
+    return false;
+  }
+  return true;
+}
+
+}    // namespace
+
+void plot_flow(const std::vector<std::string> &inputs, Run &run)
+{
+  if (!folder_ok(inputs, run)) return;
+  const std::string &dir = inputs[0];
+  flow_heatmaps(dir, run);
+  flow_profile(dir, run);
+  flow_phi_I(dir, run);
+  flow_strip(dir, run);
+  flow_annulus(dir, run);
+  if (run.figures.empty() && run.problems.empty())
+    run.problems.push_back(dir + ": none of flow_fields.csv, flow_profile_below.csv, flow_edge_phi_I.csv, flow_strip.csv, "
+                                 "flow_annulus.csv is there (granpen flow --out writes them)");
+}
+
+void plot_momentum(const std::vector<std::string> &inputs, Run &run)
+{
+  if (!folder_ok(inputs, run)) return;
+  const std::string &dir = inputs[0];
+  momentum_classes_figure(dir, run);
+  momentum_drag_figure(dir, run);
+  if (run.figures.empty() && run.problems.empty())
+    run.problems.push_back(dir + ": neither momentum_classes.csv nor momentum_drag.csv is there");
+}
+
+}    // namespace plotcmd
+}    // namespace granpen

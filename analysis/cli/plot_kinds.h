@@ -1,0 +1,61 @@
+// granpen plot: what the figure kinds share (plot_cmd.cpp: the command and the
+// trace kinds force, ratio, peak, kz; plot_flow_cmd.cpp: flow and momentum).
+#ifndef GRANPEN_CLI_PLOT_KINDS_H
+#define GRANPEN_CLI_PLOT_KINDS_H
+
+#include "collapse.h"
+#include "plot_writer.h"
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace granpen {
+namespace plotcmd {
+
+struct Options {
+  std::string out;              // --out DIR
+  bool run = true;              // --no-run: scripts and data only
+  bool each = false;            // force: every run instead of mean and band
+  double kz_zmin = 3.0, kz_zmax = INFINITY;    // k_z window (cm), as granpen fit / collapse
+  double alpha = 0.0, mu = 0.0, rho = 0.0;     // ratio: F_z from alpha, as granpen collapse
+  CollapseParams collapse;      // --band, --tbin, --zmin
+  double D = 0.0;               // flow: rod diameter when the tables do not say (cm)
+};
+
+// What one invocation made: the figures' outcomes, problems with the inputs (each a
+// line naming the file), notes, and the kind's numbers as JSON members
+// ("\"key\": value" lines, joined with commas by the caller).
+struct Run {
+  Options opt;
+  std::vector<PlotResult> figures;
+  std::vector<std::string> problems, notes;
+  std::vector<std::string> numbers;
+  void make(const PlotFiles &f) { figures.push_back(write_plot(opt.out, f, opt.run)); }
+};
+
+void plot_force(const std::vector<std::string> &inputs, Run &run);
+void plot_ratio(const std::vector<std::string> &inputs, Run &run);
+void plot_peak(const std::vector<std::string> &inputs, Run &run);
+void plot_kz(const std::vector<std::string> &inputs, Run &run);
+void plot_flow(const std::vector<std::string> &inputs, Run &run);
+void plot_momentum(const std::vector<std::string> &inputs, Run &run);
+
+// A power of ten for an axis of values up to maxabs: factor 10^e (e >= 3, else 1)
+// and the unit text, e.g. "10^{5} dyne".
+struct AxisScale {
+  double factor = 1.0;
+  std::string unit;
+};
+AxisScale axis_scale(double maxabs, const std::string &unit);
+
+std::string fmt(const char *f, double v);    // printf one number
+std::string sci(double v);                   // 2.94×10^{4} (enhanced text); plain below 1e4
+// labelled tics of a log axis over [lo, hi] at 1, 2, 5 x 10^e (only 10^e when that
+// makes more than 9), labels 10^{e} style or plain %g
+std::string log_tics(const char *axis, double lo, double hi, bool plain = false);
+
+}    // namespace plotcmd
+}    // namespace granpen
+
+#endif
