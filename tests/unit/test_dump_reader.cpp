@@ -574,6 +574,8 @@ TEST(DumpReaderErrors, FilesWithoutFrames)
     EXPECT_EQ(std::string(e.what()), empty + ":1: no dump frames in file (empty or blank)");
   }
   expect_error({tmp("does_not_exist.dump")}, "does_not_exist\\.dump: cannot open dump file \\(No such file");
+  expect_text_error("zstd.dump", std::string("\x28\xb5\x2f\xfd\x00\x01", 6),
+                    ":1: zstd-compressed file: only plain text and gzip dumps are read");
   EXPECT_THROW(DumpReader(std::vector<std::string>{}), InputError);
 }
 
