@@ -22,6 +22,7 @@ const Subcommand SUBCOMMANDS[] = {
     {"flow", granpen::cli::flow, "flow fields about the rod from LAMMPS dumps: lambda_vz, phi(I) at the edge, strip, annulus"},
     {"momentum", granpen::cli::momentum, "upward momentum by v_z class from LAMMPS dumps; drag F against mu g M"},
     {"plot", granpen::cli::plot, "figures as gnuplot scripts + data, run to PNG and SVG: force, ratio, peak, kz, flow, momentum"},
+    {"gap", granpen::cli::gap, "sim-to-real gap: where, which unmodelled effect, how far it shrinks"},
 };
 
 void usage(std::FILE *out)

@@ -1,0 +1,86 @@
+#include "effects.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace granpen {
+
+std::string deck_number(double v)
+{
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+namespace {
+
+// Bench contact law (shared/scenarios/bench.md); contact_stiffness scales it.
+const double KN = 1e9, DT_POUR = 5e-6, DT_PUSH = 2e-6;
+const double MOUNT_MASS = 100.0, MOUNT_ZETA = 0.2;    // g; damping ratio of the sensor mount
+
+DeckVars none(double) { return {}; }
+DeckVars rolling(double a) { return {{"mu_roll", deck_number(a)}}; }
+DeckVars poly(double a) { return {{"poly", deck_number(a)}}; }
+DeckVars walls(double a) { return {{"walls", "1"}, {"mu_wall", deck_number(a)}}; }
+DeckVars stiffness(double a)
+{
+  // a = log10(k / k_bench); a Hertz contact's duration scales as k^(-2/5): the timestep too
+  const double s = std::pow(10.0, a);
+  const double dt = std::min(1.0, std::pow(s, -0.4));
+  // keep the 1e-4 s trace window a whole number of steps
+  const double push_steps = std::ceil(50.0 / dt);
+  char pour[32], push[32];
+  std::snprintf(pour, sizeof pour, "%.10g", DT_POUR * dt);
+  std::snprintf(push, sizeof push, "%.10g", 1e-4 / push_steps);
+  return {{"kn", deck_number(KN * s)}, {"kt", deck_number(KN * s)}, {"dt_pour", pour}, {"dt_push", push}};
+}
+DeckVars mount(double a)
+{
+  // a = natural period of the sensor mount, ms: k = m (2 pi / T)^2, c = 2 zeta sqrt(k m)
+  const double T = a * 1e-3, k = MOUNT_MASS * std::pow(2.0 * M_PI / T, 2);
+  return {{"mount_k", deck_number(k)}, {"mount_c", deck_number(2.0 * MOUNT_ZETA * std::sqrt(k * MOUNT_MASS))},
+          {"mount_m", deck_number(MOUNT_MASS)}};
+}
+DeckVars ramp(double a) { return {{"ramp", deck_number(a)}}; }
+std::string packing_mu(double a)
+{
+  // the pour's friction sets phi_0 (docs/calibration.md: 0.594 -> 0.574 for mu 0.1 -> 0.5);
+  // the magnitude is the pour friction's offset from the push's 0.3, reported with the
+  // phi_0 shift it made
+  return deck_number(0.3 + a);
+}
+
+}    // namespace
+
+const std::vector<Effect> &effect_library()
+{
+  static const std::vector<Effect> lib = {
+      {"rolling_resistance", "rolling friction between grains (pair granular, rolling sds): stand-in for non-spherical beads",
+       "rolling friction coefficient mu_r", true, {0.1, 0.3}, true, rolling, none, "", nullptr},
+      {"polydispersity", "grain diameters uniform in d_g (1 +- w)", "relative half-width w", true, {0.1, 0.25}, true,
+       poly, none, "", nullptr},
+      {"sidewalls", "a frictional container (walls at x, y = 0 and 8 cm) instead of periodic x, y",
+       "wall friction coefficient", true, {0.2, 0.6}, true, walls, none, "", nullptr},
+      {"measurement_chain", "force sensor on a spring-damper mount (100 g, damping ratio 0.2; fix rod/drive mount)",
+       "mount natural period, ms", false, {0.35, 0.7, 1.4}, true, none, mount, "", nullptr},
+      {"actuator_ramp", "actuator speed rising linearly from 0 to v0 over a travel (fix rod/drive ramp)",
+       "ramp travel, cm (the rod starts 0.5 cm above the bed: shorter ramps end before contact)", false,
+       {0.8, 1.6}, true, none, ramp, "", nullptr},
+      {"packing", "bed prepared at another packing fraction (poured with another friction, pushed with 0.3)",
+       "pour friction minus 0.3", true, {-0.2, 0.3}, false, none, none, "", packing_mu},
+      {"contact_stiffness", "contact stiffness kn = kt scaled (timestep scaled with the contact time)",
+       "log10(k / 1e9 dyne/cm^2)", true, {-0.6, 0.6}, false, stiffness, none, "", nullptr},
+  };
+  return lib;
+}
+
+const Effect *find_effect(const std::string &name)
+{
+  for (const auto &e : effect_library())
+    if (e.name == name) return &e;
+  return nullptr;
+}
+
+std::string effect_sweep_name(const Effect &e, double a) { return e.name + "_" + deck_number(a); }
+
+}    // namespace granpen

@@ -1,0 +1,229 @@
+#include "gap_data.h"
+
+#include "collapse.h"
+#include "linear_fit.h"
+#include "trace_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <stdexcept>
+
+#include <unsupported/Eigen/FFT>
+
+namespace granpen {
+
+double force_onset(const std::vector<double> &z, const std::vector<double> &F, double frac, double search)
+{
+  const std::size_t n = std::min(z.size(), F.size());
+  double fmax = 0.0;
+  for (std::size_t i = 0; i < n; ++i) fmax = std::max(fmax, F[i]);
+  if (!(fmax > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  // first touch: F above 2% of the run's largest force (well above a sensor's noise floor)
+  std::size_t first = 0;
+  while (first < n && F[first] <= 0.02 * fmax) ++first;
+  double fp = 0.0;
+  for (std::size_t i = first; i < n && z[i] <= z[first] + search; ++i) fp = std::max(fp, F[i]);
+  const double level = frac * fp;
+  for (std::size_t i = first; i < n; ++i)
+    if (F[i] >= level) {
+      if (i == 0 || F[i - 1] >= level) return z[i];
+      const double f = (level - F[i - 1]) / (F[i] - F[i - 1]);
+      return z[i - 1] + f * (z[i] - z[i - 1]);
+    }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+std::size_t GapGrid::nbins() const { return (std::size_t) std::floor(zmax / w + 1e-9); }
+std::size_t GapGrid::nwindows() const { return (std::size_t) std::floor(zmax / window + 1e-9); }
+
+RunFeatures run_features(const std::vector<double> &t, const std::vector<double> &z, const std::vector<double> &F,
+                         const GapGrid &grid)
+{
+  RunFeatures r;
+  const std::size_t nb = grid.nbins(), nw = grid.nwindows();
+  std::vector<double> sum(nb, 0.0), sum2(nb, 0.0);
+  std::vector<std::size_t> cnt(nb, 0);
+  for (std::size_t i = 0; i < std::min(z.size(), F.size()); ++i) {
+    if (!(z[i] > 0.0) || z[i] > grid.zmax) continue;
+    // bin b holds (b w, (b + 1) w]
+    std::size_t b = (std::size_t) std::ceil(z[i] / grid.w - 1e-12);
+    if (b == 0) b = 1;
+    if (--b >= nb) continue;
+    sum[b] += F[i];
+    sum2[b] += F[i] * F[i];
+    ++cnt[b];
+  }
+  r.x.assign(grid.nfeatures(), 0.0);
+  std::vector<double> sd(nb, 0.0);
+  for (std::size_t b = 0; b < nb; ++b) {
+    if (cnt[b] == 0) {
+      r.note = "no samples in depth bin (" + std::to_string(b * grid.w) + ", " + std::to_string((b + 1) * grid.w) +
+               "] cm: the run is shorter than the common depth";
+      return r;
+    }
+    const double m = sum[b] / cnt[b];
+    r.x[b] = m;
+    sd[b] = cnt[b] > 1 ? std::sqrt(std::max(0.0, (sum2[b] - cnt[b] * m * m) / (cnt[b] - 1))) : 0.0;
+  }
+  const std::size_t per = nb / std::max<std::size_t>(1, nw);
+  for (std::size_t k = 0; k < nw; ++k) {
+    double s = 0.0;
+    for (std::size_t b = k * per; b < (k + 1) * per; ++b) s += sd[b];
+    r.x[nb + k] = s / per;
+  }
+  // spectrum of F about its bin means (linear between bin centres) over the grid
+  const std::size_t nbd = grid.nbands();
+  if (nbd) {
+    std::vector<double> y, tt;
+    for (std::size_t i = 0; i < std::min({t.size(), z.size(), F.size()}); ++i) {
+      if (!(z[i] > 0.0) || z[i] > grid.zmax) continue;
+      const double u = std::clamp(z[i] / grid.w - 0.5, 0.0, (double) nb - 1.0);
+      const std::size_t b = std::min(nb - 1, (std::size_t) u);
+      const double f = u - b, m = b + 1 < nb ? (1 - f) * r.x[b] + f * r.x[b + 1] : r.x[b];
+      y.push_back(F[i] - m);
+      tt.push_back(t[i]);
+    }
+    const std::size_t n = y.size();
+    if (n < 8) {
+      r.note = "fewer than 8 samples over the common depth: no spectrum";
+      return r;
+    }
+    const double dt = (tt.back() - tt.front()) / (n - 1);
+    double wsum = 0.0;
+    std::vector<double> yw(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double hann = 0.5 - 0.5 * std::cos(2.0 * M_PI * i / (n - 1));
+      yw[i] = y[i] * hann;
+      wsum += hann * hann;
+    }
+    Eigen::FFT<double> fft;
+    std::vector<std::complex<double>> X;
+    fft.fwd(X, yw);
+    // one-sided power per bin, normalised so that the bins sum to the mean square of y
+    for (std::size_t k = 0; k < nbd; ++k) {
+      double p = 0.0;
+      for (std::size_t j = 1; j <= n / 2; ++j) {
+        const double freq = j / (n * dt);
+        if (freq >= grid.bands[k] && freq < grid.bands[k + 1]) p += 2.0 * std::norm(X[j]) / (n * wsum);
+      }
+      r.x[nb + nw + k] = std::sqrt(p);
+    }
+  }
+  r.ok = true;
+  return r;
+}
+
+Ensemble make_ensemble(double v0, const std::vector<std::vector<double>> &runs)
+{
+  Ensemble e;
+  e.v0 = v0;
+  e.runs = runs;
+  if (runs.empty()) return e;
+  const std::size_t p = runs[0].size();
+  e.mean.assign(p, 0.0);
+  e.var.assign(p, 0.0);
+  for (const auto &r : runs) {
+    if (r.size() != p) throw std::invalid_argument("make_ensemble: runs of different lengths");
+    for (std::size_t k = 0; k < p; ++k) e.mean[k] += r[k] / runs.size();
+  }
+  if (runs.size() > 1)
+    for (const auto &r : runs)
+      for (std::size_t k = 0; k < p; ++k) e.var[k] += std::pow(r[k] - e.mean[k], 2) / (runs.size() - 1);
+  return e;
+}
+
+std::vector<double> pooled_cv2(const std::vector<const Ensemble *> &ensembles, const GapGrid &grid,
+                               double min_cv2, int *dof)
+{
+  const std::size_t p = grid.nfeatures(), nb = grid.nbins();
+  std::vector<double> s(p, 0.0);
+  int d = 0;
+  for (const Ensemble *e : ensembles) {
+    if (!e || e->n() < 2 || e->mean.size() != p) continue;
+    for (const auto &r : e->runs)
+      for (std::size_t k = 0; k < p; ++k)
+        if (std::abs(e->mean[k]) > 0.0) s[k] += std::pow((r[k] - e->mean[k]) / e->mean[k], 2);
+    d += (int) e->n() - 1;
+  }
+  if (dof) *dof = d;
+  std::vector<double> cv2(p, min_cv2);
+  if (d == 0) return cv2;
+  for (std::size_t k = 0; k < p; ++k) s[k] /= d;
+  // smooth over the neighbours of the same kind (bins with bins, windows with windows):
+  // each estimate rests on few runs, neighbouring depths share the physics
+  const std::size_t nw = grid.nwindows();
+  for (std::size_t k = 0; k < p; ++k) {
+    const std::size_t lo = k < nb ? 0 : (k < nb + nw ? nb : nb + nw), hi = k < nb ? nb : (k < nb + nw ? nb + nw : p);
+    double acc = 0.0;
+    int m = 0;
+    for (std::size_t j = (k > lo ? k - 1 : k); j <= std::min(hi - 1, k + 1); ++j) acc += s[j], ++m;
+    cv2[k] = std::max(min_cv2, acc / m);
+  }
+  return cv2;
+}
+
+double gap_metric(const Ensemble &real, const Ensemble &sim, std::size_t b0, std::size_t b1)
+{
+  double num = 0.0, den = 0.0;
+  for (std::size_t b = b0; b < b1 && b < real.mean.size() && b < sim.mean.size(); ++b) {
+    const double eR = real.n() > 1 ? real.var[b] / real.n() : 0.0;
+    const double eS = sim.n() > 1 ? sim.var[b] / sim.n() : 0.0;
+    num += std::pow(real.mean[b] - sim.mean[b], 2) - eR - eS;
+    den += real.mean[b] * real.mean[b];
+  }
+  return den > 0.0 ? std::sqrt(std::max(0.0, num) / den) : 0.0;
+}
+
+RunObservables run_observables(const std::vector<double> &z, const std::vector<double> &F, double v0, double D,
+                               double g, double d_g, const GapGrid &grid, double z_transient_end)
+{
+  RunObservables o;
+  TraceFitParams p;
+  p.zlo = grid.zmax / 2.0;
+  p.zhi = grid.zmax;
+  p.v0 = v0;
+  p.D = D;
+  p.g = g;
+  p.d_g = d_g;
+  const TraceFit fit = fit_trace(z, F, p);
+  o.peak_F = fit.peak_F;
+  o.peak_z = fit.peak_z;
+  o.k_z = fit.k_z;
+  o.wavelength = fit.wavelength_ok ? fit.wavelength : 0.0;
+  // fluctuation level about the deep fit
+  double ss = 0.0, sm = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < z.size(); ++i)
+    if (z[i] >= p.zlo && z[i] <= p.zhi) {
+      ss += std::pow(F[i] - (fit.intercept + fit.k_z * z[i]), 2);
+      sm += F[i];
+      ++n;
+    }
+  o.fluct = (n > 1 && sm > 0.0) ? std::sqrt(ss / n) / (sm / n) : 0.0;
+  // transient excess over F_z = k_z z between the peak region and the regime's end
+  GapGrid bins_only = grid;
+  bins_only.bands.clear();
+  const RunFeatures rf = run_features(z, z, F, bins_only);    // bin means only (t unused)
+  if (rf.ok)
+    for (std::size_t b = 0; b < grid.nbins(); ++b) {
+      const double zc = grid.centre(b);
+      if (zc > 0.35 * D && zc <= z_transient_end) o.excess += (rf.x[b] - o.k_z * zc) * grid.w;
+    }
+  if (o.k_z > 0.0) {
+    CollapseInput in;
+    in.z = z;
+    in.F = F;
+    in.v0 = v0;
+    in.D = D;
+    in.g = g;
+    in.k_z = o.k_z;
+    const CollapseResult c = collapse({in}, CollapseParams{});
+    o.crossed = c.curves[0].crossed;
+    o.t_star = c.curves[0].t_star;
+  }
+  return o;
+}
+
+}    // namespace granpen

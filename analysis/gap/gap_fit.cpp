@@ -1,0 +1,213 @@
+#include "gap_fit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace granpen {
+
+namespace {
+
+// Interpolation weights over the knots at magnitude a (they sum to 1).
+std::vector<double> weights(const std::vector<double> &k, double a)
+{
+  std::vector<double> w(k.size(), 0.0);
+  if (k.size() == 1) {
+    w[0] = 1.0;
+    return w;
+  }
+  std::size_t i = 0;    // segment [k[i], k[i + 1]]
+  while (i + 2 < k.size() && a > k[i + 1]) ++i;
+  const double f = (a - k[i]) / (k[i + 1] - k[i]);
+  w[i] = 1.0 - f;
+  w[i + 1] = f;
+  return w;
+}
+
+std::size_t zero_knot(const EffectData &e)
+{
+  for (std::size_t j = 0; j < e.knots.size(); ++j)
+    if (e.knots[j] == 0.0) return j;
+  return 0;
+}
+
+}    // namespace
+
+void effect_predict(const EffectData &e, double a, std::size_t s, std::vector<double> &mean, std::vector<double> &var)
+{
+  const auto w = weights(e.knots, a);
+  const std::size_t p = e.mean[0][s].size(), j0 = zero_knot(e);
+  mean.assign(p, 0.0);
+  var.assign(p, 0.0);
+  for (std::size_t j = 0; j < w.size(); ++j) {
+    if (w[j] == 0.0) continue;
+    for (std::size_t k = 0; k < p; ++k) {
+      mean[k] += w[j] * e.mean[j][s][k];
+      if (!e.paired) var[k] += w[j] * w[j] * e.err[j][s][k];
+      else if (j != j0) var[k] += w[j] * w[j] * e.diff_err[j][s][k];
+    }
+  }
+  // paired: the baseline's own variance enters once (the weights sum to 1)
+  if (e.paired)
+    for (std::size_t k = 0; k < p; ++k) var[k] += e.err[j0][s][k];
+}
+
+namespace {
+
+// chi^2, and the Gaussian -2 log likelihood (chi^2 + sum log variance) that the fit
+// minimises: chi^2 alone would reward magnitudes whose prediction is merely less certain
+double chi2_and_nll(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds,
+                    double *nll)
+{
+  double chi2 = 0.0, logv = 0.0;
+  std::vector<double> m, v;
+  for (std::size_t s : speeds) {
+    effect_predict(e, a, s, m, v);
+    for (std::size_t k = 0; k < m.size(); ++k) {
+      const double var = t.err[s][k] + v[k];
+      chi2 += std::pow(t.mean[s][k] - m[k], 2) / var;
+      logv += std::log(var);
+    }
+  }
+  if (nll) *nll = chi2 + logv;
+  return chi2;
+}
+
+double effect_nll(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds)
+{
+  double nll = 0.0;
+  chi2_and_nll(t, e, a, speeds, &nll);
+  return nll;
+}
+
+}    // namespace
+
+double effect_chi2(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds)
+{
+  return chi2_and_nll(t, e, a, speeds, nullptr);
+}
+
+namespace {
+
+// Squared residual weighted by the baseline comparison's variances (fixed, whatever a):
+// the fraction of it an effect removes is what it explains. (With the model's own
+// variance in the weights, a magnitude whose prediction is merely less certain would
+// seem to explain more.)
+double weighted_residual(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds)
+{
+  const std::size_t j0 = zero_knot(e);
+  double r2 = 0.0;
+  std::vector<double> m, v;
+  for (std::size_t s : speeds) {
+    effect_predict(e, a, s, m, v);
+    for (std::size_t k = 0; k < m.size(); ++k)
+      r2 += std::pow(t.mean[s][k] - m[k], 2) / (t.err[s][k] + e.err[j0][s][k]);
+  }
+  return r2;
+}
+
+}    // namespace
+
+namespace {
+
+// Best magnitude (least -2 log likelihood) over the allowed range: a fine grid, then
+// golden-section refinement.
+double best_magnitude(const Target &t, const EffectData &e, const std::vector<std::size_t> &speeds, bool *edge)
+{
+  const double lo0 = e.knots.front(), hi0 = e.knots.back();
+  const double lo = e.one_sided && lo0 >= 0.0 ? lo0 : lo0 - e.reach * (e.knots.size() > 1 ? e.knots[1] - e.knots[0] : 0.0);
+  const double hi = hi0 + e.reach * (e.knots.size() > 1 ? hi0 - e.knots[e.knots.size() - 2] : 0.0);
+  const int n = 400;
+  double best = 0.0, bestc = std::numeric_limits<double>::infinity();
+  int ib = 0;
+  for (int i = 0; i <= n; ++i) {
+    const double a = lo + (hi - lo) * i / n;
+    const double c = effect_nll(t, e, a, speeds);
+    if (c < bestc) bestc = c, best = a, ib = i;
+  }
+  double x0 = lo + (hi - lo) * std::max(0, ib - 1) / n, x1 = lo + (hi - lo) * std::min(n, ib + 1) / n;
+  for (int it = 0; it < 40; ++it) {
+    const double m1 = x0 + 0.382 * (x1 - x0), m2 = x0 + 0.618 * (x1 - x0);
+    if (effect_nll(t, e, m1, speeds) < effect_nll(t, e, m2, speeds)) x1 = m2;
+    else x0 = m1;
+  }
+  const double a = 0.5 * (x0 + x1);
+  if (effect_nll(t, e, a, speeds) < bestc) best = a;
+  if (edge) *edge = (ib == 0 || ib == n);
+  return best;
+}
+
+}    // namespace
+
+EffectFit fit_effect(const Target &t, const EffectData &e)
+{
+  EffectFit f;
+  f.name = e.name;
+  const std::size_t ns = t.mean.size();
+  std::vector<std::size_t> all(ns);
+  std::iota(all.begin(), all.end(), 0);
+  f.nfeatures = ns ? ns * t.mean[0].size() : 0;
+  f.magnitude = best_magnitude(t, e, all, &f.at_edge);
+  f.chi2_0 = effect_chi2(t, e, 0.0, all);
+  f.chi2 = effect_chi2(t, e, f.magnitude, all);
+  const double w0 = weighted_residual(t, e, 0.0, all);
+  f.explained = w0 > 0.0 ? 1.0 - weighted_residual(t, e, f.magnitude, all) / w0 : 0.0;
+  // leave one speed out: fit on the others, predict the one left out
+  double sum = 0.0;
+  int used = 0;
+  for (std::size_t h = 0; h < ns; ++h) {
+    std::vector<std::size_t> rest;
+    for (std::size_t s = 0; s < ns; ++s)
+      if (s != h) rest.push_back(s);
+    double a = f.magnitude;
+    if (!rest.empty()) a = best_magnitude(t, e, rest, nullptr);
+    f.loso_magnitude.push_back(a);
+    const double p = (double) t.mean[h].size();
+    const double c0 = effect_chi2(t, e, 0.0, {h});
+    // a speed counts when its own gap stands out of the noise (chi^2 above p + 3 sigma)
+    double ex_h = std::numeric_limits<double>::quiet_NaN();
+    if (c0 - p > 3.0 * std::sqrt(2.0 * p)) {
+      const double r0 = weighted_residual(t, e, 0.0, {h});
+      ex_h = 1.0 - weighted_residual(t, e, a, {h}) / r0;
+    }
+    f.loso_explained.push_back(ex_h);
+    if (std::isfinite(ex_h)) sum += ex_h, ++used;
+  }
+  f.heldout_explained = used ? sum / used : f.explained;
+  f.score = std::min(f.explained, f.heldout_explained);
+  return f;
+}
+
+double chi2_sf(double x, double k)
+{
+  // regularized upper incomplete gamma Q(k/2, x/2): series or continued fraction
+  const double a = 0.5 * k, y = 0.5 * x;
+  if (!(y > 0.0)) return 1.0;
+  const double lg = std::lgamma(a);
+  if (y < a + 1.0) {
+    double sum = 1.0 / a, term = sum;
+    for (int n = 1; n < 1000; ++n) {
+      term *= y / (a + n);
+      sum += term;
+      if (std::abs(term) < std::abs(sum) * 1e-15) break;
+    }
+    return std::max(0.0, 1.0 - sum * std::exp(-y + a * std::log(y) - lg));
+  }
+  double b = y + 1.0 - a, c = 1e300, d = 1.0 / b, h = d;
+  for (int i = 1; i < 1000; ++i) {
+    const double an = -i * (i - a);
+    b += 2.0;
+    d = an * d + b;
+    if (std::abs(d) < 1e-300) d = 1e-300;
+    c = b + an / c;
+    if (std::abs(c) < 1e-300) c = 1e-300;
+    d = 1.0 / d;
+    const double del = d * c;
+    h *= del;
+    if (std::abs(del - 1.0) < 1e-15) break;
+  }
+  return std::exp(-y + a * std::log(y) - lg) * h;
+}
+
+}    // namespace granpen

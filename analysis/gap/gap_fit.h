@@ -1,0 +1,57 @@
+// granpen gap: fitting a candidate effect's magnitude to a gap, and scoring it.
+// Plain arrays: per speed s and feature p, the measured ensemble mean and its variance,
+// and for the effect the simulated ensemble means at its knots (magnitude 0 = the
+// baseline, then the reference magnitudes) with their variances. The model at magnitude
+// a is the piecewise-linear interpolation between knots (extrapolated at most `reach`
+// of the outer segments beyond the end knots); the variance of the model's prediction
+// follows the interpolation weights, and for a push-only effect (paired: the knots share
+// the baseline's beds) the knots' paired differences to the baseline.
+#ifndef GRANPEN_GAP_FIT_H
+#define GRANPEN_GAP_FIT_H
+
+#include <string>
+#include <vector>
+
+namespace granpen {
+
+using Table = std::vector<std::vector<double>>;    // [speed][feature]
+
+struct EffectData {
+  std::string name;
+  std::vector<double> knots;          // sorted ascending, one of them 0 (the baseline)
+  std::vector<Table> mean, err;       // per knot: ensemble means and variances of the mean
+  bool paired = false;
+  std::vector<Table> diff_err;        // paired: variance of the mean paired difference to knot 0
+  double reach = 0.25;
+  bool one_sided = false;             // no magnitude below 0
+};
+
+struct Target {
+  Table mean, err;                    // measured ensemble means and variances of the mean
+};
+
+// chi^2 of the target against the model at magnitude a over the given speeds.
+double effect_chi2(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds);
+// Model prediction and its variance at magnitude a, speed s.
+void effect_predict(const EffectData &e, double a, std::size_t s, std::vector<double> &mean, std::vector<double> &var);
+
+struct EffectFit {
+  std::string name;
+  double magnitude = 0.0;           // best fit over all speeds
+  double chi2_0 = 0.0, chi2 = 0.0;  // at magnitude 0 (the baseline) and at the fit
+  std::size_t nfeatures = 0;
+  double explained = 0.0;           // fraction of the noise-weighted squared gap the fit removes
+  bool at_edge = false;             // the fit sits at the end of the allowed range
+  std::vector<double> loso_magnitude, loso_explained;    // per speed left out (NaN: no gap there)
+  double heldout_explained = 0.0;   // mean over speeds left out that had a gap
+  double score = 0.0;               // min(explained, heldout_explained), the ranking's number
+};
+
+EffectFit fit_effect(const Target &t, const EffectData &e);
+
+// Upper tail probability of chi^2 with k degrees of freedom.
+double chi2_sf(double chi2, double k);
+
+}    // namespace granpen
+
+#endif

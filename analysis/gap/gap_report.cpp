@@ -1,0 +1,236 @@
+// granpen gap: diagnosis.json (exact names; other tools read them), report.md and its
+// figures (io/plot_writer.h).
+#include "gap_result.h"
+#include "json_text.h"
+#include "plot_writer.h"
+#include "trace_reader.h"    // InputError
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+namespace granpen {
+
+namespace {
+
+std::string num(double v, const char *f = "%.6g") { return json_number(f, v); }
+
+std::string f3(double v, const char *f = "%.3f")
+{
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
+}
+
+void write_json(const Diagnosis &d, const std::string &path)
+{
+  FILE *f = std::fopen(path.c_str(), "w");
+  if (!f) throw InputError(path + ": cannot write");
+  auto str_or_null = [](const std::string &s) { return s.empty() ? std::string("null") : json_string(s); };
+  std::fprintf(f, "{\n  \"verdict\": %s,\n  \"top_effect\": %s,\n  \"magnitude\": %s,\n  \"magnitude_unit\": %s,\n",
+               json_string(d.verdict).c_str(), str_or_null(d.top_effect).c_str(),
+               d.top_effect.empty() ? "null" : num(d.magnitude).c_str(), str_or_null(d.magnitude_unit).c_str());
+  std::fprintf(f, "  \"tested_effect\": %s,\n  \"scenario\": %s,\n  \"real\": %s,\n",
+               str_or_null(d.tested_effect).c_str(), json_string(d.scenario).c_str(), json_string(d.real_dir).c_str());
+  std::fprintf(f, "  \"gap_before\": %s,\n  \"gap_after\": %s,\n  \"gap_metric\": \"shared/formats/gap-metric.md v1\",\n",
+               num(d.gap_before).c_str(), num(d.gap_after).c_str());
+  std::fprintf(f, "  \"runs\": {\"real_min_per_speed\": %d, \"sim_per_speed\": %d},\n", d.n_real_min, d.n_sim);
+  std::fprintf(f, "  \"grid\": {\"w\": %s, \"zmax\": %s, \"window\": %s},\n", num(d.grid.w).c_str(),
+               num(d.grid.zmax).c_str(), num(d.grid.window).c_str());
+  std::fprintf(f, "  \"significance\": {\"chi2\": %s, \"features\": %zu, \"p_value\": %s, \"significant\": %s},\n",
+               num(d.chi2_0).c_str(), d.nfeatures, num(d.p_value, "%.3g").c_str(), d.significant ? "true" : "false");
+  std::fprintf(f, "  \"confirmation\": {\"chi2_after\": %s, \"explained_fraction\": %s},\n",
+               d.tested_effect.empty() ? "null" : num(d.chi2_after).c_str(),
+               d.tested_effect.empty() ? "null" : num(d.confirmed_fraction, "%.4f").c_str());
+  std::fprintf(f, "  \"gap_by_regime\": {");
+  bool first = true;
+  for (const auto &[reg, ba] : d.gap_by_regime) {
+    std::fprintf(f, "%s\n    %s: {\"before\": %s, \"after\": %s}", first ? "" : ",", json_string(reg).c_str(),
+                 num(ba.first).c_str(), num(ba.second).c_str());
+    first = false;
+  }
+  std::fprintf(f, "\n  },\n  \"heldout\": {\"v0\": %s, \"gap_before\": %s, \"gap_after\": %s, \"magnitude\": %s},\n",
+               num(d.heldout_v0).c_str(), num(d.heldout_before).c_str(), num(d.heldout_after).c_str(),
+               d.tested_effect.empty() ? "null" : num(d.heldout_magnitude).c_str());
+  std::fprintf(f, "  \"per_speed\": [");
+  for (std::size_t s = 0; s < d.speeds.size(); ++s) {
+    const auto &c = d.speeds[s];
+    std::fprintf(f, "%s\n    {\"v0\": %s, \"gap_before\": %s, \"gap_after\": %s, \"n_real\": %d, \"n_sim\": %d, "
+                    "\"z_transient_end\": %s}",
+                 s ? "," : "", num(c.v0).c_str(), num(c.G_before).c_str(), num(c.G_after).c_str(), c.n_real, c.n_base,
+                 num(c.z_transient_end).c_str());
+  }
+  std::fprintf(f, "\n  ],\n  \"ranking\": [");
+  for (std::size_t i = 0; i < d.ranking.size(); ++i) {
+    const auto &r = d.ranking[i];
+    std::fprintf(f, "%s\n    {\"effect\": %s, \"explained_fraction\": %s, \"score\": %s, \"magnitude\": %s, "
+                    "\"heldout_explained\": %s, \"chi2\": %s, \"chi2_baseline\": %s, \"at_edge\": %s",
+                 i ? "," : "", json_string(r.name).c_str(), num(r.explained, "%.4f").c_str(), num(r.score, "%.4f").c_str(),
+                 num(r.magnitude).c_str(), num(r.heldout_explained, "%.4f").c_str(), num(r.chi2, "%.2f").c_str(),
+                 num(r.chi2_0, "%.2f").c_str(), r.at_edge ? "true" : "false");
+    auto it = d.magnitude_note.find(r.name);
+    if (it != d.magnitude_note.end()) std::fprintf(f, ", \"note\": %s", json_string(it->second).c_str());
+    std::fprintf(f, "}");
+  }
+  std::fprintf(f, "\n  ],\n  \"where\": [");
+  for (std::size_t i = 0; i < d.where.size(); ++i) {
+    const auto &w = d.where[i];
+    std::fprintf(f, "%s\n    {\"regime\": %s, \"observable\": %s, \"v0\": %s, \"real\": %s, \"sim\": %s, \"zscore\": %s, "
+                    "\"real_se\": %s, \"sim_se\": %s, \"significant\": %s}",
+                 i ? "," : "", json_string(w.regime).c_str(), json_string(w.observable).c_str(), num(w.v0).c_str(),
+                 num(w.real).c_str(), num(w.sim).c_str(), num(w.zscore, "%.3f").c_str(), num(w.real_se).c_str(),
+                 num(w.sim_se).c_str(), w.significant ? "true" : "false");
+  }
+  std::fprintf(f, "\n  ],\n  \"gap_curve\": [");
+  for (std::size_t s = 0; s < d.speeds.size(); ++s) {
+    const auto &c = d.speeds[s];
+    std::fprintf(f, "%s\n    {\"v0\": %s, \"z\": [", s ? "," : "", num(c.v0).c_str());
+    for (std::size_t b = 0; b < c.z.size(); ++b) std::fprintf(f, "%s%s", b ? ", " : "", num(c.z[b]).c_str());
+    std::fprintf(f, "], \"gap\": [");
+    for (std::size_t b = 0; b < c.z.size(); ++b) std::fprintf(f, "%s%s", b ? ", " : "", num(c.gap[b]).c_str());
+    std::fprintf(f, "], \"band\": [");
+    for (std::size_t b = 0; b < c.z.size(); ++b) std::fprintf(f, "%s%s", b ? ", " : "", num(c.band[b]).c_str());
+    std::fprintf(f, "]}");
+  }
+  std::fprintf(f, "\n  ],\n  \"notes\": [");
+  for (std::size_t i = 0; i < d.notes.size(); ++i)
+    std::fprintf(f, "%s\n    %s", i ? "," : "", json_string(d.notes[i]).c_str());
+  std::fprintf(f, "\n  ]\n}\n");
+  if (std::fclose(f) != 0) throw InputError(path + ": write failed");
+}
+
+std::vector<double> add(const std::vector<double> &a, const std::vector<double> &b, double s)
+{
+  std::vector<double> r(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) r[i] = a[i] + s * b[i];
+  return r;
+}
+
+}    // namespace
+
+void write_gap_report(const Diagnosis &d, const std::string &dir)
+{
+  write_json(d, dir + "/diagnosis.json");
+  std::vector<std::string> figures, failures;
+  auto draw = [&](const PlotFiles &pf) {
+    const PlotResult r = write_plot(dir + "/figures", pf);
+    if (!r.ok()) failures.push_back(r.error);
+    else figures.push_back(pf.name);
+  };
+
+  // measured vs simulated vs corrected F(z), one panel per speed
+  SeriesFigure fz;
+  fz.name = "force_depth";
+  fz.title = "F(z): measured, simulated (baseline) and corrected, ensemble means +- 2 s.e.";
+  fz.columns = (int) d.speeds.size();
+  fz.width = 520 * (int) d.speeds.size();
+  fz.height = 520;
+  for (const auto &c : d.speeds) {
+    SeriesPanel p;
+    p.title = "v_0 = " + f3(c.v0, "%g") + " cm/s";
+    p.xlabel = "depth z (cm)";
+    p.ylabel = "F (dyne)";
+    p.key = "bmargin center horizontal";
+    PlotSeries R{"measured (" + std::to_string(c.n_real) + ")", c.z, c.real};
+    R.band_lo = add(c.real, c.real_se, -2), R.band_hi = add(c.real, c.real_se, 2);
+    R.colour = "#000000";
+    PlotSeries B{"baseline (" + std::to_string(c.n_base) + ")", c.z, c.base};
+    B.band_lo = add(c.base, c.base_se, -2), B.band_hi = add(c.base, c.base_se, 2);
+    B.colour = "#d62728";
+    p.series = {R, B};
+    if (!d.tested_effect.empty()) {
+      PlotSeries C{"with " + d.tested_effect + " (" + std::to_string(c.n_corr) + ")", c.z, c.corr};
+      C.band_lo = add(c.corr, c.corr_se, -2), C.band_hi = add(c.corr, c.corr_se, 2);
+      C.colour = "#1f77b4";
+      p.series.push_back(C);
+    }
+    fz.panels.push_back(p);
+  }
+  draw(series_figure(fz));
+
+  // the gap curve with its band
+  SeriesFigure gc;
+  gc.name = "gap_curve";
+  gc.title = "measured minus simulated F, with the 2-sigma noise band of the difference";
+  gc.columns = (int) d.speeds.size();
+  gc.width = 520 * (int) d.speeds.size();
+  gc.height = 460;
+  for (const auto &c : d.speeds) {
+    SeriesPanel p;
+    p.title = "v_0 = " + f3(c.v0, "%g") + " cm/s, G = " + f3(c.G_before);
+    p.xlabel = "depth z (cm)";
+    p.ylabel = "F_{real} - F_{sim} (dyne)";
+    p.key = "bmargin center horizontal";
+    PlotSeries g{"gap", c.z, c.gap};
+    std::vector<double> zero(c.z.size(), 0.0);
+    g.band_lo = add(zero, c.band, -1), g.band_hi = c.band;
+    g.band_title = "noise band (2 sigma)";
+    g.colour = "#000000";
+    p.series = {g};
+    p.guides = {PlotGuide{"0", ""}};
+    p.vlines = {PlotVLine{d.peak_end, "peak"}};
+    if (c.z_transient_end < d.grid.zmax) p.vlines.push_back(PlotVLine{c.z_transient_end, "linear"});
+    gc.panels.push_back(p);
+  }
+  draw(series_figure(gc));
+
+  // each candidate's explained fraction
+  BarChart bc;
+  bc.name = "explained";
+  bc.title = "fraction of the gap each candidate explains (fitted magnitude; held out: mean over speeds left out)";
+  bc.ylabel = "explained fraction";
+  bc.ymin = 0;
+  bc.ymax = 1.05;
+  for (const auto &r : d.ranking) {
+    bc.labels.push_back(r.name);
+    bc.values.push_back(std::max(0.0, r.explained));
+  }
+  bc.guides = {PlotGuide{"0.5", "threshold"}};
+  if (!bc.labels.empty()) draw(bar_chart(bc));
+
+  // report.md
+  const std::string path = dir + "/report.md";
+  FILE *f = std::fopen(path.c_str(), "w");
+  if (!f) throw InputError(path + ": cannot write");
+  std::fprintf(f, "# granpen gap: %s\n\n", d.real_dir.c_str());
+  std::fprintf(f, "Scenario `%s`; grid 0 < z <= %.2f cm in %.2f cm bins; at least %d measured run(s) per speed, %d "
+                  "simulated per ensemble.\n\n",
+               d.scenario.c_str(), d.grid.zmax, d.grid.w, d.n_real_min, d.n_sim);
+  std::fprintf(f, "**Verdict: %s**%s.  \n", d.verdict.c_str(),
+               d.top_effect.empty() ? "" : (" — " + d.top_effect + " at magnitude " + f3(d.magnitude, "%.4g") + " (" + d.magnitude_unit + ")").c_str());
+  std::fprintf(f, "Overall gap G (shared/formats/gap-metric.md): %.3f before, %.3f after%s.  \n", d.gap_before,
+               d.gap_after, d.tested_effect.empty() ? " (nothing added)" : (" adding " + d.tested_effect + " on fresh seeds").c_str());
+  std::fprintf(f, "Held-out speed %.4g cm/s: %.3f before, %.3f after.  \n", d.heldout_v0, d.heldout_before, d.heldout_after);
+  std::fprintf(f, "Gap significance: chi^2 = %.1f over %zu features, p = %.3g.", d.chi2_0, d.nfeatures, d.p_value);
+  if (!d.tested_effect.empty())
+    std::fprintf(f, " With %s on fresh seeds: chi^2 = %.1f (%.0f%% of the excess removed).", d.tested_effect.c_str(),
+                 d.chi2_after, 100.0 * d.confirmed_fraction);
+  std::fprintf(f, "\n\n");
+  std::fprintf(f, "## Where\n\n| regime | observable | v0 (cm/s) | measured | simulated | z-score |\n|---|---|---|---|---|---|\n");
+  for (const auto &w : d.where)
+    std::fprintf(f, "| %s | %s | %.4g | %.4g +- %.2g | %.4g +- %.2g | %s%.2f%s |\n", w.regime.c_str(), w.observable.c_str(),
+                 w.v0, w.real, w.real_se, w.sim, w.sim_se, w.significant ? "**" : "", w.zscore, w.significant ? "**" : "");
+  std::fprintf(f, "\nA finding is significant (bold) when |z| > 3, z = (measured - simulated) / sqrt(se_m^2 + se_s^2), "
+                  "standard errors from the run-to-run variance pooled over every simulated ensemble of the speed "
+                  "(the measured side's scaled by how much more its runs scatter); peak: z <= 0.35 D, transient: up "
+                  "to the baseline's crossover depth, linear: beyond.\n\n");
+  std::fprintf(f, "| regime | G before | G after |\n|---|---|---|\n");
+  for (const auto &[reg, ba] : d.gap_by_regime) std::fprintf(f, "| %s | %.3f | %.3f |\n", reg.c_str(), ba.first, ba.second);
+  std::fprintf(f, "\n## Which\n\n| effect | magnitude | explained | held-out explained | chi^2 (baseline %.1f) |\n|---|---|---|---|---|\n",
+               d.chi2_0);
+  for (const auto &r : d.ranking) {
+    auto it = d.magnitude_note.find(r.name);
+    std::fprintf(f, "| %s | %.4g%s%s | %.2f | %.2f | %.1f |\n", r.name.c_str(), r.magnitude, r.at_edge ? " (edge)" : "",
+                 it == d.magnitude_note.end() ? "" : (" (" + it->second + ")").c_str(), r.explained, r.heldout_explained, r.chi2);
+  }
+  std::fprintf(f, "\n## Notes\n\n");
+  for (const auto &n : d.notes) std::fprintf(f, "- %s\n", n.c_str());
+  std::fprintf(f, "\n## Figures\n\n");
+  for (const auto &n : figures) std::fprintf(f, "![%s](figures/%s.png)\n\n", n.c_str(), n.c_str());
+  for (const auto &e : failures) std::fprintf(f, "- figure not drawn: %s\n", e.c_str());
+  std::fprintf(f, "Simulated traces: `baseline/` (before) and `corrected/` (after; the baseline's when nothing was added).\n");
+  if (std::fclose(f) != 0) throw InputError(path + ": write failed");
+}
+
+}    // namespace granpen

@@ -1,0 +1,57 @@
+// granpen gap: everything a diagnosis found, as the report writer needs it.
+#ifndef GRANPEN_GAP_RESULT_H
+#define GRANPEN_GAP_RESULT_H
+
+#include "gap_data.h"
+#include "gap_fit.h"
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace granpen {
+
+struct Finding {
+  std::string regime, observable;
+  double v0 = 0, real = 0, sim = 0, real_se = 0, sim_se = 0, zscore = 0;
+  bool significant = false;
+};
+
+struct SpeedCurves {           // per speed, on the grid's bin centres
+  double v0 = 0;
+  int n_real = 0, n_base = 0, n_corr = 0;
+  std::vector<double> z, real, real_se, base, base_se, corr, corr_se, gap, band;
+  double G_before = 0, G_after = 0;
+  double z_transient_end = 0;  // peak: z <= 0.35 D; transient: up to this; linear: beyond
+};
+
+struct Diagnosis {
+  std::string scenario, real_dir;
+  GapGrid grid;
+  double peak_end = 0;                      // 0.35 D: the peak regime ends here
+  std::vector<std::string> notes;           // warnings and choices, said in the report
+  std::vector<std::string> real_files, baseline_files, corrected_files;
+  double chi2_0 = 0, p_value = 1;
+  double chi2_after = 0, confirmed_fraction = 0;    // the fresh runs of the tested effect
+  std::size_t nfeatures = 0;
+  bool significant = false;
+  std::vector<Finding> where;
+  std::vector<EffectFit> ranking;           // best first
+  std::map<std::string, std::string> magnitude_note;    // effect -> e.g. "phi_0 shift -0.012"
+  std::string verdict = "none", top_effect;  // top_effect "" = null
+  std::string tested_effect;                 // simulated for confirmation (even when downgraded)
+  double magnitude = 0;
+  std::string magnitude_unit;
+  std::vector<SpeedCurves> speeds;
+  double gap_before = 0, gap_after = 0;
+  std::map<std::string, std::pair<double, double>> gap_by_regime;    // before, after
+  double heldout_v0 = 0, heldout_before = 0, heldout_after = 0, heldout_magnitude = 0;
+  int n_real_min = 0, n_sim = 0;
+};
+
+// Writes diagnosis.json, report.md and the figures into dir (which exists).
+void write_gap_report(const Diagnosis &d, const std::string &dir);
+
+}    // namespace granpen
+
+#endif

@@ -1,0 +1,84 @@
+#include "gap_sims.h"
+
+#include "trace_reader.h"    // InputError
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <system_error>
+
+namespace granpen {
+
+namespace fs = std::filesystem;
+
+SimRequest baseline_request(const std::string &scenario, const std::vector<std::string> &v0,
+                            const std::vector<std::string> &seeds, const std::string &name)
+{
+  SimRequest r;
+  r.spec.name = name;
+  r.spec.presets = {scenario};
+  r.spec.seeds = seeds;
+  r.spec.v0 = v0;
+  r.spec.path = "(granpen gap)";
+  return r;
+}
+
+SimRequest effect_request(const std::string &scenario, const Effect &e, double a,
+                          const std::vector<std::string> &v0, const std::vector<std::string> &seeds,
+                          const std::string &name)
+{
+  SimRequest r = baseline_request(scenario, v0, seeds, name);
+  if (e.set) r.spec.set = e.set(a);
+  if (e.push_set) r.spec.push_set = e.push_set(a);
+  if (e.pour_mu_at) {
+    r.spec.mu = {e.pour_mu_at(a)};
+    r.spec.mu_push = {"0.3"};
+  }
+  return r;
+}
+
+namespace {
+
+void link_beds(const std::string &root, const std::string &from, const std::string &to)
+{
+  const fs::path src = fs::path(root) / from / "beds", dst = fs::path(root) / to / "beds";
+  if (!fs::is_directory(src)) throw InputError("no beds in " + src.string() + " to reuse");
+  fs::create_directories(dst);
+  for (const auto &entry : fs::directory_iterator(src)) {
+    const auto ext = entry.path().extension().string();
+    if (ext != ".restart" && ext != ".info") continue;
+    const fs::path target = dst / entry.path().filename();
+    if (fs::exists(target)) continue;
+    std::error_code ec;
+    fs::create_hard_link(entry.path(), target, ec);
+    if (ec) fs::copy_file(entry.path(), target, ec);    // another file system
+    if (ec) throw InputError("cannot link " + entry.path().string() + " to " + target.string() + ": " + ec.message());
+  }
+}
+
+}    // namespace
+
+int run_requests(const std::vector<SimRequest> &requests, const RunnerOptions &opt)
+{
+  int failed = 0;
+  for (const auto &r : requests) {
+    if (!r.beds_from.empty()) link_beds(opt.out_root, r.beds_from, r.spec.name);
+    if (run_sweep(r.spec, opt) != 0) ++failed;
+  }
+  return failed;
+}
+
+std::vector<std::string> finished_traces(const std::string &cache_dir, const std::string &sweep)
+{
+  std::vector<std::string> out;
+  const fs::path dir = fs::path(cache_dir) / sweep / "traces";
+  if (!fs::is_directory(dir)) return out;
+  for (const auto &entry : fs::directory_iterator(dir)) {
+    const auto p = entry.path();
+    if (p.extension() == ".csv" && fs::exists(p.string() + ".done")) out.push_back(p.string());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+}    // namespace granpen

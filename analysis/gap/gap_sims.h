@@ -1,0 +1,46 @@
+// granpen gap: the simulations a diagnosis needs, as sweeps (sweep/sweep_runner.h) in a
+// cache folder that every diagnosis of the same scenario shares:
+//   CACHE/SCENARIO/baseline                 the model as calibrated, seeds 1 2
+//   CACHE/SCENARIO/EFFECT_MAGNITUDE         each library effect at each knot, seeds 1 2
+//   CACHE/SCENARIO/confirm_EFFECT_MAGNITUDE the top effect at its fitted magnitude, fresh seeds
+//   CACHE/SCENARIO/beds_sSEEDS              baseline beds poured for push-only effects
+// A push-only effect (measurement chain) reuses the beds of the baseline with the same
+// seeds (hard links): its signature is then a paired difference, bed noise cancels.
+// The sweep runner skips what is done and resumes what was interrupted, so a diagnosis
+// resumes from the cache and a repeated one costs nothing.
+#ifndef GRANPEN_GAP_SIMS_H
+#define GRANPEN_GAP_SIMS_H
+
+#include "effects.h"
+#include "sweep_runner.h"
+#include "sweep_spec.h"
+
+#include <string>
+#include <vector>
+
+namespace granpen {
+
+struct SimRequest {
+  SweepSpec spec;
+  std::string beds_from;    // a sweep (same preset, seeds) whose beds this one reuses; "" = pour
+};
+
+struct Ensemble;    // gap_data.h
+
+// One sweep of the scenario's model, or of an effect at magnitude a, over speeds v0.
+SimRequest baseline_request(const std::string &scenario, const std::vector<std::string> &v0,
+                            const std::vector<std::string> &seeds, const std::string &name);
+SimRequest effect_request(const std::string &scenario, const Effect &e, double a,
+                          const std::vector<std::string> &v0, const std::vector<std::string> &seeds,
+                          const std::string &name);
+
+// Runs the requests in order (beds linked first where asked); returns the number of
+// sweeps with a failed run. opt.out_root is the scenario's cache folder.
+int run_requests(const std::vector<SimRequest> &requests, const RunnerOptions &opt);
+
+// The finished traces (*.csv with a .done marker) of a sweep in the cache, sorted.
+std::vector<std::string> finished_traces(const std::string &cache_dir, const std::string &sweep);
+
+}    // namespace granpen
+
+#endif

@@ -1,0 +1,47 @@
+# granpen gap: kernels on fixtures of known answer. Included from CMakeLists.txt.
+add_executable(test_gap test_gap.cpp)
+target_link_libraries(test_gap PRIVATE granpen_analysis GTest::gtest_main)
+gtest_discover_tests(test_gap PROPERTIES LABELS unit)
+
+# granpen gap end to end, blind, in a synthetic world: tests/tools/fake_lmp stands in for
+# lmp_granpen (same command lines and files, effects with known signatures), and
+# bench/gap_selftest.sh makes the measured data (effect withheld, depth offset, 2% noise),
+# runs the diagnosis (simulations, fit, leave one speed out, confirmation on fresh seeds)
+# and scores it. The cases whose synthetic signature is distinct; in the synthetic world
+# packing and lighter grains are both a uniform scaling of F, and the stiffness shows in
+# the fluctuations only (docs/gap-validation.md).
+set(GAP_SYNTH ${CMAKE_CURRENT_BINARY_DIR}/gap_synthetic)
+add_test(NAME gap_selftest_synthetic
+  COMMAND sh -c "rm -rf '${GAP_SYNTH}' && GRANPEN_LMP='$<TARGET_FILE:fake_lmp>' GRANPEN_CLI='$<TARGET_FILE:granpen-cli>' GRANPEN_INPUTS='${PROJECT_SOURCE_DIR}/inputs' GRANPEN_SELFTEST_WORK='${GAP_SYNTH}' bash '${PROJECT_SOURCE_DIR}/bench/gap_selftest.sh' --scenario tiny --jobs 2 --v0 '50 100 200' --cases rolling_resistance,polydispersity,sidewalls,measurement_chain,actuator_ramp,none")
+set_tests_properties(gap_selftest_synthetic PROPERTIES LABELS unit TIMEOUT 600 RESOURCE_LOCK gap_synthetic)
+
+# bad input: a clear message naming the file or option, exit 1 or 2, nothing in OUT
+set(GAP_BAD ${CMAKE_CURRENT_BINARY_DIR}/gap_bad)
+file(MAKE_DIRECTORY ${GAP_BAD}/wrongD ${GAP_BAD}/fast ${GAP_BAD}/nan ${GAP_BAD}/empty)
+function(gap_bad_trace path header row)
+  set(text "# granpen-trace v1\n# units = cgs\n${header}t,z,F\n")
+  foreach(i RANGE 0 40)
+    math(EXPR zi "${i} * 10 - 50")
+    string(APPEND text "${i}e-4,${zi}e-3,${row}\n")
+  endforeach()
+  file(WRITE ${path} "${text}")
+endfunction()
+gap_bad_trace(${GAP_BAD}/wrongD/a.csv "# v0 = 100\n# D = 3.0\n# g = 981\n" "5")
+gap_bad_trace(${GAP_BAD}/fast/a.csv "# v0 = 90000\n# D = 2.0\n# g = 981\n" "5")
+gap_bad_trace(${GAP_BAD}/nan/a.csv "# v0 = 100\n# D = 2.0\n# g = 981\n" "nan")
+foreach(case wrongD fast nan empty)
+  add_test(NAME gap_bad_${case}
+    COMMAND sh -c "rm -rf '${GAP_BAD}/out_${case}'; '$<TARGET_FILE:granpen-cli>' gap --real '${GAP_BAD}/${case}' --scenario tiny --out '${GAP_BAD}/out_${case}' --cache '${GAP_BAD}/cache' --lmp '$<TARGET_FILE:fake_lmp>' --inputs '${PROJECT_SOURCE_DIR}/inputs'; s=$?; test ! -e '${GAP_BAD}/out_${case}' && test ! -e '${GAP_BAD}/out_${case}.partial' && echo exit=$s")
+endforeach()
+set_tests_properties(gap_bad_wrongD PROPERTIES LABELS unit
+  PASS_REGULAR_EXPRESSION "wrongD/a.csv: header D = 3.*scenario 'tiny' has D = 2.*exit=1")
+set_tests_properties(gap_bad_fast PROPERTIES LABELS unit
+  PASS_REGULAR_EXPRESSION "fast/a.csv: v0 = 9e\\+04 cm/s is outside what scenario 'tiny' can run.*exit=1")
+set_tests_properties(gap_bad_nan PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "nan/a.csv:[0-9]+: .*exit=1")
+set_tests_properties(gap_bad_empty PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "empty: folder holds no \\*.csv file.*exit=1")
+add_test(NAME gap_bad_scenario COMMAND $<TARGET_FILE:granpen-cli> gap --real ${GAP_BAD}/wrongD --scenario huge
+  --out ${GAP_BAD}/out_s --inputs ${PROJECT_SOURCE_DIR}/inputs)
+set_tests_properties(gap_bad_scenario PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "unknown scenario 'huge'")
+add_test(NAME gap_bad_effect COMMAND $<TARGET_FILE:granpen-cli> gap --real ${GAP_BAD}/wrongD --scenario tiny
+  --out ${GAP_BAD}/out_e --effects rolling_resistance,magic --inputs ${PROJECT_SOURCE_DIR}/inputs)
+set_tests_properties(gap_bad_effect PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "unknown effect 'magic'")

@@ -1,0 +1,210 @@
+// granpen gap: the numerical kernels on fixtures of known answer.
+#include "effects.h"
+#include "gap_data.h"
+#include "gap_fit.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+using namespace granpen;
+
+namespace {
+
+// F = 0 above z0, then a linear rise of slope s for `rise` cm, then flat at s * rise
+void ramp_trace(double z0, double s, double rise, std::vector<double> &z, std::vector<double> &F)
+{
+  z.clear();
+  F.clear();
+  for (int i = 0; i <= 500; ++i) {
+    const double zz = -0.5 + 0.01 * i;
+    z.push_back(zz);
+    F.push_back(zz < z0 ? 0.0 : s * std::min(zz - z0, rise));
+  }
+}
+
+}    // namespace
+
+TEST(GapData, OnsetOfAKnownRamp)
+{
+  std::vector<double> z, F;
+  ramp_trace(0.13, 1000.0, 0.5, z, F);
+  // 20% of the plateau 500 is reached at 0.13 + 0.1
+  EXPECT_NEAR(force_onset(z, F, 0.2, 1.0), 0.23, 1e-9);
+  ramp_trace(-0.27, 1000.0, 0.5, z, F);
+  EXPECT_NEAR(force_onset(z, F, 0.2, 1.0), -0.17, 1e-9);
+  std::vector<double> none(z.size(), 0.0);
+  EXPECT_TRUE(std::isnan(force_onset(z, none)));
+}
+
+TEST(GapData, FeaturesAreBinMeansAndFluctuationLevels)
+{
+  GapGrid g;
+  g.zmax = 2.0;
+  std::vector<double> t, z, F;
+  // F = 100 z + alternating +-5: bin means 100 z_centre, within-bin sd ~5; sampled at
+  // 10 kHz (1e-4 s per 0.001 cm: 10 cm/s), plus a 700 Hz sine of amplitude 8 for the spectrum
+  for (int i = 1; i <= 2000; ++i) {
+    z.push_back(i * 0.001);
+    t.push_back(i * 1e-4);
+    F.push_back(100.0 * z.back() + (i % 2 ? 5.0 : -5.0));
+  }
+  RunFeatures f = run_features(t, z, F, g);
+  ASSERT_TRUE(f.ok) << f.note;
+  ASSERT_EQ(f.x.size(), 8u + 2u + 4u);
+  for (std::size_t b = 0; b < 8; ++b) EXPECT_NEAR(f.x[b], 100.0 * g.centre(b) + 0.0025 * 100.0 * 0.0, 0.06);
+  // within-bin sd: the alternation (5) and the linear trend over a bin (100 * 0.25 / sqrt(12))
+  const double expect = std::sqrt(25.0 + std::pow(25.0, 2) / 12.0);
+  EXPECT_NEAR(f.x[8], expect, 0.05);
+  EXPECT_NEAR(f.x[9], expect, 0.05);
+  // the alternation is at the Nyquist frequency (5 kHz): outside every band; a 700 Hz sine
+  // of amplitude 8 puts RMS 8 / sqrt(2) into the band 450-1350 Hz and (almost) nothing elsewhere
+  for (std::size_t i = 0; i < F.size(); ++i) F[i] = 100.0 * z[i] + 8.0 * std::sin(2.0 * M_PI * 700.0 * t[i]);
+  f = run_features(t, z, F, g);
+  ASSERT_TRUE(f.ok);
+  EXPECT_NEAR(f.x[10 + 2], 8.0 / std::sqrt(2.0), 0.1);
+  EXPECT_LT(f.x[10 + 0], 0.2);
+  EXPECT_LT(f.x[10 + 1], 0.5);
+  EXPECT_LT(f.x[10 + 3], 0.5);
+  // too short: a named empty bin
+  g.zmax = 3.0;
+  const RunFeatures s = run_features(t, z, F, g);
+  EXPECT_FALSE(s.ok);
+  EXPECT_NE(s.note.find("no samples in depth bin"), std::string::npos);
+}
+
+TEST(GapData, GapMetricKnownAnswers)
+{
+  // two runs a side, no scatter: G = ||R - S|| / ||R||
+  const std::vector<double> s = {1, 2, 3, 4};
+  std::vector<double> r;
+  for (double x : s) r.push_back(1.1 * x);
+  Ensemble S = make_ensemble(50, {s, s}), R = make_ensemble(50, {r, r});
+  EXPECT_NEAR(gap_metric(R, S, 0, 4), 0.1 / 1.1, 1e-12);
+  EXPECT_NEAR(gap_metric(S, S, 0, 4), 0.0, 1e-12);
+  // pure scatter about equal means: the standard errors remove it (clipped at 0)
+  Ensemble A = make_ensemble(50, {{1, 2, 3, 4}, {1.2, 2.2, 3.2, 4.2}}), B = make_ensemble(50, {{1.1, 2.1, 3.1, 4.1}, {1.1, 2.1, 3.1, 4.1}});
+  EXPECT_EQ(gap_metric(A, B, 0, 4), 0.0);
+}
+
+TEST(GapData, PooledNoiseModelRecoversAKnownScatter)
+{
+  // many ensembles of two runs with relative scatter 10%: cv^2 -> 0.01
+  GapGrid g;
+  g.zmax = 1.0;
+  g.bands.clear();
+  std::mt19937 rng(7);
+  std::normal_distribution<double> n(0.0, 0.1);
+  std::vector<Ensemble> es;
+  for (int e = 0; e < 400; ++e) {
+    std::vector<std::vector<double>> runs(2, std::vector<double>(g.nfeatures()));
+    for (auto &r : runs)
+      for (auto &x : r) x = 100.0 * (1.0 + n(rng));
+    es.push_back(make_ensemble(50, runs));
+  }
+  std::vector<const Ensemble *> p;
+  for (auto &e : es) p.push_back(&e);
+  int dof = 0;
+  const auto cv2 = pooled_cv2(p, g, 1e-4, &dof);
+  EXPECT_EQ(dof, 400);
+  for (double c : cv2) EXPECT_NEAR(c, 0.01, 0.002);
+}
+
+namespace {
+
+// a two-speed, 6-feature problem: baseline m0, effect knots at magnitudes 1 and 2
+EffectData synthetic_effect(const std::string &name, const std::vector<double> &sig, double err)
+{
+  EffectData e;
+  e.name = name;
+  e.knots = {0.0, 1.0, 2.0};
+  for (double a : e.knots) {
+    Table m, v, dv;
+    for (int s = 0; s < 2; ++s) {
+      std::vector<double> row, er;
+      for (std::size_t k = 0; k < sig.size(); ++k) {
+        row.push_back(100.0 + (s + 1) * a * sig[k]);
+        er.push_back(err);
+      }
+      m.push_back(row);
+      v.push_back(er);
+      dv.push_back(er);
+    }
+    e.mean.push_back(m);
+    e.err.push_back(v);
+    e.diff_err.push_back(dv);
+  }
+  return e;
+}
+
+}    // namespace
+
+TEST(GapFit, RecoversAKnownMagnitudeAndRanksTheRightEffect)
+{
+  const std::vector<double> sa = {10, 8, 6, 4, 2, 0}, sb = {-3, 3, -3, 3, -3, 3};
+  const EffectData A = synthetic_effect("A", sa, 0.5), B = synthetic_effect("B", sb, 0.5);
+  Target t;
+  for (int s = 0; s < 2; ++s) {
+    std::vector<double> row, er;
+    for (std::size_t k = 0; k < sa.size(); ++k) row.push_back(100.0 + (s + 1) * 1.4 * sa[k]), er.push_back(0.5);
+    t.mean.push_back(row);
+    t.err.push_back(er);
+  }
+  const EffectFit fa = fit_effect(t, A), fb = fit_effect(t, B);
+  // the fit minimises -2 log L: the prediction variance between knots pulls it slightly
+  EXPECT_NEAR(fa.magnitude, 1.4, 5e-3);
+  EXPECT_GT(fa.explained, 0.95);
+  EXPECT_GT(fa.heldout_explained, 0.95);
+  EXPECT_NEAR(fa.loso_magnitude[0], 1.4, 5e-3);
+  EXPECT_LT(fb.explained, 0.2);
+  EXPECT_FALSE(fa.at_edge);
+  // a magnitude beyond the simulated range sits at its edge
+  for (auto &row : t.mean)
+    for (std::size_t k = 0; k < sa.size(); ++k) row[k] = 100.0 + 5.0 * sa[k] * (&row == &t.mean[0] ? 1 : 2);
+  EXPECT_TRUE(fit_effect(t, A).at_edge);
+}
+
+TEST(GapFit, AnEffectThatFitsOneSpeedButNotTheOtherDoesNotPredictIt)
+{
+  const std::vector<double> sa = {10, 8, 6, 4, 2, 0};
+  const EffectData A = synthetic_effect("A", sa, 0.5);
+  Target t;
+  // speed 0 looks like magnitude 1.5, speed 1 like magnitude -1 (the opposite sign)
+  for (int s = 0; s < 2; ++s) {
+    std::vector<double> row, er;
+    const double a = s == 0 ? 1.5 : -1.0;
+    for (std::size_t k = 0; k < sa.size(); ++k) row.push_back(100.0 + (s + 1) * a * sa[k]), er.push_back(0.5);
+    t.mean.push_back(row);
+    t.err.push_back(er);
+  }
+  const EffectFit f = fit_effect(t, A);
+  EXPECT_LT(f.heldout_explained, 0.0);
+  EXPECT_LT(f.score, 0.3);
+}
+
+TEST(GapFit, ChiSquareTail)
+{
+  EXPECT_NEAR(chi2_sf(3.841459, 1), 0.05, 1e-5);
+  EXPECT_NEAR(chi2_sf(18.307038, 10), 0.05, 1e-5);
+  EXPECT_NEAR(chi2_sf(124.342, 100), 0.05, 1e-4);
+  EXPECT_NEAR(chi2_sf(0.0, 5), 1.0, 1e-12);
+}
+
+TEST(GapEffects, LibraryKnobsAreDeckVariables)
+{
+  for (const char *n : {"rolling_resistance", "polydispersity", "sidewalls", "measurement_chain", "actuator_ramp",
+                        "packing", "contact_stiffness"})
+    EXPECT_NE(find_effect(n), nullptr) << n;
+  EXPECT_EQ(find_effect("magic"), nullptr);
+  const Effect &m = *find_effect("measurement_chain");
+  EXPECT_FALSE(m.pour_level);
+  // a 1 ms mount period with 100 g: k = m (2 pi / T)^2
+  const auto v = m.push_set(1.0);
+  ASSERT_EQ(v[0].first, "mount_k");
+  EXPECT_NEAR(std::stod(v[0].second), 100.0 * std::pow(2.0 * M_PI / 1e-3, 2), 1e4);
+  // stiffer contacts get a shorter timestep that keeps the 1e-4 s trace window whole
+  for (const auto &[k, val] : find_effect("contact_stiffness")->set(0.6))
+    if (k == "dt_push") EXPECT_NEAR(1e-4 / std::stod(val), std::round(1e-4 / std::stod(val)), 1e-6);
+  EXPECT_EQ(effect_sweep_name(*find_effect("packing"), -0.2), "packing_-0.2");
+}
