@@ -32,6 +32,7 @@ mkdir -p "$WORK"
 # case: name | truth (expected top effect, or none / outside) | magnitude said in the table | sweep keys
 all_cases() {
   cat <<'CASES'
+none|none|0|
 rolling_resistance|rolling_resistance|0.2|set = mu_roll=0.2
 polydispersity|polydispersity|0.18|set = poly=0.18
 sidewalls|sidewalls|0.4|set = walls=1 mu_wall=0.4
@@ -39,7 +40,6 @@ measurement_chain|measurement_chain|1.0|push_set = mount_k=3.947842e9 mount_c=2.
 actuator_ramp|actuator_ramp|1.2|push_set = ramp=1.2
 packing|packing|-0.15|mu = 0.15
 contact_stiffness|contact_stiffness|-0.398|set = kn=4e8 kt=4e8
-none|none|0|
 light_grains|outside|rho_g 2.5 (header says 3.0)|set = rho_g=2.5
 CASES
 }
@@ -51,6 +51,13 @@ make_measured() {    # name keys -> $WORK/real_NAME/*.csv
   { echo "name = truth_$name"; echo "preset = $SCEN"; echo "seeds = 101 102"; echo "v0 = $V0"
     [ -n "$keys" ] && echo "$keys"
     case "$keys" in mu*) echo "mu_push = 0.3" ;; esac; } > "$spec"
+  # a push-only effect pushes into the no-effect case's beds (poured once)
+  case "$keys" in
+    push_set*) mkdir -p "$WORK/truth/truth_$name/beds"
+               for f in "$WORK/truth/truth_none/beds/"*.restart "$WORK/truth/truth_none/beds/"*.info; do
+                 [ -e "$f" ] && ln -f "$f" "$WORK/truth/truth_$name/beds/" 2>/dev/null || true
+               done ;;
+  esac
   "$CLI" sweep "$spec" --jobs "$JOBS" --out "$WORK/truth" > "$WORK/truth_$name.log" 2>&1 \
     || { echo "gap_selftest: the measured sweep of $name failed: $WORK/truth_$name.log" >&2; return 1; }
   rm -rf "$real"; mkdir -p "$real"
