@@ -14,6 +14,7 @@ struct Subcommand {
 };
 
 const Subcommand SUBCOMMANDS[] = {
+    {"convert", granpen::cli::convert, "write fix ave/time output as a force trace (granpen-trace v1)"},
     {"check", granpen::cli::check, "validate force traces (granpen-trace v1) and summarise them"},
     {"fit", granpen::cli::fit, "fit the depth term k_z, alpha, the peak and the fluctuation wavelength"},
     {"calibration", granpen::cli::calibration, "summarise a friction-calibration sweep: phi_0(mu), k_z(mu)"},

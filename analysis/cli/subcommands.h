@@ -16,6 +16,7 @@ int flow(int argc, char **argv);           // flow_cmd.cpp
 int momentum(int argc, char **argv);       // momentum_cmd.cpp
 int plot(int argc, char **argv);           // plot_cmd.cpp, plot_flow_cmd.cpp
 int gap(int argc, char **argv);            // gap_cmd.cpp
+int convert(int argc, char **argv);        // convert_cmd.cpp
 
 }    // namespace cli
 }    // namespace granpen

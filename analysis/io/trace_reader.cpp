@@ -152,6 +152,89 @@ Trace read_trace(const std::string &path)
   return parse_trace(ss.str(), path);
 }
 
+Trace parse_ave_time(const std::string &text, const std::string &name, const AveTimeSpec &spec)
+{
+  if (spec.units != "cgs" && spec.units != "si") throw InputError(name + ": unknown unit system '" + spec.units + "'");
+  for (double v : {spec.v0, spec.D, spec.g, spec.dt})
+    if (!(v > 0.0) || !std::isfinite(v)) throw InputError(name + ": v0, D, g and dt must be given, positive and finite");
+  Trace tr;
+  tr.path = name;
+  tr.units = spec.units;
+  tr.v0 = spec.v0;
+  tr.D = spec.D;
+  tr.g = spec.g;
+  std::istringstream in(text);
+  std::string line;
+  int lineno = 0;
+  if (!std::getline(in, line) || trim(line).rfind("# Time-averaged data for fix", 0) != 0)
+    fail(name, 1, "not fix ave/time output: the first line must be '# Time-averaged data for fix ID'");
+  ++lineno;
+  std::vector<std::string> names;
+  if (std::getline(in, line)) {
+    ++lineno;
+    std::istringstream w(trim(line));
+    std::string hash, word;
+    w >> hash >> word;
+    if (hash != "#" || word != "TimeStep") fail(name, lineno, "expected '# TimeStep NAME...', found '" + trim(line) + "'");
+    while (w >> word) names.push_back(word);
+    if (names.size() == 1 && names[0] == "Number-of-rows")
+      fail(name, lineno, "fix ave/time in vector mode (blocks of rows) is not a force trace: use scalar mode");
+  }
+  if (names.empty()) fail(name, lineno, "no value columns on the '# TimeStep' line");
+  std::size_t col = 0;
+  if (!spec.column.empty()) {
+    col = names.size();
+    for (std::size_t i = 0; i < names.size(); ++i)
+      if (names[i] == spec.column) col = i;
+    if (col == names.size()) {
+      std::string known;
+      for (const auto &n : names) known += " " + n;
+      fail(name, lineno, "no column '" + spec.column + "' (columns:" + known + ")");
+    }
+  }
+  std::vector<double> steps;
+  while (std::getline(in, line)) {
+    ++lineno;
+    const std::string s = trim(line);
+    if (s.empty() || s[0] == '#') continue;
+    std::istringstream w(s);
+    std::vector<std::string> fields;
+    std::string f;
+    while (w >> f) fields.push_back(f);
+    if (fields.size() != names.size() + 1)
+      fail(name, lineno, "row has " + std::to_string(fields.size()) + " fields, expected " + std::to_string(names.size() + 1));
+    const double step = to_number(fields[0], name, lineno, "TimeStep");
+    if (!steps.empty() && !(step > steps.back())) fail(name, lineno, "TimeStep does not increase");
+    steps.push_back(step);
+    tr.F.push_back(spec.sign * to_number(fields[col + 1], name, lineno, "column " + names[col] + " value"));
+  }
+  if (steps.size() < 10) fail(name, lineno, "only " + std::to_string(steps.size()) + " data rows, at least 10 needed");
+  const double step0 = std::isnan(spec.step0) ? steps[0] - (steps[1] - steps[0]) : spec.step0;
+  for (double st : steps) {
+    tr.t.push_back((st - step0) * spec.dt);
+    tr.z.push_back(spec.z0 + spec.v0 * tr.t.back());
+  }
+  tr.columns = {"t", "z", "F"};
+  auto num = [](double v) {
+    std::ostringstream o;
+    o.precision(10);
+    o << v;
+    return o.str();
+  };
+  tr.keys = {{"units", spec.units}, {"v0", num(spec.v0)}, {"D", num(spec.D)}, {"g", num(spec.g)},
+             {"source", "fix ave/time " + name + " column " + names[col]}};
+  return tr;
+}
+
+Trace read_ave_time(const std::string &path, const AveTimeSpec &spec)
+{
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw InputError(path + ": cannot open fix ave/time file");
+  std::ostringstream ss;
+  ss << f.rdbuf();
+  return parse_ave_time(ss.str(), path, spec);
+}
+
 Trace to_cgs(const Trace &in)
 {
   if (in.units == "cgs") return in;

@@ -6,6 +6,7 @@
 #ifndef GRANPEN_TRACE_READER_H
 #define GRANPEN_TRACE_READER_H
 
+#include <cmath>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -34,6 +35,22 @@ struct Trace {
 // Reads and validates a trace; throws InputError naming path:line.
 Trace read_trace(const std::string &path);
 Trace parse_trace(const std::string &text, const std::string &name);
+
+// The raw output of `fix ave/time` in scalar mode ("# Time-averaged data for fix ID",
+// "# TimeStep NAME...", then rows STEP VALUE...) as a trace: t = (step - step0) dt,
+// z = z0 + v0 t, F = sign * the chosen column. LAMMPS writes no units, speed or geometry
+// into it, so they come from the caller. Rejections name the file and line.
+struct AveTimeSpec {
+  std::string column;        // a column name of the "# TimeStep" line; "" = the first value column
+  std::string units = "cgs";
+  double v0 = 0.0, D = 0.0, g = 0.0;    // > 0, in `units`
+  double dt = 0.0;           // timestep, > 0
+  double step0 = NAN;        // the push's first step; NaN = first row's step minus the row spacing
+  double z0 = -0.5;          // tip depth at step0 (negative above the surface)
+  double sign = 1.0;         // -1 when the column is the force on the grains
+};
+Trace parse_ave_time(const std::string &text, const std::string &name, const AveTimeSpec &spec);
+Trace read_ave_time(const std::string &path, const AveTimeSpec &spec);
 
 // The same trace in cgs (cm, g, s, dyne); a cgs trace comes back unchanged.
 Trace to_cgs(const Trace &trace);

@@ -66,3 +66,28 @@ add_test(NAME cli_collapse_bench_sweep COMMAND granpen-cli collapse ${PROJECT_SO
   --alpha 18.6 --json ${CMAKE_CURRENT_BINARY_DIR}/collapse.json)
 set_tests_properties(cli_collapse_bench_sweep PROPERTIES LABELS cli
   PASS_REGULAR_EXPRESSION "granpen collapse: 6 traces.*collapse quality: spread.*peak law: peak ~ v0\\^[0-9.]+ \\+- [0-9.]+ \\(95%")
+
+# granpen convert: fix ave/time output to a trace; bad input names the file and line, and
+# leaves no output behind
+set(AVE ${CMAKE_CURRENT_BINARY_DIR}/avetime)
+file(MAKE_DIRECTORY ${AVE})
+set(ave_text "# Time-averaged data for fix trace\n# TimeStep c_fz[1] c_fz[2]\n")
+foreach(i RANGE 1 20)
+  math(EXPR step "1000 + 50 * ${i}")
+  math(EXPR f "7 * ${i}")
+  string(APPEND ave_text "${step} ${f} -1\n")
+endforeach()
+file(WRITE ${AVE}/good.txt "${ave_text}")
+string(REPLACE "1500 70 -1" "1500 nan -1" bad_text "${ave_text}")
+file(WRITE ${AVE}/nan.txt "${bad_text}")
+file(WRITE ${AVE}/vector.txt "# Time-averaged data for fix t\n# TimeStep Number-of-rows\n# Row c_x\n")
+add_test(NAME convert_ave_time COMMAND sh -c "'$<TARGET_FILE:granpen-cli>' convert '${AVE}/good.txt' --v0 100 --dt 2e-6 --D 2 --g 981 --out '${AVE}/good.csv' && sed -n '8p;27p' '${AVE}/good.csv'")
+# first row: step 1050, step0 = 1050 - 50 = 1000: t = 1e-4 s, z = -0.5 + 100 t = -0.49, F = 7
+set_tests_properties(convert_ave_time PROPERTIES LABELS unit
+  PASS_REGULAR_EXPRESSION "granpen convert: .*20 rows.*\n0.0001,-0.49,7\n0.002,-0.3,140")
+add_test(NAME convert_ave_time_nan COMMAND sh -c "'$<TARGET_FILE:granpen-cli>' convert '${AVE}/nan.txt' --v0 100 --dt 2e-6 --D 2 --g 981 --out '${AVE}/nan.csv'; test ! -e '${AVE}/nan.csv' && test ! -e '${AVE}/nan.csv.tmp' && echo clean")
+set_tests_properties(convert_ave_time_nan PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "nan.txt:12: column c_fz\\[1\\] value 'nan' is not.*clean")
+add_test(NAME convert_ave_time_vector COMMAND $<TARGET_FILE:granpen-cli> convert ${AVE}/vector.txt --v0 100 --dt 2e-6 --D 2 --g 981 --out ${AVE}/v.csv)
+set_tests_properties(convert_ave_time_vector PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "vector.txt:2: fix ave/time in vector mode")
+add_test(NAME convert_ave_time_column COMMAND $<TARGET_FILE:granpen-cli> convert ${AVE}/good.txt --column c_x --v0 100 --dt 2e-6 --D 2 --g 981 --out ${AVE}/c.csv)
+set_tests_properties(convert_ave_time_column PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "good.txt:2: no column 'c_x' \\(columns: c_fz\\[1\\] c_fz\\[2\\]\\)")
