@@ -27,7 +27,7 @@ namespace fs = std::filesystem;
 using granpen::TraceFit;
 
 const char *HELP =
-    "usage: granpen fit TRACE... [--zmin Z] [--zmax Z] [--mu MU] [--rho RHO] [--json FILE] [--csv FILE]\n"
+    "usage: granpen fit TRACE... [--zmin Z | --tmin T] [--zmax Z] [--mu MU] [--rho RHO] [--json FILE] [--csv FILE]\n"
     "Fits each force trace (granpen-trace v1; SI traces are converted to cgs). A folder\n"
     "argument stands for every *.csv in it. Per trace:\n"
     "  k_z    slope of F on z over the window (linear least squares), with its standard error\n"
@@ -38,6 +38,8 @@ const char *HELP =
     "         the paper sees fluctuations of wavelength about d_g\n"
     "options:\n"
     "  --zmin Z    window start, cm (default 3, the paper's z >= 3 cm)\n"
+    "  --tmin T    window start by t~ = (z/v0) sqrt(g/D) instead: z >= T v0 sqrt(D/g) per\n"
+    "              trace (the deep regime is t~ > 1)\n"
     "  --zmax Z    window end, cm (default: the deepest depth of each trace)\n"
     "  --mu MU     grain friction for alpha (default: header key mu, else 0.3)\n"
     "  --rho RHO   grain density for alpha, g/cm^3 (default: header key rho_g, else 3.0)\n"
@@ -140,15 +142,15 @@ void print_result(const Result &r)
 }
 
 bool write_json(const std::string &path, const std::vector<Result> &results,
-                const std::vector<Failure> &failures, double zmin, double zmax)
+                const std::vector<Failure> &failures, double zmin, double zmax, double tmin)
 {
   std::ofstream o(path, std::ios::binary);
   if (!o) return false;
   o << "{\n  \"tool\": \"granpen fit\",\n"
     << "  \"units\": {\"z\": \"cm\", \"F\": \"dyne\", \"k_z\": \"dyne/cm\", \"v0\": \"cm/s\", "
        "\"g\": \"cm/s^2\", \"rho_g\": \"g/cm^3\", \"wavelength\": \"cm\"},\n"
-    << "  \"window\": {\"zmin\": " << num(zmin)
-    << ", \"zmax\": " << (std::isfinite(zmax) ? num(zmax) : std::string("null")) << "},\n"
+    << "  \"window\": {\"zmin\": " << (tmin > 0 ? std::string("null") : num(zmin))
+    << ", \"tmin\": " << (tmin > 0 ? num(tmin) : std::string("null")) << ", \"zmax\": " << (std::isfinite(zmax) ? num(zmax) : std::string("null")) << "},\n"
     << "  \"traces\": [";
   auto b = [](bool v) { return v ? "true" : "false"; };
   for (std::size_t i = 0; i < results.size(); ++i) {
@@ -225,8 +227,8 @@ int granpen::cli::fit(int argc, char **argv)
     return 2;
   }
   double zmin = 3.0, zmax = std::numeric_limits<double>::infinity();
-  double mu_opt = 0.0, rho_opt = 0.0;
-  bool have_mu = false, have_rho = false;
+  double mu_opt = 0.0, rho_opt = 0.0, tmin = -1.0;
+  bool have_mu = false, have_rho = false, have_zmin = false;
   std::string json_path, csv_path;
   std::vector<std::string> inputs;
 
@@ -245,8 +247,8 @@ int granpen::cli::fit(int argc, char **argv)
         value = a.substr(eq + 1);
         inline_value = true;
       }
-      if (name != "--zmin" && name != "--zmax" && name != "--mu" && name != "--rho" && name != "--json" &&
-          name != "--csv")
+      if (name != "--zmin" && name != "--zmax" && name != "--tmin" && name != "--mu" && name != "--rho" &&
+          name != "--json" && name != "--csv")
         return usage_error("unknown option '" + name + "'");
       if (!inline_value) {
         if (i + 1 >= argc) return usage_error(name + " needs a value");
@@ -259,7 +261,8 @@ int granpen::cli::fit(int argc, char **argv)
       }
       double v;
       if (!parse_number(value.c_str(), v)) return usage_error(name + " '" + value + "' is not a number");
-      if (name == "--zmin") zmin = v;
+      if (name == "--zmin") zmin = v, have_zmin = true;
+      else if (name == "--tmin") tmin = v;
       else if (name == "--zmax") zmax = v;
       else if (name == "--mu") mu_opt = v, have_mu = true;
       else rho_opt = v, have_rho = true;
@@ -268,7 +271,9 @@ int granpen::cli::fit(int argc, char **argv)
     inputs.push_back(a);
   }
   if (inputs.empty()) return usage_error("no trace given");
-  if (!(zmin < zmax)) return usage_error("--zmin must be below --zmax");
+  if (have_zmin && tmin >= 0) return usage_error("give --zmin or --tmin, not both");
+  if (tmin >= 0 && !(tmin > 0)) return usage_error("--tmin must be positive");
+  if (tmin < 0 && !(zmin < zmax)) return usage_error("--zmin must be below --zmax");
   if (have_mu && !(mu_opt > 0)) return usage_error("--mu must be positive");
   if (have_rho && !(rho_opt > 0)) return usage_error("--rho must be positive");
 
@@ -280,7 +285,9 @@ int granpen::cli::fit(int argc, char **argv)
   for (const auto &m : problems) failures.push_back({m.substr(0, m.find(": ")), m});
   for (const auto &f : failures) std::fprintf(stderr, "granpen fit: %s\n", f.message.c_str());
 
-  std::printf("granpen fit: window %s; %zu trace%s\n", window_text(zmin, zmax).c_str(), files.size(),
+  std::printf("granpen fit: window %s; %zu trace%s\n",
+              tmin > 0 ? ("t~ >= " + json_number("%g", tmin) + (std::isfinite(zmax) ? ", z <= " + json_number("%g", zmax) + " cm" : std::string())).c_str()
+                       : window_text(zmin, zmax).c_str(), files.size(),
               files.size() == 1 ? "" : "s");
   for (const auto &file : files) {
     Result r;
@@ -298,7 +305,8 @@ int granpen::cli::fit(int argc, char **argv)
       r.D = tr.D;
       r.g = tr.g;
       TraceFitParams p;
-      p.zlo = zmin;
+      // a t~ window: z >= t~ v0 sqrt(D / g), this trace's depth of that t~
+      p.zlo = tmin > 0 ? tmin * tr.v0 * std::sqrt(tr.D / tr.g) : zmin;
       p.zhi = zmax;
       p.v0 = tr.v0;
       p.D = tr.D;
@@ -320,7 +328,7 @@ int granpen::cli::fit(int argc, char **argv)
   if (!failures.empty())
     std::printf("granpen fit: %zu input%s failed (see above)\n", failures.size(), failures.size() == 1 ? "" : "s");
   if (!json_path.empty()) {
-    if (write_json(json_path, results, failures, zmin, zmax)) std::printf("wrote %s\n", json_path.c_str());
+    if (write_json(json_path, results, failures, zmin, zmax, tmin)) std::printf("wrote %s\n", json_path.c_str());
     else std::fprintf(stderr, "granpen fit: cannot write %s\n", json_path.c_str()), status = 1;
   }
   if (!csv_path.empty()) {

@@ -91,3 +91,9 @@ add_test(NAME convert_ave_time_vector COMMAND $<TARGET_FILE:granpen-cli> convert
 set_tests_properties(convert_ave_time_vector PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "vector.txt:2: fix ave/time in vector mode")
 add_test(NAME convert_ave_time_column COMMAND $<TARGET_FILE:granpen-cli> convert ${AVE}/good.txt --column c_x --v0 100 --dt 2e-6 --D 2 --g 981 --out ${AVE}/c.csv)
 set_tests_properties(convert_ave_time_column PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "good.txt:2: no column 'c_x' \\(columns: c_fz\\[1\\] c_fz\\[2\\]\\)")
+
+# the window by t~: z >= t~ v0 sqrt(D/g) per trace (v0 = 100, D = 2, g = 981: t~ = 0.5 -> z >= 2.258 cm)
+add_test(NAME fit_cli_tmin COMMAND granpen-cli fit ${GRANPEN_FIT_DIR}/kz25300.csv --tmin 0.5)
+set_tests_properties(fit_cli_tmin PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "window t~ >= 0.5.*z 2.26\\.\\.5 cm")
+add_test(NAME fit_cli_tmin_and_zmin COMMAND granpen-cli fit ${GRANPEN_FIT_DIR}/kz25300.csv --tmin 0.5 --zmin 1)
+set_tests_properties(fit_cli_tmin_and_zmin PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "give --zmin or --tmin, not both")
