@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # granpen gap, checked on data whose effect is withheld (issue: gap diagnosis).
 #   bench/gap_selftest.sh [--scenario bench|tiny] [--jobs N] [--cases LIST] [--effects LIST] [--v0 "50 100 200"]
+#                         [--measured-only]   (make the measured data only, e.g. while the cache fills)
 # For each case it makes "measured" data: a sweep of the scenario with one effect at a
 # magnitude the diagnosis is not told (or none, or an effect outside the library: grains
 # lighter than the header says), on beds no diagnosis uses (seeds 101 102); every trace's
@@ -12,7 +13,7 @@
 # to runs/gap_selftest/SCENARIO/table.md (docs/gap-validation.md quotes it).
 set -euo pipefail
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-SCEN=bench JOBS=2 CASES="" EFFECTS="" V0="50 100 200"
+SCEN=bench JOBS=2 CASES="" EFFECTS="" V0="50 100 200" MEASURED_ONLY=no
 while [ $# -gt 0 ]; do
   case "$1" in
     --scenario) SCEN=$2; shift 2 ;;
@@ -20,6 +21,7 @@ while [ $# -gt 0 ]; do
     --cases) CASES=$2; shift 2 ;;
     --effects) EFFECTS=$2; shift 2 ;;
     --v0) V0=$2; shift 2 ;;
+    --measured-only) MEASURED_ONLY=yes; shift ;;
     *) echo "gap_selftest: unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -89,6 +91,7 @@ while IFS='|' read -r name truth mag keys; do
   [ -n "$CASES" ] && ! [[ ",$CASES," == *",$name,"* ]] && continue
   echo "gap_selftest: case $name: making the measured data"
   make_measured "$name" "$keys"
+  [ "$MEASURED_ONLY" = yes ] && continue
   out=$WORK/diag_$name
   echo "gap_selftest: case $name: diagnosing blind"
   args=(gap --real "$WORK/real_$name" --scenario "$SCEN" --out "$out" --jobs "$JOBS" --cache "$WORK/cache")

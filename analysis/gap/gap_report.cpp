@@ -5,6 +5,7 @@
 #include "plot_writer.h"
 #include "trace_reader.h"    // InputError
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -124,14 +125,15 @@ void write_gap_report(const Diagnosis &d, const std::string &dir)
   fz.name = "force_depth";
   fz.title = "F(z): measured, simulated (baseline) and corrected, ensemble means +- 2 s.e.";
   fz.columns = (int) d.speeds.size();
-  fz.width = 520 * (int) d.speeds.size();
-  fz.height = 520;
+  fz.width = 480 * (int) d.speeds.size() + 300;
+  fz.height = 500;
+  fz.grid_width = 1.0 - 300.0 / fz.width;    // one legend for every panel, on the right
   for (const auto &c : d.speeds) {
     SeriesPanel p;
     p.title = "v_0 = " + f3(c.v0, "%g") + " cm/s";
     p.xlabel = "depth z (cm)";
     p.ylabel = "F (dyne)";
-    p.key = "bmargin center horizontal";
+    p.key = fz.panels.empty() ? "column" : "off";
     PlotSeries R{"measured (" + std::to_string(c.n_real) + ")", c.z, c.real};
     R.band_lo = add(c.real, c.real_se, -2), R.band_hi = add(c.real, c.real_se, 2);
     R.colour = "#000000";
@@ -140,7 +142,9 @@ void write_gap_report(const Diagnosis &d, const std::string &dir)
     B.colour = "#d62728";
     p.series = {R, B};
     if (!d.tested_effect.empty()) {
-      PlotSeries C{"with " + d.tested_effect + " (" + std::to_string(c.n_corr) + ")", c.z, c.corr};
+      std::string effect = d.tested_effect;
+      std::replace(effect.begin(), effect.end(), '_', ' ');
+      PlotSeries C{"with " + effect + " (" + std::to_string(c.n_corr) + ")", c.z, c.corr};
       C.band_lo = add(c.corr, c.corr_se, -2), C.band_hi = add(c.corr, c.corr_se, 2);
       C.colour = "#1f77b4";
       p.series.push_back(C);
@@ -154,14 +158,15 @@ void write_gap_report(const Diagnosis &d, const std::string &dir)
   gc.name = "gap_curve";
   gc.title = "measured minus simulated F, with the 2-sigma noise band of the difference";
   gc.columns = (int) d.speeds.size();
-  gc.width = 520 * (int) d.speeds.size();
+  gc.width = 480 * (int) d.speeds.size() + 300;
   gc.height = 460;
+  gc.grid_width = 1.0 - 300.0 / gc.width;
   for (const auto &c : d.speeds) {
     SeriesPanel p;
     p.title = "v_0 = " + f3(c.v0, "%g") + " cm/s, G = " + f3(c.G_before);
     p.xlabel = "depth z (cm)";
     p.ylabel = "F_{real} - F_{sim} (dyne)";
-    p.key = "bmargin center horizontal";
+    p.key = gc.panels.empty() ? "column" : "off";
     PlotSeries g{"gap", c.z, c.gap};
     std::vector<double> zero(c.z.size(), 0.0);
     g.band_lo = add(zero, c.band, -1), g.band_hi = c.band;
@@ -178,7 +183,7 @@ void write_gap_report(const Diagnosis &d, const std::string &dir)
   // each candidate's explained fraction
   BarChart bc;
   bc.name = "explained";
-  bc.title = "fraction of the gap each candidate explains (fitted magnitude; held out: mean over speeds left out)";
+  bc.title = "fraction of the gap each candidate explains at its fitted magnitude";
   bc.ylabel = "explained fraction";
   bc.ymin = 0;
   bc.ymax = 1.05;
@@ -186,7 +191,7 @@ void write_gap_report(const Diagnosis &d, const std::string &dir)
     bc.labels.push_back(r.name);
     bc.values.push_back(std::max(0.0, r.explained));
   }
-  bc.guides = {PlotGuide{"0.5", "threshold"}};
+  bc.guides = {PlotGuide{"0.5", "0.5: needed for explained"}};
   if (!bc.labels.empty()) draw(bar_chart(bc));
 
   // report.md
