@@ -158,9 +158,11 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
   std::vector<std::string> v0s;
   for (const auto &[v, runs] : real) {
     v0s.push_back(deck_number(v));
-    if (runs.size() == 1)
+    if (runs.size() == 1) {
       d.notes.push_back("v0 = " + fmt(v) + " cm/s has one measured run: its noise is unknown; it is estimated from "
                         "the simulations' run-to-run scatter, scaled by the measured signal's fluctuation level");
+      std::fprintf(stderr, "granpen gap: warning: %s\n", d.notes.back().c_str());
+    }
   }
   std::printf("granpen gap: %zu measured runs at %zu speeds (%s cm/s) against scenario %s\n", d.real_files.size(),
               real.size(), [&] { std::string s; for (auto &v : v0s) s += (s.empty() ? "" : " ") + v; return s; }().c_str(),
