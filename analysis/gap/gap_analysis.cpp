@@ -7,6 +7,7 @@
 #include "gap_fit.h"
 #include "gap_plan.h"
 #include "gap_result.h"
+#include "bed_info.h"
 #include "gap_sims.h"
 #include "scenario.h"
 #include "trace_files.h"
@@ -79,6 +80,17 @@ BySpeed load_sweep(const std::string &cache, const std::string &sweep)
     out[r.v0].push_back(std::move(r));
   }
   return out;
+}
+
+// mean phi_0 of a sweep's beds (NaN without any)
+double mean_phi0(const std::string &cache, const std::string &sweep)
+{
+  double s = 0;
+  int n = 0;
+  std::error_code ec;
+  for (const auto &e : fs::directory_iterator(fs::path(cache) / sweep / "beds", ec))
+    if (e.path().extension() == ".info") s += read_bed_info(e.path().string()).phi_0, ++n;
+  return n ? s / n : NAN;
 }
 
 // shift every run so that its onset sits at ref
@@ -432,8 +444,16 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
     }
     d.ranking.push_back(fit_effect(target, ed));
     if (e->pour_mu_at) {
-      // packing: say which phi_0 the fitted pour friction makes (from the beds' .info)
-      d.magnitude_note[e->name] = "pour friction " + fmt(0.3 + d.ranking.back().magnitude, "%.3f");
+      // packing: the phi_0 the fitted pour friction makes, interpolated between the beds'
+      std::vector<double> phi;
+      for (const auto &[a, name] : ks) phi.push_back(mean_phi0(cache, name.empty() ? "baseline" : name));
+      const double a = d.ranking.back().magnitude;
+      std::size_t i = 0;
+      while (i + 2 < ed.knots.size() && a > ed.knots[i + 1]) ++i;
+      const double f = (a - ed.knots[i]) / (ed.knots[i + 1] - ed.knots[i]);
+      const double p = (1 - f) * phi[i] + f * phi[i + 1];
+      d.magnitude_note[e->name] = "pour friction " + fmt(0.3 + a, "%.3f") + ": phi_0 " + fmt(p, "%.4f") +
+                                  " against the baseline's " + fmt(mean_phi0(cache, "baseline"), "%.4f");
     }
   }
   std::sort(d.ranking.begin(), d.ranking.end(), [](const EffectFit &a, const EffectFit &b) {
