@@ -25,5 +25,8 @@ endif()
 # bench/dump_read.sh's driver
 add_executable(dump_read_bench ${PROJECT_SOURCE_DIR}/bench/dump_read_bench.cpp)
 target_link_libraries(dump_read_bench PRIVATE granpen_analysis)
+# bench/voronoi_frame.sh's driver (analysis/core/voronoi_volumes against compute voronoi/atom)
+add_executable(voronoi_frame_bench ${PROJECT_SOURCE_DIR}/bench/voronoi_frame_bench.cpp)
+target_link_libraries(voronoi_frame_bench PRIVATE granpen_analysis)
 
 include(${PROJECT_SOURCE_DIR}/tests/fuzz/fuzz_tests.cmake)
