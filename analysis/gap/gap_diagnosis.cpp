@@ -19,6 +19,8 @@ namespace granpen {
 
 namespace fs = std::filesystem;
 
+namespace {
+
 std::vector<const Effect *> chosen_effects(const std::string &list)
 {
   std::vector<const Effect *> out;
@@ -40,6 +42,8 @@ std::vector<const Effect *> chosen_effects(const std::string &list)
   if (out.empty()) throw InputError("--effects: empty list");
   return out;
 }
+
+}    // namespace
 
 int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vector<const Effect *> &effects,
                       const RunnerOptions &runner);    // gap_analysis.cpp

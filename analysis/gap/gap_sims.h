@@ -25,7 +25,6 @@ struct SimRequest {
   std::string beds_from;    // a sweep (same preset, seeds) whose beds this one reuses; "" = pour
 };
 
-struct Ensemble;    // gap_data.h
 
 // One sweep of the scenario's model, or of an effect at magnitude a, over speeds v0.
 SimRequest baseline_request(const std::string &scenario, const std::vector<std::string> &v0,
