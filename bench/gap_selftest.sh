@@ -84,8 +84,8 @@ make_measured() {    # name keys -> $WORK/real_NAME/*.csv
   touch "$real/.complete"
 }
 
-echo "| case | truth | true magnitude | verdict | top effect | fitted magnitude | G before | G after | held-out v0 | held-out G before | held-out G after | chi^2 excess removed | pass |" > "$WORK/table.md"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|" >> "$WORK/table.md"
+echo "| case | truth | true magnitude | verdict | top effect | fitted magnitude | G before | G after | held-out v0 | held-out G before | held-out G after | chi^2 excess removed | wall s | pass |" > "$WORK/table.md"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|" >> "$WORK/table.md"
 fails=0
 while IFS='|' read -r name truth mag keys; do
   [ -n "$CASES" ] && ! [[ ",$CASES," == *",$name,"* ]] && continue
@@ -96,7 +96,9 @@ while IFS='|' read -r name truth mag keys; do
   echo "gap_selftest: case $name: diagnosing blind"
   args=(gap --real "$WORK/real_$name" --scenario "$SCEN" --out "$out" --jobs "$JOBS" --cache "$WORK/cache")
   [ -n "$EFFECTS" ] && args+=(--effects "$EFFECTS")
+  t0=$(date +%s)
   "$CLI" "${args[@]}" > "$WORK/diag_$name.log" 2>&1 || { echo "gap_selftest: gap failed on $name: $WORK/diag_$name.log" >&2; fails=$((fails + 1)); continue; }
+  secs=$(( $(date +%s) - t0 ))
   # the numbers of diagnosis.json (written by granpen gap, one key per line at the top level)
   j=$out/diagnosis.json
   top() { sed -n "s/^  \"$1\": \(.*\),\{0,1\}$/\1/p" "$j" | head -1 | sed 's/,$//; s/"//g'; }
@@ -111,8 +113,8 @@ while IFS='|' read -r name truth mag keys; do
   [ "$te" = null ] && te=-
   [ "$fm" = null ] && fm=- || fm=$(printf %.3g "$fm")
   [ "$cf" = null ] && cf=- || cf=$(printf %.2f "$cf")
-  row=$(printf '| %s | %s | %s | %s | %s | %s | %.3f | %.3f | %g | %.3f | %.3f | %s | %s |' "$name" "$truth" "$mag" "$v" "$te" "$fm" \
-        "$gb" "$ga" "$hv" "$hb" "$ha" "$cf" "$([ "$ok" = yes ] && echo yes || echo '**no**')")
+  row=$(printf '| %s | %s | %s | %s | %s | %s | %.3f | %.3f | %g | %.3f | %.3f | %s | %s | %s |' "$name" "$truth" "$mag" "$v" "$te" "$fm" \
+        "$gb" "$ga" "$hv" "$hb" "$ha" "$cf" "$secs" "$([ "$ok" = yes ] && echo yes || echo '**no**')")
   echo "$row" | tee -a "$WORK/table.md"
   case "$row" in *"**no**"*) fails=$((fails + 1)) ;; esac
 done < <(all_cases)
