@@ -1,5 +1,6 @@
 // granpen calibration SWEEP_DIR: the friction-calibration table of a sweep folder,
 // phi_0 and k_z against mu (core/calibration.h, core/trace_fit.h, io/bed_info.h).
+#include "args.h"
 #include "json_text.h"
 #include "bed_info.h"
 #include "calibration.h"
@@ -54,14 +55,6 @@ const char *HELP =
     "             (from calibration.gp, written beside them)\n"
     "Exit status: 0 when every bed and trace was used, 1 when one was rejected or could not\n"
     "be fitted (the tables are still written from the rest), 2 for a usage error.\n";
-
-bool parse_number(const std::string &text, double &out)
-{
-  char *end = nullptr;
-  errno = 0;
-  out = std::strtod(text.c_str(), &end);
-  return !text.empty() && end == text.c_str() + text.size() && errno != ERANGE && std::isfinite(out);
-}
 
 
 std::string num(double v) { return granpen::json_number("%.10g", v); }
@@ -293,47 +286,32 @@ std::string run_gnuplot(const fs::path &dir, const std::string &script, bool &mi
   return "gnuplot was killed by signal " + std::to_string(WIFSIGNALED(status) ? WTERMSIG(status) : 0);
 }
 
-int usage_error(const std::string &what)
-{
-  std::fprintf(stderr, "granpen calibration: %s\n(granpen calibration --help for usage)\n", what.c_str());
-  return 2;
-}
+const granpen::cli::Usage usage_error{"calibration", HELP};
 
 }    // namespace
 
 int granpen::cli::calibration(int argc, char **argv)
 {
-  if (argc < 1) {
-    std::fputs(HELP, stderr);
-    return 2;
-  }
+  if (argc < 1) return usage_error.no_arguments();
   double zmin = 1.0, zmax = 3.0;
   std::string sweep, out;
   for (int i = 0; i < argc; ++i) {
     std::string a = argv[i];
-    if (a == "--help" || a == "-h") {
-      std::fputs(HELP, stdout);
-      return 0;
-    }
-    if (a.size() > 2 && a.compare(0, 2, "--") == 0) {
-      std::string name = a, value;
-      const auto eq = a.find('=');
-      if (eq != std::string::npos) {
-        name = a.substr(0, eq);
-        value = a.substr(eq + 1);
-      } else if (name == "--zmin" || name == "--zmax" || name == "--out") {
-        if (i + 1 >= argc) return usage_error(name + " needs a value");
-        value = argv[++i];
-      }
+    if (a == "--help" || a == "-h") return usage_error.help_asked();
+    if (is_option(a)) {
+      std::string name, value;
+      if (!split_option(a, name, value) && (name == "--zmin" || name == "--zmax" || name == "--out") &&
+          !next_value(argc, argv, i, value))
+        return usage_error(needs_value(name));
       if (name == "--out") {
         if (value.empty()) return usage_error("--out needs a folder");
         out = value;
       } else if (name == "--zmin" || name == "--zmax") {
         double v;
-        if (!parse_number(value, v)) return usage_error(name + " '" + value + "' is not a number");
+        if (!number_arg(value, v)) return usage_error(not_a_number(name, value));
         (name == "--zmin" ? zmin : zmax) = v;
       } else {
-        return usage_error("unknown option '" + name + "'");
+        return usage_error(unknown_option(name));
       }
       continue;
     }
@@ -396,7 +374,7 @@ int granpen::cli::calibration(int argc, char **argv)
       auto key = [&](const char *k, double &v) {
         auto it = tr.keys.find(k);
         if (it == tr.keys.end()) return false;
-        if (!parse_number(it->second, v))
+        if (it->second.find('\0') != std::string::npos || !number_arg(it->second, v))    // nor with a NUL byte in it
           throw InputError(f + ": header key " + k + " = '" + it->second + "' is not a number");
         return true;
       };

@@ -1,5 +1,6 @@
 // granpen collapse TRACE-OR-FOLDER...: F/F_z against t~ = (z/v0) sqrt(g/D) over a set of
 // traces, the crossover t~*, the collapse quality and the peak law (core/collapse.h).
+#include "args.h"
 #include "collapse.h"
 #include "json_text.h"
 #include "subcommands.h"
@@ -9,7 +10,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -33,21 +33,14 @@ const char *HELP =
     "peak height (0 < z < 0.7 R) against v0 on log axes: exponent and 95% interval; k_z\n"
     "against v0. --csv writes the binned curves (trace, v0, g, D, t~, F/F_z); --json all.\n";
 
-bool number_arg(const char *s, double &v)
-{
-  char *end = nullptr;
-  v = std::strtod(s, &end);
-  return *s && end && *end == '\0' && std::isfinite(v);
-}
+const granpen::cli::Usage usage{"collapse", HELP};
 
 }    // namespace
 
 int granpen::cli::collapse(int argc, char **argv)
 {
-  if (argc < 1 || !std::strcmp(argv[0], "--help")) {
-    std::fputs(HELP, argc < 1 ? stderr : stdout);
-    return argc < 1 ? 2 : 0;
-  }
+  if (argc < 1) return usage.no_arguments();
+  if (!std::strcmp(argv[0], "--help")) return usage.help_asked();
   std::vector<std::string> inputs;
   double kz_zmin = 3.0, kz_zmax = INFINITY, alpha = 0.0, mu_opt = 0.0, rho_opt = 0.0;
   std::string csv, json;
@@ -58,16 +51,13 @@ int granpen::cli::collapse(int argc, char **argv)
       inputs.push_back(a);
       continue;
     }
-    if (i + 1 >= argc) {
-      std::fprintf(stderr, "granpen collapse: %s needs a value\n", a.c_str());
-      return 2;
-    }
-    const char *v = argv[++i];
+    std::string v;
+    if (!next_value(argc, argv, i, v)) return usage.bare(needs_value(a));
     double x = 0.0;
     bool ok = true;
     if (a == "--csv") csv = v;
     else if (a == "--json") json = v;
-    else if (!(ok = number_arg(v, x))) ;
+    else if (!(ok = number_arg(v, x, /*accept_underflow=*/true))) ;
     else if (a == "--kz-zmin") kz_zmin = x;
     else if (a == "--kz-zmax") kz_zmax = x;
     else if (a == "--alpha") alpha = x;
@@ -76,19 +66,11 @@ int granpen::cli::collapse(int argc, char **argv)
     else if (a == "--band") p.band = x;
     else if (a == "--tbin") p.tbin = x;
     else if (a == "--zmin") p.zmin = x;
-    else {
-      std::fprintf(stderr, "granpen collapse: unknown option '%s'\n%s", a.c_str(), HELP);
-      return 2;
-    }
-    if (!ok) {
-      std::fprintf(stderr, "granpen collapse: %s needs a number, got '%s'\n", a.c_str(), v);
-      return 2;
-    }
+    else return usage.with_help(unknown_option(a));
+    if (!ok) return usage.bare(needs_number(a, v));
   }
-  if (!(p.band > 0 && p.tbin > 0 && kz_zmin < kz_zmax)) {
-    std::fprintf(stderr, "granpen collapse: --band and --tbin must be positive, --kz-zmin below --kz-zmax\n");
-    return 2;
-  }
+  if (!(p.band > 0 && p.tbin > 0 && kz_zmin < kz_zmax))
+    return usage.bare("--band and --tbin must be positive, --kz-zmin below --kz-zmax");
 
   std::vector<std::string> problems;
   const auto files = expand_trace_paths(inputs, problems);

@@ -1,10 +1,10 @@
 // granpen convert FILE --from ave/time ...: a force trace in another format written as a
 // granpen-trace v1 file, so that every other subcommand reads it.
+#include "args.h"
 #include "subcommands.h"
 #include "trace_reader.h"
 #include "trace_writer.h"
 
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -31,31 +31,24 @@ const char *HELP =
     "The trace is written to TRACE.csv.tmp, read back through the trace reader, then\n"
     "renamed: a failure leaves no TRACE.csv. Exit status 0, 1 for bad input, 2 for usage.\n";
 
+const granpen::cli::Usage usage{"convert", HELP};
+
 }    // namespace
 
 int granpen::cli::convert(int argc, char **argv)
 {
-  if (argc < 1 || !std::strcmp(argv[0], "--help")) {
-    std::fputs(HELP, argc < 1 ? stderr : stdout);
-    return argc < 1 ? 2 : 0;
-  }
+  if (argc < 1) return usage.no_arguments();
+  if (!std::strcmp(argv[0], "--help")) return usage.help_asked();
   AveTimeSpec spec;
   std::string in = argv[0], out, from = "ave/time";
   std::vector<std::pair<std::string, std::string>> extra;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (i + 1 >= argc) {
-      std::fprintf(stderr, "granpen convert: %s needs a value\n", a.c_str());
-      return 2;
-    }
-    const std::string v = argv[++i];
+    std::string v;
+    if (!next_value(argc, argv, i, v)) return usage.bare(needs_value(a));
     auto number = [&]() {
-      char *end = nullptr;
-      const double x = std::strtod(v.c_str(), &end);
-      if (v.empty() || *end || !std::isfinite(x)) {
-        std::fprintf(stderr, "granpen convert: %s needs a number, got '%s'\n", a.c_str(), v.c_str());
-        std::exit(2);
-      }
+      double x;
+      if (!number_arg(v, x, /*accept_underflow=*/true)) std::exit(usage.bare(needs_number(a, v)));
       return x;
     };
     if (a == "--from") from = v;
@@ -70,19 +63,10 @@ int granpen::cli::convert(int argc, char **argv)
     else if (a == "--z0") spec.z0 = number();
     else if (a == "--sign") spec.sign = number() < 0 ? -1.0 : 1.0;
     else if (a == "--mu" || a == "--d_g" || a == "--rho_g") extra.emplace_back(a.substr(2), (number(), v));
-    else {
-      std::fprintf(stderr, "granpen convert: unknown option '%s'\n%s", a.c_str(), HELP);
-      return 2;
-    }
+    else return usage.with_help(unknown_option(a));
   }
-  if (from != "ave/time") {
-    std::fprintf(stderr, "granpen convert: --from %s: only ave/time is known\n", from.c_str());
-    return 2;
-  }
-  if (out.empty()) {
-    std::fprintf(stderr, "granpen convert: --out TRACE.csv is required\n");
-    return 2;
-  }
+  if (from != "ave/time") return usage.bare("--from " + from + ": only ave/time is known");
+  if (out.empty()) return usage.bare("--out TRACE.csv is required");
   try {
     const Trace t = read_ave_time(in, spec);
     TraceHeader h;

@@ -2,11 +2,10 @@
 #include "dump_cmd_common.h"
 
 #include "json_text.h"
+#include "text_util.h"
 
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>    // getpid
@@ -20,60 +19,26 @@ namespace {
 constexpr double PI = 3.14159265358979323846;
 }
 
-bool number_arg(const std::string &s, double &v)
+bool read_rod_options(const ParsedArgs &args, RodOptions &ro, std::string &message)
 {
-  char *end = nullptr;
-  errno = 0;
-  v = std::strtod(s.c_str(), &end);
-  return !s.empty() && end && *end == '\0' && errno != ERANGE && std::isfinite(v);
-}
-
-bool integer_arg(const std::string &s, long long &v)
-{
-  char *end = nullptr;
-  errno = 0;
-  v = std::strtoll(s.c_str(), &end, 10);
-  return !s.empty() && end && *end == '\0' && errno != ERANGE;
-}
-
-bool parse_args(int argc, char **argv, const std::map<std::string, int> &spec, ParsedArgs &out,
-                std::string &message)
-{
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--help" || a == "-h") {
-      out.help = true;
-      continue;
-    }
-    if (a.size() < 3 || a.compare(0, 2, "--") != 0) {
-      out.positional.push_back(a);
-      continue;
-    }
-    const auto eq = a.find('=');
-    const std::string name = a.substr(0, eq);
-    const auto it = spec.find(name);
-    if (it == spec.end()) {
-      message = "unknown option '" + name + "'";
+  double v;
+  if (args.number("--rod-type", v)) {
+    if (v != std::floor(v) || v < 1) {
+      message = "--rod-type must be a positive integer";
       return false;
     }
-    std::vector<std::string> values;
-    if (eq != std::string::npos) {
-      if (it->second != 1) {
-        message = name + " takes " + std::to_string(it->second) + " values, not " + name + "=VALUE";
-        return false;
-      }
-      values.push_back(a.substr(eq + 1));
-    } else {
-      for (int k = 0; k < it->second; ++k) {
-        if (i + 1 >= argc) {
-          message = name + " needs " + std::to_string(it->second) + (it->second == 1 ? " value" : " values");
-          return false;
-        }
-        values.push_back(argv[++i]);
-      }
-    }
-    out.options[name] = values;
+    ro.rod_type = (int) v;
   }
+  const auto axis = args.numbers.find("--axis");
+  if (axis != args.numbers.end()) ro.have_axis = true, ro.axis_x = axis->second[0], ro.axis_y = axis->second[1];
+  if (args.number("--tip", ro.tip)) ro.have_tip = true;
+  return true;
+}
+
+bool periodic_axes(const std::string &axes, bool &x, bool &y)
+{
+  if (axes != "xy" && axes != "x" && axes != "y" && axes != "none") return false;
+  x = axes == "xy" || axes == "x", y = axes == "xy" || axes == "y";
   return true;
 }
 
@@ -92,7 +57,7 @@ GrainArrays GrainFrame::arrays() const
 void extract_frame(const DumpFrame &f, const RodOptions &ro, const ColumnChoice &cols, double rho,
                    bool periodic_x, bool periodic_y, GrainFrame &g)
 {
-  g.where = f.file + ":" + std::to_string(f.line);
+  g.where = file_line(f.file, f.line);
   g.timestep = f.timestep;
   for (int d = 0; d < 3; ++d) g.lo[d] = f.lo[d], g.hi[d] = f.hi[d];
   g.period_x = periodic_x ? f.hi[0] - f.lo[0] : 0.0;

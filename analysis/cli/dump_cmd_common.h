@@ -4,12 +4,12 @@
 #ifndef GRANPEN_CLI_DUMP_CMD_COMMON_H
 #define GRANPEN_CLI_DUMP_CMD_COMMON_H
 
+#include "args.h"
 #include "dump_reader.h"
 #include "flow_fields.h"
 #include "rod_frame.h"
 #include "trace_reader.h"
 
-#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,27 +17,18 @@
 namespace granpen {
 namespace cli {
 
-bool number_arg(const std::string &s, double &v);    // a whole finite number
-bool integer_arg(const std::string &s, long long &v);
-
-// A command line: positional arguments and options "--name V..." (spec: name -> number
-// of values; "--name=V" for one value). help: --help or -h was given. Returns false with
-// a message for an unknown option or missing values.
-struct ParsedArgs {
-  std::vector<std::string> positional;
-  std::map<std::string, std::vector<std::string>> options;    // the last of repeated ones
-  bool help = false;
-  bool has(const std::string &name) const { return options.count(name) > 0; }
-};
-bool parse_args(int argc, char **argv, const std::map<std::string, int> &spec, ParsedArgs &out,
-                std::string &message);
-
 // Where the rod is: from its atoms (rod_type), or an axis and a tip given as options.
 struct RodOptions {
   int rod_type = 2;
   bool have_axis = false, have_tip = false;
   double axis_x = 0.0, axis_y = 0.0, tip = 0.0;
 };
+// From the numeric options (ParsedArgs::read_numbers) --rod-type N, --axis X Y, --tip Z;
+// false with a message when N is not a positive integer.
+bool read_rod_options(const ParsedArgs &args, RodOptions &rod, std::string &message);
+
+// --periodic AXES: xy, x, y or none, as periodic x and y; false for anything else.
+bool periodic_axes(const std::string &axes, bool &x, bool &y);
 
 // Column choices, made once from the first frame.
 struct ColumnChoice {

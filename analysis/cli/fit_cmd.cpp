@@ -1,5 +1,6 @@
 // granpen fit TRACE...: the paper's observables of each force trace: the depth term
 // k_z and alpha, the transient peak, the fluctuation wavelength (core/trace_fit.h).
+#include "args.h"
 #include "json_text.h"
 #include "trace_files.h"
 #include "subcommands.h"
@@ -7,11 +8,8 @@
 #include "trace_reader.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -66,14 +64,6 @@ struct Failure {
   std::string file, message;
 };
 
-bool parse_number(const char *text, double &out)
-{
-  char *end = nullptr;
-  errno = 0;
-  out = std::strtod(text, &end);
-  return *text && end && *end == '\0' && errno != ERANGE && std::isfinite(out);
-}
-
 // header value: returns false (message set) when present but not a number
 bool header_value(const granpen::Trace &tr, const char *key, double fallback, double &out,
                   std::string &src, std::string &message)
@@ -84,7 +74,7 @@ bool header_value(const granpen::Trace &tr, const char *key, double fallback, do
     src = "default";
     return true;
   }
-  if (!parse_number(it->second.c_str(), out)) {
+  if (!granpen::cli::number_arg(it->second.c_str(), out)) {    // c_str(): up to a NUL byte, as fit always read it
     message = tr.path + ": header key " + key + " = '" + it->second + "' is not a number";
     return false;
   }
@@ -212,20 +202,13 @@ bool write_csv(const std::string &path, const std::vector<Result> &results)
   return (bool) o.flush();
 }
 
-int usage_error(const std::string &what)
-{
-  std::fprintf(stderr, "granpen fit: %s\n(granpen fit --help for usage)\n", what.c_str());
-  return 2;
-}
+const granpen::cli::Usage usage_error{"fit", HELP};
 
 }    // namespace
 
 int granpen::cli::fit(int argc, char **argv)
 {
-  if (argc < 1) {
-    std::fputs(HELP, stderr);
-    return 2;
-  }
+  if (argc < 1) return usage_error.no_arguments();
   double zmin = 3.0, zmax = std::numeric_limits<double>::infinity();
   double mu_opt = 0.0, rho_opt = 0.0, tmin = -1.0;
   bool have_mu = false, have_rho = false, have_zmin = false;
@@ -234,33 +217,21 @@ int granpen::cli::fit(int argc, char **argv)
 
   for (int i = 0; i < argc; ++i) {
     std::string a = argv[i];
-    if (a == "--help" || a == "-h") {
-      std::fputs(HELP, stdout);
-      return 0;
-    }
-    if (a.size() > 2 && a.compare(0, 2, "--") == 0) {
-      std::string name = a, value;
-      bool inline_value = false;
-      const auto eq = a.find('=');
-      if (eq != std::string::npos) {
-        name = a.substr(0, eq);
-        value = a.substr(eq + 1);
-        inline_value = true;
-      }
+    if (a == "--help" || a == "-h") return usage_error.help_asked();
+    if (is_option(a)) {
+      std::string name, value;
+      const bool inline_value = split_option(a, name, value);
       if (name != "--zmin" && name != "--zmax" && name != "--tmin" && name != "--mu" && name != "--rho" &&
           name != "--json" && name != "--csv")
-        return usage_error("unknown option '" + name + "'");
-      if (!inline_value) {
-        if (i + 1 >= argc) return usage_error(name + " needs a value");
-        value = argv[++i];
-      }
+        return usage_error(unknown_option(name));
+      if (!inline_value && !next_value(argc, argv, i, value)) return usage_error(needs_value(name));
       if (name == "--json" || name == "--csv") {
         if (value.empty()) return usage_error(name + " needs a file name");
         (name == "--json" ? json_path : csv_path) = value;
         continue;
       }
       double v;
-      if (!parse_number(value.c_str(), v)) return usage_error(name + " '" + value + "' is not a number");
+      if (!number_arg(value, v)) return usage_error(not_a_number(name, value));
       if (name == "--zmin") zmin = v, have_zmin = true;
       else if (name == "--tmin") tmin = v;
       else if (name == "--zmax") zmax = v;

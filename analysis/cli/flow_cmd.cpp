@@ -8,6 +8,7 @@
 #include "linear_fit.h"
 #include "rod_frame.h"
 #include "subcommands.h"
+#include "text_util.h"
 #include "voronoi_volumes.h"
 
 #include <algorithm>
@@ -85,11 +86,7 @@ const char *HELP =
     "Exit status: 0 on success, 1 for unreadable input (the message names file and line;\n"
     "no output is written), 2 for a usage error.\n";
 
-int usage_error(const std::string &what)
-{
-  std::fprintf(stderr, "granpen flow: %s\n(granpen flow --help for usage)\n", what.c_str());
-  return 2;
-}
+const Usage usage_error{"flow", HELP};
 
 struct FrameRecord {
   long long timestep = 0;
@@ -125,10 +122,7 @@ std::string fit_text(const ExpFit &f, double D)
 
 int granpen::cli::flow(int argc, char **argv)
 {
-  if (argc < 1) {
-    std::fputs(HELP, stderr);
-    return 2;
-  }
+  if (argc < 1) return usage_error.no_arguments();
   const std::map<std::string, int> spec = {
       {"--trace", 1}, {"--out", 1}, {"--rod-type", 1}, {"--axis", 2}, {"--tip", 1}, {"--D", 1},
       {"--dg", 1}, {"--rho", 1}, {"--v0", 1}, {"--g", 1}, {"--zs", 1}, {"--dr", 1}, {"--dz", 1},
@@ -138,67 +132,37 @@ int granpen::cli::flow(int argc, char **argv)
   ParsedArgs args;
   std::string msg;
   if (!parse_args(argc, argv, spec, args, msg)) return usage_error(msg);
-  if (args.help) {
-    std::fputs(HELP, stdout);
-    return 0;
-  }
+  if (args.help) return usage_error.help_asked();
   if (args.positional.empty()) return usage_error("no dump given");
 
-  // numeric options
-  std::map<std::string, std::vector<double>> num;
-  for (const auto &o : args.options) {
-    if (o.first == "--trace" || o.first == "--out" || o.first == "--voronoi" || o.first == "--stress" ||
-        o.first == "--periodic" || o.first == "--steps")
-      continue;
-    for (const auto &v : o.second) {
-      double x;
-      if (!number_arg(v, x)) return usage_error(o.first + " '" + v + "' is not a number");
-      num[o.first].push_back(x);
-    }
-  }
-  auto opt = [&](const char *name, double &v) {
-    auto it = num.find(name);
-    if (it == num.end()) return false;
-    v = it->second[0];
-    return true;
-  };
-  auto positive = [&](const char *name) {
-    double v;
-    return !opt(name, v) || v > 0.0;
-  };
-  for (const char *n : {"--D", "--dg", "--rho", "--v0", "--g", "--dr", "--dz", "--rmax", "--profile-radius"})
-    if (!positive(n)) return usage_error(std::string(n) + " must be > 0");
+  if (!args.read_numbers({"--trace", "--out", "--voronoi", "--stress", "--periodic", "--steps"}, msg) ||
+      !args.positive({"--D", "--dg", "--rho", "--v0", "--g", "--dr", "--dz", "--rmax", "--profile-radius"}, msg))
+    return usage_error(msg);
+  const auto &num = args.numbers;
 
   RodOptions ro;
-  double v;
-  if (opt("--rod-type", v)) {
-    if (v != std::floor(v) || v < 1) return usage_error("--rod-type must be a positive integer");
-    ro.rod_type = (int) v;
-  }
-  if (num.count("--axis")) ro.have_axis = true, ro.axis_x = num["--axis"][0], ro.axis_y = num["--axis"][1];
-  if (opt("--tip", ro.tip)) ro.have_tip = true;
-  const std::string out_dir = args.has("--out") ? args.options["--out"][0] : ".";
+  if (!read_rod_options(args, ro, msg)) return usage_error(msg);
+  const std::string out_dir = args.value("--out", ".");
   if (out_dir.empty()) return usage_error("--out needs a folder");
-  const std::string vor_opt = args.has("--voronoi") ? args.options["--voronoi"][0] : "auto";
-  const std::string stress_opt = args.has("--stress") ? args.options["--stress"][0] : "auto";
-  const std::string periodic = args.has("--periodic") ? args.options["--periodic"][0] : "xy";
-  if (periodic != "xy" && periodic != "x" && periodic != "y" && periodic != "none")
-    return usage_error("--periodic must be xy, x, y or none");
-  const bool px = periodic == "xy" || periodic == "x", py = periodic == "xy" || periodic == "y";
+  const std::string vor_opt = args.value("--voronoi", "auto");
+  const std::string stress_opt = args.value("--stress", "auto");
+  const std::string periodic = args.value("--periodic", "xy");
+  bool px, py;
+  if (!periodic_axes(periodic, px, py)) return usage_error("--periodic must be xy, x, y or none");
   double strip1 = 0.5, strip2 = 1.5, ann1 = 2.0, ann2 = 3.0, ann_top = 0.5, zlo = -4.0, zhi = 6.0;
-  if (num.count("--strip")) strip1 = num["--strip"][0], strip2 = num["--strip"][1];
-  if (num.count("--annulus")) ann1 = num["--annulus"][0], ann2 = num["--annulus"][1];
+  if (num.count("--strip")) strip1 = num.at("--strip")[0], strip2 = num.at("--strip")[1];
+  if (num.count("--annulus")) ann1 = num.at("--annulus")[0], ann2 = num.at("--annulus")[1];
   if (!(strip1 >= 0 && strip2 > strip1)) return usage_error("--strip needs 0 <= A < B");
   if (!(ann1 >= 0 && ann2 > ann1)) return usage_error("--annulus needs 0 <= R1 < R2");
-  opt("--annulus-top", ann_top);
-  opt("--zlo", zlo);
-  opt("--zhi", zhi);
+  args.number("--annulus-top", ann_top);
+  args.number("--zlo", zlo);
+  args.number("--zhi", zhi);
   if (!(zhi > zlo)) return usage_error("--zhi must exceed --zlo");
   if (!(zlo < 0.0)) return usage_error("--zlo must be below 0 (the profile below the rod needs bins below the tip)");
 
   long long step_lo = std::numeric_limits<long long>::min(), step_hi = std::numeric_limits<long long>::max();
   if (args.has("--steps")) {
-    const std::string t = args.options["--steps"][0];
+    const std::string t = args.value("--steps", "");
     const auto colon = t.find(':');
     const std::string a = t.substr(0, colon), b = colon == std::string::npos ? a : t.substr(colon + 1);
     if ((!a.empty() && !integer_arg(a, step_lo)) || (!b.empty() && !integer_arg(b, step_hi)) || (a.empty() && b.empty()))
@@ -210,7 +174,7 @@ int granpen::cli::flow(int argc, char **argv)
   std::vector<std::string> notes;
   try {
     TraceHeader th;
-    if (args.has("--trace")) th = load_trace(args.options["--trace"][0]);
+    if (args.has("--trace")) th = load_trace(args.value("--trace", ""));
 
     DumpReader reader(args.positional);
     report_progress(reader, "granpen flow");
@@ -229,7 +193,7 @@ int granpen::cli::flow(int argc, char **argv)
       voro = true;
     } else if (vor_opt != "none") {
       if (!frame.has(vor_opt))
-        throw InputError(frame.file + ":" + std::to_string(frame.line) + ": frame has no column " + vor_opt +
+        throw InputError(file_line(frame.file, frame.line) + ": frame has no column " + vor_opt +
                          " (--voronoi)");
       cols.voronoi = vor_opt;
     }
@@ -243,7 +207,7 @@ int granpen::cli::flow(int argc, char **argv)
       }
       if (!all) {
         if (stress_opt != "auto")
-          throw InputError(frame.file + ":" + std::to_string(frame.line) + ": frame has no columns c_" + id +
+          throw InputError(file_line(frame.file, frame.line) + ": frame has no columns c_" + id +
                            "[1..3] (--stress " + id + ")");
         for (auto &s : cols.stress) s.clear();
       }
@@ -255,7 +219,7 @@ int granpen::cli::flow(int argc, char **argv)
     GrainFrame g;
     double rho = 3.0;
     std::string rho_src = "default";
-    if (opt("--rho", rho)) rho_src = "option";
+    if (args.number("--rho", rho)) rho_src = "option";
     else if (th.have_rho) rho = th.rho_g, rho_src = "trace";
     extract_frame(frame, ro, cols, rho, px, py, g);
     if (g.grains() == 0) throw InputError(g.where + ": frame has no grains (atoms not of the rod type)");
@@ -266,7 +230,7 @@ int granpen::cli::flow(int argc, char **argv)
     }
     double d_g = 0.0;
     std::string dg_src = "option";
-    if (!opt("--dg", d_g)) {
+    if (!args.number("--dg", d_g)) {
       if (th.have_dg) d_g = th.d_g, dg_src = "trace";
       else {
         double s = 0;
@@ -276,7 +240,7 @@ int granpen::cli::flow(int argc, char **argv)
     }
     double D = 0.0;
     std::string D_src = "option";
-    if (!opt("--D", D)) {
+    if (!args.number("--D", D)) {
       if (th.present) D = th.trace.D, D_src = "trace";
       else if (g.rod.found) D = g.rod.diameter, D_src = "rod atoms";
       else throw InputError(g.where + ": no rod atoms to measure D from: give --D or --trace");
@@ -284,14 +248,14 @@ int granpen::cli::flow(int argc, char **argv)
     const double R = 0.5 * D;
     double v0 = std::numeric_limits<double>::quiet_NaN(), gacc = v0;
     std::string v0_src = "none", g_src = "none";
-    if (opt("--v0", v0)) v0_src = "option";
+    if (args.number("--v0", v0)) v0_src = "option";
     else if (th.present) v0 = th.trace.v0, v0_src = "trace";
-    if (opt("--g", gacc)) g_src = "option";
+    if (args.number("--g", gacc)) g_src = "option";
     else if (th.present) gacc = th.trace.g, g_src = "trace";
     if (!std::isfinite(v0) || !std::isfinite(gacc)) notes.push_back("t~ undefined: no v0 or g (give --trace, or --v0 and --g)");
     double zs = 0.0;
     std::string zs_src = "option";
-    if (!opt("--zs", zs)) {
+    if (!args.number("--zs", zs)) {
       if (th.have_surface) zs = th.surface, zs_src = "trace";
       else {
         std::vector<double> X = frame.col("x"), Y = frame.col("y"), Z = frame.col("z"), Rr = frame.col("radius");
@@ -305,9 +269,9 @@ int granpen::cli::flow(int argc, char **argv)
     }
 
     double dr = d_g, dz = d_g, rmax = 0.5 * std::min(frame.hi[0] - frame.lo[0], frame.hi[1] - frame.lo[1]);
-    opt("--dr", dr);
-    opt("--dz", dz);
-    opt("--rmax", rmax);
+    args.number("--dr", dr);
+    args.number("--dz", dz);
+    args.number("--rmax", rmax);
     FlowGrid grid;
     try {
       grid = make_flow_grid(0.0, rmax, dr, zlo, zhi, dz);
@@ -315,9 +279,9 @@ int granpen::cli::flow(int argc, char **argv)
       return usage_error(e.what());
     }
     double wr = grid.dr, wz = grid.dz;
-    if (num.count("--edge")) wr = num["--edge"][0], wz = num["--edge"][1];
+    if (num.count("--edge")) wr = num.at("--edge")[0], wz = num.at("--edge")[1];
     double prof_r = D / 3.0;
-    opt("--profile-radius", prof_r);
+    args.number("--profile-radius", prof_r);
 
     FlowAccumulator total(grid);
     SliceAccumulator below(SliceSpec{0.0, prof_r, grid.zlo, 0.0, grid.dz});
@@ -382,7 +346,7 @@ int granpen::cli::flow(int argc, char **argv)
       records.push_back(rec);
     } while (reader.next(frame));
     if (records.empty())
-      throw InputError(args.positional[0] + ": no frame with a timestep in " + args.options["--steps"][0] + " (--steps)");
+      throw InputError(args.positional[0] + ": no frame with a timestep in " + args.value("--steps", "") + " (--steps)");
     if (voro_missing) notes.push_back(std::to_string(voro_missing) + " grain cells could not be computed (volume 0)");
 
     // ---- results

@@ -65,11 +65,7 @@ const char *HELP =
     "Exit status: 0 on success, 1 for unreadable input (the message names file and line;\n"
     "no output is written), 2 for a usage error.\n";
 
-int usage_error(const std::string &what)
-{
-  std::fprintf(stderr, "granpen momentum: %s\n(granpen momentum --help for usage)\n", what.c_str());
-  return 2;
-}
+const Usage usage_error{"momentum", HELP};
 
 struct FrameRecord {
   long long timestep = 0;
@@ -85,10 +81,7 @@ std::string jnum(double v) { return std::isfinite(v) ? js(v) : std::string("null
 
 int granpen::cli::momentum(int argc, char **argv)
 {
-  if (argc < 1) {
-    std::fputs(HELP, stderr);
-    return 2;
-  }
+  if (argc < 1) return usage_error.no_arguments();
   const std::map<std::string, int> spec = {
       {"--trace", 1}, {"--out", 1}, {"--thresholds", 4}, {"--mthreshold", 1}, {"--mu", 1}, {"--rod-type", 1},
       {"--axis", 2}, {"--tip", 1}, {"--D", 1}, {"--rho", 1}, {"--zs", 1}, {"--push-step", 1}, {"--dt", 1},
@@ -96,70 +89,44 @@ int granpen::cli::momentum(int argc, char **argv)
   ParsedArgs args;
   std::string msg;
   if (!parse_args(argc, argv, spec, args, msg)) return usage_error(msg);
-  if (args.help) {
-    std::fputs(HELP, stdout);
-    return 0;
-  }
+  if (args.help) return usage_error.help_asked();
   if (args.positional.empty()) return usage_error("no dump given");
   if (!args.has("--trace")) return usage_error("--trace TRACE is required (v0, D, g and the drag come from it)");
-  std::map<std::string, std::vector<double>> num;
-  for (const auto &o : args.options) {
-    if (o.first == "--trace" || o.first == "--out" || o.first == "--periodic" || o.first == "--push-step") continue;
-    for (const auto &v : o.second) {
-      double x;
-      if (!number_arg(v, x)) return usage_error(o.first + " '" + v + "' is not a number");
-      num[o.first].push_back(x);
-    }
-  }
-  auto opt = [&](const char *name, double &v) {
-    auto it = num.find(name);
-    if (it == num.end()) return false;
-    v = it->second[0];
-    return true;
-  };
-  for (const char *n : {"--D", "--rho", "--dt", "--mthreshold"}) {
-    double v;
-    if (opt(n, v) && !(v > 0.0)) return usage_error(std::string(n) + " must be > 0");
-  }
+  if (!args.read_numbers({"--trace", "--out", "--periodic", "--push-step"}, msg) ||
+      !args.positive({"--D", "--rho", "--dt", "--mthreshold"}, msg))
+    return usage_error(msg);
   double mu_opt = 0.0;
-  if (opt("--mu", mu_opt) && !(mu_opt >= 0.0)) return usage_error("--mu must be >= 0");
+  if (args.number("--mu", mu_opt) && !(mu_opt >= 0.0)) return usage_error("--mu must be >= 0");
   RodOptions ro;
-  double v;
-  if (opt("--rod-type", v)) {
-    if (v != std::floor(v) || v < 1) return usage_error("--rod-type must be a positive integer");
-    ro.rod_type = (int) v;
-  }
-  if (num.count("--axis")) ro.have_axis = true, ro.axis_x = num["--axis"][0], ro.axis_y = num["--axis"][1];
-  if (opt("--tip", ro.tip)) ro.have_tip = true;
+  if (!read_rod_options(args, ro, msg)) return usage_error(msg);
   long long push_step = 0;
   const bool by_time = args.has("--push-step");
-  if (by_time && !integer_arg(args.options["--push-step"][0], push_step))
-    return usage_error("--push-step '" + args.options["--push-step"][0] + "' is not an integer");
-  const std::string out_dir = args.has("--out") ? args.options["--out"][0] : ".";
+  if (by_time && !integer_arg(args.value("--push-step", ""), push_step))
+    return usage_error("--push-step '" + args.value("--push-step", "") + "' is not an integer");
+  const std::string out_dir = args.value("--out", ".");
   if (out_dir.empty()) return usage_error("--out needs a folder");
-  const std::string periodic = args.has("--periodic") ? args.options["--periodic"][0] : "xy";
-  if (periodic != "xy" && periodic != "x" && periodic != "y" && periodic != "none")
-    return usage_error("--periodic must be xy, x, y or none");
-  const bool px = periodic == "xy" || periodic == "x", py = periodic == "xy" || periodic == "y";
+  const std::string periodic = args.value("--periodic", "xy");
+  bool px, py;
+  if (!periodic_axes(periodic, px, py)) return usage_error("--periodic must be xy, x, y or none");
 
   std::vector<std::string> notes;
   try {
-    const TraceHeader th = load_trace(args.options["--trace"][0]);
+    const TraceHeader th = load_trace(args.value("--trace", ""));
     const Trace &tr = th.trace;
     MomentumClasses classes;
     std::string class_src = "paper (v0/10, v0/80, v0/320, v0/640)";
     try {
-      if (num.count("--thresholds")) {
+      if (args.numbers.count("--thresholds")) {
         double f[MOMENTUM_NCLASS];
-        for (int k = 0; k < MOMENTUM_NCLASS; ++k) f[k] = num["--thresholds"][k];
+        for (int k = 0; k < MOMENTUM_NCLASS; ++k) f[k] = args.numbers.at("--thresholds")[k];
         double mf = 0.0;
-        opt("--mthreshold", mf);
+        args.number("--mthreshold", mf);
         classes = momentum_classes(tr.v0, f, mf);
         class_src = "option";
       } else {
         classes = momentum_classes(tr.v0);
         double mf;
-        if (opt("--mthreshold", mf)) classes.vmove = mf * tr.v0;
+        if (args.number("--mthreshold", mf)) classes.vmove = mf * tr.v0;
       }
     } catch (std::invalid_argument &e) {
       return usage_error(e.what());
@@ -170,15 +137,15 @@ int granpen::cli::momentum(int argc, char **argv)
     else if (th.have_mu) mu = th.mu, mu_src = "trace";
     double D = tr.D;
     std::string D_src = "trace";
-    if (opt("--D", D)) D_src = "option";
+    if (args.number("--D", D)) D_src = "option";
     const double R = 0.5 * D;
     double rho = 3.0;
     std::string rho_src = "default";
-    if (opt("--rho", rho)) rho_src = "option";
+    if (args.number("--rho", rho)) rho_src = "option";
     else if (th.have_rho) rho = th.rho_g, rho_src = "trace";
     double dt = 0.0;
     if (by_time) {
-      if (!opt("--dt", dt)) {
+      if (!args.number("--dt", dt)) {
         if (!th.have_dt) return usage_error("--push-step needs --dt (the trace has no dt key)");
         dt = th.dt;
       }
@@ -195,7 +162,7 @@ int granpen::cli::momentum(int argc, char **argv)
     extract_frame(frame, ro, cols, rho, px, py, g);
     double zs = 0.0;
     std::string zs_src = "option";
-    if (!opt("--zs", zs)) {
+    if (!args.number("--zs", zs)) {
       if (th.have_surface) zs = th.surface, zs_src = "trace";
       else {
         const auto &X = frame.col("x"), &Y = frame.col("y"), &Z = frame.col("z"), &Rr = frame.col("radius");

@@ -5,6 +5,7 @@
 // core/trace_fit.h), so they match granpen collapse and granpen fit.
 #include "plot_kinds.h"
 
+#include "args.h"
 #include "json_text.h"
 #include "linear_fit.h"
 #include "subcommands.h"
@@ -13,10 +14,8 @@
 #include "trace_reader.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -117,19 +116,7 @@ const char *HELP =
 
 namespace fs = std::filesystem;
 
-int usage_error(const std::string &what)
-{
-  std::fprintf(stderr, "granpen plot: %s\n(granpen plot --help for usage)\n", what.c_str());
-  return 2;
-}
-
-bool number_arg(const std::string &s, double &v)
-{
-  char *end = nullptr;
-  errno = 0;
-  v = std::strtod(s.c_str(), &end);
-  return !s.empty() && end && *end == '\0' && errno != ERANGE && std::isfinite(v);
-}
+const cli::Usage usage_error{"plot", HELP};
 
 // ---------------------------------------------------------------- traces
 
@@ -681,15 +668,9 @@ void plot_kz(const std::vector<std::string> &inputs, Run &run)
 int granpen::cli::plot(int argc, char **argv)
 {
   using namespace granpen::plotcmd;
-  if (argc < 1) {
-    std::fputs(HELP, stderr);
-    return 2;
-  }
+  if (argc < 1) return usage_error.no_arguments();
   for (int i = 0; i < argc; ++i)
-    if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
-      std::fputs(HELP, stdout);
-      return 0;
-    }
+    if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) return usage_error.help_asked();
   const std::string kind = argv[0];
   static const char *kinds[] = {"force", "ratio", "peak", "kz", "flow", "momentum"};
   if (std::find_if(std::begin(kinds), std::end(kinds), [&](const char *k) { return kind == k; }) == std::end(kinds))
@@ -700,14 +681,12 @@ int granpen::cli::plot(int argc, char **argv)
   std::vector<std::string> inputs;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
-    if (a.size() < 2 || a.compare(0, 2, "--") != 0) {
+    if (a.compare(0, 2, "--") != 0) {    // "--" alone is an (unknown) option here
       inputs.push_back(a);
       continue;
     }
     std::string value;
-    bool inline_value = false;
-    const auto eq = a.find('=');
-    if (eq != std::string::npos) value = a.substr(eq + 1), a = a.substr(0, eq), inline_value = true;
+    const bool inline_value = split_option(argv[i], a, value);
     if (a == "--no-run" || a == "--each") {
       if (inline_value) return usage_error(a + " takes no value");
       if (a == "--no-run") o.run = false;
@@ -716,18 +695,15 @@ int granpen::cli::plot(int argc, char **argv)
     }
     static const char *valued[] = {"--out", "--kz-zmin", "--kz-zmax", "--alpha", "--mu", "--rho", "--band", "--tbin", "--zmin", "--D"};
     if (std::find_if(std::begin(valued), std::end(valued), [&](const char *k) { return a == k; }) == std::end(valued))
-      return usage_error("unknown option '" + a + "'");
-    if (!inline_value) {
-      if (i + 1 >= argc) return usage_error(a + " needs a value");
-      value = argv[++i];
-    }
+      return usage_error(unknown_option(a));
+    if (!inline_value && !next_value(argc, argv, i, value)) return usage_error(needs_value(a));
     if (a == "--out") {
       if (value.empty()) return usage_error("--out needs a folder");
       o.out = value;
       continue;
     }
     double x = 0;
-    if (!number_arg(value, x)) return usage_error(a + " needs a number, got '" + value + "'");
+    if (!number_arg(value, x)) return usage_error(needs_number(a, value));
     if (a == "--kz-zmin") o.kz_zmin = x;
     else if (a == "--kz-zmax") o.kz_zmax = x;
     else if (a == "--alpha") o.alpha = x;

@@ -1,14 +1,14 @@
 // granpen sweep SPEC [options]: run a sweep of pours and pushes (see sweep/sweep_spec.h).
+#include "args.h"
 #include "subcommands.h"
 #include "sweep_runner.h"
 #include "sweep_spec.h"
+#include "text_util.h"
 #include "trace_reader.h"
 
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <thread>
 #include <unistd.h>
@@ -20,17 +20,6 @@ std::string g_inputs;
 bool file_exists(const std::string &p) { return access(p.c_str(), R_OK) == 0; }
 bool preset_exists(const std::string &name) { return file_exists(g_inputs + "/presets/" + name + ".lmp"); }
 bool observe_exists(const std::string &name) { return file_exists(g_inputs + "/observe/" + name + ".lmp"); }
-
-int as_int(const char *opt, const char *v, int lo)
-{
-  char *end = nullptr;
-  long n = std::strtol(v, &end, 10);
-  if (!*v || *end || n < lo || n > 1000000) {
-    std::fprintf(stderr, "granpen sweep: %s needs an integer >= %d, got '%s'\n", opt, lo, v);
-    std::exit(2);
-  }
-  return (int) n;
-}
 
 const char *HELP =
     "usage: granpen sweep SPEC [--jobs N] [--out DIR] [--checkpoint STEPS] [--mpirun PROG --ranks N]\n"
@@ -46,14 +35,14 @@ const char *HELP =
     "example: inputs/sweeps/v0_bench.sweep. lmp_granpen and inputs/ come from the environment\n"
     "that ./granpen sets (GRANPEN_LMP, GRANPEN_INPUTS) unless given.\n";
 
+const granpen::cli::Usage usage{"sweep", HELP};
+
 }    // namespace
 
 int granpen::cli::sweep(int argc, char **argv)
 {
-  if (argc < 1 || !std::strcmp(argv[0], "--help")) {
-    std::fputs(HELP, argc < 1 ? stderr : stdout);
-    return argc < 1 ? 2 : 0;
-  }
+  if (argc < 1) return usage.no_arguments();
+  if (!std::strcmp(argv[0], "--help")) return usage.help_asked();
   RunnerOptions opt;
   const char *env;
   opt.lmp = (env = std::getenv("GRANPEN_LMP")) ? env : "lmp_granpen";
@@ -64,35 +53,34 @@ int granpen::cli::sweep(int argc, char **argv)
   bool plan_only = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    auto value = [&]() -> const char * {
-      if (i + 1 >= argc) {
-        std::fprintf(stderr, "granpen sweep: %s needs a value\n", a.c_str());
-        std::exit(2);
-      }
-      return argv[++i];
+    auto value = [&]() {
+      std::string v;
+      if (!next_value(argc, argv, i, v)) std::exit(usage.bare(needs_value(a)));
+      return v;
     };
-    if (a == "--jobs") opt.jobs = as_int("--jobs", value(), 1);
+    auto integer = [&](int lo) {    // lo to 1000000
+      const std::string v = value();
+      int n;
+      if (!integer_arg(v, lo, 1000000, n)) std::exit(usage.bare(needs_integer(a, lo, v)));
+      return n;
+    };
+    if (a == "--jobs") opt.jobs = integer(1);
     else if (a == "--out") opt.out_root = value();
-    else if (a == "--checkpoint") opt.checkpoint = as_int("--checkpoint", value(), 1);
+    else if (a == "--checkpoint") opt.checkpoint = integer(1);
     else if (a == "--mpirun") opt.mpirun = value();
-    else if (a == "--ranks") opt.ranks = as_int("--ranks", value(), 1);
-    else if (a == "--only") opt.only_index = as_int("--only", value(), 0);
+    else if (a == "--ranks") opt.ranks = integer(1);
+    else if (a == "--only") opt.only_index = integer(0);
     else if (a == "--slurm") slurm = value();
     else if (a == "--lmp") opt.lmp = value();
     else if (a == "--inputs") opt.inputs = value();
     else if (a == "--plan") plan_only = true;
-    else {
-      std::fprintf(stderr, "granpen sweep: unknown option '%s'\n%s", a.c_str(), HELP);
-      return 2;
-    }
+    else return usage.with_help(unknown_option(a));
   }
   g_inputs = opt.inputs;
   try {
-    std::ifstream f(spec_path);
-    if (!f) throw InputError(spec_path + ": cannot open sweep file");
-    std::ostringstream text;
-    text << f.rdbuf();
-    SweepSpec spec = parse_sweep(text.str(), spec_path, preset_exists, observe_exists);
+    std::string text;
+    if (!read_text_file(spec_path, text)) throw InputError(spec_path + ": cannot open sweep file");
+    SweepSpec spec = parse_sweep(text, spec_path, preset_exists, observe_exists);
     if (plan_only) {
       int k = 0;
       for (const auto &r : plan_sweep(spec))

@@ -4,29 +4,16 @@
 
 #include "bed_info.h"
 
+#include "text_util.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 namespace granpen {
 
 namespace {
-
-std::string trim(const std::string &s)
-{
-  const char *ws = " \t\r";
-  auto a = s.find_first_not_of(ws);
-  if (a == std::string::npos) return "";
-  auto b = s.find_last_not_of(ws);
-  return s.substr(a, b - a + 1);
-}
-
-[[noreturn]] void fail(const std::string &name, int line, const std::string &what)
-{
-  throw InputError(name + ":" + std::to_string(line) + ": " + what);
-}
 
 bool is_numeric_key(const std::string &k)
 {
@@ -62,19 +49,19 @@ BedInfo parse_bed_info(const std::string &text, const std::string &name)
     const std::string s = trim(line);
     if (s.empty() || s[0] == '#') continue;
     const auto eq = s.find('=');
-    if (eq == std::string::npos) fail(name, lineno, "expected 'key = value', found '" + s + "'");
+    if (eq == std::string::npos) fail_at(name, lineno, "expected 'key = value', found '" + s + "'");
     const std::string key = trim(s.substr(0, eq)), val = trim(s.substr(eq + 1));
-    if (key.empty()) fail(name, lineno, "empty key in '" + s + "'");
+    if (key.empty()) fail_at(name, lineno, "empty key in '" + s + "'");
     if (key.find_first_of(" \t") != std::string::npos)
-      fail(name, lineno, "key '" + key + "' contains white space");
-    if (b.keys.count(key)) fail(name, lineno, "key '" + key + "' given twice");
+      fail_at(name, lineno, "key '" + key + "' contains white space");
+    if (b.keys.count(key)) fail_at(name, lineno, "key '" + key + "' given twice");
     b.keys[key] = val;
     if (is_numeric_key(key)) {
       char *end = nullptr;
       errno = 0;
       const double v = std::strtod(val.c_str(), &end);
       if (val.empty() || end != val.c_str() + val.size() || errno == ERANGE || !std::isfinite(v))
-        fail(name, lineno, key + " '" + val + "' is not a finite number");
+        fail_at(name, lineno, key + " '" + val + "' is not a finite number");
       num[key] = v;
     }
   }
@@ -96,11 +83,9 @@ BedInfo parse_bed_info(const std::string &text, const std::string &name)
 
 BedInfo read_bed_info(const std::string &path)
 {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw InputError(path + ": cannot open bed info file");
-  std::ostringstream ss;
-  ss << f.rdbuf();
-  return parse_bed_info(ss.str(), path);
+  std::string text;
+  if (!read_text_file(path, text)) throw InputError(path + ": cannot open bed info file");
+  return parse_bed_info(text, path);
 }
 
 }    // namespace granpen

@@ -1,28 +1,21 @@
 // granpen analysis: plain CSV tables with named columns (see csv_table.h).
 #include "csv_table.h"
 
+#include "text_util.h"
 #include "trace_reader.h"
 
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <sstream>
 
 namespace granpen {
 
 namespace {
 
-std::string trim(const std::string &s)
-{
-  const auto a = s.find_first_not_of(" \t\r");
-  if (a == std::string::npos) return "";
-  const auto b = s.find_last_not_of(" \t\r");
-  return s.substr(a, b - a + 1);
-}
-
-std::vector<std::string> split(const std::string &line)
+// the cells of a CSV line, trimmed; "..." quotes a cell ("" inside is a quote)
+std::vector<std::string> csv_cells(const std::string &line)
 {
   std::vector<std::string> out;
   std::string cell;
@@ -87,8 +80,7 @@ std::vector<double> CsvTable::numbers(const std::string &column, bool allow_nan)
       out.push_back(NAN);
       continue;
     }
-    throw InputError(path + ":" + std::to_string(lines[i]) + ": column " + column + " value '" + s +
-                     "' is not a finite number");
+    fail_at(path, lines[i], "column " + column + " value '" + s + "' is not a finite number");
   }
   return out;
 }
@@ -124,16 +116,16 @@ CsvTable parse_csv_table(const std::string &text, const std::string &name, const
       }
       continue;
     }
-    auto cells = split(s);
+    auto cells = csv_cells(s);
     if (!header) {
       t.columns = cells;
       header = true;
       continue;
     }
     if (cells.size() != t.columns.size())
-      throw InputError(name + ":" + std::to_string(lineno) + ": row has " + std::to_string(cells.size()) +
-                       " fields, expected " + std::to_string(t.columns.size()) + " (" + std::to_string(t.columns.size()) +
-                       " columns in the header)");
+      fail_at(name, lineno, "row has " + std::to_string(cells.size()) + " fields, expected " +
+                                std::to_string(t.columns.size()) + " (" + std::to_string(t.columns.size()) +
+                                " columns in the header)");
     t.rows.push_back(cells);
     t.lines.push_back(lineno);
   }
@@ -152,11 +144,9 @@ CsvTable parse_csv_table(const std::string &text, const std::string &name, const
 
 CsvTable read_csv_table(const std::string &path, const std::vector<std::string> &required)
 {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open: " + std::strerror(errno));
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parse_csv_table(ss.str(), path, required);
+  std::string text;
+  if (!read_text_file(path, text)) throw InputError(path + ": cannot open: " + std::strerror(errno));
+  return parse_csv_table(text, path, required);
 }
 
 }    // namespace granpen

@@ -4,29 +4,16 @@
 
 #include "trace_reader.h"
 
+#include "text_util.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 namespace granpen {
 
 namespace {
-
-std::string trim(const std::string &s)
-{
-  const char *ws = " \t\r";
-  auto a = s.find_first_not_of(ws);
-  if (a == std::string::npos) return "";
-  auto b = s.find_last_not_of(ws);
-  return s.substr(a, b - a + 1);
-}
-
-[[noreturn]] void fail(const std::string &name, int line, const std::string &what)
-{
-  throw InputError(name + ":" + std::to_string(line) + ": " + what);
-}
 
 double to_number(const std::string &field, const std::string &name, int line,
                  const std::string &what)
@@ -36,19 +23,9 @@ double to_number(const std::string &field, const std::string &name, int line,
   errno = 0;
   double v = std::strtod(f.c_str(), &end);
   if (f.empty() || end != f.c_str() + f.size() || errno == ERANGE)
-    fail(name, line, what + " '" + f + "' is not a number");
-  if (!std::isfinite(v)) fail(name, line, what + " '" + f + "' is not finite");
+    fail_at(name, line, what + " '" + f + "' is not a number");
+  if (!std::isfinite(v)) fail_at(name, line, what + " '" + f + "' is not finite");
   return v;
-}
-
-std::vector<std::string> split(const std::string &s, char sep)
-{
-  std::vector<std::string> out;
-  std::string cur;
-  std::istringstream in(s);
-  while (std::getline(in, cur, sep)) out.push_back(cur);
-  if (!s.empty() && s.back() == sep) out.emplace_back();
-  return out;
 }
 
 }    // namespace
@@ -70,10 +47,10 @@ Trace parse_trace(const std::string &text, const std::string &name)
   std::string line;
   int lineno = 0;
 
-  if (!std::getline(in, line)) fail(name, 1, "empty file, expected '# granpen-trace v1'");
+  if (!std::getline(in, line)) fail_at(name, 1, "empty file, expected '# granpen-trace v1'");
   ++lineno;
   if (trim(line) != "# granpen-trace v1")
-    fail(name, lineno, "first line must be '# granpen-trace v1', found '" + trim(line) + "'");
+    fail_at(name, lineno, "first line must be '# granpen-trace v1', found '" + trim(line) + "'");
 
   // header: '# key = value' lines, then the column-name line
   int colline = 0;
@@ -93,13 +70,13 @@ Trace parse_trace(const std::string &text, const std::string &name)
     colline = lineno;
     break;
   }
-  if (!colline) fail(name, lineno, "no column-name line (t,z,F) after the header");
+  if (!colline) fail_at(name, lineno, "no column-name line (t,z,F) after the header");
 
   for (const char *req : {"units", "v0", "D", "g"})
-    if (!tr.keys.count(req)) fail(name, colline, std::string("missing required header key '") + req + "'");
+    if (!tr.keys.count(req)) fail_at(name, colline, std::string("missing required header key '") + req + "'");
   tr.units = tr.keys["units"];
   if (tr.units != "cgs" && tr.units != "si")
-    fail(name, colline, "unknown unit system '" + tr.units + "' (expected cgs or si)");
+    fail_at(name, colline, "unknown unit system '" + tr.units + "' (expected cgs or si)");
   tr.v0 = to_number(tr.keys["v0"], name, colline, "header v0");
   tr.D = to_number(tr.keys["D"], name, colline, "header D");
   tr.g = to_number(tr.keys["g"], name, colline, "header g");
@@ -112,7 +89,7 @@ Trace parse_trace(const std::string &text, const std::string &name)
     else if (c == "F") iF = i;
   }
   if (it < 0 || iz < 0 || iF < 0)
-    fail(name, colline, "column line must name t, z and F");
+    fail_at(name, colline, "column line must name t, z and F");
 
   const std::size_t ncol = tr.columns.size();
   while (std::getline(in, line)) {
@@ -121,13 +98,13 @@ Trace parse_trace(const std::string &text, const std::string &name)
     if (s.empty() || s[0] == '#') continue;
     auto fields = split(s, ',');
     if (fields.size() < ncol)
-      fail(name, lineno, "row has " + std::to_string(fields.size()) + " fields, expected " +
+      fail_at(name, lineno, "row has " + std::to_string(fields.size()) + " fields, expected " +
                              std::to_string(ncol));
     for (std::size_t i = 0; i < ncol; ++i) {
       double v = to_number(fields[i], name, lineno, "column " + tr.columns[i] + " value");
       if ((int) i == it) {
         if (!tr.t.empty() && !(v > tr.t.back()))
-          fail(name, lineno, "t does not increase (" + trim(fields[i]) + " after previous row)");
+          fail_at(name, lineno, "t does not increase (" + trim(fields[i]) + " after previous row)");
         tr.t.push_back(v);
       } else if ((int) i == iz) {
         tr.z.push_back(v);
@@ -139,17 +116,15 @@ Trace parse_trace(const std::string &text, const std::string &name)
     }
   }
   if (tr.t.size() < 10)
-    fail(name, lineno, "only " + std::to_string(tr.t.size()) + " data rows, at least 10 needed");
+    fail_at(name, lineno, "only " + std::to_string(tr.t.size()) + " data rows, at least 10 needed");
   return tr;
 }
 
 Trace read_trace(const std::string &path)
 {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw InputError(path + ": cannot open trace file");
-  std::ostringstream ss;
-  ss << f.rdbuf();
-  return parse_trace(ss.str(), path);
+  std::string text;
+  if (!read_text_file(path, text)) throw InputError(path + ": cannot open trace file");
+  return parse_trace(text, path);
 }
 
 Trace parse_ave_time(const std::string &text, const std::string &name, const AveTimeSpec &spec)
@@ -167,20 +142,19 @@ Trace parse_ave_time(const std::string &text, const std::string &name, const Ave
   std::string line;
   int lineno = 0;
   if (!std::getline(in, line) || trim(line).rfind("# Time-averaged data for fix", 0) != 0)
-    fail(name, 1, "not fix ave/time output: the first line must be '# Time-averaged data for fix ID'");
+    fail_at(name, 1, "not fix ave/time output: the first line must be '# Time-averaged data for fix ID'");
   ++lineno;
   std::vector<std::string> names;
   if (std::getline(in, line)) {
     ++lineno;
-    std::istringstream w(trim(line));
-    std::string hash, word;
-    w >> hash >> word;
-    if (hash != "#" || word != "TimeStep") fail(name, lineno, "expected '# TimeStep NAME...', found '" + trim(line) + "'");
-    while (w >> word) names.push_back(word);
+    const std::vector<std::string> w = words(line);
+    if (w.size() < 2 || w[0] != "#" || w[1] != "TimeStep")
+      fail_at(name, lineno, "expected '# TimeStep NAME...', found '" + trim(line) + "'");
+    names.assign(w.begin() + 2, w.end());
     if (names.size() == 1 && names[0] == "Number-of-rows")
-      fail(name, lineno, "fix ave/time in vector mode (blocks of rows) is not a force trace: use scalar mode");
+      fail_at(name, lineno, "fix ave/time in vector mode (blocks of rows) is not a force trace: use scalar mode");
   }
-  if (names.empty()) fail(name, lineno, "no value columns on the '# TimeStep' line");
+  if (names.empty()) fail_at(name, lineno, "no value columns on the '# TimeStep' line");
   std::size_t col = 0;
   if (!spec.column.empty()) {
     col = names.size();
@@ -189,7 +163,7 @@ Trace parse_ave_time(const std::string &text, const std::string &name, const Ave
     if (col == names.size()) {
       std::string known;
       for (const auto &n : names) known += " " + n;
-      fail(name, lineno, "no column '" + spec.column + "' (columns:" + known + ")");
+      fail_at(name, lineno, "no column '" + spec.column + "' (columns:" + known + ")");
     }
   }
   std::vector<double> steps;
@@ -197,18 +171,15 @@ Trace parse_ave_time(const std::string &text, const std::string &name, const Ave
     ++lineno;
     const std::string s = trim(line);
     if (s.empty() || s[0] == '#') continue;
-    std::istringstream w(s);
-    std::vector<std::string> fields;
-    std::string f;
-    while (w >> f) fields.push_back(f);
+    const std::vector<std::string> fields = words(s);
     if (fields.size() != names.size() + 1)
-      fail(name, lineno, "row has " + std::to_string(fields.size()) + " fields, expected " + std::to_string(names.size() + 1));
+      fail_at(name, lineno, "row has " + std::to_string(fields.size()) + " fields, expected " + std::to_string(names.size() + 1));
     const double step = to_number(fields[0], name, lineno, "TimeStep");
-    if (!steps.empty() && !(step > steps.back())) fail(name, lineno, "TimeStep does not increase");
+    if (!steps.empty() && !(step > steps.back())) fail_at(name, lineno, "TimeStep does not increase");
     steps.push_back(step);
     tr.F.push_back(spec.sign * to_number(fields[col + 1], name, lineno, "column " + names[col] + " value"));
   }
-  if (steps.size() < 10) fail(name, lineno, "only " + std::to_string(steps.size()) + " data rows, at least 10 needed");
+  if (steps.size() < 10) fail_at(name, lineno, "only " + std::to_string(steps.size()) + " data rows, at least 10 needed");
   const double step0 = std::isnan(spec.step0) ? steps[0] - (steps[1] - steps[0]) : spec.step0;
   for (double st : steps) {
     tr.t.push_back((st - step0) * spec.dt);
@@ -228,11 +199,9 @@ Trace parse_ave_time(const std::string &text, const std::string &name, const Ave
 
 Trace read_ave_time(const std::string &path, const AveTimeSpec &spec)
 {
-  std::ifstream f(path, std::ios::binary);
-  if (!f) throw InputError(path + ": cannot open fix ave/time file");
-  std::ostringstream ss;
-  ss << f.rdbuf();
-  return parse_ave_time(ss.str(), path, spec);
+  std::string text;
+  if (!read_text_file(path, text)) throw InputError(path + ": cannot open fix ave/time file");
+  return parse_ave_time(text, path, spec);
 }
 
 Trace to_cgs(const Trace &in)

@@ -1,7 +1,7 @@
 // granpen sweep: parsing, validation and planning of sweep files.
 #include "sweep_spec.h"
 
-#include "trace_reader.h"    // InputError
+#include "text_util.h"
 
 #include <cctype>
 #include <cmath>
@@ -11,31 +11,6 @@
 #include <sstream>
 
 namespace granpen {
-
-namespace {
-
-[[noreturn]] void fail(const std::string &path, int line, const std::string &what)
-{
-  throw InputError(path + ":" + std::to_string(line) + ": " + what);
-}
-
-std::string trim(const std::string &s)
-{
-  auto a = s.find_first_not_of(" \t\r");
-  if (a == std::string::npos) return "";
-  return s.substr(a, s.find_last_not_of(" \t\r") - a + 1);
-}
-
-std::vector<std::string> words(const std::string &s)
-{
-  std::istringstream in(s);
-  std::vector<std::string> out;
-  std::string w;
-  while (in >> w) out.push_back(w);
-  return out;
-}
-
-}    // namespace
 
 bool safe_name(const std::string &s)
 {
@@ -73,37 +48,37 @@ SweepSpec parse_sweep(const std::string &text, const std::string &path,
     line = trim(line);
     if (line.empty()) continue;
     auto eq = line.find('=');
-    if (eq == std::string::npos) fail(path, lineno, "expected 'key = value', found '" + line + "'");
+    if (eq == std::string::npos) fail_at(path, lineno, "expected 'key = value', found '" + line + "'");
     const std::string key = trim(line.substr(0, eq));
     const std::vector<std::string> vals = words(line.substr(eq + 1));
     if (seen.count(key))
-      fail(path, lineno, "key '" + key + "' given again (first on line " + std::to_string(seen[key]) + ")");
+      fail_at(path, lineno, "key '" + key + "' given again (first on line " + std::to_string(seen[key]) + ")");
     seen[key] = lineno;
-    if (vals.empty()) fail(path, lineno, "key '" + key + "' has no value");
+    if (vals.empty()) fail_at(path, lineno, "key '" + key + "' has no value");
 
     auto numbers = [&](std::vector<std::string> &dst) {
       std::set<std::string> unique;
       for (const auto &v : vals) {
         if (!positive_number(v))
-          fail(path, lineno, "'" + key + "' value '" + v + "' is not a positive number");
-        if (!unique.insert(v).second) fail(path, lineno, "'" + key + "' lists " + v + " twice");
+          fail_at(path, lineno, "'" + key + "' value '" + v + "' is not a positive number");
+        if (!unique.insert(v).second) fail_at(path, lineno, "'" + key + "' lists " + v + " twice");
         dst.push_back(v);
       }
     };
     auto one = [&]() -> const std::string & {
-      if (vals.size() != 1) fail(path, lineno, "'" + key + "' takes one value");
+      if (vals.size() != 1) fail_at(path, lineno, "'" + key + "' takes one value");
       return vals[0];
     };
 
     if (key == "name") {
       if (!safe_name(one()))
-        fail(path, lineno, "name '" + vals[0] + "' may use only letters, digits, _ and - (it names a folder)");
+        fail_at(path, lineno, "name '" + vals[0] + "' may use only letters, digits, _ and - (it names a folder)");
       spec.name = vals[0];
     } else if (key == "preset") {
       for (const auto &v : vals) {
-        if (!safe_name(v)) fail(path, lineno, "preset '" + v + "' is not a preset name");
+        if (!safe_name(v)) fail_at(path, lineno, "preset '" + v + "' is not a preset name");
         if (preset_exists && !preset_exists(v))
-          fail(path, lineno, "unknown preset '" + v + "' (no inputs/presets/" + v + ".lmp)");
+          fail_at(path, lineno, "unknown preset '" + v + "' (no inputs/presets/" + v + ".lmp)");
         spec.presets.push_back(v);
       }
     } else if (key == "mu") {
@@ -111,7 +86,7 @@ SweepSpec parse_sweep(const std::string &text, const std::string &path,
     } else if (key == "seeds") {
       for (const auto &v : vals) {
         if (v.empty() || v.size() > 9 || v.find_first_not_of("0123456789") != std::string::npos || v[0] == '0')
-          fail(path, lineno, "seed '" + v + "' is not a positive integer below 1e9");
+          fail_at(path, lineno, "seed '" + v + "' is not a positive integer below 1e9");
       }
       numbers(spec.seeds);
     } else if (key == "v0") {
@@ -123,12 +98,12 @@ SweepSpec parse_sweep(const std::string &text, const std::string &path,
     } else if (key == "mu_push") {
       numbers(spec.mu_push);
     } else if (key == "depth") {
-      if (!positive_number(one())) fail(path, lineno, "depth '" + vals[0] + "' is not a positive number");
+      if (!positive_number(one())) fail_at(path, lineno, "depth '" + vals[0] + "' is not a positive number");
       spec.depth = vals[0];
     } else if (key == "observe") {
-      if (!safe_name(one())) fail(path, lineno, "observe '" + vals[0] + "' is not a name");
+      if (!safe_name(one())) fail_at(path, lineno, "observe '" + vals[0] + "' is not a name");
       if (observe_exists && !observe_exists(vals[0]))
-        fail(path, lineno, "unknown observe set '" + vals[0] + "' (no inputs/observe/" + vals[0] + ".lmp)");
+        fail_at(path, lineno, "unknown observe set '" + vals[0] + "' (no inputs/observe/" + vals[0] + ".lmp)");
       spec.observe = vals[0];
     } else if (key == "set" || key == "push_set") {
       auto &dst = key == "set" ? spec.set : spec.push_set;
@@ -136,23 +111,23 @@ SweepSpec parse_sweep(const std::string &text, const std::string &path,
         const auto e = v.find('=');
         const std::string name = v.substr(0, e), value = e == std::string::npos ? "" : v.substr(e + 1);
         if (e == std::string::npos || !settable_variable(name))
-          fail(path, lineno, "'" + key + "' item '" + v + "' is not NAME=VALUE with a deck variable NAME "
+          fail_at(path, lineno, "'" + key + "' item '" + v + "' is not NAME=VALUE with a deck variable NAME "
                "(letters, digits, _; not one the runner sets)");
         if (!settable_value(value))
-          fail(path, lineno, "'" + key + "' value '" + value + "' of " + name + " is neither a number nor a name");
+          fail_at(path, lineno, "'" + key + "' value '" + value + "' of " + name + " is neither a number nor a name");
         for (const auto &[n, _] : spec.set)
-          if (n == name) fail(path, lineno, "deck variable " + name + " set twice");
+          if (n == name) fail_at(path, lineno, "deck variable " + name + " set twice");
         for (const auto &[n, _] : spec.push_set)
-          if (n == name) fail(path, lineno, "deck variable " + name + " set twice");
+          if (n == name) fail_at(path, lineno, "deck variable " + name + " set twice");
         dst.emplace_back(name, value);
       }
     } else {
-      fail(path, lineno, "unknown key '" + key + "' (known: name preset mu seeds v0 g D depth mu_push observe set push_set)");
+      fail_at(path, lineno, "unknown key '" + key + "' (known: name preset mu seeds v0 g D depth mu_push observe set push_set)");
     }
   }
-  if (spec.name.empty()) fail(path, lineno, "missing 'name'");
-  if (spec.presets.empty()) fail(path, lineno, "missing 'preset'");
-  if (spec.v0.empty()) fail(path, lineno, "missing 'v0'");
+  if (spec.name.empty()) fail_at(path, lineno, "missing 'name'");
+  if (spec.presets.empty()) fail_at(path, lineno, "missing 'preset'");
+  if (spec.v0.empty()) fail_at(path, lineno, "missing 'v0'");
   if (spec.seeds.empty()) spec.seeds = {"1"};
   return spec;
 }

@@ -1,0 +1,186 @@
+// granpen subcommands: shared argument helpers (args.h).
+#include "args.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace granpen {
+namespace cli {
+
+int Usage::operator()(const std::string &what) const
+{
+  std::fprintf(stderr, "granpen %s: %s\n(granpen %s --help for usage)\n", name, what.c_str(), name);
+  return 2;
+}
+
+int Usage::bare(const std::string &what) const
+{
+  std::fprintf(stderr, "granpen %s: %s\n", name, what.c_str());
+  return 2;
+}
+
+int Usage::with_help(const std::string &what) const
+{
+  std::fprintf(stderr, "granpen %s: %s\n%s", name, what.c_str(), help);
+  return 2;
+}
+
+int Usage::help_asked() const
+{
+  std::fputs(help, stdout);
+  return 0;
+}
+
+int Usage::no_arguments() const
+{
+  std::fputs(help, stderr);
+  return 2;
+}
+
+std::string unknown_option(const std::string &option) { return "unknown option '" + option + "'"; }
+std::string needs_value(const std::string &option) { return option + " needs a value"; }
+
+std::string needs_number(const std::string &option, const std::string &value)
+{
+  return option + " needs a number, got '" + value + "'";
+}
+
+std::string not_a_number(const std::string &option, const std::string &value)
+{
+  return option + " '" + value + "' is not a number";
+}
+
+std::string needs_integer(const std::string &option, long long lo, const std::string &value)
+{
+  return option + " needs an integer >= " + std::to_string(lo) + ", got '" + value + "'";
+}
+
+bool is_option(const std::string &word) { return word.size() > 2 && word.compare(0, 2, "--") == 0; }
+
+bool split_option(const std::string &word, std::string &name, std::string &value)
+{
+  const auto eq = word.find('=');
+  name = word.substr(0, eq);
+  value = eq == std::string::npos ? std::string() : word.substr(eq + 1);
+  return eq != std::string::npos;
+}
+
+bool next_value(int argc, char **argv, int &i, std::string &value)
+{
+  if (i + 1 >= argc) return false;
+  value = argv[++i];
+  return true;
+}
+
+bool number_arg(const std::string &s, double &v, bool accept_underflow)
+{
+  char *end = nullptr;
+  errno = 0;
+  v = std::strtod(s.c_str(), &end);
+  return !s.empty() && end && *end == '\0' && (accept_underflow || errno != ERANGE) && std::isfinite(v);
+}
+
+bool integer_arg(const std::string &s, long long &v)
+{
+  char *end = nullptr;
+  errno = 0;
+  v = std::strtoll(s.c_str(), &end, 10);
+  return !s.empty() && end && *end == '\0' && errno != ERANGE;
+}
+
+bool integer_arg(const std::string &s, long long lo, long long hi, int &v)
+{
+  long long n;
+  if (!integer_arg(s, n) || n < lo || n > hi) return false;
+  v = (int) n;
+  return true;
+}
+
+std::string ParsedArgs::value(const std::string &name, const std::string &fallback) const
+{
+  const auto it = options.find(name);
+  return it == options.end() ? fallback : it->second[0];
+}
+
+bool ParsedArgs::read_numbers(const std::set<std::string> &text, std::string &message)
+{
+  for (const auto &o : options) {
+    if (text.count(o.first)) continue;
+    for (const auto &s : o.second) {
+      double x;
+      if (!number_arg(s, x)) {
+        message = not_a_number(o.first, s);
+        return false;
+      }
+      numbers[o.first].push_back(x);
+    }
+  }
+  return true;
+}
+
+bool ParsedArgs::number(const std::string &name, double &v) const
+{
+  const auto it = numbers.find(name);
+  if (it == numbers.end()) return false;
+  v = it->second[0];
+  return true;
+}
+
+bool ParsedArgs::positive(std::initializer_list<const char *> names, std::string &message) const
+{
+  for (const char *n : names) {
+    double v;
+    if (number(n, v) && !(v > 0.0)) {
+      message = std::string(n) + " must be > 0";
+      return false;
+    }
+  }
+  return true;
+}
+
+bool parse_args(int argc, char **argv, const std::map<std::string, int> &spec, ParsedArgs &out,
+                std::string &message)
+{
+  for (int i = 0; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--help" || a == "-h") {
+      out.help = true;
+      continue;
+    }
+    if (!is_option(a)) {
+      out.positional.push_back(a);
+      continue;
+    }
+    std::string name, inline_value;
+    const bool has_inline = split_option(a, name, inline_value);
+    const auto it = spec.find(name);
+    if (it == spec.end()) {
+      message = unknown_option(name);
+      return false;
+    }
+    std::vector<std::string> values;
+    if (has_inline) {
+      if (it->second != 1) {
+        message = name + " takes " + std::to_string(it->second) + " values, not " + name + "=VALUE";
+        return false;
+      }
+      values.push_back(inline_value);
+    } else {
+      for (int k = 0; k < it->second; ++k) {
+        std::string v;
+        if (!next_value(argc, argv, i, v)) {
+          message = name + " needs " + std::to_string(it->second) + (it->second == 1 ? " value" : " values");
+          return false;
+        }
+        values.push_back(v);
+      }
+    }
+    out.options[name] = values;
+  }
+  return true;
+}
+
+}    // namespace cli
+}    // namespace granpen
