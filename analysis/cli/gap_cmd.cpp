@@ -1,5 +1,6 @@
 // granpen gap --real DIR --scenario NAME --out DIR: the sim-to-real gap diagnosis
 // (gap/gap_diagnosis.h); --prepare-only runs (or resumes) the cache's simulations.
+#include "args.h"
 #include "effects.h"
 #include "gap_diagnosis.h"
 #include "subcommands.h"
@@ -49,10 +50,9 @@ const char *HELP =
 
 int granpen::cli::gap(int argc, char **argv)
 {
-  if (argc < 1 || !std::strcmp(argv[0], "--help")) {
-    std::fputs(HELP, argc < 1 ? stderr : stdout);
-    return argc < 1 ? 2 : 0;
-  }
+  const Usage usage{"gap", HELP};
+  if (argc < 1) return usage.no_arguments();
+  if (!std::strcmp(argv[0], "--help")) return usage.help_asked();
   GapOptions opt;
   const char *env;
   opt.runner.lmp = (env = std::getenv("GRANPEN_LMP")) ? env : "lmp_granpen";
@@ -61,12 +61,10 @@ int granpen::cli::gap(int argc, char **argv)
   opt.runner.jobs = (int) std::max(1u, std::thread::hardware_concurrency());
   for (int i = 0; i < argc; ++i) {
     const std::string a = argv[i];
+    std::string v;
     auto value = [&]() -> std::string {
-      if (i + 1 >= argc) {
-        std::fprintf(stderr, "granpen gap: %s needs a value\n", a.c_str());
-        std::exit(2);
-      }
-      return argv[++i];
+      if (!next_value(argc, argv, i, v)) std::exit(usage.bare(needs_value(a)));
+      return v;
     };
     if (a == "--real") opt.real = value();
     else if (a == "--scenario") opt.scenario = value();
@@ -79,26 +77,14 @@ int granpen::cli::gap(int argc, char **argv)
     else if (a == "--slurm") opt.slurm = value();
     else if (a == "--mpirun") opt.runner.mpirun = value();
     else if (a == "--ranks") {
-      const std::string v = value();
-      char *end = nullptr;
-      const long n = std::strtol(v.c_str(), &end, 10);
-      if (v.empty() || *end || n < 1 || n > 1000000) {
-        std::fprintf(stderr, "granpen gap: --ranks needs an integer >= 1, got '%s'\n", v.c_str());
-        return 2;
-      }
-      opt.runner.ranks = (int) n;
+      const std::string r = value();
+      if (!integer_arg(r, 1, 1000000, opt.runner.ranks)) return usage.bare(needs_integer("--ranks", 1, r));
     }
     else if (a == "--v0") opt.v0 = value();
     else if (a == "--effects") opt.effects = value();
     else if (a == "--jobs") {
-      const std::string v = value();
-      char *end = nullptr;
-      const long n = std::strtol(v.c_str(), &end, 10);
-      if (v.empty() || *end || n < 1 || n > 1024) {
-        std::fprintf(stderr, "granpen gap: --jobs needs an integer >= 1, got '%s'\n", v.c_str());
-        return 2;
-      }
-      opt.runner.jobs = (int) n;
+      const std::string j = value();
+      if (!integer_arg(j, 1, 1024, opt.runner.jobs)) return usage.bare(needs_integer("--jobs", 1, j));
     } else if (a == "--list-effects") {
       for (const auto &e : effect_library()) {
         std::printf("%-20s %s\n%-20s magnitude: %s; reference values:", e.name.c_str(), e.what.c_str(), "",
@@ -108,15 +94,12 @@ int granpen::cli::gap(int argc, char **argv)
       }
       return 0;
     } else {
-      std::fprintf(stderr, "granpen gap: unknown option '%s'\n%s", a.c_str(), HELP);
-      return 2;
+      return usage.with_help(unknown_option(a));
     }
   }
   if (opt.scenario.empty() || (!opt.prepare_only && opt.slurm.empty() && (opt.real.empty() || opt.out.empty())) ||
       ((opt.prepare_only || !opt.slurm.empty()) && opt.v0.empty())) {
-    std::fprintf(stderr, "granpen gap: needs --scenario and either --real and --out, or --prepare-only and --v0\n%s",
-                 HELP);
-    return 2;
+    return usage.with_help("needs --scenario and either --real and --out, or --prepare-only (or --slurm) and --v0");
   }
   try {
     return run_gap(opt);
