@@ -535,12 +535,14 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
       }
     }
     d.gap_after = ga;
-    // confirmed when the fresh runs remove at least half of the gap's excess chi^2 over
-    // every feature (bin means, fluctuation levels, spectrum: G sees the bin means only)
+    // confirmed when the fresh runs bring chi^2 over every feature (bin means, fluctuation
+    // levels, spectrum: G sees the bin means only) down by more than its noise (3 sigma of a
+    // chi^2 with P degrees of freedom) and by at least a quarter of the gap's excess: a
+    // magnitude somewhat off still confirms the effect, a wrong effect does not
     d.chi2_after = chi2_after;
-    const double excess0 = d.chi2_0 - (double) d.nfeatures;
-    d.confirmed_fraction = excess0 > 0 ? 1.0 - std::max(0.0, chi2_after - (double) d.nfeatures) / excess0 : 0.0;
-    if (d.confirmed_fraction < 0.5) {
+    const double P = (double) d.nfeatures, excess0 = d.chi2_0 - P;
+    d.confirmed_fraction = excess0 > 0 ? 1.0 - std::max(0.0, chi2_after - P) / excess0 : 0.0;
+    if (!(d.chi2_0 - chi2_after > 3.0 * std::sqrt(2.0 * P) && d.confirmed_fraction >= 0.25)) {
       d.notes.push_back("verdict: " + d.top_effect + " at magnitude " + fmt(d.magnitude) +
                         " did not shrink the gap on fresh seeds (chi^2 " + fmt(d.chi2_0, "%.1f") + " -> " +
                         fmt(chi2_after, "%.1f") + " over " + std::to_string(d.nfeatures) + " features; G " +
