@@ -108,6 +108,30 @@ std::vector<double> add(const std::vector<double> &a, const std::vector<double> 
   return r;
 }
 
+// A figure of one panel per speed, their legend in a column on the right.
+SeriesFigure per_speed_figure(const std::string &name, const std::string &title, std::size_t speeds, int height)
+{
+  SeriesFigure f;
+  f.name = name;
+  f.title = title;
+  f.columns = (int) speeds;
+  f.width = 480 * (int) speeds + 300;
+  f.height = height;
+  f.grid_width = 1.0 - 300.0 / f.width;
+  return f;
+}
+
+// A series of ensemble means with its +- 2 standard-error band.
+PlotSeries mean_with_band(const std::string &title, const std::vector<double> &z, const std::vector<double> &mean,
+                          const std::vector<double> &se, const char *colour)
+{
+  PlotSeries s{title, z, mean};
+  s.band_lo = add(mean, se, -2);
+  s.band_hi = add(mean, se, 2);
+  s.colour = colour;
+  return s;
+}
+
 }    // namespace
 
 void write_gap_report(const Diagnosis &d, const std::string &dir)
@@ -121,46 +145,29 @@ void write_gap_report(const Diagnosis &d, const std::string &dir)
   };
 
   // measured vs simulated vs corrected F(z), one panel per speed
-  SeriesFigure fz;
-  fz.name = "force_depth";
-  fz.title = "F(z): measured, simulated (baseline) and corrected, ensemble means +- 2 s.e.";
-  fz.columns = (int) d.speeds.size();
-  fz.width = 480 * (int) d.speeds.size() + 300;
-  fz.height = 500;
-  fz.grid_width = 1.0 - 300.0 / fz.width;    // one legend for every panel, on the right
+  SeriesFigure fz = per_speed_figure(
+      "force_depth", "F(z): measured, simulated (baseline) and corrected, ensemble means +- 2 s.e.", d.speeds.size(), 500);
   for (const auto &c : d.speeds) {
     SeriesPanel p;
     p.title = "v_0 = " + f3(c.v0, "%g") + " cm/s";
     p.xlabel = "depth z (cm)";
     p.ylabel = "F (dyne)";
     p.key = fz.panels.empty() ? "column" : "off";
-    PlotSeries R{"measured (" + std::to_string(c.n_real) + ")", c.z, c.real};
-    R.band_lo = add(c.real, c.real_se, -2), R.band_hi = add(c.real, c.real_se, 2);
-    R.colour = "#000000";
-    PlotSeries B{"baseline (" + std::to_string(c.n_base) + ")", c.z, c.base};
-    B.band_lo = add(c.base, c.base_se, -2), B.band_hi = add(c.base, c.base_se, 2);
-    B.colour = "#d62728";
-    p.series = {R, B};
+    p.series = {mean_with_band("measured (" + std::to_string(c.n_real) + ")", c.z, c.real, c.real_se, "#000000"),
+                mean_with_band("baseline (" + std::to_string(c.n_base) + ")", c.z, c.base, c.base_se, "#d62728")};
     if (!d.tested_effect.empty()) {
       std::string effect = d.tested_effect;
       std::replace(effect.begin(), effect.end(), '_', ' ');
-      PlotSeries C{"with " + effect + " (" + std::to_string(c.n_corr) + ")", c.z, c.corr};
-      C.band_lo = add(c.corr, c.corr_se, -2), C.band_hi = add(c.corr, c.corr_se, 2);
-      C.colour = "#1f77b4";
-      p.series.push_back(C);
+      p.series.push_back(
+          mean_with_band("with " + effect + " (" + std::to_string(c.n_corr) + ")", c.z, c.corr, c.corr_se, "#1f77b4"));
     }
     fz.panels.push_back(p);
   }
   draw(series_figure(fz));
 
   // the gap curve with its band
-  SeriesFigure gc;
-  gc.name = "gap_curve";
-  gc.title = "measured minus simulated F, with the 2-sigma noise band of the difference";
-  gc.columns = (int) d.speeds.size();
-  gc.width = 480 * (int) d.speeds.size() + 300;
-  gc.height = 460;
-  gc.grid_width = 1.0 - 300.0 / gc.width;
+  SeriesFigure gc = per_speed_figure(
+      "gap_curve", "measured minus simulated F, with the 2-sigma noise band of the difference", d.speeds.size(), 460);
   for (const auto &c : d.speeds) {
     SeriesPanel p;
     p.title = "v_0 = " + f3(c.v0, "%g") + " cm/s, G = " + f3(c.G_before);
