@@ -2,7 +2,7 @@
 
 namespace granpen {
 
-const std::vector<std::string> SIGNATURE_SEEDS = {"1", "2"}, CONFIRM_SEEDS = {"11", "12"};
+const std::vector<std::string> SIGNATURE_SEEDS = {"1", "2"}, CONFIRM_SEEDS = {"11", "12", "13", "14"};
 
 std::vector<SimRequest> signature_requests(const std::string &scenario, const std::vector<std::string> &v0,
                                            const std::vector<const Effect *> &effects)
