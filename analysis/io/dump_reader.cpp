@@ -154,33 +154,10 @@ __attribute__((always_inline)) inline int digit_run(const char *s, const char *e
   return n;
 }
 
-// The common case, decimals whose value is m * 10^k with m <= 2^53 and
-// |k| <= 22 (every %g field LAMMPS writes): one exactly rounded multiplication
-// or division (Clinger's fast path), so the result is the correctly rounded
-// value, bit for bit what strtod returns. false: not such a number, or one
-// this path leaves to from_chars. Digits are taken 8 at a time (digit_run);
-// longer runs go the scalar way.
-inline bool parse_simple_scalar(const char *p, const char *e, double &v, const char *&q);
-
-__attribute__((always_inline)) inline bool parse_simple(const char *p, const char *e, double &v, const char *&q)
+// The end of a number both fast paths share: the digits m scaled by 10^k, an optional
+// exponent at s, then a separator; exact only while m <= 2^53 and |k| <= 22
+__attribute__((always_inline)) inline bool finish_simple(const char *s, const char *e, bool neg, std::uint64_t m, int k, double &v, const char *&q)
 {
-  const char *s = p;
-  const bool neg = *s == '-';
-  s += (*s == '-' || *s == '+');
-  std::uint64_t m, f;
-  const int n1 = digit_run(s, e, m);
-  if (n1 == 8) return parse_simple_scalar(p, e, v, q);
-  s += n1;
-  int n2 = 0;
-  if (s < e && *s == '.') {
-    ++s;
-    n2 = digit_run(s, e, f);
-    if (n2 == 8) return parse_simple_scalar(p, e, v, q);
-    m = m * kPow10i[n2] + f;
-    s += n2;
-  }
-  if (n1 + n2 == 0) return false;
-  int k = -n2;
   if (s < e && (*s == 'e' || *s == 'E')) {
     ++s;
     bool eneg = false;
@@ -205,6 +182,37 @@ __attribute__((always_inline)) inline bool parse_simple(const char *p, const cha
   }
   q = s;
   return true;
+}
+
+// The common case, decimals whose value is m * 10^k with m <= 2^53 and
+// |k| <= 22 (every %g field LAMMPS writes): one exactly rounded multiplication
+// or division (Clinger's fast path), so the result is the correctly rounded
+// value, bit for bit what strtod returns. false: not such a number, or one
+// this path leaves to from_chars. Digits are taken 8 at a time (digit_run);
+
+// longer runs go the scalar way.
+inline bool parse_simple_scalar(const char *p, const char *e, double &v, const char *&q);
+
+__attribute__((always_inline)) inline bool parse_simple(const char *p, const char *e, double &v, const char *&q)
+{
+  const char *s = p;
+  const bool neg = *s == '-';
+  s += (*s == '-' || *s == '+');
+  std::uint64_t m, f;
+  const int n1 = digit_run(s, e, m);
+  if (n1 == 8) return parse_simple_scalar(p, e, v, q);
+  s += n1;
+  int n2 = 0;
+  if (s < e && *s == '.') {
+    ++s;
+    n2 = digit_run(s, e, f);
+    if (n2 == 8) return parse_simple_scalar(p, e, v, q);
+    m = m * kPow10i[n2] + f;
+    s += n2;
+  }
+  if (n1 + n2 == 0) return false;
+  int k = -n2;
+  return finish_simple(s, e, neg, m, k, v, q);
 }
 
 // the same, one digit at a time: up to 19 significant digits
@@ -237,30 +245,7 @@ inline bool parse_simple_scalar(const char *p, const char *e, double &v, const c
     }
   }
   if (!any) return false;
-  if (s < e && (*s == 'e' || *s == 'E')) {
-    ++s;
-    bool eneg = false;
-    if (s < e && (*s == '-' || *s == '+')) {
-      eneg = *s == '-';
-      ++s;
-    }
-    if (s == e || !is_digit(*s)) return false;
-    int x = 0;
-    for (; s < e && is_digit(*s); ++s)
-      if (x < 100000) x = x * 10 + (*s - '0');
-    k += eneg ? -x : x;
-  }
-  if (s < e && !is_space(*s)) return false;
-  if (m == 0) {
-    v = neg ? -0.0 : 0.0;
-  } else {
-    if (m > (std::uint64_t(1) << 53) || k < -22 || k > 22) return false;
-    const double d = static_cast<double>(static_cast<std::int64_t>(m));    // m <= 2^53: signed is exact, and cheaper
-    v = k < 0 ? d / kPow10[-k] : d * kPow10[k];
-    if (neg) v = -v;
-  }
-  q = s;
-  return true;
+  return finish_simple(s, e, neg, m, k, v, q);
 }
 
 inline NumStatus parse_double(const char *p, const char *e, double &v, const char *&q)
