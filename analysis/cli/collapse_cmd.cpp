@@ -116,6 +116,12 @@ int granpen::cli::collapse(int argc, char **argv)
                 c.crossed ? json_number("%.2f", c.t_star).c_str() : "not reached");
   std::printf("crossover: t~* = %.2f +- %.2f over %d of %zu traces (paper: 1)\n", r.t_star_mean, r.t_star_sd,
               r.n_crossed, r.curves.size());
+  if (r.ens_crossed)
+    std::printf("ensemble crossover: the mean of F/F_z over the traces stays within 1 +- %g from t~* = %.2f "
+                "(bins with at least %d traces)\n",
+                p.band, r.t_star_ensemble, std::min<int>(p.min_curves, static_cast<int>(r.curves.size())));
+  else
+    std::printf("ensemble crossover: the mean of F/F_z over the traces does not stay within 1 +- %g\n", p.band);
   std::printf("collapse quality: spread of F/F_z across traces %.3f against z, %.3f against t~ (ratio %.2f)\n",
               r.spread_z, r.spread_t, r.spread_z > 0 ? r.spread_t / r.spread_z : 0.0);
   if (r.peak_ok)
@@ -139,7 +145,8 @@ int granpen::cli::collapse(int argc, char **argv)
       << ",\n  \"t_star_mean\": " << json_number("%.6g", r.t_star_mean) << ",\n  \"t_star_sd\": "
       << json_number("%.6g", r.t_star_sd) << ",\n  \"n_crossed\": " << r.n_crossed << ",\n  \"spread_z\": "
       << json_number("%.6g", r.spread_z) << ",\n  \"spread_t\": " << json_number("%.6g", r.spread_t)
-      << ",\n  \"peak_exponent\": " << json_number("%.6g", r.peak_exponent) << ",\n  \"peak_exponent_ci95\": "
+      << ",\n  \"ensemble_crossed\": " << (r.ens_crossed ? "true" : "false") << ",\n  \"t_star_ensemble\": "
+      << json_number("%.6g", r.t_star_ensemble) << ",\n  \"peak_exponent\": " << json_number("%.6g", r.peak_exponent) << ",\n  \"peak_exponent_ci95\": "
       << json_number("%.6g", r.peak_exponent_ci95) << ",\n  \"traces\": [";
     for (std::size_t i = 0; i < r.curves.size(); ++i) {
       const auto &c = r.curves[i];

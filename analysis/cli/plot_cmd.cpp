@@ -385,7 +385,7 @@ void plot_ratio(const std::vector<std::string> &inputs, Run &run)
   a.xlabel = "rod tip depth z (cm)";
   b.title = "(b) against rescaled time";
   b.xlabel = "t̃ = (z / v_0) √(g / D)";
-  a.ylabel = b.ylabel = "F / F_z   (F_z = k_z z)";
+  a.ylabel = b.ylabel = run.opt.alpha > 0 ? "F / F_z   (F_z = α μ ρ_g g D² z)" : "F / F_z   (F_z = k_z z)";
   a.key = "off";
   b.key = "column";
   PlotHBand hb;
@@ -398,13 +398,18 @@ void plot_ratio(const std::vector<std::string> &inputs, Run &run)
   b.vlines.push_back(v);
   double ymax = 0, ymin = 0;
   std::string json_curves;
+  // a legend entry per run while it stays readable, else one per speed
+  const bool per_run = r.curves.size() <= 12;
   for (auto &kv : speed)
     for (int i : kv.second) {
       const CollapseCurve &c = r.curves[i];
       const auto &t = traces[which[i]];
       PlotSeries sa, sb;
       sa.colour = sb.colour = colour[i];
-      sb.title = v0_text(c.v0) + (kv.second.size() > 1 ? ", " + t.label : "");
+      if (per_run)
+        sb.title = v0_text(c.v0) + (kv.second.size() > 1 ? ", " + t.label : "");
+      else if (i == kv.second.front())
+        sb.title = v0_text(c.v0) + " (" + std::to_string(kv.second.size()) + " runs)";
       sa.line_width = sb.line_width = 1.8;
       const double scale = std::sqrt(c.g / c.D) / c.v0;
       for (std::size_t k = 0; k < c.t.size(); ++k) {
@@ -418,6 +423,17 @@ void plot_ratio(const std::vector<std::string> &inputs, Run &run)
                      ", \"v0\": " + fmt("%.10g", c.v0) + ", \"k_z\": " + fmt("%.6g", c.k_z) +
                      ", \"crossed\": " + (c.crossed ? "true" : "false") + ", \"t_star\": " + fmt("%.4g", c.t_star) + "}";
     }
+  if (r.curves.size() > 1 && !r.ens_t.empty()) {
+    // the mean over the runs, where the grain-scale fluctuations of single runs average out
+    PlotSeries e;
+    e.colour = "#000000";
+    e.line_width = 3.0;
+    e.title = "mean of the runs ± se" + (r.ens_crossed ? " (t̃* = " + fmt("%.2f", r.t_star_ensemble) + ")" : std::string());
+    e.x = r.ens_t, e.y = r.ens_ratio;
+    for (std::size_t k = 0; k < r.ens_t.size(); ++k)
+      e.band_lo.push_back(r.ens_ratio[k] - r.ens_se[k]), e.band_hi.push_back(r.ens_ratio[k] + r.ens_se[k]);
+    b.series.push_back(e);
+  }
   // linear up to 4; beyond, a log axis, so that the early, large ratios of fast pushes
   // stay in view next to the band about 1
   std::string clipped;
@@ -438,7 +454,11 @@ void plot_ratio(const std::vector<std::string> &inputs, Run &run)
   fig.name = "ratio";
   fig.title = "F over its depth term F_z" + clipped + ": t̃* = " +
               (r.n_crossed ? fmt("%.2f", r.t_star_mean) + " ± " + fmt("%.2f", r.t_star_sd) : std::string("not reached")) +
-              " (" + std::to_string(r.n_crossed) + " of " + std::to_string(r.curves.size()) + " traces), spread " +
+              " (" + std::to_string(r.n_crossed) + " of " + std::to_string(r.curves.size()) + " traces" +
+              (r.curves.size() > 1 ? std::string("; their mean: ") +
+                                         (r.ens_crossed ? fmt("%.2f", r.t_star_ensemble) : std::string("not reached"))
+                                   : std::string()) +
+              "), spread " +
               fmt("%.3f", r.spread_z) + " against z, " + fmt("%.3f", r.spread_t) + " against t̃";
   fig.about = "granpen plot ratio: the binned F/F_z curves of granpen collapse (bins of t~ of width " +
               fmt("%g", run.opt.collapse.tbin) + ", z >= " + fmt("%g", run.opt.collapse.zmin) +
@@ -455,7 +475,9 @@ void plot_ratio(const std::vector<std::string> &inputs, Run &run)
                         ", \"zmin\": " + fmt("%g", run.opt.collapse.zmin));
   run.numbers.push_back("\"t_star_mean\": " + fmt("%.6g", r.t_star_mean) + ", \"t_star_sd\": " +
                         fmt("%.6g", r.t_star_sd) + ", \"n_crossed\": " + std::to_string(r.n_crossed) +
-                        ", \"spread_z\": " + fmt("%.6g", r.spread_z) + ", \"spread_t\": " + fmt("%.6g", r.spread_t));
+                        ", \"spread_z\": " + fmt("%.6g", r.spread_z) + ", \"spread_t\": " + fmt("%.6g", r.spread_t) +
+                        ", \"ensemble_crossed\": " + (r.ens_crossed ? "true" : "false") +
+                        ", \"t_star_ensemble\": " + fmt("%.6g", r.t_star_ensemble));
   run.numbers.push_back("\"curves\": [" + json_curves + "]");
 }
 

@@ -61,6 +61,21 @@ double spread(const std::vector<std::map<long, std::pair<double, int>>> &curves)
   return n ? sum / n : 0.0;
 }
 
+// first bin from which every later bin stays in the band (at least two bins): its start
+bool crossover(const std::vector<double> &t, const std::vector<double> &ratio, const CollapseParams &p,
+               double &t_star)
+{
+  for (std::size_t k = 0; k + 1 < ratio.size(); ++k) {
+    bool stays = true;
+    for (std::size_t j = k; j < ratio.size() && stays; ++j) stays = std::fabs(ratio[j] - 1.0) <= p.band;
+    if (stays) {
+      t_star = t[k] - 0.5 * p.tbin;
+      return true;
+    }
+  }
+  return false;
+}
+
 }    // namespace
 
 CollapseResult collapse(const std::vector<CollapseInput> &inputs, const CollapseParams &p)
@@ -90,16 +105,7 @@ CollapseResult collapse(const std::vector<CollapseInput> &inputs, const Collapse
       c.t.push_back((kv.first + 0.5) * p.tbin);
       c.ratio.push_back(kv.second.first / kv.second.second);
     }
-    // crossover: first bin from which every later bin stays in the band (at least two bins)
-    for (std::size_t k = 0; k + 1 < c.ratio.size(); ++k) {
-      bool stays = true;
-      for (std::size_t j = k; j < c.ratio.size() && stays; ++j) stays = std::fabs(c.ratio[j] - 1.0) <= p.band;
-      if (stays) {
-        c.crossed = true;
-        c.t_star = c.t[k] - 0.5 * p.tbin;
-        break;
-      }
-    }
+    c.crossed = crossover(c.t, c.ratio, p, c.t_star);
     if (c.crossed) stars.push_back(c.t_star);
     if (c.peak > 0.0) {
       logv.push_back(std::log(in.v0));
@@ -118,6 +124,24 @@ CollapseResult collapse(const std::vector<CollapseInput> &inputs, const Collapse
     res.t_star_mean = m;
     res.t_star_sd = stars.size() > 1 ? std::sqrt(s2 / (stars.size() - 1)) : 0.0;
   }
+  // the ensemble curve: per t~ bin, the mean over curves of each curve's bin mean
+  std::map<long, std::vector<double>> per_bin;
+  for (const auto &c : by_t)
+    for (const auto &kv : c) per_bin[kv.first].push_back(kv.second.first / kv.second.second);
+  const std::size_t need = std::max<std::size_t>(1, std::min<std::size_t>(p.min_curves, by_t.size()));
+  for (const auto &kv : per_bin) {
+    const auto &v = kv.second;
+    if (v.size() < need) continue;
+    double m = 0.0, s2 = 0.0;
+    for (double x : v) m += x;
+    m /= v.size();
+    for (double x : v) s2 += (x - m) * (x - m);
+    res.ens_t.push_back((kv.first + 0.5) * p.tbin);
+    res.ens_ratio.push_back(m);
+    res.ens_se.push_back(v.size() > 1 ? std::sqrt(s2 / (v.size() - 1) / v.size()) : 0.0);
+    res.ens_n.push_back(static_cast<int>(v.size()));
+  }
+  res.ens_crossed = crossover(res.ens_t, res.ens_ratio, p, res.t_star_ensemble);
   res.spread_z = spread(by_z);
   res.spread_t = spread(by_t);
 

@@ -4,6 +4,9 @@
    - each curve F/F_z (F_z = k_z z) binned in t~; the crossover t~* of a curve
      is the start of the first bin after which every later bin stays within
      1 +- band;
+   - the ensemble crossover: the same rule on the mean of F/F_z across curves
+     per t~ bin (bins holding at least min_curves curves), where the grain-scale
+     fluctuations of single runs (tens of percent in small beds) average out;
    - collapse quality: the spread of the curves (coefficient of variation across
      curves, averaged over bins) binned against z, and against t~;
    - the peak law: peak height (max F over 0 < z < 0.7 R) against v0 on log
@@ -31,6 +34,7 @@ struct CollapseParams {
   double band = 0.2;       // |F/F_z - 1| <= band counts as joined
   double tbin = 0.1;       // t~ bin width
   double zbin = 0.25;      // z bin width for the spread before collapse
+  int min_curves = 3;      // ensemble bins need this many curves (fewer if fewer curves)
 };
 
 struct CollapseCurve {
@@ -47,6 +51,10 @@ struct CollapseResult {
   int n_crossed = 0;
   double t_star_mean = 0.0, t_star_sd = 0.0;
   double spread_z = 0.0, spread_t = 0.0;    // before (against z) and after (against t~)
+  std::vector<double> ens_t, ens_ratio, ens_se;    // the ensemble curve: bin centre, mean, its standard error
+  std::vector<int> ens_n;                          // curves in each bin
+  bool ens_crossed = false;
+  double t_star_ensemble = 0.0;
   bool peak_ok = false;                     // at least 3 curves with distinct v0
   double peak_exponent = 0.0, peak_exponent_se = 0.0, peak_exponent_ci95 = 0.0;
 };

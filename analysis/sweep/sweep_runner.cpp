@@ -289,6 +289,22 @@ int run_sweep(const SweepSpec &spec, const RunnerOptions &opt)
   std::string lammps_version;
   for (const auto &j : jobs)
     if (lammps_version.empty() && exists(j.log)) lammps_version = first_line_matching(slurp(j.log), "LAMMPS (");
+  // Runs of other sweep files with the same name (sharing its beds, e.g. a v0 and a g sweep)
+  // stay in the manifest: each run is one line, keyed by its id.
+  std::vector<std::string> other_runs;
+  if (exists(dir + "/manifest.json")) {
+    std::istringstream in(slurp(dir + "/manifest.json"));
+    const std::string key = "    {\"id\": ";
+    for (std::string line; std::getline(in, line);) {
+      if (line.compare(0, key.size(), key) != 0) continue;
+      const bool planned = std::any_of(jobs.begin(), jobs.end(), [&](const Job &j) {
+        return line.compare(key.size(), json_string(j.run.id).size() + 1, json_string(j.run.id) + ",") == 0;
+      });
+      if (planned) continue;
+      if (!line.empty() && line.back() == ',') line.pop_back();
+      other_runs.push_back(line);
+    }
+  }
   auto write_manifest = [&]() {
     const std::string tmp = dir + "/manifest.json.tmp";
     std::FILE *f = std::fopen(tmp.c_str(), "w");
@@ -296,6 +312,7 @@ int run_sweep(const SweepSpec &spec, const RunnerOptions &opt)
     std::fprintf(f, "{\n  \"sweep\": %s,\n  \"spec\": %s,\n  \"granpen\": %s,\n  \"lammps\": %s,\n  \"runs\": [\n",
                  json_string(spec.name).c_str(), json_string(spec.path).c_str(),
                  json_string(GRANPEN_VERSION).c_str(), json_string(lammps_version).c_str());
+    for (const auto &line : other_runs) std::fprintf(f, "%s,\n", line.c_str());
     for (size_t i = 0; i < jobs.size(); ++i) {
       const auto &j = jobs[i];
       const auto &r = j.run;

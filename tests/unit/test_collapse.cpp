@@ -58,6 +58,34 @@ TEST(Collapse, NoCrossoverWhenTheExcessNeverFades)
   EXPECT_FALSE(r.peak_ok);    // one trace: no law
 }
 
+TEST(Collapse, EnsembleCrossoverSeesThroughRunNoise)
+{
+  // eight runs of one speed with fluctuations of +-50% of F_z (wavelength 1
+  // cm, phases evenly spread, so they cancel in the mean): no single run stays in the band,
+  // their mean crosses where the noiseless curve does
+  const double A = 2.0, tau = 0.3, band = 0.2;
+  std::vector<CollapseInput> in;
+  for (int k = 0; k < 8; ++k) {
+    auto c = synthetic(50, A, tau, 0);
+    c.name += "_run" + std::to_string(k);
+    for (std::size_t i = 0; i < c.z.size(); ++i)
+      c.F[i] += 0.5 * c.k_z * c.z[i] * std::sin(2 * M_PI * c.z[i] / 1.0 + 2 * M_PI * k / 8);
+    in.push_back(c);
+  }
+  CollapseParams p;
+  p.band = band;
+  p.zmin = 0.6;
+  auto r = collapse(in, p);
+  EXPECT_EQ(r.n_crossed, 0);
+  ASSERT_TRUE(r.ens_crossed);
+  EXPECT_NEAR(r.t_star_ensemble, tau * std::log(A / band), p.tbin);
+  for (std::size_t k = 0; k < r.ens_n.size(); ++k) EXPECT_EQ(r.ens_n[k], 8);
+  // fewer curves than min_curves: bins need all of them
+  auto one = collapse({in[0]}, p);
+  EXPECT_FALSE(one.ens_crossed);
+  EXPECT_EQ(one.ens_t.size(), one.curves[0].t.size());
+}
+
 TEST(Collapse, RejectsMissingParameters)
 {
   auto bad = synthetic(100, 1.0, 1.0, 0);

@@ -1,0 +1,150 @@
+#!/usr/bin/env bash
+# Regenerates every number and figure of docs/results.md (issue: validation) from the
+# validation sweeps' traces and dumps, with granpen's own commands (fit, collapse, flow,
+# momentum, plot); awk only averages their outputs over beds.
+#
+#   validation/results.sh [--out DIR] [--bench DIR] [--mid DIR] [--dumps DIR] [--cli PATH]
+#
+#   --bench DIR  traces and bed .info files of the bench validation sweep
+#                (default data/sims/validation_bench)
+#   --mid DIR    the same for the mid preset (default data/sims/validation_mid; skipped
+#                with a note when missing)
+#   --dumps DIR  the mid sweep's traces folder with the dumps of its 90 cm/s, g = 981 push
+#                (runs/validation_mid/traces; dumps are not committed, they are 100s of MB;
+#                skipped with a note when missing: the flow rows then keep their last values)
+#   --out DIR    where numbers.txt and the figures go (default docs/results)
+#
+# numbers.txt: one line per measured quantity, "KEY = VALUE [+- ERROR] [n = N]  # how".
+set -euo pipefail
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+OUT=$ROOT/docs/results BENCH=$ROOT/data/sims/validation_bench MID=$ROOT/data/sims/validation_mid
+DUMPS=$ROOT/runs/validation_mid/traces CLI=${GRANPEN_CLI:-$ROOT/build/analysis/granpen-cli}
+while [ $# -gt 0 ]; do
+  case $1 in
+    --out) OUT=$2; shift 2 ;;
+    --bench) BENCH=$2; shift 2 ;;
+    --mid) MID=$2; shift 2 ;;
+    --dumps) DUMPS=$2; shift 2 ;;
+    --cli) CLI=$2; shift 2 ;;
+    *) echo "results.sh: unknown argument $1 (see the header of $0)" >&2; exit 2 ;;
+  esac
+done
+mkdir -p "$OUT"
+NUM=$OUT/numbers.txt.partial
+: > "$NUM"
+say() { echo "== $*" >&2; }
+put() { echo "$*" | tee -a "$NUM"; }
+
+# mean +- sample sd (n) of the numbers on stdin
+stats() { awk '{ s += $1; ss += $1 * $1; n++ }
+  END { if (n == 0) { print "undefined n = 0"; exit }
+        m = s / n; sd = n > 1 ? sqrt((ss - n * m * m) / (n - 1)) : 0
+        printf "%.4g +- %.2g n = %d\n", m, sd, n }'; }
+
+# column NAME of a CSV with a header row, for the rows where column KEY equals VALUE (repeatable)
+col() { # col FILE NAME [KEY VALUE]...
+  local f=$1 name=$2; shift 2
+  awk -F, -v name="$name" -v conds="$*" '
+    NR == 1 { for (c = 1; c <= NF; c++) idx[$c] = c; nc = split(conds, cv, " "); next }
+    { ok = 1; for (i = 1; i < nc; i += 2) if ($idx[cv[i]] + 0 != cv[i + 1] + 0) ok = 0
+      if (ok) print $idx[name] }' "$f"
+}
+
+# one preset's traces: PRESET DIR ZMIN (k_z window start of the slow speed: the paper's 3 cm
+# where the push goes deep enough, else 2 cm)
+analyse_traces() {
+  local preset=$1 dir=$2 zmin=$3 o=$OUT/$1
+  mkdir -p "$o"
+  say "$preset: bed packing fractions"
+  put "$preset.phi_0 = $(grep -h '^phi_0' "$dir"/bed_*.info | awk '{print $3}' | stats)  # bed .info files, mu = 0.3"
+
+  say "$preset: linear fits (granpen fit)"
+  "$CLI" fit "$dir" --zmin "$zmin" --csv "$o/fit_z$zmin.csv" > "$o/fit_z$zmin.txt"
+  "$CLI" fit "$dir" --tmin 1 --csv "$o/fit_deep.csv" > "$o/fit_deep.txt"
+  local vmin
+  vmin=$(col "$o/fit_z$zmin.csv" v0 | sort -g | head -1)
+  for g in $(col "$o/fit_z$zmin.csv" g | sort -gu); do
+    put "$preset.alpha.v$vmin.g$g.D2 = $(col "$o/fit_z$zmin.csv" alpha v0 "$vmin" g "$g" D 2 | stats)  # granpen fit --zmin $zmin, v0 = $vmin"
+  done
+  for D in $(col "$o/fit_z$zmin.csv" D | sort -gu); do
+    [ "$D" = 2 ] && continue    # above
+    put "$preset.alpha.v$vmin.g981.D$D = $(col "$o/fit_z$zmin.csv" alpha v0 "$vmin" g 981 D "$D" | stats)  # granpen fit --zmin $zmin"
+  done
+  # k_z against v0 in the deep regime t~ >= 1, where the push reaches it (>= 0.5 cm of window)
+  for v in $(col "$o/fit_deep.csv" v0 g 981 D 2 | sort -gu); do
+    local n
+    n=$(awk -F, -v v="$v" 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next }
+      $i["v0"] + 0 == v && $i["g"] + 0 == 981 && $i["D"] + 0 == 2 && $i["z_last"] - $i["z_first"] >= 0.5' "$o/fit_deep.csv" | wc -l)
+    [ "$n" -gt 0 ] || { put "$preset.k_z_deep.v$v = undefined  # t~ >= 1 not reached by 0.5 cm before the push ends"; continue; }
+    put "$preset.k_z_deep.v$v = $(col "$o/fit_deep.csv" k_z v0 "$v" g 981 D 2 | stats)  # granpen fit --tmin 1, g = 981, D = 2"
+  done
+
+  say "$preset: peak law and collapse (granpen collapse)"
+  local v0set=() f
+  for f in "$dir"/*_g981_D2.0.csv; do v0set+=("$f"); done
+  # F_z from the slow speed's alpha (g = 981, D = 2): the fast pushes do not reach the deep
+  # regime in these beds, so their own k_z fits are not depth terms
+  local alpha
+  alpha=$(col "$o/fit_z$zmin.csv" alpha v0 "$vmin" g 981 D 2 | stats | awk '{print $1}')
+  # t~ bins of 0.25: at the slowest speeds that is about a grain diameter of travel, the
+  # wavelength of the force's fluctuations
+  "$CLI" collapse "${v0set[@]}" --alpha "$alpha" --tbin 0.25 --json "$o/collapse_v0.json" > "$o/collapse_v0.txt"
+  "$CLI" collapse "$dir" --alpha "$alpha" --tbin 0.25 --json "$o/collapse_all.json" > "$o/collapse_all.txt"
+  jget() { grep -o "\"$2\": [-0-9.e+]*" "$1" | head -1 | awk '{print $2}'; }
+  put "$preset.peak_exponent = $(jget "$o/collapse_v0.json" peak_exponent) +- $(jget "$o/collapse_v0.json" peak_exponent_ci95) (95%)  # granpen collapse, g = 981, D = 2, every v0"
+  put "$preset.t_star = $(jget "$o/collapse_all.json" t_star_mean) +- $(jget "$o/collapse_all.json" t_star_sd) n = $(jget "$o/collapse_all.json" n_crossed) of $(ls "$dir"/*.csv | wc -l)  # granpen collapse --alpha $alpha, every v0, g, D"
+  put "$preset.t_star_ensemble = $(jget "$o/collapse_all.json" t_star_ensemble) (crossed: $(grep -o '"ensemble_crossed": [a-z]*' "$o/collapse_all.json" | awk '{print $2}'))  # the mean of F/F_z over the traces"
+  put "$preset.collapse_spread_z = $(jget "$o/collapse_all.json" spread_z)  # spread of F/F_z across traces against z"
+  put "$preset.collapse_spread_t = $(jget "$o/collapse_all.json" spread_t)  # ... against t~"
+
+  say "$preset: figures (granpen plot)"
+  "$CLI" plot force "${v0set[@]}" --out "$o/fig" > /dev/null
+  "$CLI" plot peak "${v0set[@]}" --alpha "$alpha" --out "$o/fig" > /dev/null
+  "$CLI" plot kz "$dir" --kz-zmin "$zmin" --out "$o/fig" > /dev/null
+  "$CLI" plot ratio "$dir" --alpha "$alpha" --tbin 0.25 --out "$o/fig" > /dev/null
+}
+
+analyse_traces bench "$BENCH" 2
+if [ -d "$MID" ]; then analyse_traces mid "$MID" 3; else say "mid: $MID missing, skipped"; fi
+
+# the flow of one push (mid, 90 cm/s, g = 981, D = 2, seed 1) from its dumps
+push=mid_mu0.3_s1_v90_g981_D2.0
+if ls "$DUMPS/$push.csv".*.dump.gz > /dev/null 2>&1; then
+  o=$OUT/mid/flow
+  mkdir -p "$o"
+  dumps=("$DUMPS/$push.csv".*.dump.gz)
+  say "mid flow: ${#dumps[@]} frames (granpen flow, granpen momentum)"
+  # the steady part of the push: the tip 2 cm or more into the bed
+  "$CLI" flow "${dumps[@]}" --trace "$DUMPS/$push.csv" --out "$o" > "$o/flow.txt"
+  "$CLI" momentum "${dumps[@]}" --trace "$DUMPS/$push.csv" --out "$OUT/mid/momentum" > "$OUT/mid/momentum.txt"
+  "$CLI" plot flow "$o" --out "$o/fig" > /dev/null
+  "$CLI" plot momentum "$OUT/mid/momentum" --out "$OUT/mid/momentum/fig" > /dev/null
+  # surface flux: v_z of the strip 0.5-1.5 cm from the shaft in the top grain layer, frame by
+  # frame, against t~ (granpen flow on each frame alone, no tessellation)
+  sf=$OUT/mid/surface_flux.csv
+  echo "t_tilde,z_tip,vz_surface" > "$sf.partial"
+  for d in "${dumps[@]}"; do
+    "$CLI" flow "$d" --trace "$DUMPS/$push.csv" --voronoi none --out "$OUT/mid/.frame" > /dev/null 2>&1
+    tt=$(grep -o '"t_tilde": [-0-9.e+]*' "$OUT/mid/.frame/flow.json" | tail -1 | awk '{print $2}')
+    zt=$(grep -o '"z_tip": [-0-9.e+]*' "$OUT/mid/.frame/flow.json" | tail -1 | awk '{print $2}')
+    vz=$(awk -F, 'NR > 1 && $1 < 0 { last = $2 } END { print last }' "$OUT/mid/.frame/flow_strip.csv")
+    echo "$tt,$zt,$vz" >> "$sf.partial"
+  done
+  rm -rf "$OUT/mid/.frame"
+  mv "$sf.partial" "$sf"
+  fj=$o/flow.json
+  lam=$(grep -o '"lambda_vz": {[^}]*}' "$fj")
+  put "mid.lambda_vz_D = $(echo "$lam" | grep -o '"lambda_D": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$lam" | grep -o '"lambda_D_se": [-0-9.e+]*' | awk '{print $2}')  # granpen flow, every frame pooled"
+  edge=$(grep -o '"edge": {"points"[^}]*}' "$fj")
+  put "mid.edge_phi_0 = $(echo "$edge" | grep -o '"phi_0": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$edge" | grep -o '"phi_0_se": [-0-9.e+]*' | awk '{print $2}')  # phi = phi_0 + b I at the rod edge"
+  put "mid.edge_slope = $(echo "$edge" | grep -o '"slope": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$edge" | grep -o '"slope_se": [-0-9.e+]*' | awk '{print $2}')"
+  # the first frame after which the surface v_z stays negative (flowing down) once it was positive
+  put "mid.surface_flux_sign_change_t = $(awk -F, 'NR > 1 && $2 > 0 { if ($3 > 0) up = 1; if (up && $3 < 0 && !t) t = $1; if ($3 > 0) t = 0 }
+      END { print (t ? t : "undefined") }' "$sf")  # t~ of the last sign change of v_z (up -> down) at the surface, strip 0.5-1.5 cm from the shaft"
+  mj=$OUT/mid/momentum/momentum.json
+  put "mid.drag_over_mu_g_Mmove = $(grep -o '"k": [-0-9.e+]*' "$mj" | head -1 | awk '{print $2}') +- $(grep -o '"k_se": [-0-9.e+]*' "$mj" | head -1 | awk '{print $2}')  # F = k mu g M(v_z > v0/320), granpen momentum"
+else
+  say "mid flow: no dumps of $push in $DUMPS, skipped"
+fi
+mv "$NUM" "$OUT/numbers.txt"
+say "wrote $OUT/numbers.txt"
