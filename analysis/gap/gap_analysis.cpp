@@ -19,6 +19,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <numeric>
 #include <set>
@@ -141,6 +142,34 @@ double mean_of(const std::vector<double> &v)
   return v.empty() ? 0.0 : std::accumulate(v.begin(), v.end(), 0.0) / v.size();
 }
 
+// The measured side's noise: the model's, scaled up when the measured runs scatter more
+// (one run: by its fluctuation level against the baseline's).
+double noise_scale(const Ensemble &eR, const Ensemble &eB, const std::vector<double> &cv2, const GapGrid &grid)
+{
+  const std::size_t P = grid.nfeatures(), nb = grid.nbins();
+  if (eR.n() > 1) {
+    double r = 0;
+    for (std::size_t k = 0; k < P; ++k) r += eR.var[k] / (cv2[k] * eR.mean[k] * eR.mean[k] + 1e-300);
+    return std::max(1.0, r / P);
+  }
+  double fr = 0, fs = 0;
+  for (std::size_t k = nb; k < nb + grid.nwindows(); ++k) fr += eR.mean[k], fs += eB.mean[k];
+  return fs > 0 ? std::max(1.0, std::pow(fr / fs, 2)) : 1.0;
+}
+
+// Every subset of m of n indices (in order).
+std::vector<std::vector<std::size_t>> subsets(std::size_t n, std::size_t m)
+{
+  std::vector<std::vector<std::size_t>> out;
+  std::vector<std::size_t> cur;
+  std::function<void(std::size_t)> rec = [&](std::size_t i) {
+    if (cur.size() == m) return out.push_back(cur);
+    for (std::size_t j = i; j < n; ++j) cur.push_back(j), rec(j + 1), cur.pop_back();
+  };
+  if (m >= 1 && m <= n) rec(0);
+  return out;
+}
+
 }    // namespace
 
 int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vector<const Effect *> &effects,
@@ -201,6 +230,8 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
   std::map<std::string, BySpeed> knots;    // sweep name -> runs
   for (const Effect *e : effects)
     for (double a : e->knots) knots[effect_sweep_name(*e, a)] = load_sweep(cache, effect_sweep_name(*e, a));
+  // the baseline on fresh beds: the null replicates of the targeted test
+  BySpeed fresh = load_sweep(cache, "fresh_baseline");
   std::map<double, double> ref;    // per speed: the baseline's mean onset
   double zdeep = sc.depth;
   for (auto &[v, runs] : real) {
@@ -216,6 +247,9 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
     align(runs, ref[v]);
     align(base[v], ref[v]);
     zdeep = std::min({zdeep, deepest(runs), deepest(base[v])});
+    if (fresh[v].size() < 2) throw InputError("the fresh baseline has fewer than 2 runs at v0 = " + fmt(v));
+    align(fresh[v], ref[v]);
+    zdeep = std::min(zdeep, deepest(fresh[v]));
     for (auto &[name, by] : knots) {
       if (by[v].size() < 2) throw InputError("sweep " + name + " has fewer than 2 runs at v0 = " + fmt(v));
       align(by[v], ref[v]);
@@ -256,23 +290,32 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
     int dof = 0;
     cv2[s] = pooled_cv2(pool, grid, 1e-4, &dof);
     dof_min = std::min(dof_min, dof);
-    // the measured side's noise: the model, scaled up when the measured runs scatter more
-    double scale = 1.0;
-    if (eR[s].n() > 1) {
-      double r = 0;
-      for (std::size_t k = 0; k < P; ++k) r += eR[s].var[k] / (cv2[s][k] * eR[s].mean[k] * eR[s].mean[k] + 1e-300);
-      scale = std::max(1.0, r / P);
-    } else {
-      double fr = 0, fs = 0;
-      for (std::size_t k = nb; k < nb + grid.nwindows(); ++k) fr += eR[s].mean[k], fs += eB[s].mean[k];
-      scale = fs > 0 ? std::max(1.0, std::pow(fr / fs, 2)) : 1.0;
-    }
+    const double scale = noise_scale(eR[s], eB[s], cv2[s], grid);
     if (scale > 1.5)
       d.notes.push_back("v0 = " + fmt(v) + ": the measured runs scatter " + fmt(std::sqrt(scale), "%.2f") +
                         " times more than the simulated ones; their noise is taken as that");
     target_scale.push_back(scale);
     target.mean.push_back(eR[s].mean);
     target.err.push_back(model_err(eR[s], cv2[s], scale));
+  }
+  // null replicates: subsets of the fresh beds, as many runs as the measurement has (at
+  // most all but one of them), processed as the measurement is
+  std::vector<Target> nulls;
+  {
+    std::size_t nf = 1 << 30;
+    for (std::size_t s = 0; s < ns; ++s) nf = std::min(nf, fresh[speeds[s]].size());
+    const std::size_t m = std::clamp<std::size_t>(d.real_files.size() / std::max<std::size_t>(1, ns), 1, nf - 1);
+    for (const auto &pick : subsets(nf, m)) {
+      Target t;
+      for (std::size_t s = 0; s < ns; ++s) {
+        std::vector<Run> runs;
+        for (std::size_t i : pick) runs.push_back(fresh[speeds[s]][i]);
+        const Ensemble e = ensemble_of(runs, grid, speeds[s]);
+        t.mean.push_back(e.mean);
+        t.err.push_back(model_err(e, cv2[s], noise_scale(e, eB[s], cv2[s], grid)));
+      }
+      nulls.push_back(t);
+    }
   }
   if (std::getenv("GRANPEN_GAP_DEBUG"))
     for (std::size_t s = 0; s < ns; ++s) {
@@ -405,6 +448,8 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
   // ---- which: every effect's magnitude, explained fraction, leave-one-speed-out
   std::printf("granpen gap: [3/4] fitting %zu candidate effects\n", effects.size());
   std::map<std::string, const Effect *> by_name;
+  std::map<std::string, EffectData> effect_data;
+  d.n_null = 0;
   for (const Effect *e : effects) {
     by_name[e->name] = e;
     EffectData ed;
@@ -442,7 +487,14 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
       ed.err.push_back(er);
       ed.diff_err.push_back(de);
     }
-    d.ranking.push_back(fit_effect(target, ed));
+    EffectFit f = fit_effect(target, ed);
+    double lsum = 0;
+    for (const auto &t : nulls) lsum += effect_lr(t, ed);
+    f.lr_null_mean = nulls.empty() ? 0.0 : lsum / nulls.size();
+    f.lr_threshold = lr_threshold(f.lr_null_mean);
+    f.detected = f.lr > f.lr_threshold && !f.at_edge;
+    d.ranking.push_back(f);
+    effect_data[e->name] = ed;
     if (e->pour_mu_at) {
       // packing: the phi_0 the fitted pour friction makes, interpolated between the beds'
       std::vector<double> phi;
@@ -456,21 +508,46 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
                                   " against the baseline's " + fmt(mean_phi0(cache, "baseline"), "%.4f");
     }
   }
-  std::sort(d.ranking.begin(), d.ranking.end(), [](const EffectFit &a, const EffectFit &b) {
-    return a.explained > b.explained;
+  d.n_null = (int) nulls.size();
+  // two routes to a finding: the omnibus chi^2 over every feature (a gap spread over many
+  // features), or one candidate's likelihood ratio above its null-calibrated threshold (a
+  // gap too small for the omnibus test that lies along an effect's signature)
+  const bool omnibus = d.significant;
+  d.targeted = !omnibus && std::any_of(d.ranking.begin(), d.ranking.end(), [](const EffectFit &f) { return f.detected; });
+  d.significant = omnibus || d.targeted;
+  auto ratio = [](const EffectFit &f) { return f.lr_threshold > 0 ? f.lr / f.lr_threshold : 0.0; };
+  std::sort(d.ranking.begin(), d.ranking.end(), [&](const EffectFit &a, const EffectFit &b) {
+    return d.targeted ? ratio(a) > ratio(b) : a.explained > b.explained;
   });
   for (const auto &f : d.ranking)
-    std::printf("  %-20s magnitude %-10s explained %5.2f  held-out %5.2f  chi2 %.1f -> %.1f\n", f.name.c_str(),
-                fmt(f.magnitude).c_str(), f.explained, f.heldout_explained, f.chi2_0, f.chi2);
+    std::printf("  %-20s magnitude %-10s explained %5.2f  held-out %5.2f  chi2 %.1f -> %.1f  lr %.1f (threshold %.1f)\n",
+                f.name.c_str(), fmt(f.magnitude).c_str(), f.explained, f.heldout_explained, f.chi2_0, f.chi2, f.lr,
+                f.lr_threshold);
 
   // ---- the verdict before confirmation
   const EffectFit *top = d.ranking.empty() ? nullptr : &d.ranking[0];
   const EffectFit *second = d.ranking.size() > 1 ? &d.ranking[1] : nullptr;
   std::string why;
-  if (!d.significant) {
+  if (d.targeted) {
+    // one candidate's signature stands out: it must stand out alone (a second detected one
+    // at least 1.5 times less far above its threshold)
+    if (!second || !second->detected || ratio(*top) >= 1.5 * ratio(*second)) {
+      d.verdict = "explained";
+      d.top_effect = top->name;
+      d.notes.push_back("the gap is within the noise over all features (chi^2 " + fmt(d.chi2_0, "%.1f") + " over " +
+                        std::to_string(d.nfeatures) + ", p = " + fmt(d.p_value, "%.2g") + ") but lies along " +
+                        top->name + "'s signature: likelihood ratio " + fmt(top->lr, "%.1f") + " against a threshold of " +
+                        fmt(top->lr_threshold, "%.1f") + " (" + std::to_string(d.n_null) + " null replicates on fresh beds)");
+    } else {
+      d.verdict = "unexplained";
+      why = "a gap along the signatures of " + top->name + " and " + second->name + " (likelihood ratios " +
+            fmt(top->lr, "%.1f") + " and " + fmt(second->lr, "%.1f") + ", thresholds " + fmt(top->lr_threshold, "%.1f") +
+            " and " + fmt(second->lr_threshold, "%.1f") + "): too close to tell apart";
+    }
+  } else if (!d.significant) {
     d.verdict = "none";
     why = "the gap is within the noise (chi^2 " + fmt(d.chi2_0, "%.1f") + " over " + std::to_string(d.nfeatures) +
-          " features, p = " + fmt(d.p_value, "%.2g") + ")";
+          " features, p = " + fmt(d.p_value, "%.2g") + "; no candidate's likelihood ratio above its threshold)";
   } else if (top && top->explained >= 0.5 && top->heldout_explained >= 0.3 &&
              (!second || second->chi2 - top->chi2 >= 6.0) && !top->at_edge) {
     d.verdict = "explained";
@@ -515,6 +592,10 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
     BySpeed corr = load_sweep(cache, "confirm_" + effect_sweep_name(e, d.magnitude));
     BySpeed held = own_heldout ? load_sweep(cache, "heldout_" + effect_sweep_name(e, d.heldout_magnitude)) : corr;
     double ga = 0, chi2_after = 0;
+    // the targeted confirmation: the gap along the effect's signature u = model(a) -
+    // model(0), in standard deviations, against the baseline and against the fresh runs
+    double num0 = 0, uu0 = 0, num1 = 0, uu1 = 0;
+    const EffectData &ed = effect_data.at(e.name);
     for (std::size_t s = 0; s < ns; ++s) {
       const double v = speeds[s];
       if (corr[v].empty()) throw InputError("no confirming runs at v0 = " + fmt(v));
@@ -529,6 +610,14 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
       ga += c.G_after / ns;
       for (std::size_t k = 0; k < P; ++k)
         chi2_after += std::pow(eR[s].mean[k] - eC.mean[k], 2) / (target.err[s][k] + errC[k]);
+      std::vector<double> ma, va, m0, v0;
+      effect_predict(ed, d.magnitude, s, ma, va);
+      effect_predict(ed, 0.0, s, m0, v0);
+      for (std::size_t k = 0; k < P; ++k) {
+        const double u = ma[k] - m0[k], w0 = target.err[s][k] + v0[k], w1 = target.err[s][k] + errC[k];
+        num0 += u * (eR[s].mean[k] - m0[k]) / w0, uu0 += u * u / w0;
+        num1 += u * (eR[s].mean[k] - eC.mean[k]) / w1, uu1 += u * u / w1;
+      }
       if (s == hs) {
         align(held[v], ref[v]);
         d.heldout_after = gap_metric(eR[s], ensemble_of(held[v], grid, v), 0, nb);
@@ -542,10 +631,20 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
     d.chi2_after = chi2_after;
     const double P = (double) d.nfeatures, excess0 = d.chi2_0 - P;
     d.confirmed_fraction = excess0 > 0 ? 1.0 - std::max(0.0, chi2_after - P) / excess0 : 0.0;
-    if (!(d.chi2_0 - chi2_after > 3.0 * std::sqrt(2.0 * P) && d.confirmed_fraction >= 0.25)) {
+    d.proj_before = uu0 > 0 ? num0 / std::sqrt(uu0) : 0.0;
+    d.proj_after = uu1 > 0 ? num1 / std::sqrt(uu1) : 0.0;
+    // a gap found along one signature (targeted) is confirmed when the fresh runs remove
+    // it there: the squared projection drops by at least 9 (3 sigma), and the gap over
+    // every feature does not grow beyond its noise
+    const bool confirmed =
+        d.targeted ? d.proj_before * d.proj_before - d.proj_after * d.proj_after >= 9.0 &&
+                         chi2_after <= d.chi2_0 + 3.0 * std::sqrt(2.0 * P)
+                   : d.chi2_0 - chi2_after > 3.0 * std::sqrt(2.0 * P) && d.confirmed_fraction >= 0.25;
+    if (!confirmed) {
       d.notes.push_back("verdict: " + d.top_effect + " at magnitude " + fmt(d.magnitude) +
                         " did not shrink the gap on fresh seeds (chi^2 " + fmt(d.chi2_0, "%.1f") + " -> " +
-                        fmt(chi2_after, "%.1f") + " over " + std::to_string(d.nfeatures) + " features; G " +
+                        fmt(chi2_after, "%.1f") + " over " + std::to_string(d.nfeatures) + " features; along its signature " +
+                        fmt(d.proj_before, "%.2f") + " -> " + fmt(d.proj_after, "%.2f") + " sigma; G " +
                         fmt(d.gap_before, "%.3f") + " -> " + fmt(d.gap_after, "%.3f") + "): unexplained");
       d.verdict = "unexplained";
       d.top_effect.clear();

@@ -53,39 +53,16 @@ void effect_predict(const EffectData &e, double a, std::size_t s, std::vector<do
     for (std::size_t k = 0; k < p; ++k) var[k] += e.err[j0][s][k];
 }
 
-namespace {
-
-// chi^2, and the Gaussian -2 log likelihood (chi^2 + sum log variance) that the fit
-// minimises: chi^2 alone would reward magnitudes whose prediction is merely less certain
-double chi2_and_nll(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds,
-                    double *nll)
+double effect_chi2(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds)
 {
-  double chi2 = 0.0, logv = 0.0;
+  // against the model with its own variance (reported; the fit uses fixed weights)
+  double chi2 = 0.0;
   std::vector<double> m, v;
   for (std::size_t s : speeds) {
     effect_predict(e, a, s, m, v);
-    for (std::size_t k = 0; k < m.size(); ++k) {
-      const double var = t.err[s][k] + v[k];
-      chi2 += std::pow(t.mean[s][k] - m[k], 2) / var;
-      logv += std::log(var);
-    }
+    for (std::size_t k = 0; k < m.size(); ++k) chi2 += std::pow(t.mean[s][k] - m[k], 2) / (t.err[s][k] + v[k]);
   }
-  if (nll) *nll = chi2 + logv;
   return chi2;
-}
-
-double effect_nll(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds)
-{
-  double nll = 0.0;
-  chi2_and_nll(t, e, a, speeds, &nll);
-  return nll;
-}
-
-}    // namespace
-
-double effect_chi2(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds)
-{
-  return chi2_and_nll(t, e, a, speeds, nullptr);
 }
 
 namespace {
@@ -111,8 +88,10 @@ double weighted_residual(const Target &t, const EffectData &e, double a, const s
 
 namespace {
 
-// Best magnitude (least -2 log likelihood) over the allowed range: a fine grid, then
-// golden-section refinement.
+// Best magnitude over the allowed range (least squared residual with the fixed weights of
+// weighted_residual): a fine grid, then golden-section refinement. Fixed weights: with the
+// prediction's own variance in them, magnitudes between knots (where the interpolation
+// averages two ensembles and its variance drops) would be favoured for that alone.
 double best_magnitude(const Target &t, const EffectData &e, const std::vector<std::size_t> &speeds, bool *edge)
 {
   const double lo0 = e.knots.front(), hi0 = e.knots.back();
@@ -123,17 +102,17 @@ double best_magnitude(const Target &t, const EffectData &e, const std::vector<st
   int ib = 0;
   for (int i = 0; i <= n; ++i) {
     const double a = lo + (hi - lo) * i / n;
-    const double c = effect_nll(t, e, a, speeds);
+    const double c = weighted_residual(t, e, a, speeds);
     if (c < bestc) bestc = c, best = a, ib = i;
   }
   double x0 = lo + (hi - lo) * std::max(0, ib - 1) / n, x1 = lo + (hi - lo) * std::min(n, ib + 1) / n;
   for (int it = 0; it < 40; ++it) {
     const double m1 = x0 + 0.382 * (x1 - x0), m2 = x0 + 0.618 * (x1 - x0);
-    if (effect_nll(t, e, m1, speeds) < effect_nll(t, e, m2, speeds)) x1 = m2;
+    if (weighted_residual(t, e, m1, speeds) < weighted_residual(t, e, m2, speeds)) x1 = m2;
     else x0 = m1;
   }
   const double a = 0.5 * (x0 + x1);
-  if (effect_nll(t, e, a, speeds) < bestc) best = a;
+  if (weighted_residual(t, e, a, speeds) < bestc) best = a;
   if (edge) *edge = (ib == 0 || ib == n);
   return best;
 }
@@ -153,6 +132,7 @@ EffectFit fit_effect(const Target &t, const EffectData &e)
   f.chi2 = effect_chi2(t, e, f.magnitude, all);
   const double w0 = weighted_residual(t, e, 0.0, all);
   f.explained = w0 > 0.0 ? 1.0 - weighted_residual(t, e, f.magnitude, all) / w0 : 0.0;
+  f.lr = std::max(0.0, w0 - weighted_residual(t, e, f.magnitude, all));
   // leave one speed out: fit on the others, predict the one left out
   double sum = 0.0;
   int used = 0;
@@ -178,6 +158,16 @@ EffectFit fit_effect(const Target &t, const EffectData &e)
   f.score = std::min(f.explained, f.heldout_explained);
   return f;
 }
+
+double effect_lr(const Target &t, const EffectData &e)
+{
+  std::vector<std::size_t> all(t.mean.size());
+  std::iota(all.begin(), all.end(), 0);
+  const double a = best_magnitude(t, e, all, nullptr);
+  return std::max(0.0, weighted_residual(t, e, 0.0, all) - weighted_residual(t, e, a, all));
+}
+
+double lr_threshold(double lr_null_mean) { return std::max(1.0, lr_null_mean) * LR_CHI2_1_P1E4; }
 
 double chi2_sf(double x, double k)
 {

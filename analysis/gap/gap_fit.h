@@ -45,9 +45,26 @@ struct EffectFit {
   std::vector<double> loso_magnitude, loso_explained;    // per speed left out (NaN: no gap there)
   double heldout_explained = 0.0;   // mean over speeds left out that had a gap
   double score = 0.0;               // min(explained, heldout_explained), the ranking's number
+  // the targeted test: -2 log likelihood ratio of the fit against magnitude 0 (>= 0; a
+  // chi^2 with one degree of freedom for data without the effect, if the noise model
+  // were exact), the same statistic's mean over null replicates (fresh baseline beds
+  // taken as the measurement: how much the noise model under-states this effect's
+  // direction), and the threshold lr must pass
+  double lr = 0.0, lr_null_mean = 0.0, lr_threshold = 0.0;
+  bool detected = false;
 };
 
 EffectFit fit_effect(const Target &t, const EffectData &e);
+
+// The likelihood-ratio statistic of fit_effect alone (no leave-one-speed-out): for the null
+// replicates.
+double effect_lr(const Target &t, const EffectData &e);
+
+// The targeted test's threshold: an effect is detected when its lr exceeds
+// max(1, lr_null_mean) times the chi^2(1) quantile of p = 1e-4 (15.14; over about 7 effects
+// a family-wise 1e-3, as the omnibus test).
+constexpr double LR_CHI2_1_P1E4 = 15.137;
+double lr_threshold(double lr_null_mean);
 
 // Upper tail probability of chi^2 with k degrees of freedom.
 double chi2_sf(double chi2, double k);

@@ -7,7 +7,10 @@ const std::vector<std::string> SIGNATURE_SEEDS = {"1", "2"}, CONFIRM_SEEDS = {"1
 std::vector<SimRequest> signature_requests(const std::string &scenario, const std::vector<std::string> &v0,
                                            const std::vector<const Effect *> &effects)
 {
-  std::vector<SimRequest> out{baseline_request(scenario, v0, SIGNATURE_SEEDS, "baseline")};
+  // the baseline on the signature beds, and on the fresh beds: the null replicates of the
+  // targeted test (and the paired baseline of a push-only effect's confirmation)
+  std::vector<SimRequest> out{baseline_request(scenario, v0, SIGNATURE_SEEDS, "baseline"),
+                              baseline_request(scenario, v0, CONFIRM_SEEDS, "fresh_baseline")};
   for (const Effect *e : effects)
     for (double a : e->knots) {
       SimRequest r = effect_request(scenario, *e, a, v0, SIGNATURE_SEEDS, effect_sweep_name(*e, a));

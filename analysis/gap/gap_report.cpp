@@ -39,11 +39,16 @@ void write_json(const Diagnosis &d, const std::string &path)
   std::fprintf(f, "  \"runs\": {\"real_min_per_speed\": %d, \"sim_per_speed\": %d},\n", d.n_real_min, d.n_sim);
   std::fprintf(f, "  \"grid\": {\"w\": %s, \"zmax\": %s, \"window\": %s},\n", num(d.grid.w).c_str(),
                num(d.grid.zmax).c_str(), num(d.grid.window).c_str());
-  std::fprintf(f, "  \"significance\": {\"chi2\": %s, \"features\": %zu, \"p_value\": %s, \"significant\": %s},\n",
-               num(d.chi2_0).c_str(), d.nfeatures, num(d.p_value, "%.3g").c_str(), d.significant ? "true" : "false");
-  std::fprintf(f, "  \"confirmation\": {\"chi2_after\": %s, \"explained_fraction\": %s},\n",
+  std::fprintf(f, "  \"significance\": {\"chi2\": %s, \"features\": %zu, \"p_value\": %s, \"significant\": %s, "
+                  "\"route\": %s, \"null_replicates\": %d},\n",
+               num(d.chi2_0).c_str(), d.nfeatures, num(d.p_value, "%.3g").c_str(), d.significant ? "true" : "false",
+               !d.significant ? "null" : d.targeted ? "\"targeted\"" : "\"omnibus\"", d.n_null);
+  std::fprintf(f, "  \"confirmation\": {\"chi2_after\": %s, \"explained_fraction\": %s, \"signature_sigma_before\": %s, "
+                  "\"signature_sigma_after\": %s},\n",
                d.tested_effect.empty() ? "null" : num(d.chi2_after).c_str(),
-               d.tested_effect.empty() ? "null" : num(d.confirmed_fraction, "%.4f").c_str());
+               d.tested_effect.empty() ? "null" : num(d.confirmed_fraction, "%.4f").c_str(),
+               d.tested_effect.empty() ? "null" : num(d.proj_before, "%.4f").c_str(),
+               d.tested_effect.empty() ? "null" : num(d.proj_after, "%.4f").c_str());
   std::fprintf(f, "  \"gap_by_regime\": {");
   bool first = true;
   for (const auto &[reg, ba] : d.gap_by_regime) {
@@ -66,10 +71,12 @@ void write_json(const Diagnosis &d, const std::string &path)
   for (std::size_t i = 0; i < d.ranking.size(); ++i) {
     const auto &r = d.ranking[i];
     std::fprintf(f, "%s\n    {\"effect\": %s, \"explained_fraction\": %s, \"score\": %s, \"magnitude\": %s, "
-                    "\"heldout_explained\": %s, \"chi2\": %s, \"chi2_baseline\": %s, \"at_edge\": %s",
+                    "\"heldout_explained\": %s, \"chi2\": %s, \"chi2_baseline\": %s, \"at_edge\": %s, "
+                    "\"likelihood_ratio\": %s, \"lr_null_mean\": %s, \"lr_threshold\": %s, \"detected\": %s",
                  i ? "," : "", json_string(r.name).c_str(), num(r.explained, "%.4f").c_str(), num(r.score, "%.4f").c_str(),
                  num(r.magnitude).c_str(), num(r.heldout_explained, "%.4f").c_str(), num(r.chi2, "%.2f").c_str(),
-                 num(r.chi2_0, "%.2f").c_str(), r.at_edge ? "true" : "false");
+                 num(r.chi2_0, "%.2f").c_str(), r.at_edge ? "true" : "false", num(r.lr, "%.2f").c_str(),
+                 num(r.lr_null_mean, "%.3f").c_str(), num(r.lr_threshold, "%.2f").c_str(), r.detected ? "true" : "false");
     auto it = d.magnitude_note.find(r.name);
     if (it != d.magnitude_note.end()) std::fprintf(f, ", \"note\": %s", json_string(it->second).c_str());
     std::fprintf(f, "}");
@@ -214,10 +221,12 @@ void write_gap_report(const Diagnosis &d, const std::string &dir)
   std::fprintf(f, "Overall gap G (shared/formats/gap-metric.md): %.3f before, %.3f after%s.  \n", d.gap_before,
                d.gap_after, d.tested_effect.empty() ? " (nothing added)" : (" adding " + d.tested_effect + " on fresh seeds").c_str());
   std::fprintf(f, "Held-out speed %.4g cm/s: %.3f before, %.3f after.  \n", d.heldout_v0, d.heldout_before, d.heldout_after);
-  std::fprintf(f, "Gap significance: chi^2 = %.1f over %zu features, p = %.3g.", d.chi2_0, d.nfeatures, d.p_value);
+  std::fprintf(f, "Gap significance: chi^2 = %.1f over %zu features, p = %.3g%s.", d.chi2_0, d.nfeatures, d.p_value,
+               d.targeted ? " (not significant over all features; found along one candidate's signature, see Which)" : "");
   if (!d.tested_effect.empty())
-    std::fprintf(f, " With %s on fresh seeds: chi^2 = %.1f (%.0f%% of the excess removed).", d.tested_effect.c_str(),
-                 d.chi2_after, 100.0 * d.confirmed_fraction);
+    std::fprintf(f, " With %s on fresh seeds: chi^2 = %.1f (%.0f%% of the excess removed); the gap along its signature "
+                    "%.2f -> %.2f standard deviations.",
+                 d.tested_effect.c_str(), d.chi2_after, 100.0 * d.confirmed_fraction, d.proj_before, d.proj_after);
   std::fprintf(f, "\n\n");
   std::fprintf(f, "## Where\n\n| regime | observable | v0 (cm/s) | measured | simulated | z-score |\n|---|---|---|---|---|---|\n");
   for (const auto &w : d.where)
@@ -229,13 +238,21 @@ void write_gap_report(const Diagnosis &d, const std::string &dir)
                   "to the baseline's crossover depth, linear: beyond.\n\n");
   std::fprintf(f, "| regime | G before | G after |\n|---|---|---|\n");
   for (const auto &[reg, ba] : d.gap_by_regime) std::fprintf(f, "| %s | %.3f | %.3f |\n", reg.c_str(), ba.first, ba.second);
-  std::fprintf(f, "\n## Which\n\n| effect | magnitude | explained | held-out explained | chi^2 (baseline %.1f) |\n|---|---|---|---|---|\n",
+  std::fprintf(f, "\n## Which\n\n| effect | magnitude | explained | held-out explained | chi^2 (baseline %.1f) | "
+                  "likelihood ratio | its threshold |\n|---|---|---|---|---|---|---|\n",
                d.chi2_0);
   for (const auto &r : d.ranking) {
     auto it = d.magnitude_note.find(r.name);
-    std::fprintf(f, "| %s | %.4g%s%s | %.2f | %.2f | %.1f |\n", r.name.c_str(), r.magnitude, r.at_edge ? " (edge)" : "",
-                 it == d.magnitude_note.end() ? "" : (" (" + it->second + ")").c_str(), r.explained, r.heldout_explained, r.chi2);
+    std::fprintf(f, "| %s | %.4g%s%s | %.2f | %.2f | %.1f | %s%.1f%s | %.1f |\n", r.name.c_str(), r.magnitude,
+                 r.at_edge ? " (edge)" : "", it == d.magnitude_note.end() ? "" : (" (" + it->second + ")").c_str(),
+                 r.explained, r.heldout_explained, r.chi2, r.detected ? "**" : "", r.lr, r.detected ? "**" : "",
+                 r.lr_threshold);
   }
+  std::fprintf(f, "\nLikelihood ratio: -2 log of the likelihood at magnitude 0 over that at the fitted magnitude "
+                  "(a chi^2 with one degree of freedom without the effect, were the noise model exact); its threshold: "
+                  "%.2f (p = 1e-4) times the ratio's mean over %d null replicates (fresh baseline beds taken as the "
+                  "measurement), at least 1. Bold: above it.\n",
+               LR_CHI2_1_P1E4, d.n_null);
   std::fprintf(f, "\n## Notes\n\n");
   for (const auto &n : d.notes) std::fprintf(f, "- %s\n", n.c_str());
   std::fprintf(f, "\n## Figures\n\n");

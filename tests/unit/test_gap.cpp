@@ -152,11 +152,11 @@ TEST(GapFit, RecoversAKnownMagnitudeAndRanksTheRightEffect)
     t.err.push_back(er);
   }
   const EffectFit fa = fit_effect(t, A), fb = fit_effect(t, B);
-  // the fit minimises -2 log L: the prediction variance between knots pulls it slightly
-  EXPECT_NEAR(fa.magnitude, 1.4, 5e-3);
+  // least squares with fixed weights: exact on a noiseless target
+  EXPECT_NEAR(fa.magnitude, 1.4, 1e-6);
   EXPECT_GT(fa.explained, 0.95);
   EXPECT_GT(fa.heldout_explained, 0.95);
-  EXPECT_NEAR(fa.loso_magnitude[0], 1.4, 5e-3);
+  EXPECT_NEAR(fa.loso_magnitude[0], 1.4, 1e-6);
   EXPECT_LT(fb.explained, 0.2);
   EXPECT_FALSE(fa.at_edge);
   // a magnitude beyond the simulated range sits at its edge
@@ -181,6 +181,38 @@ TEST(GapFit, AnEffectThatFitsOneSpeedButNotTheOtherDoesNotPredictIt)
   const EffectFit f = fit_effect(t, A);
   EXPECT_LT(f.heldout_explained, 0.0);
   EXPECT_LT(f.score, 0.3);
+}
+
+TEST(GapFit, LikelihoodRatioOfASmallGapAlongOneSignature)
+{
+  // a gap of 0.3 of the first knot along A: small against the noise feature by feature
+  // (at most 0.3 * 2 * 10 / sqrt(2 * 0.5) = 6 sigma, most features far less), but its
+  // likelihood ratio is the signature's whole weight: sum (0.3 s sig)^2 / (0.5 + 0.5)
+  const std::vector<double> sa = {10, 8, 6, 4, 2, 0}, sb = {-3, 3, -3, 3, -3, 3};
+  const EffectData A = synthetic_effect("A", sa, 0.5), B = synthetic_effect("B", sb, 0.5);
+  Target t;
+  double expect = 0;
+  for (int s = 0; s < 2; ++s) {
+    std::vector<double> row, er;
+    for (std::size_t k = 0; k < sa.size(); ++k) {
+      row.push_back(100.0 + (s + 1) * 0.3 * sa[k]), er.push_back(0.5);
+      expect += std::pow((s + 1) * 0.3 * sa[k], 2) / 1.0;
+    }
+    t.mean.push_back(row);
+    t.err.push_back(er);
+  }
+  const EffectFit fa = fit_effect(t, A), fb = fit_effect(t, B);
+  EXPECT_NEAR(fa.lr, expect, 1e-6 * expect);
+  EXPECT_NEAR(effect_lr(t, A), fa.lr, 1e-9 * expect);
+  EXPECT_LT(fb.lr, 0.05 * fa.lr);    // B's signature is nearly orthogonal to A's (cosine -0.1)
+  // the threshold: 15.14 times the null mean, at least 15.14
+  EXPECT_NEAR(lr_threshold(0.2), LR_CHI2_1_P1E4, 1e-12);
+  EXPECT_NEAR(lr_threshold(3.0), 3.0 * LR_CHI2_1_P1E4, 1e-12);
+  EXPECT_NEAR(chi2_sf(LR_CHI2_1_P1E4, 1), 1e-4, 1e-6);
+  // no gap: no ratio
+  for (int s = 0; s < 2; ++s)
+    for (auto &x : t.mean[s]) x = 100.0;
+  EXPECT_LT(fit_effect(t, A).lr, 1e-9);
 }
 
 TEST(GapFit, ChiSquareTail)
