@@ -100,7 +100,7 @@ analyse_traces() {
   say "$preset: figures (granpen plot)"
   "$CLI" plot force "${v0set[@]}" --out "$o/fig" > /dev/null
   "$CLI" plot peak "${v0set[@]}" --alpha "$alpha" --out "$o/fig" > /dev/null
-  "$CLI" plot kz "$dir" --kz-zmin "$zmin" --out "$o/fig" > /dev/null
+  "$CLI" plot kz "${v0set[@]}" --kz-zmin "$zmin" --out "$o/fig" > /dev/null
   "$CLI" plot ratio "$dir" --alpha "$alpha" --tbin 0.25 --out "$o/fig" > /dev/null
 }
 

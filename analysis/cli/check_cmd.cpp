@@ -1,5 +1,6 @@
 // granpen check TRACE...: validate traces the way every granpen tool reads them.
 #include "subcommands.h"
+#include "trace_files.h"
 #include "trace_reader.h"
 
 #include <algorithm>
@@ -9,21 +10,25 @@
 int granpen::cli::check(int argc, char **argv)
 {
   if (argc < 1 || !std::strcmp(argv[0], "--help")) {
-    std::puts("usage: granpen check TRACE...\n"
+    std::puts("usage: granpen check TRACE-OR-FOLDER...\n"
+              "A folder stands for every *.csv in it (as for fit, collapse and gap).\n"
               "Reads each trace as every granpen tool does, rejecting malformed input with the\n"
               "file and line, and prints: units, v0, D, g, rows, depth range and largest F (cgs).\n"
               "Exit status 0 when every file is valid, 1 otherwise.");
     return argc < 1 ? 2 : 0;
   }
-  int bad = 0;
-  for (int i = 0; i < argc; ++i) {
+  std::vector<std::string> problems;
+  const auto files = expand_trace_paths(std::vector<std::string>(argv, argv + argc), problems);
+  for (const auto &m : problems) std::fprintf(stderr, "granpen check: %s\n", m.c_str());
+  int bad = (int) problems.size();
+  for (const auto &file : files) {
     try {
-      auto tr = to_cgs(read_trace(argv[i]));
+      auto tr = to_cgs(read_trace(file));
       double fmax = 0.0;
       for (double f : tr.F) fmax = std::max(fmax, f);
       std::printf("%s: ok: v0 = %g cm/s, D = %g cm, g = %g cm/s^2, %zu rows, z from %.4g to %.4g cm, "
                   "max F = %.6g dyne\n",
-                  argv[i], tr.v0, tr.D, tr.g, tr.t.size(), tr.z.front(), tr.z.back(), fmax);
+                  file.c_str(), tr.v0, tr.D, tr.g, tr.t.size(), tr.z.front(), tr.z.back(), fmax);
     } catch (InputError &e) {
       std::fprintf(stderr, "granpen check: %s\n", e.what());
       ++bad;
