@@ -114,8 +114,8 @@ if ls "$DUMPS/$push.csv".*.dump.gz > /dev/null 2>&1; then
   mkdir -p "$o"
   dumps=("$DUMPS/$push.csv".*.dump.gz)
   say "mid flow: ${#dumps[@]} frames (granpen flow, granpen momentum)"
-  # the steady part of the push: the tip 2 cm or more into the bed
-  "$CLI" flow "${dumps[@]}" --trace "$DUMPS/$push.csv" --out "$o" > "$o/flow.txt"
+  # --rod-cells: the rod's spheres bound the grains' Voronoi cells (phi at the rod edge)
+  "$CLI" flow "${dumps[@]}" --trace "$DUMPS/$push.csv" --rod-cells --out "$o" > "$o/flow.txt"
   "$CLI" momentum "${dumps[@]}" --trace "$DUMPS/$push.csv" --out "$OUT/mid/momentum" > "$OUT/mid/momentum.txt"
   "$CLI" plot flow "$o" --out "$o/fig" > /dev/null
   "$CLI" plot momentum "$OUT/mid/momentum" --out "$OUT/mid/momentum/fig" > /dev/null

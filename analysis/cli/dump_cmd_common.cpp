@@ -81,7 +81,8 @@ void extract_frame(const DumpFrame &f, const RodOptions &ro, const ColumnChoice 
   g.axis_y = ro.have_axis ? ro.axis_y : g.rod.axis_y;
   g.tip = ro.have_tip ? ro.tip : g.rod.tip;
 
-  for (auto *v : {&g.x, &g.y, &g.z, &g.vx, &g.vy, &g.vz, &g.radius, &g.mass, &g.vor, &g.sxx, &g.syy, &g.szz})
+  for (auto *v : {&g.x, &g.y, &g.z, &g.vx, &g.vy, &g.vz, &g.radius, &g.mass, &g.vor, &g.sxx, &g.syy, &g.szz,
+                  &g.rod_x, &g.rod_y, &g.rod_z, &g.rod_radius})
     v->clear();
   g.is_rod.assign(n, 0);
   g.have_vor = V != nullptr;
@@ -89,6 +90,7 @@ void extract_frame(const DumpFrame &f, const RodOptions &ro, const ColumnChoice 
   for (std::size_t i = 0; i < n; ++i) {
     if (std::lround(type[i]) == ro.rod_type) {
       g.is_rod[i] = 1;
+      g.rod_x.push_back(X[i]), g.rod_y.push_back(Y[i]), g.rod_z.push_back(Z[i]), g.rod_radius.push_back(R[i]);
       continue;
     }
     if (!(R[i] > 0.0))

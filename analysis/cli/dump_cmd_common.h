@@ -45,6 +45,7 @@ struct GrainFrame {
   double period_x = 0.0, period_y = 0.0;
   std::vector<double> x, y, z, vx, vy, vz, radius, mass, vor, sxx, syy, szz;
   std::vector<char> is_rod;          // per atom of the frame
+  std::vector<double> rod_x, rod_y, rod_z, rod_radius;    // the rod atoms
   RodPosition rod;                   // from the rod atoms (found = false without any)
   double axis_x = 0.0, axis_y = 0.0, tip = 0.0;    // used: rod atoms or options
   bool have_vor = false, have_stress = false;

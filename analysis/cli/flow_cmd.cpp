@@ -72,6 +72,9 @@ const char *HELP =
     "  --voronoi WHAT     auto (default: column c_vor[1] if the dump has it, else voro++),\n"
     "                     a column name, voro++ (tessellate each frame, as compute\n"
     "                     flow/azimuthal voronoi voro++ does) or none\n"
+    "  --rod-cells        with voro++: the rod's spheres take part in the tessellation, so\n"
+    "                     that the grains' cells end at the rod surface instead of reaching\n"
+    "                     into the rod (phi next to the rod; the compute does not do this)\n"
     "  --stress WHAT      auto (default: columns c_stress[1..3] if present), a compute ID\n"
     "                     (columns c_ID[1] c_ID[2] c_ID[3] of compute stress/atom), or none\n"
     "  --periodic AXES    periodic box directions among x, y: xy (default), x, y or none\n"
@@ -128,7 +131,7 @@ int granpen::cli::flow(int argc, char **argv)
       {"--dg", 1}, {"--rho", 1}, {"--v0", 1}, {"--g", 1}, {"--zs", 1}, {"--dr", 1}, {"--dz", 1},
       {"--rmax", 1}, {"--zlo", 1}, {"--zhi", 1}, {"--voronoi", 1}, {"--stress", 1}, {"--periodic", 1},
       {"--profile-radius", 1}, {"--strip", 2}, {"--annulus", 2}, {"--annulus-top", 1}, {"--edge", 2},
-      {"--steps", 1}};
+      {"--steps", 1}, {"--rod-cells", 0}};
   ParsedArgs args;
   std::string msg;
   if (!parse_args(argc, argv, spec, args, msg)) return usage_error(msg);
@@ -145,6 +148,7 @@ int granpen::cli::flow(int argc, char **argv)
   const std::string out_dir = args.value("--out", ".");
   if (out_dir.empty()) return usage_error("--out needs a folder");
   const std::string vor_opt = args.value("--voronoi", "auto");
+  const bool rod_cells = args.has("--rod-cells");
   const std::string stress_opt = args.value("--stress", "auto");
   const std::string periodic = args.value("--periodic", "xy");
   bool px, py;
@@ -197,7 +201,8 @@ int granpen::cli::flow(int argc, char **argv)
                          " (--voronoi)");
       cols.voronoi = vor_opt;
     }
-    vor_source = voro ? "voro++" : cols.voronoi.empty() ? "none" : "column " + cols.voronoi;
+    vor_source = voro ? (rod_cells ? "voro++ (the rod's spheres as neighbours)" : "voro++")
+                      : cols.voronoi.empty() ? "none" : "column " + cols.voronoi;
     if (stress_opt != "none") {
       const std::string id = stress_opt == "auto" ? "stress" : stress_opt;
       bool all = true;
@@ -309,7 +314,14 @@ int granpen::cli::flow(int argc, char **argv)
         box.periodic[0] = px, box.periodic[1] = py, box.periodic[2] = false;
         VoronoiInfo info;
         try {
-          g.vor = voronoi_volumes(g.x.data(), g.y.data(), g.z.data(), g.radius.data(), g.grains(), box, nullptr, &info);
+          if (rod_cells && !g.rod_x.empty()) {
+            g.vor = voronoi_volumes_among(g.x.data(), g.y.data(), g.z.data(), g.radius.data(), g.grains(),
+                                          g.rod_x.data(), g.rod_y.data(), g.rod_z.data(), g.rod_radius.data(),
+                                          g.rod_x.size(), box, &info);
+          } else {
+            g.vor = voronoi_volumes(g.x.data(), g.y.data(), g.z.data(), g.radius.data(), g.grains(), box, nullptr,
+                                    &info);
+          }
         } catch (std::invalid_argument &e) {
           throw InputError(g.where + ": " + e.what());
         }

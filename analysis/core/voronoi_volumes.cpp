@@ -96,4 +96,19 @@ std::vector<double> voronoi_volumes(const double *x, const double *y, const doub
   return vol;
 }
 
+std::vector<double> voronoi_volumes_among(const double *x, const double *y, const double *z,
+                                          const double *radius, std::size_t n, const double *ox,
+                                          const double *oy, const double *oz, const double *oradius,
+                                          std::size_t m, const VoronoiBox &box, VoronoiInfo *info)
+{
+  std::vector<double> X(x, x + n), Y(y, y + n), Z(z, z + n), R(radius, radius + n);
+  X.insert(X.end(), ox, ox + m), Y.insert(Y.end(), oy, oy + m), Z.insert(Z.end(), oz, oz + m);
+  R.insert(R.end(), oradius, oradius + m);
+  std::vector<char> wanted(n + m, 0);
+  std::fill(wanted.begin(), wanted.begin() + static_cast<long>(n), 1);
+  auto v = voronoi_volumes(X.data(), Y.data(), Z.data(), R.data(), n + m, box, &wanted, info);
+  v.resize(n);
+  return v;
+}
+
 }    // namespace granpen

@@ -40,6 +40,14 @@ std::vector<double> voronoi_volumes(const double *x, const double *y, const doub
                                     const std::vector<char> *wanted = nullptr,
                                     VoronoiInfo *info = nullptr);
 
+// The same for n grains among m obstacles (the rod's spheres): the obstacles take part in
+// the tessellation, so that the grains' cells end at the radical planes to them instead of
+// reaching into the rod; only the grains' cells are computed (size n).
+std::vector<double> voronoi_volumes_among(const double *x, const double *y, const double *z,
+                                          const double *radius, std::size_t n, const double *ox,
+                                          const double *oy, const double *oz, const double *oradius,
+                                          std::size_t m, const VoronoiBox &box, VoronoiInfo *info = nullptr);
+
 }    // namespace granpen
 
 #endif

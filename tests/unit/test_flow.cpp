@@ -345,6 +345,35 @@ TEST(Voronoi, RadicalCellsOfTwoSizesTileThePeriodicBox)
   EXPECT_THROW(voronoi_volumes(g.x.data(), g.y.data(), g.z.data(), g.radius.data(), g.size(), bad), std::invalid_argument);
 }
 
+TEST(Voronoi, ObstaclesBoundTheGrainsCells)
+{
+  // the grains' cells among obstacles are the grains' cells of the whole tessellation (the
+  // obstacles as particles), and with the obstacles' cells they tile the periodic box; the
+  // grains next to an obstacle lose volume to it
+  Grains g = random_grains(1500, 6.0, 6.0, 11);
+  const std::size_t m = 20, n = g.size() - m;    // the last 20 act as obstacles
+  VoronoiBox box;
+  box.hi[0] = box.hi[1] = box.hi[2] = 6.0;
+  box.periodic[2] = true;
+  const auto all = voronoi_volumes(g.x.data(), g.y.data(), g.z.data(), g.radius.data(), g.size(), box);
+  VoronoiInfo info;
+  const auto v = voronoi_volumes_among(g.x.data(), g.y.data(), g.z.data(), g.radius.data(), n, g.x.data() + n,
+                                       g.y.data() + n, g.z.data() + n, g.radius.data() + n, m, box, &info);
+  ASSERT_EQ(v.size(), n);
+  EXPECT_EQ(info.cells, n);
+  double sum = 0.0, obstacles = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    EXPECT_NEAR(v[i], all[i], 1e-12 * all[i]);
+    sum += v[i];
+  }
+  for (std::size_t i = n; i < g.size(); ++i) obstacles += all[i];
+  EXPECT_NEAR(sum + obstacles, 216.0, 1e-9 * 216.0);
+  const auto alone = voronoi_volumes(g.x.data(), g.y.data(), g.z.data(), g.radius.data(), n, box);
+  double sum_alone = 0.0;
+  for (double c : alone) sum_alone += c;
+  EXPECT_NEAR(sum_alone, 216.0, 1e-9 * 216.0);    // without them the grains fill the box
+}
+
 // ---------------------------------------------------------------- rod frame
 
 TEST(RodFrame, FindsAxisTipAndDiameterAcrossThePeriodicBoundary)
