@@ -58,6 +58,19 @@ analyse_traces() {
   say "$preset: bed packing fractions"
   put "$preset.phi_0 = $(grep -h '^phi_0' "$dir"/bed_*.info | awk '{print $3}' | stats)  # bed .info files, mu = 0.3"
 
+  if [ -f "$dir/manifest.json" ]; then
+    say "$preset: cost of each run (the sweep's manifest: wall seconds, two runs at a time on 2 cores)"
+    awk -v preset="$preset" '/"kind": "(pour|push)"/ {
+        match($0, /"kind": "[a-z]*"/); kind = substr($0, RSTART + 9, RLENGTH - 10)
+        key = kind
+        if (kind == "push") { n = split("v0 g D", f, " ")
+          for (i = 1; i <= n; i++) { match($0, "\"" f[i] "\": \"[0-9.]*\""); v = substr($0, RSTART, RLENGTH)
+            sub(/^.*: "/, "", v); sub(/"$/, "", v); key = key "." (f[i] == "v0" ? "v" : f[i]) v } }
+        match($0, /"wall_seconds_run": [0-9.]+/); w = substr($0, RSTART + 20, RLENGTH - 20)
+        s[key] += w; c[key]++ }
+      END { for (k in s) printf "%s.cost.%s = %.0f s n = %d  # wall seconds per run, the sweep manifest\n", preset, k, s[k] / c[k], c[k] }' \
+      "$dir/manifest.json" | sort -t= -k1,1 -V | tee -a "$NUM"
+  fi
   say "$preset: linear fits (granpen fit)"
   "$CLI" fit "$dir" --zmin "$zmin" --csv "$o/fit_z$zmin.csv" > "$o/fit_z$zmin.txt"
   "$CLI" fit "$dir" --tmin 1 --csv "$o/fit_deep.csv" > "$o/fit_deep.txt"
@@ -114,32 +127,38 @@ if ls "$DUMPS/$push.csv".*.dump.gz > /dev/null 2>&1; then
   mkdir -p "$o"
   dumps=("$DUMPS/$push.csv".*.dump.gz)
   say "mid flow: ${#dumps[@]} frames (granpen flow, granpen momentum)"
-  # --rod-cells: the rod's spheres bound the grains' Voronoi cells (phi at the rod edge)
-  "$CLI" flow "${dumps[@]}" --trace "$DUMPS/$push.csv" --rod-cells --out "$o" > "$o/flow.txt"
-  "$CLI" momentum "${dumps[@]}" --trace "$DUMPS/$push.csv" --out "$OUT/mid/momentum" > "$OUT/mid/momentum.txt"
-  "$CLI" plot flow "$o" --out "$o/fig" > /dev/null
-  "$CLI" plot momentum "$OUT/mid/momentum" --out "$OUT/mid/momentum/fig" > /dev/null
-  # surface flux: v_z of the strip 0.5-1.5 cm from the shaft in the top grain layer, frame by
-  # frame, against t~ (granpen flow on each frame alone, no tessellation)
+  # per frame first (granpen flow on each frame alone, no tessellation): its timestep, the
+  # tip's depth and t~, and the surface flux: v_z of the strip 0.5-1.5 cm from the shaft in
+  # the top grain layer
   sf=$OUT/mid/surface_flux.csv
-  echo "t_tilde,z_tip,vz_surface" > "$sf.partial"
+  echo "timestep,t_tilde,z_tip,vz_surface" > "$sf.partial"
   for d in "${dumps[@]}"; do
     "$CLI" flow "$d" --trace "$DUMPS/$push.csv" --voronoi none --out "$OUT/mid/.frame" > /dev/null 2>&1
+    ts=$(grep -o '"timestep": [0-9]*' "$OUT/mid/.frame/flow.json" | tail -1 | awk '{print $2}')
     tt=$(grep -o '"t_tilde": [-0-9.e+]*' "$OUT/mid/.frame/flow.json" | tail -1 | awk '{print $2}')
     zt=$(grep -o '"z_tip": [-0-9.e+]*' "$OUT/mid/.frame/flow.json" | tail -1 | awk '{print $2}')
     vz=$(awk -F, 'NR > 1 && $1 < 0 { last = $2 } END { print last }' "$OUT/mid/.frame/flow_strip.csv")
-    echo "$tt,$zt,$vz" >> "$sf.partial"
+    echo "$ts,$tt,$zt,$vz" >> "$sf.partial"
   done
   rm -rf "$OUT/mid/.frame"
   mv "$sf.partial" "$sf"
+  # the fields, the profile below the rod and the edge over the frames with the tip 1 to 4 cm
+  # deep: past the impact, and at least 4 cm (13 grains) above the floor, which would stop
+  # the flow below the rod and shorten its decay
+  steps=$(awk -F, 'NR > 1 && $3 >= 1 && $3 <= 4 { if (!a) a = $1; b = $1 } END { print a ":" b }' "$sf")
+  # --rod-cells: the rod's spheres bound the grains' Voronoi cells (phi at the rod edge)
+  "$CLI" flow "${dumps[@]}" --trace "$DUMPS/$push.csv" --rod-cells --steps "$steps" --out "$o" > "$o/flow.txt"
+  "$CLI" momentum "${dumps[@]}" --trace "$DUMPS/$push.csv" --out "$OUT/mid/momentum" > "$OUT/mid/momentum.txt"
+  "$CLI" plot flow "$o" --out "$o/fig" > /dev/null
+  "$CLI" plot momentum "$OUT/mid/momentum" --out "$OUT/mid/momentum/fig" > /dev/null
   fj=$o/flow.json
   lam=$(grep -o '"lambda_vz": {[^}]*}' "$fj")
-  put "mid.lambda_vz_D = $(echo "$lam" | grep -o '"lambda_D": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$lam" | grep -o '"lambda_D_se": [-0-9.e+]*' | awk '{print $2}')  # granpen flow, every frame pooled"
+  put "mid.lambda_vz_D = $(echo "$lam" | grep -o '"lambda_D": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$lam" | grep -o '"lambda_D_se": [-0-9.e+]*' | awk '{print $2}')  # granpen flow --steps $steps (tip 1 to 4 cm deep)"
   edge=$(grep -o '"edge": {"points"[^}]*}' "$fj")
   put "mid.edge_phi_0 = $(echo "$edge" | grep -o '"phi_0": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$edge" | grep -o '"phi_0_se": [-0-9.e+]*' | awk '{print $2}')  # phi = phi_0 + b I at the rod edge"
   put "mid.edge_slope = $(echo "$edge" | grep -o '"slope": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$edge" | grep -o '"slope_se": [-0-9.e+]*' | awk '{print $2}')"
   # the first frame after which the surface v_z stays negative (flowing down) once it was positive
-  put "mid.surface_flux_sign_change_t = $(awk -F, 'NR > 1 && $2 > 0 { if ($3 > 0) up = 1; if (up && $3 < 0 && !t) t = $1; if ($3 > 0) t = 0 }
+  put "mid.surface_flux_sign_change_t = $(awk -F, 'NR > 1 && $3 > 0 { if ($4 > 0) up = 1; if (up && $4 < 0 && !t) t = $2; if ($4 > 0) t = 0 }
       END { print (t ? t : "undefined") }' "$sf")  # t~ of the last sign change of v_z (up -> down) at the surface, strip 0.5-1.5 cm from the shaft"
   mj=$OUT/mid/momentum/momentum.json
   put "mid.drag_over_mu_g_Mmove = $(grep -o '"k": [-0-9.e+]*' "$mj" | head -1 | awk '{print $2}') +- $(grep -o '"k_se": [-0-9.e+]*' "$mj" | head -1 | awk '{print $2}')  # F = k mu g M(v_z > v0/320), granpen momentum"
