@@ -127,25 +127,16 @@ if ls "$DUMPS/$push.csv".*.dump.gz > /dev/null 2>&1; then
   mkdir -p "$o"
   dumps=("$DUMPS/$push.csv".*.dump.gz)
   say "mid flow: ${#dumps[@]} frames (granpen flow, granpen momentum)"
-  # per frame first (granpen flow on each frame alone, no tessellation): its timestep, the
-  # tip's depth and t~, and the surface flux: v_z of the strip 0.5-1.5 cm from the shaft in
-  # the top grain layer
-  sf=$OUT/mid/surface_flux.csv
-  echo "timestep,t_tilde,z_tip,vz_surface" > "$sf.partial"
-  for d in "${dumps[@]}"; do
-    "$CLI" flow "$d" --trace "$DUMPS/$push.csv" --voronoi none --out "$OUT/mid/.frame" > /dev/null 2>&1
-    ts=$(grep -o '"timestep": [0-9]*' "$OUT/mid/.frame/flow.json" | tail -1 | awk '{print $2}')
-    tt=$(grep -o '"t_tilde": [-0-9.e+]*' "$OUT/mid/.frame/flow.json" | tail -1 | awk '{print $2}')
-    zt=$(grep -o '"z_tip": [-0-9.e+]*' "$OUT/mid/.frame/flow.json" | tail -1 | awk '{print $2}')
-    vz=$(awk -F, 'NR > 1 && $1 < 0 { last = $2 } END { print last }' "$OUT/mid/.frame/flow_strip.csv")
-    echo "$ts,$tt,$zt,$vz" >> "$sf.partial"
-  done
-  rm -rf "$OUT/mid/.frame"
-  mv "$sf.partial" "$sf"
+  # every frame without tessellation first: the tip's depth per frame, and the surface flux
+  # (v_z of the top grain layer 0.5-1.5 cm from the shaft) against t~ with its sign change
+  "$CLI" flow "${dumps[@]}" --trace "$DUMPS/$push.csv" --voronoi none --out "$OUT/mid/surface" > "$OUT/mid/surface.txt"
+  "$CLI" plot flow "$OUT/mid/surface" --out "$OUT/mid/surface/fig" > /dev/null
+  tips=$(grep -o '"timestep": [0-9]*, "where": "[^"]*", "grains": [0-9]*, "rod_atoms": [0-9]*, "tip": [-0-9.e+]*, "z_tip": [-0-9.e+]*' \
+         "$OUT/mid/surface/flow.json" | awk '{ gsub(/,/, ""); print $2, $12 }')
   # the fields, the profile below the rod and the edge over the frames with the tip 1 to 4 cm
   # deep: past the impact, and at least 4 cm (13 grains) above the floor, which would stop
   # the flow below the rod and shorten its decay
-  steps=$(awk -F, 'NR > 1 && $3 >= 1 && $3 <= 4 { if (!a) a = $1; b = $1 } END { print a ":" b }' "$sf")
+  steps=$(echo "$tips" | awk '$2 >= 1 && $2 <= 4 { if (!a) a = $1; b = $1 } END { print a ":" b }')
   # --rod-cells: the rod's spheres bound the grains' Voronoi cells (phi at the rod edge)
   "$CLI" flow "${dumps[@]}" --trace "$DUMPS/$push.csv" --rod-cells --steps "$steps" --out "$o" > "$o/flow.txt"
   "$CLI" momentum "${dumps[@]}" --trace "$DUMPS/$push.csv" --out "$OUT/mid/momentum" > "$OUT/mid/momentum.txt"
@@ -157,9 +148,7 @@ if ls "$DUMPS/$push.csv".*.dump.gz > /dev/null 2>&1; then
   edge=$(grep -o '"edge": {"points"[^}]*}' "$fj")
   put "mid.edge_phi_0 = $(echo "$edge" | grep -o '"phi_0": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$edge" | grep -o '"phi_0_se": [-0-9.e+]*' | awk '{print $2}')  # phi = phi_0 + b I at the rod edge"
   put "mid.edge_slope = $(echo "$edge" | grep -o '"slope": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$edge" | grep -o '"slope_se": [-0-9.e+]*' | awk '{print $2}')"
-  # the first frame after which the surface v_z stays negative (flowing down) once it was positive
-  put "mid.surface_flux_sign_change_t = $(awk -F, 'NR > 1 && $3 > 0 { if ($4 > 0) up = 1; if (up && $4 < 0 && !t) t = $2; if ($4 > 0) t = 0 }
-      END { print (t ? t : "undefined") }' "$sf")  # t~ of the last sign change of v_z (up -> down) at the surface, strip 0.5-1.5 cm from the shaft"
+  put "mid.surface_flux_sign_change_t = $(grep -o '"crossing_t_tilde": [-0-9.e+a-z]*' "$OUT/mid/surface/flow.json" | awk '{print $2}')  # granpen flow: t~ where v_z of the strip's top grain layer (0.5-1.5 cm from the shaft) last turns from up to down"
   mj=$OUT/mid/momentum/momentum.json
   put "mid.drag_over_mu_g_Mmove = $(grep -o '"k": [-0-9.e+]*' "$mj" | head -1 | awk '{print $2}') +- $(grep -o '"k_se": [-0-9.e+]*' "$mj" | head -1 | awk '{print $2}')  # F = k mu g M(v_z > v0/320), granpen momentum"
 else

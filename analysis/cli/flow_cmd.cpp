@@ -43,13 +43,16 @@ const char *HELP =
     "  edge     per frame with the tip in the bed, phi and I of the bins at the rod's bottom\n"
     "           edge (r = R, z = 0), and the fit phi = phi_0 + b I (paper: phi = 0.57 - 0.35 I)\n"
     "  strip    v_z against height above the bed surface, 0.5 to 1.5 cm from the shaft\n"
+    "  surface  per frame, v_z of the strip's top grain layer (one dz below the surface)\n"
+    "           against t~, and the t~ where it last turns from up to down (paper: 1)\n"
     "  annulus  per frame, phi, v_z and T for r = 2 to 3 cm between 0.5 cm below the bed\n"
     "           surface and the tip, against t~ = (z_tip / v0) sqrt(g / D)\n"
     "The rod is found in each frame from its atoms: axis = mean x, y, tip = lowest z - radius.\n"
     "Outputs in DIR (default .): flow.json (every fitted number with its error),\n"
     "flow_fields.csv (r,z,count,phi,phi_centre,vr,vz,T,gammadot,p,I),\n"
     "flow_profile_below.csv (z,vz,vz_se,phi), flow_edge_phi_I.csv (I,phi),\n"
-    "flow_strip.csv (z,vz), flow_annulus.csv (t_tilde,z_tip,phi,vz,T).\n"
+    "flow_strip.csv (z,vz), flow_annulus.csv (t_tilde,z_tip,phi,vz,T),\n"
+    "flow_surface.csv (t_tilde,z_tip,vz,grains).\n"
     "options:\n"
     "  --trace FILE       the push's force trace: v0, D, g, d_g, rho_g and the bed surface\n"
     "                     (key surface) from its header\n"
@@ -100,6 +103,8 @@ struct FrameRecord {
   bool annulus = false;
   SliceBin ann;
   double ann_phi = 0;
+  double surface_vz = 0;    // the near-shaft strip's top grain layer (dz below z_s)
+  std::size_t surface_grains = 0;
 };
 
 std::string fit_json(const ExpFit &f, double D)
@@ -347,6 +352,12 @@ int granpen::cli::flow(int argc, char **argv)
       AxisFrame lab = tipf;
       lab.zref = zs;
       strip.add(ga, lab);
+      {
+        SliceAccumulator top(SliceSpec{R + strip1, R + strip2, -grid.dz, 0.0, grid.dz});
+        top.add(ga, lab);
+        rec.surface_grains = (std::size_t) top.bins()[0].samples;
+        rec.surface_vz = top.bins()[0].vz;
+      }
       const double ztop = zs - ann_top;
       if (ztop > g.tip) {
         SliceAccumulator ann(SliceSpec{ann1, ann2, 0.0, ztop - g.tip, ztop - g.tip});
@@ -399,7 +410,7 @@ int granpen::cli::flow(int argc, char **argv)
     }
 
     // ---- tables
-    std::ostringstream fields_csv, below_csv, edge_csv, strip_csv, ann_csv, json;
+    std::ostringstream fields_csv, below_csv, edge_csv, strip_csv, ann_csv, surf_csv, json;
     fields_csv << "r,z,count,phi,phi_centre,vr,vz,T,gammadot,p,I\n";
     for (const auto &b : F.bins)
       fields_csv << csv_num(b.r) << ',' << csv_num(b.z) << ',' << csv_num(b.count) << ',' << csv_num(b.phi_voronoi)
@@ -416,6 +427,17 @@ int granpen::cli::flow(int argc, char **argv)
     std::size_t strip_rows = 0;
     for (const auto &b : strip.bins())
       if (b.samples > 0) strip_csv << csv_num(b.z) << ',' << csv_num(b.vz) << '\n', ++strip_rows;
+    // the surface flux against t~, over the frames with the tip in the bed, and where it
+    // turns from up to down
+    surf_csv << "t_tilde,z_tip,vz,grains\n";
+    std::vector<double> st, sv;
+    for (const auto &r : records)
+      if (r.z_tip > 0.0 && r.surface_grains > 0 && std::isfinite(r.t_tilde)) {
+        surf_csv << csv_num(r.t_tilde) << ',' << csv_num(r.z_tip) << ',' << csv_num(r.surface_vz) << ','
+                 << r.surface_grains << '\n';
+        st.push_back(r.t_tilde), sv.push_back(r.surface_vz);
+      }
+    const double surf_cross = last_down_crossing(st, sv);
     ann_csv << "t_tilde,z_tip,phi,vz,T\n";
     std::size_t ann_rows = 0;
     for (const auto &r : records)
@@ -456,6 +478,8 @@ int granpen::cli::flow(int argc, char **argv)
          << ", \"n\": " << edge_fit.n << ", \"note\": " << json_string(edge_note)
          << "}, \"paper\": {\"phi_0\": 0.57, \"slope\": -0.35}},\n"
          << "  \"strip\": {\"bins\": " << strip_rows << ", \"z\": \"height above the bed surface\"},\n"
+         << "  \"surface\": {\"frames\": " << st.size() << ", \"crossing_t_tilde\": "
+         << (std::isfinite(surf_cross) ? js(surf_cross) : "null") << ", \"paper_t_tilde\": 1},\n"
          << "  \"annulus\": {\"frames\": " << ann_rows << ", \"phi\": "
          << json_string(phi_vor ? "voronoi" : "centre") << "},\n  \"frames\": [";
     for (std::size_t k = 0; k < records.size(); ++k) {
@@ -494,18 +518,24 @@ int granpen::cli::flow(int argc, char **argv)
       std::printf("  rod edge: %zu frames, phi(I) fit undefined (%s)\n", eI.size(), edge_note.c_str());
     std::printf("  strip %g-%g from the shaft: %zu bins; annulus r %g-%g: %zu frames\n", strip1, strip2, strip_rows,
                 ann1, ann2, ann_rows);
+    if (std::isfinite(surf_cross))
+      std::printf("  surface flux (top layer of the strip): up to down at t~ = %.3f over %zu frames (paper: 1)\n",
+                  surf_cross, st.size());
+    else
+      std::printf("  surface flux (top layer of the strip): no change from up to down over %zu frames\n", st.size());
     for (const auto &n : notes) std::printf("  note: %s\n", n.c_str());
 
     std::vector<std::pair<std::string, std::string>> files = {
         {"flow.json", json.str()},          {"flow_fields.csv", fields_csv.str()},
         {"flow_profile_below.csv", below_csv.str()}, {"flow_edge_phi_I.csv", edge_csv.str()},
-        {"flow_strip.csv", strip_csv.str()}, {"flow_annulus.csv", ann_csv.str()}};
+        {"flow_strip.csv", strip_csv.str()}, {"flow_annulus.csv", ann_csv.str()},
+        {"flow_surface.csv", surf_csv.str()}};
     if (!write_outputs(out_dir, files, msg)) {
       std::fprintf(stderr, "granpen flow: %s\n", msg.c_str());
       return 1;
     }
     std::printf("wrote %s/{flow.json, flow_fields.csv, flow_profile_below.csv, flow_edge_phi_I.csv, "
-                "flow_strip.csv, flow_annulus.csv}\n", out_dir.c_str());
+                "flow_strip.csv, flow_annulus.csv, flow_surface.csv}\n", out_dir.c_str());
   } catch (std::exception &e) {    // InputError names file:line
     std::fprintf(stderr, "granpen flow: %s\n", e.what());
     return 1;

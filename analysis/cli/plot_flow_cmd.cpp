@@ -403,6 +403,54 @@ void flow_strip(const std::string &dir, Run &run)
   run.make(series_figure(fig));
 }
 
+// ---------------------------------------------------------------- surface flux against t~
+
+void flow_surface(const std::string &dir, Run &run)
+{
+  CsvTable t;
+  if (!open_table(dir, "flow_surface.csv", {"t_tilde", "vz"}, run, t)) return;
+  std::vector<double> tt, vz;
+  try {
+    tt = t.numbers("t_tilde"), vz = t.numbers("vz");
+  } catch (InputError &e) {
+    run.problems.push_back(e.what());
+    return;
+  }
+  const double cross = last_down_crossing(tt, vz);
+  SeriesPanel p;
+  p.xlabel = "t̃ = (z/v_0) √(g/D)";
+  p.ylabel = "v_z of the surface grains (cm/s; > 0 up)";
+  p.key = "bottom left";
+  // one label when the two lines nearly coincide (they would overprint)
+  const bool near = std::isfinite(cross) && std::abs(cross - 1.0) < 0.25;
+  PlotVLine paper;
+  paper.x = 1, paper.label = near ? "" : "t̃ = 1 (paper)";
+  p.vlines.push_back(paper);
+  if (std::isfinite(cross)) {
+    PlotVLine c;
+    c.x = cross, c.colour = "#b03030", c.dash = 2;
+    c.label = "  up → down at t̃ = " + fmt("%.2f", cross) + (near ? " (paper: 1)" : "");
+    p.vlines.push_back(c);
+  }
+  PlotGuide zero;
+  zero.expression = "0", zero.title = "", zero.dash = 1, zero.line_width = 1.0;
+  p.guides.push_back(zero);
+  PlotSeries s;
+  s.style = "linespoints", s.colour = plot_colour(0), s.point_size = 0.9, s.title = "top grain layer, 0.5–1.5 cm from the shaft";
+  s.x = tt, s.y = vz;
+  p.series.push_back(s);
+  SeriesFigure fig;
+  fig.name = "flow_surface";
+  fig.title = "Surface flux next to the rod: " +
+              (std::isfinite(cross) ? "turns from up to down at t̃ = " + fmt("%.2f", cross) : std::string("no sign change"));
+  fig.about = "granpen plot flow: v_z of the near-shaft strip's top grain layer per frame (" + t.path +
+              ") against t~ = (z/v0) sqrt(g/D); the paper sees it cross 0 at t~ = 1.";
+  fig.width = 900, fig.height = 620;
+  fig.panels = {p};
+  run.make(series_figure(fig));
+  run.numbers.push_back("\"surface_crossing_t_tilde\": " + (std::isfinite(cross) ? fmt("%.6g", cross) : std::string("null")));
+}
+
 // ---------------------------------------------------------------- annulus means against t~
 
 void flow_annulus(const std::string &dir, Run &run)
@@ -624,9 +672,10 @@ void plot_flow(const std::vector<std::string> &inputs, Run &run)
   flow_phi_I(dir, run);
   flow_strip(dir, run);
   flow_annulus(dir, run);
+  flow_surface(dir, run);
   if (run.figures.empty() && run.problems.empty())
     run.problems.push_back(dir + ": none of flow_fields.csv, flow_profile_below.csv, flow_edge_phi_I.csv, flow_strip.csv, "
-                                 "flow_annulus.csv is there (granpen flow --out writes them)");
+                                 "flow_annulus.csv, flow_surface.csv is there (granpen flow --out writes them)");
 }
 
 void plot_momentum(const std::vector<std::string> &inputs, Run &run)

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
@@ -355,6 +356,14 @@ EdgeAverage edge_average(const FlowFields &f, double R, double wr, double wz)
     e.p /= e.mass;
   }
   return e;
+}
+
+double last_down_crossing(const std::vector<double> &t, const std::vector<double> &v)
+{
+  double at = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t i = 0; i + 1 < std::min(t.size(), v.size()); ++i)
+    if (v[i] > 0.0 && v[i + 1] <= 0.0) at = t[i] + v[i] / (v[i] - v[i + 1]) * (t[i + 1] - t[i]);
+  return at;
 }
 
 }    // namespace granpen

@@ -154,6 +154,11 @@ struct EdgeAverage {
 };
 EdgeAverage edge_average(const FlowFields &f, double R, double wr, double wz);
 
+// ---- the surface flux's sign change: the time t (linearly interpolated) where v, sampled
+// at increasing t, last goes from positive to zero or below (paper: the near-shaft surface
+// grains stop rising and start to flow down at t~ = 1); NaN when it never does.
+double last_down_crossing(const std::vector<double> &t, const std::vector<double> &v);
+
 }    // namespace granpen
 
 #endif

@@ -71,7 +71,7 @@ file(WRITE ${FLOW_DIR}/bad_trace.csv "# granpen-trace v1\n# units = cgs\n# v0 = 
 
 # the tables each subcommand writes into DIR, with their exact first lines
 function(granpen_flow_headers var dir)
-  set(${var} "${dir}/flow_fields.csv=r,z,count,phi,phi_centre,vr,vz,T,gammadot,p,I^^${dir}/flow_profile_below.csv=z,vz,vz_se,phi^^${dir}/flow_edge_phi_I.csv=I,phi^^${dir}/flow_strip.csv=z,vz^^${dir}/flow_annulus.csv=t_tilde,z_tip,phi,vz,T^^${dir}/flow.json={" PARENT_SCOPE)
+  set(${var} "${dir}/flow_fields.csv=r,z,count,phi,phi_centre,vr,vz,T,gammadot,p,I^^${dir}/flow_profile_below.csv=z,vz,vz_se,phi^^${dir}/flow_edge_phi_I.csv=I,phi^^${dir}/flow_strip.csv=z,vz^^${dir}/flow_annulus.csv=t_tilde,z_tip,phi,vz,T^^${dir}/flow_surface.csv=t_tilde,z_tip,vz,grains^^${dir}/flow.json={" PARENT_SCOPE)
 endfunction()
 function(granpen_momentum_headers var dir)
   set(${var} "${dir}/momentum_classes.csv=t_tilde,z_tip,class,count,p_up^^${dir}/momentum_drag.csv=t_tilde,z_tip,F,mu_g_M^^${dir}/momentum.json={" PARENT_SCOPE)

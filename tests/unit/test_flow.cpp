@@ -320,6 +320,19 @@ TEST(FlowEdge, AveragesTheBinsAtTheRodEdge)
   EXPECT_DOUBLE_EQ(e.phi_voronoi, 0.55);
 }
 
+TEST(FlowSurface, LastDownCrossing)
+{
+  // v = 1 - t sampled every 0.3: crosses at 1 exactly (linear); an earlier dip below zero
+  // and back up does not count; never positive, or never down: NaN
+  std::vector<double> t, v;
+  for (int i = 0; i <= 10; ++i) t.push_back(0.3 * i), v.push_back(1.0 - 0.3 * i);
+  EXPECT_NEAR(last_down_crossing(t, v), 1.0, 1e-12);
+  v[1] = -0.5;    // t = 0.3: a dip
+  EXPECT_NEAR(last_down_crossing(t, v), 1.0, 1e-12);
+  EXPECT_TRUE(std::isnan(last_down_crossing(t, std::vector<double>(t.size(), -1.0))));
+  EXPECT_TRUE(std::isnan(last_down_crossing(t, std::vector<double>(t.size(), 2.0))));
+}
+
 // ---------------------------------------------------------------- Voronoi
 
 TEST(Voronoi, RadicalCellsOfTwoSizesTileThePeriodicBox)
