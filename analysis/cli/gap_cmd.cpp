@@ -39,6 +39,8 @@ const char *HELP =
     "                  diagnosis resumes from it; a finished one reruns without simulating\n"
     "  --lmp PATH, --inputs DIR   lmp_granpen and the decks (default: as ./granpen sets them)\n"
     "  --prepare-only  only run the simulations the cache needs for --v0 speeds\n"
+    "  --fit-only      stop before step 4: the verdict is provisional (diagnosis.json:\n"
+    "                  \"confirmed\": false; nothing simulated on fresh seeds), G after = before\n"
     "  --mpirun PROG --ranks R   run each simulation on R MPI ranks (mpirun, srun, ...)\n"
     "  --slurm FILE    write a SLURM script preparing the cache on a cluster (--jobs runs at\n"
     "                  once, R ranks each) and stop; a diagnosis whose simulations would take\n"
@@ -74,6 +76,7 @@ int granpen::cli::gap(int argc, char **argv)
     else if (a == "--inputs") opt.runner.inputs = value();
     else if (a == "--prepare-only") opt.prepare_only = true;
     else if (a == "--local") opt.local = true;
+    else if (a == "--fit-only") opt.fit_only = true;
     else if (a == "--slurm") opt.slurm = value();
     else if (a == "--mpirun") opt.runner.mpirun = value();
     else if (a == "--ranks") {

@@ -17,6 +17,7 @@ struct GapOptions {
   std::string v0;              // --prepare-only: the speeds
   bool prepare_only = false;
   bool local = false;          // run even what the cost estimate sends to a cluster
+  bool fit_only = false;       // stop before the confirming simulations (a provisional verdict)
   std::string slurm;           // write a SLURM script that prepares the cache, and stop
   RunnerOptions runner;        // lmp, inputs, jobs (out_root is set per scenario)
 };

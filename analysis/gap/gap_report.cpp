@@ -43,6 +43,7 @@ void write_json(const Diagnosis &d, const std::string &path)
                   "\"route\": %s, \"null_replicates\": %d},\n",
                num(d.chi2_0).c_str(), d.nfeatures, num(d.p_value, "%.3g").c_str(), d.significant ? "true" : "false",
                !d.significant ? "null" : d.targeted ? "\"targeted\"" : "\"omnibus\"", d.n_null);
+  std::fprintf(f, "  \"confirmed\": %s,\n", d.verdict != "explained" ? "null" : d.provisional ? "false" : "true");
   std::fprintf(f, "  \"confirmation\": {\"chi2_after\": %s, \"explained_fraction\": %s, \"signature_sigma_before\": %s, "
                   "\"signature_sigma_after\": %s},\n",
                d.tested_effect.empty() ? "null" : num(d.chi2_after).c_str(),
@@ -216,7 +217,7 @@ void write_gap_report(const Diagnosis &d, const std::string &dir)
   std::fprintf(f, "Scenario `%s`; grid 0 < z <= %.2f cm in %.2f cm bins; at least %d measured run(s) per speed, %d "
                   "simulated per ensemble.\n\n",
                d.scenario.c_str(), d.grid.zmax, d.grid.w, d.n_real_min, d.n_sim);
-  std::fprintf(f, "**Verdict: %s**%s.  \n", d.verdict.c_str(),
+  std::fprintf(f, "**Verdict: %s%s**%s.  \n", d.verdict.c_str(), d.provisional ? " (provisional: not confirmed, --fit-only)" : "",
                d.top_effect.empty() ? "" : (" — " + d.top_effect + " at magnitude " + f3(d.magnitude, "%.4g") + " (" + d.magnitude_unit + ")").c_str());
   std::fprintf(f, "Overall gap G (shared/formats/gap-metric.md): %.3f before, %.3f after%s.  \n", d.gap_before,
                d.gap_after, d.tested_effect.empty() ? " (nothing added)" : (" adding " + d.tested_effect + " on fresh seeds").c_str());
