@@ -21,6 +21,12 @@ add_test(NAME gap_one_run_per_speed
   COMMAND sh -c "rm -rf '${GAP_SYNTH}/one' '${GAP_SYNTH}/one_out' && mkdir '${GAP_SYNTH}/one' && cp '${GAP_SYNTH}/tiny/real_rolling_resistance/'tiny_s101_v*.csv '${GAP_SYNTH}/one/' && '$<TARGET_FILE:granpen-cli>' gap --real '${GAP_SYNTH}/one' --scenario tiny --out '${GAP_SYNTH}/one_out' --cache '${GAP_SYNTH}/tiny/cache' --lmp '$<TARGET_FILE:fake_lmp>' --inputs '${PROJECT_SOURCE_DIR}/inputs' 2>&1")
 set_tests_properties(gap_one_run_per_speed PROPERTIES LABELS unit FIXTURES_REQUIRED gap_synthetic RESOURCE_LOCK gap_synthetic
   PASS_REGULAR_EXPRESSION "warning: v0 = 50 cm/s has one measured run: its noise is unknown.*verdict explained \\(rolling_resistance")
+# --fit-only: the same data set (polydispersity) diagnosed without confirming runs: a
+# provisional verdict, "confirmed": false, G after = before, no fresh-seed sweep of it
+add_test(NAME gap_fit_only_is_provisional
+  COMMAND sh -c "rm -rf '${GAP_SYNTH}/fit_only' && '$<TARGET_FILE:granpen-cli>' gap --real '${GAP_SYNTH}/tiny/real_polydispersity' --scenario tiny --out '${GAP_SYNTH}/fit_only' --cache '${GAP_SYNTH}/fit_only_cache' --lmp '$<TARGET_FILE:fake_lmp>' --inputs '${PROJECT_SOURCE_DIR}/inputs' --fit-only > /dev/null 2>&1 && grep -q '\"confirmed\": false' '${GAP_SYNTH}/fit_only/diagnosis.json' && grep -q 'provisional' '${GAP_SYNTH}/fit_only/report.md' && ! ls '${GAP_SYNTH}/fit_only_cache/tiny' | grep -q confirm_ && grep -o '\"gap_before\": [0-9.e+-]*, \"gap_after\": [0-9.e+-]*' '${GAP_SYNTH}/fit_only/diagnosis.json' | head -1 | awk '{ sub(/,/, \"\", $2); if ($2 == $4) print \"provisional, G unchanged\" }'")
+set_tests_properties(gap_fit_only_is_provisional PROPERTIES LABELS unit FIXTURES_REQUIRED gap_synthetic RESOURCE_LOCK gap_synthetic
+  PASS_REGULAR_EXPRESSION "provisional, G unchanged")
 
 # bad input: a clear message naming the file or option, exit 1 or 2, nothing in OUT
 set(GAP_BAD ${CMAKE_CURRENT_BINARY_DIR}/gap_bad)
