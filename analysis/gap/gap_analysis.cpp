@@ -10,6 +10,7 @@
 #include "bed_info.h"
 #include "gap_sims.h"
 #include "scenario.h"
+#include "text_util.h"
 #include "trace_files.h"
 #include "trace_reader.h"
 
@@ -130,12 +131,7 @@ std::vector<double> model_err(const Ensemble &e, const std::vector<double> &cv2,
   return v;
 }
 
-std::string fmt(double v, const char *f = "%.4g")
-{
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
+std::string fmt(double v, const char *f = "%.4g") { return printf_number(f, v); }
 
 double mean_of(const std::vector<double> &v)
 {

@@ -3,6 +3,7 @@
 #include "gap_result.h"
 #include "json_text.h"
 #include "plot_writer.h"
+#include "text_util.h"
 #include "trace_reader.h"    // InputError
 
 #include <algorithm>
@@ -17,12 +18,7 @@ namespace {
 
 std::string num(double v, const char *f = "%.6g") { return json_number(f, v); }
 
-std::string f3(double v, const char *f = "%.3f")
-{
-  char b[64];
-  std::snprintf(b, sizeof b, f, v);
-  return b;
-}
+std::string f3(double v, const char *f = "%.3f") { return printf_number(f, v); }
 
 void write_json(const Diagnosis &d, const std::string &path)
 {

@@ -1,8 +1,8 @@
 // granpen analysis: shared helpers of the text readers (see text_util.h).
 #include "text_util.h"
-
 #include "trace_reader.h"    // InputError
 
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 
@@ -44,6 +44,13 @@ bool read_text_file(const std::string &path, std::string &text)
   ss << f.rdbuf();
   text = ss.str();
   return true;
+}
+
+std::string printf_number(const char *f, double v)
+{
+  char b[64];
+  std::snprintf(b, sizeof b, f, v);
+  return b;
 }
 
 std::string file_line(const std::string &file, long line) { return file + ":" + std::to_string(line); }

@@ -26,6 +26,10 @@ std::vector<std::string> words(const std::string &s);
 // opened (errno as the failed open left it).
 bool read_text_file(const std::string &path, std::string &text);
 
+// One number through printf's format f ("%.3f", "%g", ...), non-finite values as printf
+// writes them (json_text.h's json_number is the JSON-safe variant).
+std::string printf_number(const char *f, double v);
+
 // "FILE:LINE"
 std::string file_line(const std::string &file, long line);
 
