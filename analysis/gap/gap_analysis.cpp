@@ -7,6 +7,7 @@
 #include "gap_fit.h"
 #include "gap_plan.h"
 #include "gap_result.h"
+#include "gap_verdict.h"
 #include "bed_info.h"
 #include "gap_sims.h"
 #include "scenario.h"
@@ -505,65 +506,12 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
     }
   }
   d.n_null = (int) nulls.size();
-  // two routes to a finding: the omnibus chi^2 over every feature (a gap spread over many
-  // features), or one candidate's likelihood ratio above its null-calibrated threshold (a
-  // gap too small for the omnibus test that lies along an effect's signature)
-  const bool omnibus = d.significant;
-  d.targeted = !omnibus && std::any_of(d.ranking.begin(), d.ranking.end(), [](const EffectFit &f) { return f.detected; });
-  d.significant = omnibus || d.targeted;
-  auto ratio = [](const EffectFit &f) { return f.lr_threshold > 0 ? f.lr / f.lr_threshold : 0.0; };
-  std::sort(d.ranking.begin(), d.ranking.end(), [&](const EffectFit &a, const EffectFit &b) {
-    return d.targeted ? ratio(a) > ratio(b) : a.explained > b.explained;
-  });
+  decide_verdict(d);
   for (const auto &f : d.ranking)
     std::printf("  %-20s magnitude %-10s explained %5.2f  held-out %5.2f  chi2 %.1f -> %.1f  lr %.1f (threshold %.1f)\n",
                 f.name.c_str(), fmt(f.magnitude).c_str(), f.explained, f.heldout_explained, f.chi2_0, f.chi2, f.lr,
                 f.lr_threshold);
-
-  // ---- the verdict before confirmation
   const EffectFit *top = d.ranking.empty() ? nullptr : &d.ranking[0];
-  const EffectFit *second = d.ranking.size() > 1 ? &d.ranking[1] : nullptr;
-  std::string why;
-  if (d.targeted) {
-    // one candidate's signature stands out: it must stand out alone (a second detected one
-    // at least 1.5 times less far above its threshold) and, as on the omnibus route,
-    // explain at least half of the gap and predict the speeds left out
-    const bool alone = !second || !second->detected || ratio(*top) >= 1.5 * ratio(*second);
-    if (alone && top->explained >= 0.5 && top->heldout_explained >= 0.3) {
-      d.verdict = "explained";
-      d.top_effect = top->name;
-      d.notes.push_back("the gap is within the noise over all features (chi^2 " + fmt(d.chi2_0, "%.1f") + " over " +
-                        std::to_string(d.nfeatures) + ", p = " + fmt(d.p_value, "%.2g") + ") but lies along " +
-                        top->name + "'s signature: likelihood ratio " + fmt(top->lr, "%.1f") + " against a threshold of " +
-                        fmt(top->lr_threshold, "%.1f") + " (" + std::to_string(d.n_null) + " null replicates on fresh beds)");
-    } else if (alone) {
-      d.verdict = "unexplained";
-      why = "a gap along " + top->name + "'s signature (likelihood ratio " + fmt(top->lr, "%.1f") + " against " +
-            fmt(top->lr_threshold, "%.1f") + "), but it explains only " + fmt(top->explained, "%.2f") +
-            " of the gap (held out " + fmt(top->heldout_explained, "%.2f") + ")";
-    } else {
-      d.verdict = "unexplained";
-      why = "a gap along the signatures of " + top->name + " and " + second->name + " (likelihood ratios " +
-            fmt(top->lr, "%.1f") + " and " + fmt(second->lr, "%.1f") + ", thresholds " + fmt(top->lr_threshold, "%.1f") +
-            " and " + fmt(second->lr_threshold, "%.1f") + "): too close to tell apart";
-    }
-  } else if (!d.significant) {
-    d.verdict = "none";
-    why = "the gap is within the noise (chi^2 " + fmt(d.chi2_0, "%.1f") + " over " + std::to_string(d.nfeatures) +
-          " features, p = " + fmt(d.p_value, "%.2g") + "; no candidate's likelihood ratio above its threshold)";
-  } else if (top && top->explained >= 0.5 && top->heldout_explained >= 0.3 &&
-             (!second || second->chi2 - top->chi2 >= 6.0) && !top->at_edge) {
-    d.verdict = "explained";
-    d.top_effect = top->name;
-  } else {
-    d.verdict = "unexplained";
-    if (!top) why = "no candidate effects";
-    else if (top->explained < 0.5) why = "the best candidate (" + top->name + ") explains " + fmt(top->explained, "%.2f") + " of the gap";
-    else if (top->heldout_explained < 0.3) why = top->name + " fits but does not predict the speeds left out (" + fmt(top->heldout_explained, "%.2f") + ")";
-    else if (top->at_edge) why = top->name + " needs a magnitude beyond its simulated range";
-    else why = top->name + " and " + second->name + " explain the gap about equally well (chi^2 " + fmt(top->chi2, "%.1f") + " and " + fmt(second->chi2, "%.1f") + ")";
-  }
-  if (!why.empty()) d.notes.push_back("verdict: " + why);
 
   // ---- how far it shrinks: the top effect on fresh seeds
   std::printf("granpen gap: [4/4] %s\n", d.verdict != "explained" ? "no effect to confirm"

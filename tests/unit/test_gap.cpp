@@ -2,6 +2,7 @@
 #include "effects.h"
 #include "gap_data.h"
 #include "gap_fit.h"
+#include "gap_verdict.h"
 
 #include <gtest/gtest.h>
 
@@ -213,6 +214,58 @@ TEST(GapFit, LikelihoodRatioOfASmallGapAlongOneSignature)
   for (int s = 0; s < 2; ++s)
     for (auto &x : t.mean[s]) x = 100.0;
   EXPECT_LT(fit_effect(t, A).lr, 1e-9);
+}
+
+namespace {
+EffectFit candidate(const std::string &name, double explained, double heldout, double chi2, double lr, double threshold)
+{
+  EffectFit f;
+  f.name = name, f.explained = explained, f.heldout_explained = heldout, f.chi2 = chi2;
+  f.lr = lr, f.lr_threshold = threshold, f.detected = lr > threshold;
+  return f;
+}
+Diagnosis significance(bool omnibus, std::vector<EffectFit> ranking)
+{
+  Diagnosis d;
+  d.significant = omnibus, d.chi2_0 = omnibus ? 200 : 70, d.nfeatures = 66, d.ranking = std::move(ranking);
+  return d;
+}
+}    // namespace
+
+TEST(GapVerdict, TheTwoRoutesAndTheirConditions)
+{
+  // nothing significant, nothing detected: none
+  Diagnosis d = significance(false, {candidate("a", 0.6, 0.6, 50, 10, 15), candidate("b", 0.2, 0.2, 60, 3, 15)});
+  decide_verdict(d);
+  EXPECT_EQ(d.verdict, "none");
+  EXPECT_FALSE(d.significant);
+  // omnibus: the best explained fraction wins by a chi^2 margin of 6
+  d = significance(true, {candidate("b", 0.3, 0.3, 150, 50, 15), candidate("a", 0.7, 0.6, 80, 120, 15)});
+  decide_verdict(d);
+  EXPECT_EQ(d.verdict, "explained");
+  EXPECT_EQ(d.top_effect, "a");
+  EXPECT_FALSE(d.targeted);
+  d = significance(true, {candidate("a", 0.7, 0.6, 80, 120, 15), candidate("b", 0.65, 0.6, 83, 110, 15)});
+  decide_verdict(d);
+  EXPECT_EQ(d.verdict, "unexplained");    // a and b too close
+  // targeted: not significant overall, one candidate detected, alone, explaining enough
+  d = significance(false, {candidate("b", 0.1, 0.1, 70, 4, 60), candidate("a", 0.64, 0.64, 36, 44, 37)});
+  decide_verdict(d);
+  EXPECT_TRUE(d.targeted);
+  EXPECT_TRUE(d.significant);
+  EXPECT_EQ(d.verdict, "explained");
+  EXPECT_EQ(d.top_effect, "a");
+  // detected but explaining a third of the gap: unexplained, no effect named
+  d = significance(false, {candidate("a", 0.34, 0.34, 44, 19, 15.1), candidate("b", 0.33, 0.33, 45, 18.8, 94)});
+  decide_verdict(d);
+  EXPECT_EQ(d.verdict, "unexplained");
+  EXPECT_TRUE(d.top_effect.empty());
+  // two detected about equally far above their thresholds: unexplained
+  d = significance(false, {candidate("a", 0.6, 0.6, 40, 40, 20), candidate("b", 0.6, 0.6, 40, 50, 30)});
+  decide_verdict(d);
+  EXPECT_EQ(d.verdict, "unexplained");
+  ASSERT_EQ(d.ranking.size(), 2u);
+  EXPECT_EQ(d.ranking[0].name, "a");    // sorted by LR / threshold on this route: 2.0 before 1.67
 }
 
 TEST(GapFit, ChiSquareTail)
