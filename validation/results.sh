@@ -83,6 +83,10 @@ analyse_traces() {
     [ "$D" = 2 ] && continue    # above
     put "$preset.alpha.v$vmin.g981.D$D = $(col "$o/fit_z$zmin.csv" alpha v0 "$vmin" g 981 D "$D" | stats)  # granpen fit --zmin $zmin"
   done
+  # k_z against v0 over the paper's kind of window (z >= zmin; transient included at speed)
+  for v in $(col "$o/fit_z$zmin.csv" v0 g 981 D 2 | sort -gu); do
+    put "$preset.k_z_window.v$v = $(col "$o/fit_z$zmin.csv" k_z v0 "$v" g 981 D 2 | stats)  # granpen fit --zmin $zmin, g = 981, D = 2"
+  done
   # k_z against v0 in the deep regime t~ >= 1, where the push reaches it (>= 0.5 cm of window)
   for v in $(col "$o/fit_deep.csv" v0 g 981 D 2 | sort -gu); do
     local n
