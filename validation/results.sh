@@ -78,14 +78,18 @@ analyse_traces() {
   vmin=$(col "$o/fit_z$zmin.csv" v0 | sort -g | head -1)
   for g in $(col "$o/fit_z$zmin.csv" g | sort -gu); do
     put "$preset.alpha.v$vmin.g$g.D2 = $(col "$o/fit_z$zmin.csv" alpha v0 "$vmin" g "$g" D 2 | stats)  # granpen fit --zmin $zmin, v0 = $vmin"
+    put "$preset.alpha0.v$vmin.g$g.D2 = $(col "$o/fit_z$zmin.csv" alpha0 v0 "$vmin" g "$g" D 2 | stats)  # the same through the origin (F_z = k_z0 z)"
   done
   for D in $(col "$o/fit_z$zmin.csv" D | sort -gu); do
     [ "$D" = 2 ] && continue    # above
     put "$preset.alpha.v$vmin.g981.D$D = $(col "$o/fit_z$zmin.csv" alpha v0 "$vmin" g 981 D "$D" | stats)  # granpen fit --zmin $zmin"
   done
-  # k_z against v0 over the paper's kind of window (z >= zmin; transient included at speed)
-  for v in $(col "$o/fit_z$zmin.csv" v0 g 981 D 2 | sort -gu); do
-    put "$preset.k_z_window.v$v = $(col "$o/fit_z$zmin.csv" k_z v0 "$v" g 981 D 2 | stats)  # granpen fit --zmin $zmin, g = 981, D = 2"
+  # the depth term through the origin over the paper's kind of window (z >= zmin; the
+  # transient is still in it at the fast speeds) for every (v0, g, D) of the sweep
+  for key in $(awk -F, 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next }
+                 { print $i["v0"] ":" $i["g"] ":" $i["D"] }' "$o/fit_z$zmin.csv" | sort -t: -k3,3g -k2,2g -k1,1g -u); do
+    IFS=: read -r v g D <<< "$key"
+    put "$preset.alpha0_window.v$v.g$g.D$D = $(col "$o/fit_z$zmin.csv" alpha0 v0 "$v" g "$g" D "$D" | stats)  # granpen fit --zmin $zmin: k_z0 / (mu rho_g g D^2)"
   done
   # k_z against v0 in the deep regime t~ >= 1, where the push reaches it (>= 0.5 cm of window)
   for v in $(col "$o/fit_deep.csv" v0 g 981 D 2 | sort -gu); do
@@ -99,10 +103,11 @@ analyse_traces() {
   say "$preset: peak law and collapse (granpen collapse)"
   local v0set=() f
   for f in "$dir"/*_g981_D2.0.csv; do v0set+=("$f"); done
-  # F_z from the slow speed's alpha (g = 981, D = 2): the fast pushes do not reach the deep
-  # regime in these beds, so their own k_z fits are not depth terms
+  # F_z = alpha0 mu rho_g g D^2 z from the slow speed (g = 981, D = 2), through the origin as
+  # the paper writes it: the fast pushes do not reach the deep regime in these beds, so
+  # their own k_z fits are not depth terms
   local alpha
-  alpha=$(col "$o/fit_z$zmin.csv" alpha v0 "$vmin" g 981 D 2 | stats | awk '{print $1}')
+  alpha=$(col "$o/fit_z$zmin.csv" alpha0 v0 "$vmin" g 981 D 2 | stats | awk '{print $1}')
   # t~ bins of 0.25: at the slowest speeds that is about a grain diameter of travel, the
   # wavelength of the force's fluctuations
   "$CLI" collapse "${v0set[@]}" --alpha "$alpha" --tbin 0.25 --json "$o/collapse_v0.json" > "$o/collapse_v0.txt"

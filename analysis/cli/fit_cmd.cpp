@@ -30,6 +30,8 @@ const char *HELP =
     "argument stands for every *.csv in it. Per trace:\n"
     "  k_z    slope of F on z over the window (linear least squares), with its standard error\n"
     "  alpha  k_z / (mu rho_g g D^2), the paper's depth-term prefactor (35 +- 5 at 40 cm/s)\n"
+    "  k_z0, alpha0  the same through the origin, F = k_z0 z (the paper's form F_z = k_z z;\n"
+    "         in --csv and --json): the depth term granpen collapse --alpha takes\n"
     "  peak   largest F and its depth over 0 < z < 0.7 R (R = D/2), the transient yield peak\n"
     "  wavelength  dominant wavelength of F about the fit in the window (resampled to the\n"
     "         median dz, mean removed, Hann window, FFT; the lowest two bins excluded);\n"
@@ -158,7 +160,8 @@ bool write_json(const std::string &path, const std::vector<Result> &results,
       << ", \"k_z_se\": " << num(f.k_z_se) << ", \"intercept\": " << num(f.intercept)
       << ", \"intercept_se\": " << num(f.intercept_se) << ", \"rms\": " << num(f.rms) << ",\n"
       << "     \"alpha_ok\": " << b(f.alpha_ok) << ", \"alpha\": " << num(f.alpha)
-      << ", \"alpha_se\": " << num(f.alpha_se) << ",\n"
+      << ", \"alpha_se\": " << num(f.alpha_se) << ", \"k_z0\": " << num(f.k_z0) << ", \"k_z0_se\": " << num(f.k_z0_se)
+      << ", \"alpha0\": " << num(f.alpha0) << ", \"alpha0_se\": " << num(f.alpha0_se) << ",\n"
       << "     \"peak_ok\": " << b(f.peak_ok) << ", \"n_peak\": " << f.n_peak
       << ", \"peak_zmax\": " << num(f.peak_zmax) << ", \"peak_F\": " << num(f.peak_F)
       << ", \"peak_z\": " << num(f.peak_z) << ",\n"
@@ -186,7 +189,8 @@ bool write_csv(const std::string &path, const std::vector<Result> &results)
   if (!o) return false;
   o << "file,v0,D,g,mu,mu_source,rho_g,rho_g_source,d_g,d_g_source,zlo,zhi,n_window,z_first,z_last,"
        "slope_ok,k_z,k_z_se,intercept,intercept_se,rms,alpha_ok,alpha,alpha_se,"
-       "peak_ok,peak_F,peak_z,wavelength_ok,wavelength,wavelength_d_g,spectrum_length,power_fraction\n";
+       "peak_ok,peak_F,peak_z,wavelength_ok,wavelength,wavelength_d_g,spectrum_length,power_fraction,"
+       "k_z0,k_z0_se,alpha0,alpha0_se\n";
   for (const auto &r : results) {
     const TraceFit &f = r.fit;
     const auto n = [](double v) { return num(v); };
@@ -197,7 +201,8 @@ bool write_csv(const std::string &path, const std::vector<Result> &results)
       << n(f.intercept_se) << ',' << n(f.rms) << ',' << f.alpha_ok << ',' << n(f.alpha) << ','
       << n(f.alpha_se) << ',' << f.peak_ok << ',' << n(f.peak_F) << ',' << n(f.peak_z) << ','
       << f.wavelength_ok << ',' << n(f.wavelength) << ',' << n(f.wavelength_dg) << ','
-      << n(f.spectrum.length) << ',' << n(f.spectrum.power_fraction) << '\n';
+      << n(f.spectrum.length) << ',' << n(f.spectrum.power_fraction) << ',' << n(f.k_z0) << ',' << n(f.k_z0_se) << ','
+      << n(f.alpha0) << ',' << n(f.alpha0_se) << '\n';
   }
   return (bool) o.flush();
 }

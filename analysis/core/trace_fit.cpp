@@ -157,6 +157,14 @@ TraceFit fit_trace(const std::vector<double> &z, const std::vector<double> &F, c
     r.intercept = lf.a;
     r.intercept_se = lf.se_a;
     r.rms = lf.rms;
+    double szz = 0.0, szf = 0.0;
+    for (std::size_t i = 0; i < zw.size(); ++i) szz += zw[i] * zw[i], szf += zw[i] * Fw[i];
+    if (szz > 0.0) {
+      r.k_z0 = szf / szz;
+      double ss = 0.0;
+      for (std::size_t i = 0; i < zw.size(); ++i) ss += (Fw[i] - r.k_z0 * zw[i]) * (Fw[i] - r.k_z0 * zw[i]);
+      r.k_z0_se = std::sqrt(ss / (zw.size() - 1) / szz);
+    }
   } catch (std::invalid_argument &) {
     r.notes.push_back("k_z undefined: " + std::to_string(zw.size()) + " points in the window z = " +
                       fmt(p.zlo) + ".." + (std::isfinite(p.zhi) ? fmt(p.zhi) : std::string("end")) +
@@ -169,6 +177,8 @@ TraceFit fit_trace(const std::vector<double> &z, const std::vector<double> &F, c
     r.alpha_ok = true;
     r.alpha = r.k_z / scale;
     r.alpha_se = r.k_z_se / scale;
+    r.alpha0 = r.k_z0 / scale;
+    r.alpha0_se = r.k_z0_se / scale;
   } else if (r.slope_ok) {
     r.notes.push_back("alpha undefined: mu rho_g g D^2 = " + fmt(scale) + " is not positive");
   } else {

@@ -65,6 +65,12 @@ struct TraceFit {
   bool alpha_ok = false;
   double alpha = 0.0, alpha_se = 0.0;    // k_z / (mu rho_g g D^2), se from k_z's
 
+  // the paper's form F_z = k_z0 z, through the origin, over the same window (with slope_ok):
+  // the depth term F / F_z is measured against in the collapse; it differs from k_z by
+  // the intercept's share
+  double k_z0 = 0.0, k_z0_se = 0.0;      // sum F z / sum z^2, dyne/cm
+  double alpha0 = 0.0, alpha0_se = 0.0;  // k_z0 / (mu rho_g g D^2) (with alpha_ok)
+
   // transient peak over 0 < z < 0.7 R
   bool peak_ok = false;
   std::size_t n_peak = 0;              // points in that range

@@ -141,6 +141,30 @@ TEST(TraceFit, AlphaOfSyntheticTrace)
   expect_all_finite(f);
 }
 
+TEST(TraceFit, DepthTermThroughTheOrigin)
+{
+  // F = b + k z over z 3..6: the line's slope is k; through the origin the least-squares
+  // slope is sum F z / sum z^2 = k + b sum z / sum z^2
+  TraceFitParams p;
+  p.zlo = 3.0, p.mu = 0.3, p.rho_g = 3.0, p.g = 981.0, p.D = 2.0;
+  const std::vector<double> z = grid(3.0, 6.0, 0.01);
+  const double k = 1.0e5, b = 5.0e4;
+  std::vector<double> F;
+  double sz = 0, szz = 0;
+  for (double v : z) F.push_back(b + k * v), sz += v, szz += v * v;
+  const TraceFit f = fit_trace(z, F, p);
+  ASSERT_TRUE(f.slope_ok);
+  EXPECT_NEAR(f.k_z, k, 1e-6 * k);
+  EXPECT_NEAR(f.k_z0, k + b * sz / szz, 1e-9 * k);
+  EXPECT_NEAR(f.alpha0 / f.alpha, f.k_z0 / f.k_z, 1e-12);
+  EXPECT_GT(f.k_z0_se, 0.0);    // the line does not pass through the origin
+  // a proportional trace: both agree, and the origin fit is exact
+  for (std::size_t i = 0; i < z.size(); ++i) F[i] = k * z[i];
+  const TraceFit g = fit_trace(z, F, p);
+  EXPECT_NEAR(g.k_z0, k, 1e-9 * k);
+  EXPECT_NEAR(g.k_z0_se, 0.0, 1e-6);
+}
+
 TEST(TraceFit, FindsInsertedPeak)
 {
   TraceFitParams p;

@@ -1,6 +1,6 @@
 # ratio.gp, written by granpen. The data are in ratio.dat beside it.
 # granpen plot ratio: the binned F/F_z curves of granpen collapse (bins of t~ of width 0.25, z >= 0.2 cm), against z (bin centre t~ converted back to z)
-# and against t~; the band 1 +- 0.2; k_z from alpha = 37.56.
+# and against t~; the band 1 +- 0.2; k_z from alpha = 34.21.
 # Run in this folder: `gnuplot ratio.gp` makes ratio.png and ratio.svg;
 # `gnuplot -e "formats='png'" ratio.gp` makes only the PNG.
 if (!exists("formats")) formats = "png svg"
@@ -15,7 +15,7 @@ do for [fmt in formats] {
   set output "ratio." . fmt
   reset
   set encoding utf8
-  set multiplot title "F over its depth term F_z: t̃* = 1.64 ± 1.28 (7 of 60 traces; their mean: not reached), spread 1.149 against z, 0.350 against t̃" font ",14"
+  set multiplot title "F over its depth term F_z: t̃* = 1.79 ± 1.12 (7 of 60 traces; their mean: not reached), spread 1.149 against z, 0.350 against t̃" font ",14"
 
   # ---- panel 1: (a) against depth
   set origin 0,0
@@ -25,7 +25,7 @@ do for [fmt in formats] {
   set ylabel "F / F_z   (F_z = α μ ρ_g g D² z)"
   set grid lc rgb "#d0d0d0"
   set logscale y
-  set yrange [0.3392427148:78.70670187]
+  set yrange [0.3724629164:86.41402287]
   unset key
   set object 10 rectangle from graph 0, first 0.8 to graph 1, first 1.2 behind fillcolor rgb "#808080" fillstyle transparent solid 0.18 noborder
   set ytics ("0.5" 0.5, "1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50)
@@ -102,7 +102,7 @@ do for [fmt in formats] {
   set ylabel "F / F_z   (F_z = α μ ρ_g g D² z)"
   set grid lc rgb "#d0d0d0"
   set logscale y
-  set yrange [0.3392427148:78.70670187]
+  set yrange [0.3724629164:86.41402287]
   set key at screen 0.81, screen 0.9 left top Left reverse
   set key spacing 1.25
   set object 10 rectangle from graph 0, first 0.8 to graph 1, first 1.2 behind fillcolor rgb "#808080" fillstyle transparent solid 0.18 noborder

@@ -32,7 +32,7 @@ do for [fmt in formats] {
   set tics out
   set key off
   set palette defined (0 "#440154", 0.25 "#3b528b", 0.5 "#21918c", 0.75 "#5ec962", 1 "#fde725")
-  set cbrange [0.01269261155:0.6147349657]
+  set cbrange [0.0008946767617:0.6137329231]
   set format cb "%g"
   set object 1 rectangle from first 0, first 0 to first 1, first 5.999999999 front fillcolor rgb "#707070" fillstyle solid 1.0 border lc rgb "black"
   set label 1 "rod" at first 0.5, first 3 center front textcolor rgb "white"
@@ -52,7 +52,7 @@ do for [fmt in formats] {
   set tics out
   set key off
   set palette defined (-1 "#2166ac", -0.5 "#92c5de", 0 "#f7f7f7", 0.5 "#f4a582", 1 "#b2182b")
-  set cbrange [-70.10346326:70.10346326]
+  set cbrange [-63.71455615:63.71455615]
   set format cb "%g"
   set object 1 rectangle from first 0, first 0 to first 1, first 5.999999999 front fillcolor rgb "#707070" fillstyle solid 1.0 border lc rgb "black"
   set label 1 "rod" at first 0.5, first 3 center front textcolor rgb "white"
@@ -72,7 +72,7 @@ do for [fmt in formats] {
   set tics out
   set key off
   set palette defined (0 "#000004", 0.25 "#51127c", 0.5 "#b73779", 0.75 "#fc8961", 1 "#fcfdbf")
-  set cbrange [0.08968394345:89.68394345]
+  set cbrange [0.07534415982:75.34415982]
   set logscale cb
   set format cb "10^{%T}"
   set object 1 rectangle from first 0, first 0 to first 1, first 5.999999999 front fillcolor rgb "#707070" fillstyle solid 1.0 border lc rgb "black"
@@ -93,7 +93,7 @@ do for [fmt in formats] {
   set tics out
   set key off
   set palette defined (0 "#000004", 0.25 "#51127c", 0.5 "#b73779", 0.75 "#fc8961", 1 "#fcfdbf")
-  set cbrange [0.0224222306:22.4222306]
+  set cbrange [0.02411229408:24.11229408]
   set logscale cb
   set format cb "10^{%T}"
   set object 1 rectangle from first 0, first 0 to first 1, first 5.999999999 front fillcolor rgb "#707070" fillstyle solid 1.0 border lc rgb "black"

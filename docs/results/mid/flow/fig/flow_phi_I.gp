@@ -14,7 +14,7 @@ do for [fmt in formats] {
   set output "flow_phi_I." . fmt
   reset
   set encoding utf8
-  set multiplot title "Packing fraction against inertial number at the rod edge: fit φ(0) = 0.178 ± 0.055, slope 0.35 ± 0.15" font ",14"
+  set multiplot title "Packing fraction against inertial number at the rod edge: fit φ(0) = 0.532 ± 0.008, slope -0.08 ± 0.02" font ",14"
 
   # ---- panel 1
   set origin 0,0
@@ -28,7 +28,7 @@ do for [fmt in formats] {
   set samples 400
   plot data index 0 using 1:2 with points pt 7 ps 1.2 lc rgb "#1f77b4" title "this run", \
        0.57 - 0.35*x with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: φ = 0.57 − 0.35 I", \
-       0.1777800692 + 0.3507181685*x with lines lw 1.5 dt 1 lc rgb "#000000" title "fit: φ = 0.178 + 0.351 I"
+       0.532349815 + -0.08061774482*x with lines lw 1.5 dt 1 lc rgb "#000000" title "fit: φ = 0.532 − 0.081 I"
   unset multiplot
   unset multiplot
   set output

@@ -15,7 +15,7 @@ do for [fmt in formats] {
   set output "flow_profile." . fmt
   reset
   set encoding utf8
-  set multiplot title "Flow below the rod face: λ_{vz} = 0.793 cm = 0.40 D (paper: 0.98 D ± 0.15)" font ",14"
+  set multiplot title "Flow below the rod face: λ_{vz} = 0.792 cm = 0.40 D (paper: 0.98 D ± 0.15)" font ",14"
 
   # ---- panel 1: (a) |v_z| below the face
   set origin 0,0
@@ -25,14 +25,14 @@ do for [fmt in formats] {
   set ylabel "|v_z| (cm/s)"
   set grid lc rgb "#d0d0d0"
   set logscale y
-  set yrange [0.5245827779:119.3167218]
+  set yrange [0.4677321975:128.6356189]
   set key top left Left reverse
   set key spacing 1.25
-  set ytics ("1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100)
+  set ytics ("0.5" 0.5, "1" 1, "2" 2, "5" 5, "10" 10, "20" 20, "50" 50, "100" 100)
   set mytics 10
   set samples 400
   plot data index 0 using 1:2:3 with yerrorbars lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "|v_z| ± standard error", \
-       data index 1 using 1:2 with lines lw 2 dt 1 lc rgb "#000000" title "fit |v_z| = 93.5 exp(z/λ), λ = 0.793 ± 0.011 cm"
+       data index 1 using 1:2 with lines lw 2 dt 1 lc rgb "#000000" title "fit |v_z| = 117 exp(z/λ), λ = 0.792 ± 0.025 cm"
 
   # ---- panel 2: (b) packing fraction below the face
   reset
