@@ -9,7 +9,7 @@
 #   bench/gap_cost.sh [--jobs 2] [--first CASE] [--second CASE]
 set -euo pipefail
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-JOBS=2 FIRST=rolling_resistance SECOND=sidewalls
+JOBS=2 FIRST=rolling_resistance SECOND=measurement_chain    # both explained: each has confirming runs
 while [ $# -gt 0 ]; do
   case "$1" in
     --jobs) JOBS=$2; shift 2 ;;
