@@ -302,12 +302,15 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
     std::size_t nf = 1 << 30;
     for (std::size_t s = 0; s < ns; ++s) nf = std::min(nf, fresh[speeds[s]].size());
     const std::size_t m = std::clamp<std::size_t>(d.real_files.size() / std::max<std::size_t>(1, ns), 1, nf - 1);
+    // each fresh run's features once; a replicate is an ensemble of some of them
+    std::vector<Ensemble> all(ns);
+    for (std::size_t s = 0; s < ns; ++s) all[s] = ensemble_of(fresh[speeds[s]], grid, speeds[s]);
     for (const auto &pick : subsets(nf, m)) {
       Target t;
       for (std::size_t s = 0; s < ns; ++s) {
-        std::vector<Run> runs;
-        for (std::size_t i : pick) runs.push_back(fresh[speeds[s]][i]);
-        const Ensemble e = ensemble_of(runs, grid, speeds[s]);
+        std::vector<std::vector<double>> x;
+        for (std::size_t i : pick) x.push_back(all[s].runs[i]);
+        const Ensemble e = make_ensemble(speeds[s], x);
         t.mean.push_back(e.mean);
         t.err.push_back(model_err(e, cv2[s], noise_scale(e, eB[s], cv2[s], grid)));
       }
@@ -446,7 +449,6 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
   std::printf("granpen gap: [3/4] fitting %zu candidate effects\n", effects.size());
   std::map<std::string, const Effect *> by_name;
   std::map<std::string, EffectData> effect_data;
-  d.n_null = 0;
   for (const Effect *e : effects) {
     by_name[e->name] = e;
     EffectData ed;
