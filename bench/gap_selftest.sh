@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # granpen gap, checked on data whose effect is withheld (issue: gap diagnosis).
 #   bench/gap_selftest.sh [--scenario bench|tiny] [--jobs N] [--cases LIST] [--effects LIST] [--v0 "50 100 200"]
-#                         [--measured-only]   (make the measured data only, e.g. while the cache fills)
+#                         [--seeds "101 102 103 104"] [--measured-only]   (make the measured data only)
 # For each case it makes "measured" data: a sweep of the scenario with one effect at a
 # magnitude the diagnosis is not told (or none, or an effect outside the library: grains
-# lighter than the header says), on beds no diagnosis uses (seeds 101 102); every trace's
+# lighter than the header says), on beds no diagnosis uses (seeds 101 to 104); every trace's
 # header is cut to the standard keys (units v0 D d_g rho_g g run mu), its depth origin moved
 # by a random offset up to +-0.2 cm and 2% noise added to F. Then `granpen gap` runs
 # blind on it, and the case is scored: the right top effect for library cases, "none" for
@@ -13,7 +13,7 @@
 # to runs/gap_selftest/SCENARIO/table.md (docs/gap-validation.md quotes it).
 set -euo pipefail
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-SCEN=bench JOBS=2 CASES="" EFFECTS="" V0="50 100 200" MEASURED_ONLY=no
+SCEN=bench JOBS=2 CASES="" EFFECTS="" V0="50 100 200" MEASURED_ONLY=no SEEDS="101 102 103 104"
 while [ $# -gt 0 ]; do
   case "$1" in
     --scenario) SCEN=$2; shift 2 ;;
@@ -21,6 +21,7 @@ while [ $# -gt 0 ]; do
     --cases) CASES=$2; shift 2 ;;
     --effects) EFFECTS=$2; shift 2 ;;
     --v0) V0=$2; shift 2 ;;
+    --seeds) SEEDS=$2; shift 2 ;;
     --measured-only) MEASURED_ONLY=yes; shift ;;
     *) echo "gap_selftest: unknown option $1" >&2; exit 2 ;;
   esac
@@ -36,21 +37,26 @@ all_cases() {
   cat <<'CASES'
 none|none|0|
 rolling_resistance|rolling_resistance|0.2|set = mu_roll=0.2
-polydispersity|polydispersity|0.18|set = poly=0.18
-sidewalls|sidewalls|0.4|set = walls=1 mu_wall=0.4
+polydispersity|polydispersity|0.22|set = poly=0.22
+sidewalls|sidewalls|0.5|set = walls=1 mu_wall=0.5
 measurement_chain|measurement_chain|1.0|push_set = mount_k=3.947842e9 mount_c=2.513274e5 mount_m=100
-actuator_ramp|actuator_ramp|1.2|push_set = ramp=1.2
-packing|packing|-0.15|mu = 0.15
-contact_stiffness|contact_stiffness|-0.398|set = kn=4e8 kt=4e8
+actuator_ramp|actuator_ramp|2.4|push_set = ramp=2.4
+packing|packing|-0.18|mu = 0.12
+contact_stiffness|contact_stiffness|-0.5|set = kn=3.16228e8 kt=3.16228e8
 light_grains|outside|rho_g 2.5 (header says 3.0)|set = rho_g=2.5
 CASES
 }
 
 make_measured() {    # name keys -> $WORK/real_NAME/*.csv
   local name=$1 keys=$2 real=$WORK/real_$name
-  [ -f "$real/.complete" ] && return 0
+  # what made the data: a case changed since (other knots, beds or speeds) is made again
+  local stamp="keys=$keys seeds=$SEEDS v0=$V0"
+  [ -f "$real/.complete" ] && [ "$(cat "$real/.complete")" = "$stamp" ] && return 0
+  local tdir=$WORK/truth/truth_$name
+  if [ -d "$tdir" ] && [ "$(cat "$tdir/.keys" 2>/dev/null)" != "$keys" ]; then rm -rf "$tdir"; fi
+  mkdir -p "$tdir"; echo "$keys" > "$tdir/.keys"
   local spec=$WORK/truth_$name.sweep
-  { echo "name = truth_$name"; echo "preset = $SCEN"; echo "seeds = 101 102"; echo "v0 = $V0"
+  { echo "name = truth_$name"; echo "preset = $SCEN"; echo "seeds = $SEEDS"; echo "v0 = $V0"
     [ -n "$keys" ] && echo "$keys"
     case "$keys" in mu*) echo "mu_push = 0.3" ;; esac; } > "$spec"
   # a push-only effect pushes into the no-effect case's beds (poured once)
@@ -81,7 +87,7 @@ make_measured() {    # name keys -> $WORK/real_NAME/*.csv
         $col["z"] = sprintf("%.6f", $col["z"] + off); $col["F"] = sprintf("%.6g", $col["F"] * (1 + 0.02 * n)); print }' \
       "$f" > "$real/$(basename "$f")"
   done
-  touch "$real/.complete"
+  echo "$stamp" > "$real/.complete"
 }
 
 echo "| case | truth | true magnitude | verdict | top effect | fitted magnitude | G before | G after | held-out v0 | held-out G before | held-out G after | chi^2 excess removed | wall s | pass |" > "$WORK/table.md"

@@ -65,7 +65,7 @@ const std::vector<Effect> &effect_library()
        "mount natural period, ms", false, {0.35, 0.7, 1.4}, true, none, mount, "", nullptr},
       {"actuator_ramp", "actuator speed rising linearly from 0 to v0 over a travel (fix rod/drive ramp)",
        "ramp travel, cm (the rod starts 0.5 cm above the bed: shorter ramps end before contact)", false,
-       {0.8, 1.6}, true, none, ramp, "", nullptr},
+       {0.8, 1.6, 3.2}, true, none, ramp, "", nullptr},
       {"packing", "bed prepared at another packing fraction (poured with another friction, pushed with 0.3)",
        "pour friction minus 0.3", true, {-0.2, 0.3}, false, none, none, "", packing_mu},
       {"contact_stiffness", "contact stiffness kn = kt scaled (timestep scaled with the contact time)",

@@ -295,24 +295,44 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
     target.mean.push_back(eR[s].mean);
     target.err.push_back(model_err(eR[s], cv2[s], scale));
   }
-  // null replicates: subsets of the fresh beds, as many runs as the measurement has (at
-  // most all but one of them), processed as the measurement is
+  // The fits see the gap against the baseline on the fresh beds (seeds 11 to 14), not
+  // against the signature beds (1, 2): an effect's signature is a difference to the
+  // signature beds, and a gap measured against those same beds would share their noise
+  // with every signature (a pure-noise "gap" would then look like each effect). So every
+  // effect's model is referenced to the fresh baseline: M(a) = B_fresh + (I(a) - B_sig)
+  // (EffectData::ref_err); its residual at magnitude 0 is T - B_fresh, independent of the
+  // signatures.
+  std::vector<Ensemble> eF(ns);
+  std::vector<std::vector<double>> errF(ns);
+  for (std::size_t s = 0; s < ns; ++s) {
+    eF[s] = ensemble_of(fresh[speeds[s]], grid, speeds[s]);
+    errF[s] = model_err(eF[s], cv2[s]);
+  }
+  // null replicates: the fresh beds split in two, one part taken as a measurement without
+  // any effect (as many runs as the measurement has, leaving at least two), the rest as its
+  // fresh baseline, processed as the measurement is
   std::vector<Target> nulls;
   {
     std::size_t nf = 1 << 30;
     for (std::size_t s = 0; s < ns; ++s) nf = std::min(nf, fresh[speeds[s]].size());
-    const std::size_t m = std::clamp<std::size_t>(d.real_files.size() / std::max<std::size_t>(1, ns), 1, nf - 1);
-    // each fresh run's features once; a replicate is an ensemble of some of them
-    std::vector<Ensemble> all(ns);
-    for (std::size_t s = 0; s < ns; ++s) all[s] = ensemble_of(fresh[speeds[s]], grid, speeds[s]);
+    if (nf < 3) throw InputError("the fresh baseline needs at least 3 runs per speed for the null replicates");
+    const std::size_t m = std::clamp<std::size_t>(d.real_files.size() / std::max<std::size_t>(1, ns), 1, nf - 2);
     for (const auto &pick : subsets(nf, m)) {
       Target t;
       for (std::size_t s = 0; s < ns; ++s) {
-        std::vector<std::vector<double>> x;
-        for (std::size_t i : pick) x.push_back(all[s].runs[i]);
-        const Ensemble e = make_ensemble(speeds[s], x);
-        t.mean.push_back(e.mean);
-        t.err.push_back(model_err(e, cv2[s], noise_scale(e, eB[s], cv2[s], grid)));
+        std::vector<std::vector<double>> x, y;
+        for (std::size_t i = 0; i < nf; ++i)
+          (std::find(pick.begin(), pick.end(), i) != pick.end() ? x : y).push_back(eF[s].runs[i]);
+        // against the models referenced to all fresh beds: shifted by (all - rest), with the
+        // variance of the rest in place of that of all of them
+        const Ensemble e = make_ensemble(speeds[s], x), b = make_ensemble(speeds[s], y);
+        const auto eb = model_err(b, cv2[s]);
+        auto err = model_err(e, cv2[s], noise_scale(e, eB[s], cv2[s], grid));
+        std::vector<double> mean(P);
+        for (std::size_t k = 0; k < P; ++k)
+          mean[k] = e.mean[k] - b.mean[k] + eF[s].mean[k], err[k] += std::max(0.0, eb[k] - errF[s][k]);
+        t.mean.push_back(mean);
+        t.err.push_back(err);
       }
       nulls.push_back(t);
     }
@@ -326,6 +346,7 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
       };
       row("measured", eR[s].mean);
       row("baseline", eB[s].mean);
+      row("fresh baseline", eF[s].mean);
       for (auto &[name, es] : eK) row(name.c_str(), es[s].mean);
       row("cv2", cv2[s]);
     }
@@ -486,6 +507,17 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
       ed.err.push_back(er);
       ed.diff_err.push_back(de);
     }
+    // referenced to the fresh baseline (above): every knot shifted by B_fresh - B_sig,
+    // knot 0's variance the fresh baseline's, the signature baseline's carried by ref_err
+    const std::size_t j0 = (std::size_t) (std::find(ed.knots.begin(), ed.knots.end(), 0.0) - ed.knots.begin());
+    ed.ref_err.assign(1, Table());
+    for (std::size_t s = 0; s < ns; ++s) {
+      for (auto &knot : ed.mean)
+        for (std::size_t k = 0; k < P; ++k) knot[s][k] += eF[s].mean[k] - eB[s].mean[k];
+      ed.ref_err[0].push_back(ed.err[j0][s]);
+      ed.err[j0][s] = errF[s];
+    }
+    ed.noise_r2 = noise_residual(nulls, ed);
     EffectFit f = fit_effect(target, ed);
     double lsum = 0;
     for (const auto &t : nulls) lsum += effect_lr(t, ed);

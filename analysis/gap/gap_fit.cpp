@@ -51,6 +51,9 @@ void effect_predict(const EffectData &e, double a, std::size_t s, std::vector<do
   // paired: the baseline's own variance enters once (the weights sum to 1)
   if (e.paired)
     for (std::size_t k = 0; k < p; ++k) var[k] += e.err[j0][s][k];
+  // unpaired with another reference: the signature baseline subtracted with weight 1 - w0
+  else if (!e.ref_err.empty())
+    for (std::size_t k = 0; k < p; ++k) var[k] += (1.0 - w[j0]) * (1.0 - w[j0]) * e.ref_err[0][s][k];
 }
 
 double effect_chi2(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds)
@@ -82,6 +85,26 @@ double weighted_residual(const Target &t, const EffectData &e, double a, const s
       r2 += std::pow(t.mean[s][k] - m[k], 2) / (t.err[s][k] + e.err[j0][s][k]);
   }
   return r2;
+}
+
+// The fraction of the residual w0 at magnitude 0 that the residual w at the fit removes:
+// of its excess over the noise's share n when that is known (n > 0), capped at 1. The
+// excess is taken at least at 3 standard deviations of a chi^2 with n degrees of freedom:
+// a residual within the noise has little to explain, and a fraction of nearly nothing
+// would say nothing.
+double explained_fraction(double w0, double w, double n)
+{
+  if (!(w0 > 0.0)) return 0.0;
+  if (!(n > 0.0)) return 1.0 - w / w0;
+  const double excess = std::max(w0 - n, 3.0 * std::sqrt(2.0 * n));
+  return std::min(1.0, (w0 - w) / excess);
+}
+
+double noise_of(const EffectData &e, const std::vector<std::size_t> &speeds)
+{
+  double n = 0.0;
+  for (std::size_t s : speeds) n += s < e.noise_r2.size() ? e.noise_r2[s] : 0.0;
+  return n;
 }
 
 }    // namespace
@@ -130,9 +153,9 @@ EffectFit fit_effect(const Target &t, const EffectData &e)
   f.magnitude = best_magnitude(t, e, all, &f.at_edge);
   f.chi2_0 = effect_chi2(t, e, 0.0, all);
   f.chi2 = effect_chi2(t, e, f.magnitude, all);
-  const double w0 = weighted_residual(t, e, 0.0, all);
-  f.explained = w0 > 0.0 ? 1.0 - weighted_residual(t, e, f.magnitude, all) / w0 : 0.0;
-  f.lr = std::max(0.0, w0 - weighted_residual(t, e, f.magnitude, all));
+  const double w0 = weighted_residual(t, e, 0.0, all), wa = weighted_residual(t, e, f.magnitude, all);
+  f.explained = explained_fraction(w0, wa, noise_of(e, all));
+  f.lr = std::max(0.0, w0 - wa);
   // leave one speed out: fit on the others, predict the one left out
   double sum = 0.0;
   int used = 0;
@@ -148,8 +171,7 @@ EffectFit fit_effect(const Target &t, const EffectData &e)
     // a speed counts when its own gap stands out of the noise (chi^2 above p + 3 sigma)
     double ex_h = std::numeric_limits<double>::quiet_NaN();
     if (c0 - p > 3.0 * std::sqrt(2.0 * p)) {
-      const double r0 = weighted_residual(t, e, 0.0, {h});
-      ex_h = 1.0 - weighted_residual(t, e, a, {h}) / r0;
+      ex_h = explained_fraction(weighted_residual(t, e, 0.0, {h}), weighted_residual(t, e, a, {h}), noise_of(e, {h}));
     }
     f.loso_explained.push_back(ex_h);
     if (std::isfinite(ex_h)) sum += ex_h, ++used;
@@ -165,6 +187,14 @@ double effect_lr(const Target &t, const EffectData &e)
   std::iota(all.begin(), all.end(), 0);
   const double a = best_magnitude(t, e, all, nullptr);
   return std::max(0.0, weighted_residual(t, e, 0.0, all) - weighted_residual(t, e, a, all));
+}
+
+std::vector<double> noise_residual(const std::vector<Target> &nulls, const EffectData &e)
+{
+  std::vector<double> n(e.mean.empty() ? 0 : e.mean[0].size(), 0.0);
+  for (const auto &t : nulls)
+    for (std::size_t s = 0; s < n.size(); ++s) n[s] += weighted_residual(t, e, 0.0, {s}) / nulls.size();
+  return n;
 }
 
 double lr_threshold(double lr_null_mean) { return std::max(1.0, lr_null_mean) * LR_CHI2_1_P1E4; }

@@ -24,6 +24,17 @@ struct EffectData {
   std::vector<Table> diff_err;        // paired: variance of the mean paired difference to knot 0
   double reach = 0.25;
   bool one_sided = false;             // no magnitude below 0
+  // Knot 0 may be a reference ensemble other than the one the knots' signatures were
+  // simulated against (fresh beds: see gap_analysis.cpp): then mean[j] = reference +
+  // (knot j - signature baseline), err[0] is the reference's, and ref_err the signature
+  // baseline's variance, which a pour-level (unpaired) prediction carries with weight
+  // (1 - w0)^2. Empty: knot 0 is the signature baseline itself.
+  std::vector<Table> ref_err;         // [0]: per speed and feature
+  // Per speed: the weighted squared residual at magnitude 0 that run-to-run noise alone
+  // leaves (its mean over null replicates, noise_residual()). Given, the explained fractions
+  // are fractions of the residual's excess over it (a certain signature cannot explain the
+  // noise part of a residual); empty: fractions of the whole residual.
+  std::vector<double> noise_r2;
 };
 
 struct Target {
@@ -41,6 +52,7 @@ struct EffectFit {
   double chi2_0 = 0.0, chi2 = 0.0;  // at magnitude 0 (the baseline) and at the fit
   std::size_t nfeatures = 0;
   double explained = 0.0;           // fraction of the noise-weighted squared gap the fit removes
+                                    // (of its excess over the noise when EffectData::noise_r2 is given)
   bool at_edge = false;             // the fit sits at the end of the allowed range
   std::vector<double> loso_magnitude, loso_explained;    // per speed left out (NaN: no gap there)
   double heldout_explained = 0.0;   // mean over speeds left out that had a gap
@@ -65,6 +77,15 @@ double effect_lr(const Target &t, const EffectData &e);
 // a family-wise 1e-3, as the omnibus test).
 constexpr double LR_CHI2_1_P1E4 = 15.137;
 double lr_threshold(double lr_null_mean);
+
+// The likelihood ratio beyond what noise gives along the effect's signature (the null mean's
+// excess over the nominal 1 subtracted): a signature that rests on few, noisy beds fits
+// part of any noise, and this is the evidence two candidates are compared by.
+inline double lr_evidence(const EffectFit &f) { return f.lr - (f.lr_null_mean > 1.0 ? f.lr_null_mean - 1.0 : 0.0); }
+
+// Per speed, the mean over null replicates (measurements without any effect) of the
+// weighted squared residual at magnitude 0: for EffectData::noise_r2.
+std::vector<double> noise_residual(const std::vector<Target> &nulls, const EffectData &e);
 
 // Upper tail probability of chi^2 with k degrees of freedom.
 double chi2_sf(double chi2, double k);

@@ -22,7 +22,7 @@ void decide_verdict(Diagnosis &d)
   d.significant = omnibus || d.targeted;
   auto ratio = [](const EffectFit &f) { return f.lr_threshold > 0 ? f.lr / f.lr_threshold : 0.0; };
   std::sort(d.ranking.begin(), d.ranking.end(), [&](const EffectFit &a, const EffectFit &b) {
-    return d.targeted ? ratio(a) > ratio(b) : a.explained > b.explained;
+    return d.targeted ? ratio(a) > ratio(b) : lr_evidence(a) > lr_evidence(b);
   });
   const EffectFit *top = d.ranking.empty() ? nullptr : &d.ranking[0];
   const EffectFit *second = d.ranking.size() > 1 ? &d.ranking[1] : nullptr;
@@ -55,7 +55,7 @@ void decide_verdict(Diagnosis &d)
     why = "the gap is within the noise (chi^2 " + fmt(d.chi2_0, "%.1f") + " over " + std::to_string(d.nfeatures) +
           " features, p = " + fmt(d.p_value, "%.2g") + "; no candidate's likelihood ratio above its threshold)";
   } else if (top && top->explained >= 0.5 && top->heldout_explained >= 0.3 &&
-             (!second || second->chi2 - top->chi2 >= 6.0) && !top->at_edge) {
+             (!second || lr_evidence(*top) - lr_evidence(*second) >= 6.0) && !top->at_edge) {
     d.verdict = "explained";
     d.top_effect = top->name;
   } else {
@@ -64,7 +64,9 @@ void decide_verdict(Diagnosis &d)
     else if (top->explained < 0.5) why = "the best candidate (" + top->name + ") explains " + fmt(top->explained, "%.2f") + " of the gap";
     else if (top->heldout_explained < 0.3) why = top->name + " fits but does not predict the speeds left out (" + fmt(top->heldout_explained, "%.2f") + ")";
     else if (top->at_edge) why = top->name + " needs a magnitude beyond its simulated range";
-    else why = top->name + " and " + second->name + " explain the gap about equally well (chi^2 " + fmt(top->chi2, "%.1f") + " and " + fmt(second->chi2, "%.1f") + ")";
+    else why = top->name + " and " + second->name + " explain the gap about equally well (likelihood ratios beyond the noise's " +
+               fmt(lr_evidence(*top), "%.1f") + " and " + fmt(lr_evidence(*second), "%.1f") + ", chi^2 at the fits " +
+               fmt(top->chi2, "%.1f") + " and " + fmt(second->chi2, "%.1f") + ")";
   }
   if (!why.empty()) d.notes.push_back("verdict: " + why);
 

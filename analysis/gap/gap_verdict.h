@@ -2,8 +2,8 @@
 // Two routes to a finding: the omnibus chi^2 over every feature (d.significant on entry: a
 // gap spread over many features), or one candidate's likelihood ratio above its
 // null-calibrated threshold (EffectFit::detected: a gap too small for the omnibus test that
-// lies along an effect's signature). Sorts d.ranking best first (by explained fraction, or
-// by LR / threshold on the targeted route) and sets d.targeted, d.significant, d.verdict
+// lies along an effect's signature). Sorts d.ranking best first (by the likelihood ratio
+// beyond the noise's, lr_evidence, or by LR / threshold on the targeted route) and sets d.targeted, d.significant, d.verdict
 // ("none", "explained", "unexplained"), d.top_effect, and a note saying why.
 // docs/gap.md, "Verdict".
 #ifndef GRANPEN_GAP_VERDICT_H

@@ -16,11 +16,13 @@ add_test(NAME gap_selftest_synthetic
   COMMAND sh -c "rm -rf '${GAP_SYNTH}' && GRANPEN_LMP='$<TARGET_FILE:fake_lmp>' GRANPEN_CLI='$<TARGET_FILE:granpen-cli>' GRANPEN_INPUTS='${PROJECT_SOURCE_DIR}/inputs' GRANPEN_SELFTEST_WORK='${GAP_SYNTH}' bash '${PROJECT_SOURCE_DIR}/bench/gap_selftest.sh' --scenario tiny --jobs 2 --v0 '50 100 200' --cases rolling_resistance,polydispersity,sidewalls,none")
 set_tests_properties(gap_selftest_synthetic PROPERTIES LABELS unit TIMEOUT 600 RESOURCE_LOCK gap_synthetic
   FIXTURES_SETUP gap_synthetic)
-# one measured run per speed: a warning, the noise estimated from the simulations, still a diagnosis
+# one measured run per speed: a warning, the noise estimated from the simulations, still a
+# diagnosis (polydispersity: with one run of the rolling case, rolling resistance and packing,
+# nearly degenerate in the synthetic world, are too close to tell apart: unexplained)
 add_test(NAME gap_one_run_per_speed
-  COMMAND sh -c "rm -rf '${GAP_SYNTH}/one' '${GAP_SYNTH}/one_out' && mkdir '${GAP_SYNTH}/one' && cp '${GAP_SYNTH}/tiny/real_rolling_resistance/'tiny_s101_v*.csv '${GAP_SYNTH}/one/' && '$<TARGET_FILE:granpen-cli>' gap --real '${GAP_SYNTH}/one' --scenario tiny --out '${GAP_SYNTH}/one_out' --cache '${GAP_SYNTH}/tiny/cache' --lmp '$<TARGET_FILE:fake_lmp>' --inputs '${PROJECT_SOURCE_DIR}/inputs' 2>&1")
+  COMMAND sh -c "rm -rf '${GAP_SYNTH}/one' '${GAP_SYNTH}/one_out' && mkdir '${GAP_SYNTH}/one' && cp '${GAP_SYNTH}/tiny/real_polydispersity/'tiny_s101_v*.csv '${GAP_SYNTH}/one/' && '$<TARGET_FILE:granpen-cli>' gap --real '${GAP_SYNTH}/one' --scenario tiny --out '${GAP_SYNTH}/one_out' --cache '${GAP_SYNTH}/tiny/cache' --lmp '$<TARGET_FILE:fake_lmp>' --inputs '${PROJECT_SOURCE_DIR}/inputs' 2>&1")
 set_tests_properties(gap_one_run_per_speed PROPERTIES LABELS unit FIXTURES_REQUIRED gap_synthetic RESOURCE_LOCK gap_synthetic
-  PASS_REGULAR_EXPRESSION "warning: v0 = 50 cm/s has one measured run: its noise is unknown.*verdict explained \\(rolling_resistance")
+  PASS_REGULAR_EXPRESSION "warning: v0 = 50 cm/s has one measured run: its noise is unknown.*verdict explained \\(polydispersity")
 # --fit-only: the same data set (polydispersity) diagnosed without confirming runs: a
 # provisional verdict, "confirmed": false, G after = before, no fresh-seed sweep of it
 add_test(NAME gap_fit_only_is_provisional

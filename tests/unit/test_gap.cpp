@@ -222,6 +222,7 @@ EffectFit candidate(const std::string &name, double explained, double heldout, d
   EffectFit f;
   f.name = name, f.explained = explained, f.heldout_explained = heldout, f.chi2 = chi2;
   f.lr = lr, f.lr_threshold = threshold, f.detected = lr > threshold;
+  f.lr_null_mean = threshold / LR_CHI2_1_P1E4;
   return f;
 }
 Diagnosis significance(bool omnibus, std::vector<EffectFit> ranking)
@@ -239,15 +240,23 @@ TEST(GapVerdict, TheTwoRoutesAndTheirConditions)
   decide_verdict(d);
   EXPECT_EQ(d.verdict, "none");
   EXPECT_FALSE(d.significant);
-  // omnibus: the best explained fraction wins by a chi^2 margin of 6
+  // omnibus: the largest likelihood ratio beyond the noise's wins by a margin of 6
   d = significance(true, {candidate("b", 0.3, 0.3, 150, 50, 15), candidate("a", 0.7, 0.6, 80, 120, 15)});
   decide_verdict(d);
   EXPECT_EQ(d.verdict, "explained");
   EXPECT_EQ(d.top_effect, "a");
   EXPECT_FALSE(d.targeted);
-  d = significance(true, {candidate("a", 0.7, 0.6, 80, 120, 15), candidate("b", 0.65, 0.6, 83, 110, 15)});
+  d = significance(true, {candidate("a", 0.7, 0.6, 80, 120, 15), candidate("b", 0.65, 0.6, 83, 116, 15)});
   decide_verdict(d);
   EXPECT_EQ(d.verdict, "unexplained");    // a and b too close
+  // a noisier signature (null mean 3.7) fits more of the noise: 125 - 2.7 against 120 is a tie
+  d = significance(true, {candidate("b", 1.0, 0.9, 25, 125, 3.7 * LR_CHI2_1_P1E4), candidate("a", 0.97, 0.95, 34, 120, 15.137)});
+  decide_verdict(d);
+  EXPECT_EQ(d.verdict, "unexplained");
+  d = significance(true, {candidate("b", 1.0, 0.9, 25, 125, 1.0), candidate("a", 0.97, 0.95, 34, 118, 15.137)});
+  decide_verdict(d);
+  EXPECT_EQ(d.verdict, "explained");    // without the null's excess, 125 against 118 decides
+  EXPECT_EQ(d.top_effect, "b");
   // targeted: not significant overall, one candidate detected, alone, explaining enough
   d = significance(false, {candidate("b", 0.1, 0.1, 70, 4, 60), candidate("a", 0.64, 0.64, 36, 44, 37)});
   decide_verdict(d);
