@@ -2,15 +2,18 @@
 
 namespace granpen {
 
-const std::vector<std::string> SIGNATURE_SEEDS = {"1", "2"}, CONFIRM_SEEDS = {"11", "12", "13", "14"};
+// signature beds; the reference beds the fits measure the gap against (and split for the
+// null replicates); the confirmation's beds, used by no fit
+const std::vector<std::string> SIGNATURE_SEEDS = {"1", "2"}, REFERENCE_SEEDS = {"11", "12", "13", "14"},
+                               CONFIRM_SEEDS = {"21", "22", "23", "24"};
 
 std::vector<SimRequest> signature_requests(const std::string &scenario, const std::vector<std::string> &v0,
                                            const std::vector<const Effect *> &effects)
 {
-  // the baseline on the signature beds, and on the fresh beds: the null replicates of the
-  // targeted test (and the paired baseline of a push-only effect's confirmation)
+  // the baseline on the signature beds, and on the reference beds: what the fits measure
+  // the gap against, and the null replicates of the targeted test
   std::vector<SimRequest> out{baseline_request(scenario, v0, SIGNATURE_SEEDS, "baseline"),
-                              baseline_request(scenario, v0, CONFIRM_SEEDS, "fresh_baseline")};
+                              baseline_request(scenario, v0, REFERENCE_SEEDS, "fresh_baseline")};
   for (const Effect *e : effects)
     for (double a : e->knots) {
       SimRequest r = effect_request(scenario, *e, a, v0, SIGNATURE_SEEDS, effect_sweep_name(*e, a));
@@ -26,10 +29,10 @@ std::vector<SimRequest> confirm_requests(const std::string &scenario, const Effe
   std::vector<SimRequest> out;
   SimRequest r = effect_request(scenario, e, a, v0, CONFIRM_SEEDS, tag + "_" + effect_sweep_name(e, a));
   if (!e.pour_level) {
-    // fresh baseline beds, poured once for every push-only confirmation; their own pushes
-    // give the baseline on the same fresh beds, so the confirmation is a paired comparison
-    out.push_back(baseline_request(scenario, v0, CONFIRM_SEEDS, "fresh_baseline"));
-    r.beds_from = "fresh_baseline";
+    // the confirmation's beds, poured once for every push-only confirmation (with the
+    // baseline's pushes on them)
+    out.push_back(baseline_request(scenario, v0, CONFIRM_SEEDS, "confirm_baseline"));
+    r.beds_from = "confirm_baseline";
   }
   out.push_back(r);
   return out;

@@ -11,7 +11,7 @@ namespace granpen {
 
 // Seeds of the signature simulations (baseline and every effect knot) and of the
 // confirming runs, which must be beds no fit has seen.
-extern const std::vector<std::string> SIGNATURE_SEEDS, CONFIRM_SEEDS;
+extern const std::vector<std::string> SIGNATURE_SEEDS, REFERENCE_SEEDS, CONFIRM_SEEDS;
 
 // The baseline and every knot of the chosen effects, at the speeds v0 (the cache).
 std::vector<SimRequest> signature_requests(const std::string &scenario, const std::vector<std::string> &v0,
