@@ -20,18 +20,21 @@ void decide_verdict(Diagnosis &d)
   const bool omnibus = d.significant;
   d.targeted = !omnibus && std::any_of(d.ranking.begin(), d.ranking.end(), [](const EffectFit &f) { return f.detected; });
   d.significant = omnibus || d.targeted;
-  auto ratio = [](const EffectFit &f) { return f.lr_threshold > 0 ? f.lr / f.lr_threshold : 0.0; };
-  std::sort(d.ranking.begin(), d.ranking.end(), [&](const EffectFit &a, const EffectFit &b) {
-    return d.targeted ? ratio(a) > ratio(b) : lr_evidence(a) > lr_evidence(b);
-  });
+  // candidates compared by their likelihood ratio beyond what noise gives along their
+  // signatures (on both routes: the null mean's excess is what a noisier signature fits of
+  // any noise, an additive share)
+  std::sort(d.ranking.begin(), d.ranking.end(),
+            [&](const EffectFit &a, const EffectFit &b) { return lr_evidence(a) > lr_evidence(b); });
+  // two candidates are told apart by a likelihood-ratio margin of 6 (a factor e^3 = 20)
+  const double margin = 6.0;
   const EffectFit *top = d.ranking.empty() ? nullptr : &d.ranking[0];
   const EffectFit *second = d.ranking.size() > 1 ? &d.ranking[1] : nullptr;
   std::string why;
   if (d.targeted) {
     // one candidate's signature stands out: it must stand out alone (a second detected one
-    // at least 1.5 times less far above its threshold) and, as on the omnibus route,
-    // explain at least half of the gap and predict the speeds left out
-    const bool alone = !second || !second->detected || ratio(*top) >= 1.5 * ratio(*second);
+    // at least the margin behind) and, as on the omnibus route, explain at least half of the
+    // gap and predict the speeds left out
+    const bool alone = !second || !second->detected || lr_evidence(*top) - lr_evidence(*second) >= margin;
     if (alone && top->explained >= 0.5 && top->heldout_explained >= 0.3) {
       d.verdict = "explained";
       d.top_effect = top->name;
@@ -55,7 +58,7 @@ void decide_verdict(Diagnosis &d)
     why = "the gap is within the noise (chi^2 " + fmt(d.chi2_0, "%.1f") + " over " + std::to_string(d.nfeatures) +
           " features, p = " + fmt(d.p_value, "%.2g") + "; no candidate's likelihood ratio above its threshold)";
   } else if (top && top->explained >= 0.5 && top->heldout_explained >= 0.3 &&
-             (!second || lr_evidence(*top) - lr_evidence(*second) >= 6.0) && !top->at_edge) {
+             (!second || lr_evidence(*top) - lr_evidence(*second) >= margin) && !top->at_edge) {
     d.verdict = "explained";
     d.top_effect = top->name;
   } else {

@@ -3,7 +3,7 @@
 // gap spread over many features), or one candidate's likelihood ratio above its
 // null-calibrated threshold (EffectFit::detected: a gap too small for the omnibus test that
 // lies along an effect's signature). Sorts d.ranking best first (by the likelihood ratio
-// beyond the noise's, lr_evidence, or by LR / threshold on the targeted route) and sets d.targeted, d.significant, d.verdict
+// beyond the noise's, lr_evidence) and sets d.targeted, d.significant, d.verdict
 // ("none", "explained", "unexplained"), d.top_effect, and a note saying why.
 // docs/gap.md, "Verdict".
 #ifndef GRANPEN_GAP_VERDICT_H

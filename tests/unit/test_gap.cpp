@@ -269,12 +269,17 @@ TEST(GapVerdict, TheTwoRoutesAndTheirConditions)
   decide_verdict(d);
   EXPECT_EQ(d.verdict, "unexplained");
   EXPECT_TRUE(d.top_effect.empty());
-  // two detected about equally far above their thresholds: unexplained
-  d = significance(false, {candidate("a", 0.6, 0.6, 40, 40, 20), candidate("b", 0.6, 0.6, 40, 50, 30)});
+  // two detected with about the same evidence (LR beyond the null's excess): unexplained
+  d = significance(false, {candidate("a", 0.6, 0.6, 40, 40, 20), candidate("b", 0.6, 0.6, 40, 44, 30)});
   decide_verdict(d);
   EXPECT_EQ(d.verdict, "unexplained");
   ASSERT_EQ(d.ranking.size(), 2u);
-  EXPECT_EQ(d.ranking[0].name, "a");    // sorted by LR / threshold on this route: 2.0 before 1.67
+  EXPECT_EQ(d.ranking[0].name, "b");    // 44 - 0.98 before 40 - 0.32
+  // the same with a margin of 6: the first is named although its LR / threshold is smaller
+  d = significance(false, {candidate("a", 0.68, 0.68, 74, 26.5, 15.1), candidate("b", 0.9, 0.9, 60, 35.2, 23.3)});
+  decide_verdict(d);
+  EXPECT_EQ(d.verdict, "explained");
+  EXPECT_EQ(d.top_effect, "b");
 }
 
 TEST(GapFit, ChiSquareTail)
