@@ -29,10 +29,10 @@ std::vector<SimRequest> confirm_requests(const std::string &scenario, const Effe
   std::vector<SimRequest> out;
   SimRequest r = effect_request(scenario, e, a, v0, CONFIRM_SEEDS, tag + "_" + effect_sweep_name(e, a));
   if (!e.pour_level) {
-    // the confirmation's beds, poured once for every push-only confirmation (with the
-    // baseline's pushes on them)
-    out.push_back(baseline_request(scenario, v0, CONFIRM_SEEDS, "confirm_baseline"));
-    r.beds_from = "confirm_baseline";
+    // the confirmation's beds, poured once for every push-only confirmation (pours only:
+    // the baseline's pushes on them would enter nothing)
+    out.push_back(baseline_request(scenario, {}, CONFIRM_SEEDS, "confirm_beds"));
+    r.beds_from = "confirm_beds";
   }
   out.push_back(r);
   return out;

@@ -5,7 +5,7 @@
 //   CACHE/SCENARIO/fresh_baseline           the model on the reference beds, seeds 11 to 14
 //   CACHE/SCENARIO/confirm_EFFECT_MAGNITUDE the top effect at its fitted magnitude, seeds 21 to 24
 //   CACHE/SCENARIO/heldout_EFFECT_MAGNITUDE the same at the held-out speed's own magnitude
-//   CACHE/SCENARIO/confirm_baseline         the model on seeds 21 to 24 (beds for push-only ones)
+//   CACHE/SCENARIO/confirm_beds             beds of seeds 21 to 24 for push-only confirmations
 // A push-only effect (measurement chain) reuses the beds of the baseline with the same
 // seeds (hard links): its signature is then a paired difference, bed noise cancels.
 // The sweep runner skips what is done and resumes what was interrupted, so a diagnosis
