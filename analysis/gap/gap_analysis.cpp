@@ -316,6 +316,7 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
     std::size_t nf = 1 << 30;
     for (std::size_t s = 0; s < ns; ++s) nf = std::min(nf, fresh[speeds[s]].size());
     if (nf < 3) throw InputError("the fresh baseline needs at least 3 runs per speed for the null replicates");
+    d.n_reference = (int) nf;
     const std::size_t m = std::clamp<std::size_t>(d.real_files.size() / std::max<std::size_t>(1, ns), 1, nf - 2);
     for (const auto &pick : subsets(nf, m)) {
       Target t;

@@ -69,11 +69,13 @@ void write_json(const Diagnosis &d, const std::string &path)
     const auto &r = d.ranking[i];
     std::fprintf(f, "%s\n    {\"effect\": %s, \"explained_fraction\": %s, \"score\": %s, \"magnitude\": %s, "
                     "\"heldout_explained\": %s, \"chi2\": %s, \"chi2_baseline\": %s, \"at_edge\": %s, "
-                    "\"likelihood_ratio\": %s, \"lr_null_mean\": %s, \"lr_threshold\": %s, \"detected\": %s",
+                    "\"likelihood_ratio\": %s, \"lr_null_mean\": %s, \"lr_threshold\": %s, \"detected\": %s, "
+                    "\"evidence\": %s",
                  i ? "," : "", json_string(r.name).c_str(), num(r.explained, "%.4f").c_str(), num(r.score, "%.4f").c_str(),
                  num(r.magnitude).c_str(), num(r.heldout_explained, "%.4f").c_str(), num(r.chi2, "%.2f").c_str(),
                  num(r.chi2_0, "%.2f").c_str(), r.at_edge ? "true" : "false", num(r.lr, "%.2f").c_str(),
-                 num(r.lr_null_mean, "%.3f").c_str(), num(r.lr_threshold, "%.2f").c_str(), r.detected ? "true" : "false");
+                 num(r.lr_null_mean, "%.3f").c_str(), num(r.lr_threshold, "%.2f").c_str(), r.detected ? "true" : "false",
+                 num(lr_evidence(r), "%.2f").c_str());
     auto it = d.magnitude_note.find(r.name);
     if (it != d.magnitude_note.end()) std::fprintf(f, ", \"note\": %s", json_string(it->second).c_str());
     std::fprintf(f, "}");
@@ -235,21 +237,26 @@ void write_gap_report(const Diagnosis &d, const std::string &dir)
                   "to the baseline's crossover depth, linear: beyond.\n\n");
   std::fprintf(f, "| regime | G before | G after |\n|---|---|---|\n");
   for (const auto &[reg, ba] : d.gap_by_regime) std::fprintf(f, "| %s | %.3f | %.3f |\n", reg.c_str(), ba.first, ba.second);
-  std::fprintf(f, "\n## Which\n\n| effect | magnitude | explained | held-out explained | chi^2 (baseline %.1f) | "
-                  "likelihood ratio | its threshold |\n|---|---|---|---|---|---|---|\n",
-               d.chi2_0);
+  std::fprintf(f, "\n## Which\n\n| effect | magnitude | explained | held-out explained | chi^2 (reference %.1f) | "
+                  "likelihood ratio | its threshold | evidence |\n|---|---|---|---|---|---|---|---|\n",
+               d.ranking.empty() ? 0.0 : d.ranking[0].chi2_0);
   for (const auto &r : d.ranking) {
     auto it = d.magnitude_note.find(r.name);
-    std::fprintf(f, "| %s | %.4g%s%s | %.2f | %.2f | %.1f | %s%.1f%s | %.1f |\n", r.name.c_str(), r.magnitude,
+    std::fprintf(f, "| %s | %.4g%s%s | %.2f | %.2f | %.1f | %s%.1f%s | %.1f | %.1f |\n", r.name.c_str(), r.magnitude,
                  r.at_edge ? " (edge)" : "", it == d.magnitude_note.end() ? "" : (" (" + it->second + ")").c_str(),
                  r.explained, r.heldout_explained, r.chi2, r.detected ? "**" : "", r.lr, r.detected ? "**" : "",
-                 r.lr_threshold);
+                 r.lr_threshold, lr_evidence(r));
   }
-  std::fprintf(f, "\nLikelihood ratio: -2 log of the likelihood at magnitude 0 over that at the fitted magnitude "
-                  "(a chi^2 with one degree of freedom without the effect, were the noise model exact); its threshold: "
-                  "%.2f (p = 1e-4) times the ratio's mean over %d null replicates (fresh baseline beds taken as the "
-                  "measurement), at least 1. Bold: above it.\n",
-               LR_CHI2_1_P1E4, d.n_null);
+  std::fprintf(f, "\nThe fits measure the gap against the baseline on %d reference beds of their own (not the "
+                  "signature beds). Explained: the part of the noise-weighted squared gap the fit removes, as a "
+                  "fraction of its excess over what noise alone leaves. Likelihood ratio: -2 log of the likelihood "
+                  "at magnitude 0 over that at the fitted magnitude (a chi^2 with one degree of freedom without the "
+                  "effect, were the noise model exact); its threshold: %.2f (p = 1e-4) times the ratio's mean over "
+                  "%d null replicates (some reference beds taken as a measurement, the rest as its reference), at "
+                  "least 1. Bold: above it. Evidence: the likelihood ratio less the null mean's excess over 1 (what "
+                  "a noisy signature fits of any noise); candidates are ranked by it and told apart by a margin of "
+                  "6.\n",
+               d.n_reference, LR_CHI2_1_P1E4, d.n_null);
   std::fprintf(f, "\n## Notes\n\n");
   for (const auto &n : d.notes) std::fprintf(f, "- %s\n", n.c_str());
   std::fprintf(f, "\n## Figures\n\n");

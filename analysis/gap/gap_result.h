@@ -15,10 +15,6 @@ struct Finding {
   std::string regime, observable;
   double v0 = 0, real = 0, sim = 0, real_se = 0, sim_se = 0, zscore = 0;
   bool significant = false;
-  bool targeted = false;
-  bool provisional = false;                 // --fit-only: an explained verdict not confirmed                    // found by one effect's likelihood ratio, not the omnibus chi^2
-  int n_null = 0;                           // null replicates (fresh-bed subsets) of the targeted test
-  double proj_before = 0, proj_after = 0;   // targeted confirmation: the gap along the signature, in sigmas
 };
 
 struct SpeedCurves {           // per speed, on the grid's bin centres
@@ -39,9 +35,10 @@ struct Diagnosis {
   double chi2_after = 0, confirmed_fraction = 0;    // the fresh runs of the tested effect
   std::size_t nfeatures = 0;
   bool significant = false;
-  bool targeted = false;
-  bool provisional = false;                 // --fit-only: an explained verdict not confirmed                    // found by one effect's likelihood ratio, not the omnibus chi^2
-  int n_null = 0;                           // null replicates (fresh-bed subsets) of the targeted test
+  bool targeted = false;                    // found by one effect's likelihood ratio, not the omnibus chi^2
+  bool provisional = false;                 // --fit-only: an explained verdict not confirmed
+  int n_null = 0;                           // null replicates (reference-bed subsets) of the targeted test
+  int n_reference = 0;                      // reference beds (runs per speed, fewest) the fits measure against
   double proj_before = 0, proj_after = 0;   // targeted confirmation: the gap along the signature, in sigmas
   std::vector<Finding> where;
   std::vector<EffectFit> ranking;           // best first

@@ -41,7 +41,7 @@ void decide_verdict(Diagnosis &d)
       d.notes.push_back("the gap is within the noise over all features (chi^2 " + fmt(d.chi2_0, "%.1f") + " over " +
                         std::to_string(d.nfeatures) + ", p = " + fmt(d.p_value, "%.2g") + ") but lies along " +
                         top->name + "'s signature: likelihood ratio " + fmt(top->lr, "%.1f") + " against a threshold of " +
-                        fmt(top->lr_threshold, "%.1f") + " (" + std::to_string(d.n_null) + " null replicates on fresh beds)");
+                        fmt(top->lr_threshold, "%.1f") + " (" + std::to_string(d.n_null) + " null replicates on the reference beds)");
     } else if (alone) {
       d.verdict = "unexplained";
       why = "a gap along " + top->name + "'s signature (likelihood ratio " + fmt(top->lr, "%.1f") + " against " +
