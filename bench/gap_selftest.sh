@@ -32,7 +32,7 @@ export GRANPEN_LMP=${GRANPEN_LMP:-$ROOT/build/lmp_granpen} GRANPEN_INPUTS=${GRAN
 WORK=${GRANPEN_SELFTEST_WORK:-$ROOT/runs/gap_selftest}/$SCEN
 mkdir -p "$WORK"
 
-# case: name | truth (expected top effect, or none / outside) | magnitude said in the table | sweep keys
+# case: name | truth (expected top effect, or none / outside) | magnitude said in the table | sweep keys (; between lines)
 all_cases() {
   cat <<'CASES'
 none|none|0|
@@ -43,6 +43,7 @@ measurement_chain|measurement_chain|1.0|push_set = mount_k=3.947842e9 mount_c=2.
 actuator_ramp|actuator_ramp|2.4|push_set = ramp=2.4
 packing|packing|-0.18|mu = 0.12
 contact_stiffness|contact_stiffness|-0.5|set = kn=3.16228e8 kt=3.16228e8
+friction|friction|0.1|mu = 0.4;mu_push = 0.4
 light_grains|outside|rho_g 2.5 (header says 3.0)|set = rho_g=2.5
 CASES
 }
@@ -57,8 +58,9 @@ make_measured() {    # name keys -> $WORK/real_NAME/*.csv
   mkdir -p "$tdir"; echo "$keys" > "$tdir/.keys"
   local spec=$WORK/truth_$name.sweep
   { echo "name = truth_$name"; echo "preset = $SCEN"; echo "seeds = $SEEDS"; echo "v0 = $V0"
-    [ -n "$keys" ] && echo "$keys"
-    case "$keys" in mu*) echo "mu_push = 0.3" ;; esac; } > "$spec"
+    [ -n "$keys" ] && echo "$keys" | tr ';' '\n'
+    # a pour friction alone is packing: the push keeps the calibrated 0.3
+    case "$keys" in *mu_push*) ;; mu*) echo "mu_push = 0.3" ;; esac; } > "$spec"
   # a push-only effect pushes into the no-effect case's beds (poured once)
   case "$keys" in
     push_set*) mkdir -p "$WORK/truth/truth_$name/beds"

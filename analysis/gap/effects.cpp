@@ -50,6 +50,10 @@ std::string packing_mu(double a)
   return deck_number(0.3 + a);
 }
 
+// friction: the grains' sliding friction, pour and push alike (the calibration's one
+// number: a data set whose grains are rougher or smoother than the calibrated 0.3)
+std::string friction_mu(double a) { return deck_number(0.3 + a); }
+
 }    // namespace
 
 const std::vector<Effect> &effect_library()
@@ -57,10 +61,12 @@ const std::vector<Effect> &effect_library()
   static const std::vector<Effect> lib = {
       {"rolling_resistance", "rolling friction between grains (pair granular, rolling sds): stand-in for non-spherical beads",
        "rolling friction coefficient mu_r", true, {0.1, 0.3}, true, rolling, none, "", nullptr},
-      {"polydispersity", "grain diameters uniform in d_g (1 +- w)", "relative half-width w", true, {0.1, 0.25}, true,
+      // one knot each: their signatures in bench are at the noise (docs/gap-validation.md),
+      // and every pour-level knot costs two pours and six pushes of the cold cache
+      {"polydispersity", "grain diameters uniform in d_g (1 +- w)", "relative half-width w", true, {0.25}, true,
        poly, none, "", nullptr},
       {"sidewalls", "a frictional container (walls at x, y = 0 and 8 cm) instead of periodic x, y",
-       "wall friction coefficient", true, {0.2, 0.6}, true, walls, none, "", nullptr},
+       "wall friction coefficient", true, {0.6}, true, walls, none, "", nullptr},
       {"measurement_chain", "force sensor on a spring-damper mount (100 g, damping ratio 0.2; fix rod/drive mount)",
        "mount natural period, ms", false, {0.35, 0.7, 1.4}, true, none, mount, "", nullptr},
       {"actuator_ramp", "actuator speed rising linearly from 0 to v0 over a travel (fix rod/drive ramp)",
@@ -68,6 +74,8 @@ const std::vector<Effect> &effect_library()
        {0.8, 1.6, 3.2}, true, none, ramp, "", nullptr},
       {"packing", "bed prepared at another packing fraction (poured with another friction, pushed with 0.3)",
        "pour friction minus 0.3", true, {-0.2, 0.3}, false, none, none, "", packing_mu},
+      {"friction", "grain sliding friction other than the calibrated 0.3, in the pour and the push (beds poured with it)",
+       "friction coefficient minus 0.3", true, {-0.1, 0.15}, false, none, none, "", friction_mu, true},
       {"contact_stiffness", "contact stiffness kn = kt scaled (timestep scaled with the contact time)",
        "log10(k / 1e9 dyne/cm^2)", true, {-0.6, 0.6}, false, stiffness, none, "", nullptr},
   };

@@ -25,6 +25,7 @@ struct Effect {
   DeckVars (*push_set)(double a) = nullptr;
   std::string pour_mu;      // friction of the pours ("" = the scenario's)
   std::string (*pour_mu_at)(double a) = nullptr;    // packing: the pour friction sets phi_0
+  bool push_mu_follows = false;  // the push keeps the pour's friction (else the scenario's 0.3)
 };
 
 // The library, in a fixed order.

@@ -32,7 +32,7 @@ SimRequest effect_request(const std::string &scenario, const Effect &e, double a
   if (e.push_set) r.spec.push_set = e.push_set(a);
   if (e.pour_mu_at) {
     r.spec.mu = {e.pour_mu_at(a)};
-    r.spec.mu_push = {"0.3"};
+    if (!e.push_mu_follows) r.spec.mu_push = {"0.3"};    // packing: only the bed differs
   }
   return r;
 }

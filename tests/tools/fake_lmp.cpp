@@ -7,6 +7,7 @@
 // level grows with the contact stiffness. The model knobs act as named in inputs/:
 //   mu_roll a: k *= 1 + 1.5 a           poly w: P *= 1 - 2 w
 //   walls 1, mu_wall a: + 5e4 a z^2     mu (pour friction) m: F *= 1 - 1.5 (m - 0.3)
+//   mu_push m (the pour's when not given): k *= 1 + 2 (m - 0.3)
 //   kn s*1e9: grain noise *= s^0.5, and it decorrelates faster
 //   ramp L: the peak moves deeper by (L - 0.5) / 2 once L > 0.5 (the rod is still slow)
 //   mount_k, mount_c, mount_m: the signal goes through the mount's spring-damper
@@ -54,7 +55,7 @@ int main(int argc, char **argv)
       if (line.rfind("mu = ", 0) == 0) mu_pour = std::atof(line.c_str() + 5);
   }
   const double v0 = num("v0", 100), depth = num("depth", 4.0), dt = 1e-4;
-  double k = 3e5 * (1 + 1.5 * num("mu_roll", 0)), P = 4e5 * std::pow(v0 / 100, 2) * (1 - 2 * num("poly", 0));
+  double k = 3e5 * (1 + 1.5 * num("mu_roll", 0)) * (1 + 2 * (num("mu_push", mu_pour) - 0.3)), P = 4e5 * std::pow(v0 / 100, 2) * (1 - 2 * num("poly", 0));
   const double peak_z = 0.3 + std::max(0.0, num("ramp", 0) - 0.5) / 2;
   const double wall = num("walls", 0) > 0 ? 5e4 * num("mu_wall", 0.3) : 0.0;
   const double scale = (1 - 1.5 * (mu_pour - 0.3)) * num("rho_g", 3.0) / 3.0;
