@@ -2,6 +2,7 @@
 #include "effects.h"
 #include "gap_data.h"
 #include "gap_fit.h"
+#include "gap_sims.h"
 #include "gap_verdict.h"
 
 #include <gtest/gtest.h>
@@ -306,4 +307,12 @@ TEST(GapEffects, LibraryKnobsAreDeckVariables)
   for (const auto &[k, val] : find_effect("contact_stiffness")->set(0.6))
     if (k == "dt_push") EXPECT_NEAR(1e-4 / std::stod(val), std::round(1e-4 / std::stod(val)), 1e-6);
   EXPECT_EQ(effect_sweep_name(*find_effect("packing"), -0.2), "packing_-0.2");
+  // friction: beds poured with it and pushed with it; packing: poured with it, pushed with 0.3
+  const SimRequest fr = effect_request("bench", *find_effect("friction"), 0.1, {"100"}, {"1"}, "f");
+  ASSERT_EQ(fr.spec.mu.size(), 1u);
+  EXPECT_EQ(fr.spec.mu[0], "0.4");
+  EXPECT_TRUE(fr.spec.mu_push.empty());    // in.push: mu_push defaults to the bed's mu
+  const SimRequest pk = effect_request("bench", *find_effect("packing"), 0.1, {"100"}, {"1"}, "p");
+  ASSERT_EQ(pk.spec.mu_push.size(), 1u);
+  EXPECT_EQ(pk.spec.mu_push[0], "0.3");
 }
