@@ -354,41 +354,43 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
   d.notes.push_back("noise model: run-to-run scatter of every simulated ensemble pooled per speed and feature (" +
                     std::to_string(dof_min) + " degrees of freedom), relative to the mean, smoothed over neighbouring depths");
 
-  // ---- where: the gap curve, G, the observables per regime
+  // ---- where: the gap curve, G, the observables per regime, all against the baseline on
+  // the reference beds (what the fits see; four beds, as many as the confirmation has, so
+  // that G before and after share a noise floor)
   d.n_real_min = 1 << 30;
   double gb = 0;
   for (std::size_t s = 0; s < ns; ++s) {
     SpeedCurves c;
     c.v0 = speeds[s];
     c.n_real = (int) eR[s].n();
-    c.n_base = (int) eB[s].n();
+    c.n_base = (int) eF[s].n();
     d.n_real_min = std::min(d.n_real_min, c.n_real);
-    const auto errB = model_err(eB[s], cv2[s]);
+    const auto errB = model_err(eF[s], cv2[s]);
     for (std::size_t b = 0; b < nb; ++b) {
       c.z.push_back(grid.centre(b));
       c.real.push_back(eR[s].mean[b]);
       c.real_se.push_back(std::sqrt(target.err[s][b]));
-      c.base.push_back(eB[s].mean[b]);
+      c.base.push_back(eF[s].mean[b]);
       c.base_se.push_back(std::sqrt(errB[b]));
-      c.gap.push_back(eR[s].mean[b] - eB[s].mean[b]);
+      c.gap.push_back(eR[s].mean[b] - eF[s].mean[b]);
       c.band.push_back(2.0 * std::sqrt(target.err[s][b] + errB[b]));
     }
-    c.G_before = gap_metric(eR[s], eB[s], 0, nb);
+    c.G_before = gap_metric(eR[s], eF[s], 0, nb);
     gb += c.G_before / ns;
     d.speeds.push_back(c);
   }
   d.gap_before = gb;
-  d.n_sim = (int) SIGNATURE_SEEDS.size();
+  d.n_sim = d.n_reference;    // the baseline the gap is measured against: the reference beds
 
   // regimes from the baseline's crossover (t~* of its runs, mean)
   for (std::size_t s = 0; s < ns; ++s) {
     const double v = speeds[s];
     std::vector<double> ts;
-    for (const auto &r : base[v]) {
+    for (const auto &r : fresh[v]) {
       const auto o = run_observables(r.z, r.F, v, sc.D, sc.g, sc.d_g, grid, grid.zmax);
       if (o.crossed) ts.push_back(o.t_star);
     }
-    const double zc = ts.size() == base[v].size() && !ts.empty() ? mean_of(ts) * v * std::sqrt(sc.D / sc.g) : grid.zmax;
+    const double zc = ts.size() == fresh[v].size() && !ts.empty() ? mean_of(ts) * v * std::sqrt(sc.D / sc.g) : grid.zmax;
     d.speeds[s].z_transient_end = std::clamp(zc, 0.35 * sc.D, grid.zmax);
   }
   // observables: each side's mean; standard errors from the run-to-run variance pooled
@@ -415,7 +417,7 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
       }
       return o;
     };
-    const Obs oR = collect(real[v]), oB = collect(base[v]);
+    const Obs oR = collect(real[v]), oB = collect(fresh[v]);
     std::map<std::string, std::pair<double, int>> pooled;    // sum of squares, dof
     auto pool = [&](const Obs &o) {
       for (const auto &[name, xs] : o) {
@@ -458,8 +460,8 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
     null.mean = {Table()};
     null.err = {Table()};
     for (std::size_t s = 0; s < ns; ++s) {
-      null.mean[0].push_back(eB[s].mean);
-      null.err[0].push_back(model_err(eB[s], cv2[s]));
+      null.mean[0].push_back(eF[s].mean);
+      null.err[0].push_back(model_err(eF[s], cv2[s]));
     }
     d.chi2_0 = effect_chi2(target, null, 0.0, all);
     d.nfeatures = ns * P;
@@ -555,7 +557,7 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
   std::fflush(stdout);
   for (auto &c : d.speeds) c.corr = c.base, c.corr_se = c.base_se, c.G_after = c.G_before, c.n_corr = c.n_base;
   d.gap_after = d.gap_before;
-  for (const auto &r : base) for (const auto &x : r.second) d.baseline_files.push_back(x.path);
+  for (const auto &r : fresh) for (const auto &x : r.second) d.baseline_files.push_back(x.path);
   std::size_t hs = 0;
   for (std::size_t s = 0; s < ns; ++s)
     if (d.speeds[s].G_before > d.speeds[hs].G_before) hs = s;

@@ -1,5 +1,6 @@
 // granpen gap: diagnosis.json (exact names; other tools read them), report.md and its
 // figures (io/plot_writer.h).
+#include "gap_plan.h"
 #include "gap_result.h"
 #include "json_text.h"
 #include "plot_writer.h"
@@ -212,9 +213,11 @@ void write_gap_report(const Diagnosis &d, const std::string &dir)
   FILE *f = std::fopen(path.c_str(), "w");
   if (!f) throw InputError(path + ": cannot write");
   std::fprintf(f, "# granpen gap: %s\n\n", d.real_dir.c_str());
-  std::fprintf(f, "Scenario `%s`; grid 0 < z <= %.2f cm in %.2f cm bins; at least %d measured run(s) per speed, %d "
-                  "simulated per ensemble.\n\n",
-               d.scenario.c_str(), d.grid.zmax, d.grid.w, d.n_real_min, d.n_sim);
+  std::fprintf(f, "Scenario `%s`; grid 0 < z <= %.2f cm in %.2f cm bins; at least %d measured run(s) per speed; the "
+                  "baseline on %d reference beds (before), each effect's signature on %zu beds per magnitude, the "
+                  "confirmation on %zu fresh beds (after).\n\n",
+               d.scenario.c_str(), d.grid.zmax, d.grid.w, d.n_real_min, d.n_sim, SIGNATURE_SEEDS.size(),
+               CONFIRM_SEEDS.size());
   std::fprintf(f, "**Verdict: %s%s**%s.  \n", d.verdict.c_str(), d.provisional ? " (provisional: not confirmed, --fit-only)" : "",
                d.top_effect.empty() ? "" : (" — " + d.top_effect + " at magnitude " + f3(d.magnitude, "%.4g") + " (" + d.magnitude_unit + ")").c_str());
   std::fprintf(f, "Overall gap G (shared/formats/gap-metric.md): %.3f before, %.3f after%s.  \n", d.gap_before,
