@@ -227,7 +227,8 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
   std::map<std::string, BySpeed> knots;    // sweep name -> runs
   for (const Effect *e : effects)
     for (double a : e->knots) knots[effect_sweep_name(*e, a)] = load_sweep(cache, effect_sweep_name(*e, a));
-  // the baseline on fresh beds: the null replicates of the targeted test
+  // the baseline on the reference beds (seeds 11 to 14): what the fits measure the gap
+  // against, and the null replicates of the targeted test
   BySpeed fresh = load_sweep(cache, "fresh_baseline");
   std::map<double, double> ref;    // per speed: the baseline's mean onset
   double zdeep = sc.depth;
@@ -295,27 +296,26 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
     target.mean.push_back(eR[s].mean);
     target.err.push_back(model_err(eR[s], cv2[s], scale));
   }
-  // The fits see the gap against the baseline on the fresh beds (seeds 11 to 14), not
+  // The fits see the gap against the baseline on the reference beds (seeds 11 to 14), not
   // against the signature beds (1, 2): an effect's signature is a difference to the
   // signature beds, and a gap measured against those same beds would share their noise
   // with every signature (a pure-noise "gap" would then look like each effect). So every
-  // effect's model is referenced to the fresh baseline: M(a) = B_fresh + (I(a) - B_sig)
-  // (EffectData::ref_err); its residual at magnitude 0 is T - B_fresh, independent of the
-  // signatures.
+  // effect's model is referenced to them: M(a) = B_ref + (I(a) - B_sig) (EffectData::
+  // ref_err); its residual at magnitude 0 is T - B_ref, independent of the signatures.
   std::vector<Ensemble> eF(ns);
   std::vector<std::vector<double>> errF(ns);
   for (std::size_t s = 0; s < ns; ++s) {
     eF[s] = ensemble_of(fresh[speeds[s]], grid, speeds[s]);
     errF[s] = model_err(eF[s], cv2[s]);
   }
-  // null replicates: the fresh beds split in two, one part taken as a measurement without
-  // any effect (as many runs as the measurement has, leaving at least two), the rest as its
-  // fresh baseline, processed as the measurement is
+  // null replicates: the reference beds split in two, one part taken as a measurement
+  // without any effect (as many runs as the measurement has, leaving at least two), the rest
+  // as its reference, processed as the measurement is
   std::vector<Target> nulls;
   {
     std::size_t nf = 1 << 30;
     for (std::size_t s = 0; s < ns; ++s) nf = std::min(nf, fresh[speeds[s]].size());
-    if (nf < 3) throw InputError("the fresh baseline needs at least 3 runs per speed for the null replicates");
+    if (nf < 3) throw InputError("the reference beds (sweep fresh_baseline) need at least 3 runs per speed for the null replicates");
     d.n_reference = (int) nf;
     const std::size_t m = std::clamp<std::size_t>(d.real_files.size() / std::max<std::size_t>(1, ns), 1, nf - 2);
     for (const auto &pick : subsets(nf, m)) {
@@ -324,7 +324,7 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
         std::vector<std::vector<double>> x, y;
         for (std::size_t i = 0; i < nf; ++i)
           (std::find(pick.begin(), pick.end(), i) != pick.end() ? x : y).push_back(eF[s].runs[i]);
-        // against the models referenced to all fresh beds: shifted by (all - rest), with the
+        // against the models referenced to all reference beds: shifted by (all - rest), with the
         // variance of the rest in place of that of all of them
         const Ensemble e = make_ensemble(speeds[s], x), b = make_ensemble(speeds[s], y);
         const auto eb = model_err(b, cv2[s]);
@@ -347,7 +347,7 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
       };
       row("measured", eR[s].mean);
       row("baseline", eB[s].mean);
-      row("fresh baseline", eF[s].mean);
+      row("reference baseline", eF[s].mean);
       for (auto &[name, es] : eK) row(name.c_str(), es[s].mean);
       row("cv2", cv2[s]);
     }
@@ -510,8 +510,8 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
       ed.err.push_back(er);
       ed.diff_err.push_back(de);
     }
-    // referenced to the fresh baseline (above): every knot shifted by B_fresh - B_sig,
-    // knot 0's variance the fresh baseline's, the signature baseline's carried by ref_err
+    // referenced to the reference beds (above): every knot shifted by B_ref - B_sig, knot
+    // 0's variance the reference's, the signature baseline's carried by ref_err
     const std::size_t j0 = (std::size_t) (std::find(ed.knots.begin(), ed.knots.end(), 0.0) - ed.knots.begin());
     ed.ref_err.assign(1, Table());
     for (std::size_t s = 0; s < ns; ++s) {
