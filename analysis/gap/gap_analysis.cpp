@@ -576,7 +576,11 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
     d.magnitude_unit = e.unit;
     d.heldout_magnitude = top->loso_magnitude[hs];
     auto req = confirm_requests(sc.name, e, d.magnitude, v0s, "confirm");
-    const double span = e.knots.back() - std::min(0.0, e.knots.front());
+    // the magnitudes the fit could reach (a two-sided effect simulated on one side mirrors it)
+    double klo = std::min(0.0, e.knots.front()), khi = std::max(0.0, e.knots.back());
+    if (!e.one_sided && klo == 0.0) klo = -khi;
+    if (!e.one_sided && khi == 0.0) khi = -klo;
+    const double span = khi - klo;
     const bool own_heldout = std::abs(d.heldout_magnitude - d.magnitude) > 0.05 * span;
     if (own_heldout) {
       auto h = confirm_requests(sc.name, e, d.heldout_magnitude, {deck_number(speeds[hs])}, "heldout");

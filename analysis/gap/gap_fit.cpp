@@ -118,8 +118,12 @@ namespace {
 double best_magnitude(const Target &t, const EffectData &e, const std::vector<std::size_t> &speeds, bool *edge)
 {
   const double lo0 = e.knots.front(), hi0 = e.knots.back();
-  const double lo = e.one_sided && lo0 >= 0.0 ? lo0 : lo0 - e.reach * (e.knots.size() > 1 ? e.knots[1] - e.knots[0] : 0.0);
-  const double hi = hi0 + e.reach * (e.knots.size() > 1 ? hi0 - e.knots[e.knots.size() - 2] : 0.0);
+  double lo = e.one_sided && lo0 >= 0.0 ? lo0 : lo0 - e.reach * (e.knots.size() > 1 ? e.knots[1] - e.knots[0] : 0.0);
+  double hi = hi0 + e.reach * (e.knots.size() > 1 ? hi0 - e.knots[e.knots.size() - 2] : 0.0);
+  // a two-sided effect simulated on one side only: linear response through the baseline
+  // out to the mirror of its farthest knot (the confirming runs check the prediction)
+  if (!e.one_sided && lo0 >= 0.0) lo = std::min(lo, -hi0);
+  if (!e.one_sided && hi0 <= 0.0) hi = std::max(hi, -lo0);
   const int n = 400;
   double best = 0.0, bestc = std::numeric_limits<double>::infinity();
   int ib = 0;

@@ -3,7 +3,8 @@
 // and for the effect the simulated ensemble means at its knots (magnitude 0 = the
 // baseline, then the reference magnitudes) with their variances. The model at magnitude
 // a is the piecewise-linear interpolation between knots (extrapolated at most `reach`
-// of the outer segments beyond the end knots); the variance of the model's prediction
+// of the outer segments beyond the end knots; a two-sided effect whose knots lie on one
+// side of 0 extrapolates linearly to the mirror of its farthest knot); the variance of the model's prediction
 // follows the interpolation weights, and for a push-only effect (paired: the knots share
 // the baseline's beds) the knots' paired differences to the baseline.
 #ifndef GRANPEN_GAP_FIT_H

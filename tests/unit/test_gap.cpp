@@ -167,6 +167,30 @@ TEST(GapFit, RecoversAKnownMagnitudeAndRanksTheRightEffect)
   EXPECT_TRUE(fit_effect(t, A).at_edge);
 }
 
+TEST(GapFit, ATwoSidedEffectSimulatedOnOneSideReachesTheOther)
+{
+  // knot at +1 only: a target at -0.8 along the signature is fitted by linear response
+  // through the baseline when the effect is two-sided, and stops at 0 when one-sided
+  const std::vector<double> sa = {10, 8, 6, 4, 2, 0};
+  EffectData A = synthetic_effect("A", sa, 0.5);
+  A.knots.pop_back(), A.mean.pop_back(), A.err.pop_back(), A.diff_err.pop_back();
+  Target t;
+  for (int s = 0; s < 2; ++s) {
+    std::vector<double> row, er;
+    for (std::size_t k = 0; k < sa.size(); ++k) row.push_back(100.0 - (s + 1) * 0.8 * sa[k]), er.push_back(0.5);
+    t.mean.push_back(row);
+    t.err.push_back(er);
+  }
+  const EffectFit two = fit_effect(t, A);
+  EXPECT_NEAR(two.magnitude, -0.8, 1e-6);
+  EXPECT_FALSE(two.at_edge);
+  EXPECT_GT(two.explained, 0.95);
+  A.one_sided = true;
+  const EffectFit one = fit_effect(t, A);
+  EXPECT_NEAR(one.magnitude, 0.0, 1e-6);
+  EXPECT_TRUE(one.at_edge);
+}
+
 TEST(GapFit, AnEffectThatFitsOneSpeedButNotTheOtherDoesNotPredictIt)
 {
   const std::vector<double> sa = {10, 8, 6, 4, 2, 0};
