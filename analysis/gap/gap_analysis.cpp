@@ -571,16 +571,14 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
                       "so the gap after is the gap before");
   } else if (d.verdict == "explained") {
     const Effect &e = *by_name[d.top_effect];
+    const EffectData &ed = effect_data.at(e.name);
     d.tested_effect = e.name;
     d.magnitude = top->magnitude;
     d.magnitude_unit = e.unit;
     d.heldout_magnitude = top->loso_magnitude[hs];
     auto req = confirm_requests(sc.name, e, d.magnitude, v0s, "confirm");
-    // the magnitudes the fit could reach (a two-sided effect simulated on one side mirrors it)
-    double klo = std::min(0.0, e.knots.front()), khi = std::max(0.0, e.knots.back());
-    if (!e.one_sided && klo == 0.0) klo = -khi;
-    if (!e.one_sided && khi == 0.0) khi = -klo;
-    const double span = khi - klo;
+    const auto [alo, ahi] = magnitude_range(ed);
+    const double span = ahi - alo;
     const bool own_heldout = std::abs(d.heldout_magnitude - d.magnitude) > 0.05 * span;
     if (own_heldout) {
       auto h = confirm_requests(sc.name, e, d.heldout_magnitude, {deck_number(speeds[hs])}, "heldout");
@@ -590,39 +588,58 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
       throw InputError("confirming simulations failed: see the manifests under " + cache + " (rerun to retry)");
     BySpeed corr = load_sweep(cache, "confirm_" + effect_sweep_name(e, d.magnitude));
     BySpeed held = own_heldout ? load_sweep(cache, "heldout_" + effect_sweep_name(e, d.heldout_magnitude)) : corr;
-    double ga = 0, chi2_after = 0;
-    // the targeted confirmation: the gap along the effect's signature u = model(a) -
-    // model(0), in standard deviations, against the baseline and against the fresh runs
-    double num0 = 0, uu0 = 0, num1 = 0, uu1 = 0;
-    const EffectData &ed = effect_data.at(e.name);
+    // the gap along the effect's signature u = model(a) - model(0) against the baseline, and
+    // (evaluate) against fresh runs at magnitude a: num / sqrt(uu) standard deviations
+    double num0 = 0, uu0 = 0;
     for (std::size_t s = 0; s < ns; ++s) {
-      const double v = speeds[s];
-      if (corr[v].empty()) throw InputError("no confirming runs at v0 = " + fmt(v));
-      align(corr[v], ref[v]);
-      for (const auto &x : corr[v]) d.corrected_files.push_back(x.path);
-      const Ensemble eC = ensemble_of(corr[v], grid, v);
-      const auto errC = model_err(eC, cv2[s]);
-      auto &c = d.speeds[s];
-      c.n_corr = (int) eC.n();
-      for (std::size_t b = 0; b < nb; ++b) c.corr[b] = eC.mean[b], c.corr_se[b] = std::sqrt(errC[b]);
-      c.G_after = gap_metric(eR[s], eC, 0, nb);
-      ga += c.G_after / ns;
-      for (std::size_t k = 0; k < P; ++k)
-        chi2_after += std::pow(eR[s].mean[k] - eC.mean[k], 2) / (target.err[s][k] + errC[k]);
       std::vector<double> ma, va, m0, v0;
       effect_predict(ed, d.magnitude, s, ma, va);
       effect_predict(ed, 0.0, s, m0, v0);
       for (std::size_t k = 0; k < P; ++k) {
-        const double u = ma[k] - m0[k], w0 = target.err[s][k] + v0[k], w1 = target.err[s][k] + errC[k];
+        const double u = ma[k] - m0[k], w0 = target.err[s][k] + v0[k];
         num0 += u * (eR[s].mean[k] - m0[k]) / w0, uu0 += u * u / w0;
-        num1 += u * (eR[s].mean[k] - eC.mean[k]) / w1, uu1 += u * u / w1;
-      }
-      if (s == hs) {
-        align(held[v], ref[v]);
-        d.heldout_after = gap_metric(eR[s], ensemble_of(held[v], grid, v), 0, nb);
       }
     }
-    d.gap_after = ga;
+    struct After {
+      double G = 0, chi2 = 0, num = 0, uu = 0;
+      double sigma() const { return uu > 0 ? num / std::sqrt(uu) : 0.0; }
+    };
+    // fresh runs at magnitude a against the measurement: G and the curves per speed (what
+    // the report calls "after"), chi^2 over every feature, the gap along the signature
+    auto evaluate = [&](BySpeed &runs, double a) {
+      After r;
+      d.corrected_files.clear();
+      for (std::size_t s = 0; s < ns; ++s) {
+        const double v = speeds[s];
+        if (runs[v].empty()) throw InputError("no confirming runs at v0 = " + fmt(v));
+        align(runs[v], ref[v]);
+        for (const auto &x : runs[v]) d.corrected_files.push_back(x.path);
+        const Ensemble eC = ensemble_of(runs[v], grid, v);
+        const auto errC = model_err(eC, cv2[s]);
+        auto &c = d.speeds[s];
+        c.n_corr = (int) eC.n();
+        for (std::size_t b = 0; b < nb; ++b) c.corr[b] = eC.mean[b], c.corr_se[b] = std::sqrt(errC[b]);
+        c.G_after = gap_metric(eR[s], eC, 0, nb);
+        r.G += c.G_after / ns;
+        std::vector<double> ma, va, m0, v0;
+        effect_predict(ed, a, s, ma, va);
+        effect_predict(ed, 0.0, s, m0, v0);
+        for (std::size_t k = 0; k < P; ++k) {
+          const double w1 = target.err[s][k] + errC[k], u = ma[k] - m0[k];
+          r.chi2 += std::pow(eR[s].mean[k] - eC.mean[k], 2) / w1;
+          r.num += u * (eR[s].mean[k] - eC.mean[k]) / w1, r.uu += u * u / w1;
+        }
+      }
+      return r;
+    };
+    const After first = evaluate(corr, d.magnitude);
+    {
+      const double v = speeds[hs];
+      align(held[v], ref[v]);
+      d.heldout_after = gap_metric(eR[hs], ensemble_of(held[v], grid, v), 0, nb);
+    }
+    d.gap_after = first.G;
+    const double chi2_after = first.chi2;
     // confirmed when the fresh runs bring chi^2 over every feature (bin means, fluctuation
     // levels, spectrum: G sees the bin means only) down by more than its noise (3 sigma of a
     // chi^2 with P degrees of freedom) and by at least a quarter of the gap's excess: a
@@ -631,7 +648,7 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
     const double P = (double) d.nfeatures, excess0 = d.chi2_0 - P;
     d.confirmed_fraction = excess0 > 0 ? 1.0 - std::max(0.0, chi2_after - P) / excess0 : 0.0;
     d.proj_before = uu0 > 0 ? num0 / std::sqrt(uu0) : 0.0;
-    d.proj_after = uu1 > 0 ? num1 / std::sqrt(uu1) : 0.0;
+    d.proj_after = first.sigma();
     // a gap found along one signature (targeted) is confirmed when the fresh runs remove
     // it there: the squared projection drops by at least 9 (3 sigma), and the gap over
     // every feature does not grow beyond its noise
@@ -647,6 +664,29 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
                         fmt(d.gap_before, "%.3f") + " -> " + fmt(d.gap_after, "%.3f") + "): unexplained");
       d.verdict = "unexplained";
       d.top_effect.clear();
+    } else if (std::abs(d.proj_after) >= 3.0) {
+      // Confirmed, but the fresh runs leave a significant gap along the signature: the fit's
+      // magnitude rests on signatures of few beds, the confirming runs are a better-resolved
+      // point. Correct it by linear response and simulate that on beds no step has seen.
+      const double a2 = refined_magnitude(ed, d.magnitude, first.num / first.uu);
+      if (std::abs(a2 - d.magnitude) > 0.05 * span) {
+        const auto rreq = confirm_requests(sc.name, e, a2, v0s, "refine", REFINE_SEEDS);
+        if (run_requests(rreq, runner) != 0)
+          throw InputError("refining simulations failed: see the manifests under " + cache + " (rerun to retry)");
+        BySpeed runs2 = load_sweep(cache, "refine_" + effect_sweep_name(e, a2));
+        const After second = evaluate(runs2, a2);
+        d.refined = true;
+        d.refined_from = d.magnitude;
+        d.gap_after_first = first.G;
+        d.proj_refined = second.sigma();
+        d.notes.push_back("magnitude refined: the confirming runs at " + fmt(d.magnitude) + " left " +
+                          fmt(d.proj_after, "%.2f") + " sigma along the signature (G " + fmt(first.G, "%.3f") +
+                          "); linear response gives " + fmt(a2) + ", simulated on " + std::to_string(REFINE_SEEDS.size()) +
+                          " more fresh beds: G " + fmt(second.G, "%.3f") + ", " + fmt(d.proj_refined, "%.2f") +
+                          " sigma; gap after and the corrected traces are these");
+        d.magnitude = a2;
+        d.gap_after = second.G;
+      }
     }
   }
   // per regime, before and after

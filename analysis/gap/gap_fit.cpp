@@ -109,13 +109,7 @@ double noise_of(const EffectData &e, const std::vector<std::size_t> &speeds)
 
 }    // namespace
 
-namespace {
-
-// Best magnitude over the allowed range (least squared residual with the fixed weights of
-// weighted_residual): a fine grid, then golden-section refinement. Fixed weights: with the
-// prediction's own variance in them, magnitudes between knots (where the interpolation
-// averages two ensembles and its variance drops) would be favoured for that alone.
-double best_magnitude(const Target &t, const EffectData &e, const std::vector<std::size_t> &speeds, bool *edge)
+std::pair<double, double> magnitude_range(const EffectData &e)
 {
   const double lo0 = e.knots.front(), hi0 = e.knots.back();
   double lo = e.one_sided && lo0 >= 0.0 ? lo0 : lo0 - e.reach * (e.knots.size() > 1 ? e.knots[1] - e.knots[0] : 0.0);
@@ -124,6 +118,24 @@ double best_magnitude(const Target &t, const EffectData &e, const std::vector<st
   // out to the mirror of its farthest knot (the confirming runs check the prediction)
   if (!e.one_sided && lo0 >= 0.0) lo = std::min(lo, -hi0);
   if (!e.one_sided && hi0 <= 0.0) hi = std::max(hi, -lo0);
+  return {lo, hi};
+}
+
+double refined_magnitude(const EffectData &e, double a, double c)
+{
+  const auto [lo, hi] = magnitude_range(e);
+  return std::clamp(a * (1.0 + c), lo, hi);
+}
+
+namespace {
+
+// Best magnitude over the allowed range (least squared residual with the fixed weights of
+// weighted_residual): a fine grid, then golden-section refinement. Fixed weights: with the
+// prediction's own variance in them, magnitudes between knots (where the interpolation
+// averages two ensembles and its variance drops) would be favoured for that alone.
+double best_magnitude(const Target &t, const EffectData &e, const std::vector<std::size_t> &speeds, bool *edge)
+{
+  const auto [lo, hi] = magnitude_range(e);
   const int n = 400;
   double best = 0.0, bestc = std::numeric_limits<double>::infinity();
   int ib = 0;

@@ -11,6 +11,7 @@
 #define GRANPEN_GAP_FIT_H
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace granpen {
@@ -68,6 +69,15 @@ struct EffectFit {
 };
 
 EffectFit fit_effect(const Target &t, const EffectData &e);
+
+// The magnitudes a fit may reach: the knots' span, extended by `reach` of the outer
+// segments (a two-sided effect simulated on one side: to the mirror of its farthest knot).
+std::pair<double, double> magnitude_range(const EffectData &e);
+
+// Confirming runs at magnitude a that leave a gap c u along the effect's signature
+// u = M(a) - M(0) (c: the leftover's weighted least-squares coefficient on u) call for
+// a (1 + c) by linear response through the baseline; kept inside magnitude_range.
+double refined_magnitude(const EffectData &e, double a, double c);
 
 // The likelihood-ratio statistic of fit_effect alone (no leave-one-speed-out): for the null
 // replicates.

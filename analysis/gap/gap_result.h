@@ -40,6 +40,10 @@ struct Diagnosis {
   int n_null = 0;                           // null replicates (reference-bed subsets) of the targeted test
   int n_reference = 0;                      // reference beds (runs per speed, fewest) the fits measure against
   double proj_before = 0, proj_after = 0;   // targeted confirmation: the gap along the signature, in sigmas
+  // refinement: the confirming runs left >= 3 sigma along the signature, so the magnitude was
+  // corrected from them (refined_from -> magnitude) and simulated on further fresh beds
+  bool refined = false;
+  double refined_from = 0, gap_after_first = 0, proj_refined = 0;
   std::vector<Finding> where;
   std::vector<EffectFit> ranking;           // best first
   std::map<std::string, std::string> magnitude_note;    // effect -> e.g. "phi_0 shift -0.012"

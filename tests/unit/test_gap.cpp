@@ -191,6 +191,19 @@ TEST(GapFit, ATwoSidedEffectSimulatedOnOneSideReachesTheOther)
   EXPECT_TRUE(one.at_edge);
 }
 
+TEST(GapFit, RefinedMagnitudeIsLinearResponseInsideTheRange)
+{
+  const std::vector<double> sa = {10, 8, 6, 4, 2, 0};
+  EffectData A = synthetic_effect("A", sa, 0.5);    // knots 0, 1, 2, two-sided: range -2 .. 2.25
+  // confirming runs at 1.0 that leave 0.4 of their signature: 1.4; an overshoot: less
+  EXPECT_DOUBLE_EQ(refined_magnitude(A, 1.0, 0.4), 1.4);
+  EXPECT_DOUBLE_EQ(refined_magnitude(A, 1.0, -0.3), 0.7);
+  EXPECT_DOUBLE_EQ(refined_magnitude(A, 1.5, 1.0), 2.25);    // clamped at the range's end
+  EXPECT_EQ(magnitude_range(A), std::make_pair(-2.0, 2.25));
+  A.one_sided = true;
+  EXPECT_DOUBLE_EQ(refined_magnitude(A, 0.5, -2.0), 0.0);    // no magnitude below 0
+}
+
 TEST(GapFit, AnEffectThatFitsOneSpeedButNotTheOtherDoesNotPredictIt)
 {
   const std::vector<double> sa = {10, 8, 6, 4, 2, 0};
