@@ -646,16 +646,17 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
     // magnitude somewhat off still confirms the effect, a wrong effect does not
     d.chi2_after = chi2_after;
     const double P = (double) d.nfeatures, excess0 = d.chi2_0 - P;
-    d.confirmed_fraction = excess0 > 0 ? 1.0 - std::max(0.0, chi2_after - P) / excess0 : 0.0;
+    // the fraction of the gap's chi^2 excess that fresh runs with chi^2 chi2a remove
+    auto excess_removed = [&](double chi2a) { return excess0 > 0 ? 1.0 - std::max(0.0, chi2a - P) / excess0 : 0.0; };
+    d.confirmed_fraction = excess_removed(chi2_after);
     d.proj_before = uu0 > 0 ? num0 / std::sqrt(uu0) : 0.0;
     d.proj_after = first.sigma();
     // a gap found along one signature (targeted) is confirmed when the fresh runs remove
     // it there: the squared projection drops by at least 9 (3 sigma), and the gap over
     // every feature does not grow beyond its noise
     auto passes = [&](double chi2a, double proj_a) {
-      const double frac = excess0 > 0 ? 1.0 - std::max(0.0, chi2a - P) / excess0 : 0.0;
       return d.targeted ? d.proj_before * d.proj_before - proj_a * proj_a >= 9.0 && chi2a <= d.chi2_0 + 3.0 * std::sqrt(2.0 * P)
-                        : d.chi2_0 - chi2a > 3.0 * std::sqrt(2.0 * P) && frac >= 0.25;
+                        : d.chi2_0 - chi2a > 3.0 * std::sqrt(2.0 * P) && excess_removed(chi2a) >= 0.25;
     };
     bool confirmed = passes(chi2_after, d.proj_after);
     // The fresh runs leave a significant gap along the signature: the fit's magnitude rests on
@@ -687,7 +688,7 @@ int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vect
           // the second runs decide, and their numbers are the confirmation's
           confirmed = passes(second.chi2, second.sigma());
           d.chi2_after = chi2_after = second.chi2;
-          d.confirmed_fraction = excess0 > 0 ? 1.0 - std::max(0.0, second.chi2 - P) / excess0 : 0.0;
+          d.confirmed_fraction = excess_removed(second.chi2);
           d.proj_after = second.sigma();
           how += "; they decide the confirmation";
         }
