@@ -1,11 +1,7 @@
 #include "gap_sims.h"
 
-#include "trace_reader.h"    // InputError
-
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
-#include <system_error>
 
 namespace granpen {
 
@@ -37,35 +33,11 @@ SimRequest effect_request(const std::string &scenario, const Effect &e, double a
   return r;
 }
 
-namespace {
-
-void link_beds(const std::string &root, const std::string &from, const std::string &to)
-{
-  const fs::path src = fs::path(root) / from / "beds", dst = fs::path(root) / to / "beds";
-  if (!fs::is_directory(src)) throw InputError("no beds in " + src.string() + " to reuse");
-  fs::create_directories(dst);
-  for (const auto &entry : fs::directory_iterator(src)) {
-    const auto ext = entry.path().extension().string();
-    if (ext != ".restart" && ext != ".info") continue;
-    const fs::path target = dst / entry.path().filename();
-    if (fs::exists(target)) continue;
-    std::error_code ec;
-    fs::create_hard_link(entry.path(), target, ec);
-    if (ec) fs::copy_file(entry.path(), target, ec);    // another file system
-    if (ec) throw InputError("cannot link " + entry.path().string() + " to " + target.string() + ": " + ec.message());
-  }
-}
-
-}    // namespace
-
 int run_requests(const std::vector<SimRequest> &requests, const RunnerOptions &opt)
 {
-  int failed = 0;
-  for (const auto &r : requests) {
-    if (!r.beds_from.empty()) link_beds(opt.out_root, r.beds_from, r.spec.name);
-    if (run_sweep(r.spec, opt) != 0) ++failed;
-  }
-  return failed;
+  std::vector<SweepTask> tasks;
+  for (const auto &r : requests) tasks.push_back({r.spec, r.beds_from});
+  return run_sweeps(tasks, opt);
 }
 
 std::vector<std::string> finished_traces(const std::string &cache_dir, const std::string &sweep)

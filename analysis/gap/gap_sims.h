@@ -35,8 +35,9 @@ SimRequest effect_request(const std::string &scenario, const Effect &e, double a
                           const std::vector<std::string> &v0, const std::vector<std::string> &seeds,
                           const std::string &name);
 
-// Runs the requests in order (beds linked first where asked); returns the number of
-// sweeps with a failed run. opt.out_root is the scenario's cache folder.
+// Runs the requests as one pool of opt.jobs processes (sweep_runner.h: run_sweeps; a
+// reused bed linked once poured); returns the number of sweeps with a failed run.
+// opt.out_root is the scenario's cache folder.
 int run_requests(const std::vector<SimRequest> &requests, const RunnerOptions &opt);
 
 // The finished traces (*.csv with a .done marker) of a sweep in the cache, sorted.

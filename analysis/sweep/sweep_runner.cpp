@@ -176,22 +176,48 @@ pid_t spawn(const std::vector<std::string> &argv, const std::string &out)
 }    // namespace
 
 
-int run_sweep(const SweepSpec &spec, const RunnerOptions &opt)
-{
-  if (access(opt.lmp.c_str(), X_OK) != 0)
-    throw InputError("lmp_granpen not found or not executable: " + opt.lmp + " (build it: ./granpen build)");
-  if (!opt.mpirun.empty() && !on_path(opt.mpirun))
-    throw InputError("mpirun not found: " + opt.mpirun + " (install openmpi-bin, or run without --mpirun)");
-  for (const char *deck : {"in.pour", "in.push"})
-    if (!exists(opt.inputs + "/" + deck)) throw InputError("no " + std::string(deck) + " in " + opt.inputs);
+namespace {
 
-  const std::string dir = opt.out_root + "/" + spec.name;
+// One sweep of a pool: its runs, its folder and what its manifest keeps.
+struct Sweep {
+  SweepSpec spec;
+  std::string dir;
+  std::string label;                       // "NAME/" before run ids when a pool has several sweeps
+  std::vector<Job> jobs;
+  std::vector<std::string> other_runs;     // manifest lines of other sweep files of this name
+  std::string lammps_version;
+  bool reported = false;                   // its closing line printed
+};
+
+bool finished(const Job &j) { return j.status == "done" || j.status == "skipped"; }
+bool terminal(const Job &j) { return finished(j) || j.status == "failed"; }
+
+// a bed (restart and info) of another sweep, hard-linked (copied across file systems)
+void link_bed(const std::string &from_dir, const std::string &to_dir, const std::string &id)
+{
+  for (const char *ext : {".restart", ".info"}) {
+    const std::string src = from_dir + "/beds/" + id + ext, dst = to_dir + "/beds/" + id + ext;
+    if (exists(dst)) continue;
+    if (link(src.c_str(), dst.c_str()) == 0) continue;
+    std::ifstream in(src, std::ios::binary);
+    std::ofstream out(dst + ".tmp", std::ios::binary);
+    if (!in || !(out << in.rdbuf()) || (out.close(), !out) || std::rename((dst + ".tmp").c_str(), dst.c_str()) != 0)
+      throw InputError("cannot link " + src + " to " + dst + ": " + std::strerror(errno));
+  }
+}
+
+Sweep setup_sweep(const SweepTask &task, const RunnerOptions &opt)
+{
+  Sweep sw;
+  sw.spec = task.spec;
+  const SweepSpec &spec = sw.spec;
+  const std::string dir = sw.dir = opt.out_root + "/" + spec.name;
   mkdirs(dir + "/beds");
   mkdirs(dir + "/traces");
   mkdirs(dir + "/logs");
   const auto plan = plan_sweep(spec);
 
-  std::vector<Job> jobs;
+  auto &jobs = sw.jobs;
   for (const auto &r : plan) {
     Job j;
     j.run = r;
@@ -278,20 +304,11 @@ int run_sweep(const SweepSpec &spec, const RunnerOptions &opt)
     if (kv.count("wall_seconds")) j.wall = std::atof(kv["wall_seconds"].c_str());
   }
 
-  std::vector<size_t> order;
-  for (size_t i = 0; i < jobs.size(); ++i)
-    if (opt.only_index < 0 || (int) i == opt.only_index) order.push_back(i);
-  if (opt.only_index >= (int) jobs.size())
-    throw InputError("--only " + std::to_string(opt.only_index) + ": the sweep has " +
-                     std::to_string(jobs.size()) + " runs");
-
   // the LAMMPS version from any log already there (all runs may be skipped)
-  std::string lammps_version;
   for (const auto &j : jobs)
-    if (lammps_version.empty() && exists(j.log)) lammps_version = first_line_matching(slurp(j.log), "LAMMPS (");
+    if (sw.lammps_version.empty() && exists(j.log)) sw.lammps_version = first_line_matching(slurp(j.log), "LAMMPS (");
   // Runs of other sweep files with the same name (sharing its beds, e.g. a v0 and a g sweep)
   // stay in the manifest: each run is one line, keyed by its id.
-  std::vector<std::string> other_runs;
   if (exists(dir + "/manifest.json")) {
     std::istringstream in(slurp(dir + "/manifest.json"));
     const std::string key = "    {\"id\": ";
@@ -302,122 +319,244 @@ int run_sweep(const SweepSpec &spec, const RunnerOptions &opt)
       });
       if (planned) continue;
       if (!line.empty() && line.back() == ',') line.pop_back();
-      other_runs.push_back(line);
+      sw.other_runs.push_back(line);
     }
   }
-  auto write_manifest = [&]() {
-    const std::string tmp = dir + "/manifest.json.tmp";
-    std::FILE *f = std::fopen(tmp.c_str(), "w");
-    if (!f) return;
-    std::fprintf(f, "{\n  \"sweep\": %s,\n  \"spec\": %s,\n  \"granpen\": %s,\n  \"lammps\": %s,\n  \"runs\": [\n",
-                 json_string(spec.name).c_str(), json_string(spec.path).c_str(),
-                 json_string(GRANPEN_VERSION).c_str(), json_string(lammps_version).c_str());
-    for (const auto &line : other_runs) std::fprintf(f, "%s,\n", line.c_str());
-    for (size_t i = 0; i < jobs.size(); ++i) {
-      const auto &j = jobs[i];
-      const auto &r = j.run;
-      std::fprintf(f, "    {\"id\": %s, \"kind\": \"%s\", \"status\": %s, \"action\": %s, \"preset\": %s, "
-                      "\"mu\": %s, \"seed\": %s",
-                   json_string(r.id).c_str(), r.kind == PlannedRun::POUR ? "pour" : "push",
-                   json_string(j.status).c_str(), json_string(j.action).c_str(), json_string(r.preset).c_str(),
-                   json_string(r.mu).c_str(), json_string(r.seed).c_str());
-      if (r.kind == PlannedRun::POUR) {
-        auto info = exists(j.info) ? read_info(j.info) : std::map<std::string, std::string>{};
-        for (const char *k : {"z_s", "phi_0", "grains", "wall_seconds"})
-          if (info.count(k) && positive_number(info[k])) std::fprintf(f, ", \"%s\": %s", k, info[k].c_str());
-        std::fprintf(f, ", \"bed\": %s", json_string(dir + "/beds/" + r.id + ".restart").c_str());
-      } else {
-        std::fprintf(f, ", \"bed\": %s, \"v0\": %s, \"g\": %s, \"D\": %s, \"depth\": %s, \"mu_push\": %s, "
-                        "\"trace\": %s",
-                     json_string(r.bed).c_str(), json_string(r.v0).c_str(), json_string(r.g).c_str(),
-                     json_string(r.D).c_str(), json_string(r.depth).c_str(), json_string(r.mu_push).c_str(),
-                     json_string(j.trace).c_str());
-      }
-      std::fprintf(f, ", \"log\": %s, \"wall_seconds_run\": %.3f, \"exit_code\": %d, \"error\": %s}%s\n",
-                   json_string(j.log).c_str(), j.wall, j.exit_code, json_string(j.error).c_str(),
-                   i + 1 < jobs.size() ? "," : "");
+  return sw;
+}
+
+void write_manifest(const Sweep &sw)
+{
+  const std::string tmp = sw.dir + "/manifest.json.tmp";
+  std::FILE *f = std::fopen(tmp.c_str(), "w");
+  if (!f) return;
+  const auto &jobs = sw.jobs;
+  std::fprintf(f, "{\n  \"sweep\": %s,\n  \"spec\": %s,\n  \"granpen\": %s,\n  \"lammps\": %s,\n  \"runs\": [\n",
+               json_string(sw.spec.name).c_str(), json_string(sw.spec.path).c_str(),
+               json_string(GRANPEN_VERSION).c_str(), json_string(sw.lammps_version).c_str());
+  for (const auto &line : sw.other_runs) std::fprintf(f, "%s,\n", line.c_str());
+  for (size_t i = 0; i < jobs.size(); ++i) {
+    const auto &j = jobs[i];
+    const auto &r = j.run;
+    std::fprintf(f, "    {\"id\": %s, \"kind\": \"%s\", \"status\": %s, \"action\": %s, \"preset\": %s, "
+                    "\"mu\": %s, \"seed\": %s",
+                 json_string(r.id).c_str(), r.kind == PlannedRun::POUR ? "pour" : "push",
+                 json_string(j.status).c_str(), json_string(j.action).c_str(), json_string(r.preset).c_str(),
+                 json_string(r.mu).c_str(), json_string(r.seed).c_str());
+    if (r.kind == PlannedRun::POUR) {
+      auto info = exists(j.info) ? read_info(j.info) : std::map<std::string, std::string>{};
+      for (const char *k : {"z_s", "phi_0", "grains", "wall_seconds"})
+        if (info.count(k) && positive_number(info[k])) std::fprintf(f, ", \"%s\": %s", k, info[k].c_str());
+      std::fprintf(f, ", \"bed\": %s", json_string(sw.dir + "/beds/" + r.id + ".restart").c_str());
+    } else {
+      std::fprintf(f, ", \"bed\": %s, \"v0\": %s, \"g\": %s, \"D\": %s, \"depth\": %s, \"mu_push\": %s, "
+                      "\"trace\": %s",
+                   json_string(r.bed).c_str(), json_string(r.v0).c_str(), json_string(r.g).c_str(),
+                   json_string(r.D).c_str(), json_string(r.depth).c_str(), json_string(r.mu_push).c_str(),
+                   json_string(j.trace).c_str());
     }
-    std::fprintf(f, "  ]\n}\n");
-    std::fclose(f);
-    std::rename(tmp.c_str(), (dir + "/manifest.json").c_str());
-  };
+    std::fprintf(f, ", \"log\": %s, \"wall_seconds_run\": %.3f, \"exit_code\": %d, \"error\": %s}%s\n",
+                 json_string(j.log).c_str(), j.wall, j.exit_code, json_string(j.error).c_str(),
+                 i + 1 < jobs.size() ? "," : "");
+  }
+  std::fprintf(f, "  ]\n}\n");
+  std::fclose(f);
+  std::rename(tmp.c_str(), (sw.dir + "/manifest.json").c_str());
+}
+
+// A push's cost in steps, up to a common factor: travel / (v0 dt). Pushes are started
+// longest first so that the pool ends on short ones (no core idles behind a slow push).
+double push_steps(const Job &j, const SweepSpec &spec)
+{
+  double dt = 1.0;
+  for (const auto &[k, v] : spec.set)
+    if (k == "dt_push") dt = std::atof(v.c_str());
+  const double depth = j.target_depth > 0 ? j.target_depth : 1.0, v0 = std::atof(j.run.v0.c_str());
+  return v0 > 0 && dt > 0 ? depth / (v0 * dt) : 0.0;
+}
+
+}    // namespace
+
+int run_sweep(const SweepSpec &spec, const RunnerOptions &opt) { return run_sweeps({{spec, ""}}, opt) ? 1 : 0; }
+
+int run_sweeps(const std::vector<SweepTask> &tasks, const RunnerOptions &opt)
+{
+  if (access(opt.lmp.c_str(), X_OK) != 0)
+    throw InputError("lmp_granpen not found or not executable: " + opt.lmp + " (build it: ./granpen build)");
+  if (!opt.mpirun.empty() && !on_path(opt.mpirun))
+    throw InputError("mpirun not found: " + opt.mpirun + " (install openmpi-bin, or run without --mpirun)");
+  for (const char *deck : {"in.pour", "in.push"})
+    if (!exists(opt.inputs + "/" + deck)) throw InputError("no " + std::string(deck) + " in " + opt.inputs);
+  if (opt.only_index >= 0 && tasks.size() != 1) throw InputError("--only runs one planned run of one sweep");
+  for (size_t a = 0; a < tasks.size(); ++a)
+    for (size_t b = a + 1; b < tasks.size(); ++b)
+      if (tasks[a].spec.name == tasks[b].spec.name)
+        throw InputError("two sweeps named " + tasks[a].spec.name + " in one pool would share a folder");
+
+  std::vector<Sweep> sweeps;
+  for (const auto &t : tasks) {
+    sweeps.push_back(setup_sweep(t, opt));
+    if (tasks.size() > 1) sweeps.back().label = t.spec.name + "/";
+  }
+
+  // A sweep that reuses another's beds: its pours become links, made now when that bed is
+  // there, else as soon as the pool has poured it.
+  struct Link { int sweep = -1; size_t job = 0; };
+  std::map<std::pair<size_t, size_t>, Link> links;
+  for (size_t s = 0; s < sweeps.size(); ++s) {
+    const std::string &from = tasks[s].beds_from;
+    if (from.empty()) continue;
+    const std::string from_dir = opt.out_root + "/" + from;
+    int src = -1;
+    for (size_t t = 0; t < tasks.size(); ++t)
+      if (tasks[t].spec.name == from) src = (int) t;
+    for (size_t k = 0; k < sweeps[s].jobs.size(); ++k) {
+      Job &j = sweeps[s].jobs[k];
+      if (j.run.kind != PlannedRun::POUR || j.status == "skipped") continue;
+      if (exists(from_dir + "/beds/" + j.run.id + ".info")) {
+        link_bed(from_dir, sweeps[s].dir, j.run.id);
+        j.status = "skipped", j.action = "bed of " + from;
+        continue;
+      }
+      Link l;
+      if (src >= 0)
+        for (size_t m = 0; m < sweeps[src].jobs.size(); ++m)
+          if (sweeps[src].jobs[m].run.kind == PlannedRun::POUR && sweeps[src].jobs[m].run.id == j.run.id)
+            l = {src, m};
+      if (l.sweep < 0) throw InputError("no bed " + j.run.id + " in " + from_dir + " to reuse");
+      j.action = "bed of " + from;
+      links[{s, k}] = l;
+    }
+  }
+
+  // the order runs start in: pours (every push waits for one), then pushes, longest first
+  std::vector<std::pair<size_t, size_t>> order;
+  for (size_t s = 0; s < sweeps.size(); ++s)
+    for (size_t k = 0; k < sweeps[s].jobs.size(); ++k)
+      if (opt.only_index < 0 || (int) k == opt.only_index) order.emplace_back(s, k);
+  if (opt.only_index >= 0 && order.empty())
+    throw InputError("--only " + std::to_string(opt.only_index) + ": the sweep has " +
+                     std::to_string(sweeps[0].jobs.size()) + " runs");
+  std::stable_sort(order.begin(), order.end(), [&](const auto &a, const auto &b) {
+    const Job &x = sweeps[a.first].jobs[a.second], &y = sweeps[b.first].jobs[b.second];
+    const bool px = x.run.kind == PlannedRun::POUR, py = y.run.kind == PlannedRun::POUR;
+    if (px != py) return px;
+    return !px && push_steps(x, sweeps[a.first].spec) > push_steps(y, sweeps[b.first].spec);
+  });
+
+  for (auto &sw : sweeps) {
+    int skipped = 0, planned = 0;
+    for (const auto &[s, k] : order)
+      if (&sweeps[s] == &sw) ++planned, skipped += sw.jobs[k].status == "skipped";
+    std::printf("granpen sweep %s: %d runs (%d already done) in %s, up to %d at once%s\n", sw.spec.name.c_str(),
+                planned, skipped, sw.dir.c_str(), opt.jobs,
+                sweeps.size() > 1 ? (" (a pool of " + std::to_string(sweeps.size()) + " sweeps)").c_str() : "");
+    write_manifest(sw);
+  }
+  std::fflush(stdout);
 
   const auto t0 = Clock::now();
   auto seconds_since = [](Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
   };
-  auto bed_job = [&](const Job &j) -> const Job * {
-    for (const auto &b : jobs)
+  auto bed_job = [&](const Sweep &sw, const Job &j) -> const Job * {
+    for (const auto &b : sw.jobs)
       if (b.run.kind == PlannedRun::POUR && b.run.id == j.run.bed) return &b;
     return nullptr;
   };
-
-  int skipped = 0;
-  for (size_t i : order)
-    if (jobs[i].status == "skipped") ++skipped;
-  std::printf("granpen sweep %s: %zu runs (%d already done) in %s, up to %d at once\n", spec.name.c_str(),
-              order.size(), skipped, dir.c_str(), opt.jobs);
-  std::fflush(stdout);
-  write_manifest();
+  auto planned_in = [&](size_t k) { return opt.only_index < 0 || (int) k == opt.only_index; };
+  // a sweep whose planned runs have all ended gets its closing line
+  auto close_finished = [&]() {
+    for (size_t s = 0; s < sweeps.size(); ++s) {
+      Sweep &sw = sweeps[s];
+      if (sw.reported) continue;
+      int failed = 0, done = 0;
+      bool open = false;
+      for (size_t k = 0; k < sw.jobs.size(); ++k) {
+        if (!planned_in(k)) continue;
+        const Job &j = sw.jobs[k];
+        if (!terminal(j)) open = true;
+        failed += j.status == "failed", done += finished(j);
+      }
+      if (open) continue;
+      sw.reported = true;
+      write_manifest(sw);
+      std::printf("granpen sweep %s: %d done, %d failed in %s; manifest %s/manifest.json\n", sw.spec.name.c_str(),
+                  done, failed, fmt_seconds(seconds_since(t0)).c_str(), sw.dir.c_str());
+      std::fflush(stdout);
+    }
+  };
 
   auto last_report = Clock::now();
   int running = 0;
   while (true) {
     // start what can start
-    for (size_t i : order) {
-      Job &j = jobs[i];
-      if (j.status != "pending" || running >= opt.jobs) continue;
+    for (const auto &[s, k] : order) {
+      Sweep &sw = sweeps[s];
+      Job &j = sw.jobs[k];
+      if (j.status != "pending") continue;
+      const auto ln = links.find({s, k});
+      if (ln != links.end()) {
+        const Job &src = sweeps[ln->second.sweep].jobs[ln->second.job];
+        if (src.status == "failed") j.status = "failed", j.error = "the bed it reuses failed";
+        if (!finished(src)) continue;
+        link_bed(sweeps[ln->second.sweep].dir, sw.dir, j.run.id);
+        j.status = "done";
+        write_manifest(sw);
+        continue;
+      }
+      if (running >= opt.jobs) continue;
       if (j.run.kind == PlannedRun::PUSH) {
-        const Job *b = bed_job(j);
-        if (b && (b->status == "failed")) {
+        const Job *b = bed_job(sw, j);
+        if (b && b->status == "failed") {
           j.status = "failed";
           j.error = "its bed " + b->run.id + " failed";
           continue;
         }
-        if (b && b->status != "done" && b->status != "skipped") continue;    // the pour has exited
+        if (b && !finished(*b)) continue;    // the pour has not exited yet
       }
       j.pid = spawn(j.argv, j.out);
       j.start = Clock::now();
       j.status = "running";
       ++running;
-      std::printf("  start %s (%s)\n", j.run.id.c_str(), j.action.empty() ? "started" : j.action.c_str());
+      std::printf("  start %s%s (%s)\n", sw.label.c_str(), j.run.id.c_str(), j.action.empty() ? "started" : j.action.c_str());
       std::fflush(stdout);
     }
+    close_finished();
     if (running == 0) break;
 
     int wstatus = 0;
     pid_t pid = waitpid(-1, &wstatus, WNOHANG);
     if (pid > 0) {
-      for (auto &j : jobs) {
-        if (j.pid != pid || j.status != "running") continue;
-        --running;
-        j.wall = seconds_since(j.start);
-        j.exit_code = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : 128 + WTERMSIG(wstatus);
-        const std::string log = slurp(j.log);
-        if (lammps_version.empty()) {
-          auto l = first_line_matching(log, "LAMMPS (");
-          if (!l.empty()) lammps_version = l;
-        }
-        bool ok = j.exit_code == 0;
-        if (ok && j.run.kind == PlannedRun::PUSH) ok = log.find("granpen push: done") != std::string::npos;
-        if (ok && j.run.kind == PlannedRun::POUR) ok = exists(j.info);
-        if (ok) {
-          j.status = "done";
-          if (j.run.kind == PlannedRun::PUSH) {
-            std::ofstream(j.done) << "wall_seconds = " << j.wall << "\n";
+      for (auto &sw : sweeps)
+        for (auto &j : sw.jobs) {
+          if (j.pid != pid || j.status != "running") continue;
+          --running;
+          j.wall = seconds_since(j.start);
+          j.exit_code = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : 128 + WTERMSIG(wstatus);
+          const std::string log = slurp(j.log);
+          if (sw.lammps_version.empty()) {
+            auto l = first_line_matching(log, "LAMMPS (");
+            if (!l.empty()) sw.lammps_version = l;
           }
-        } else {
-          j.status = "failed";
-          std::string e = first_line_matching(log, "ERROR");
-          if (e.empty()) e = first_line_matching(slurp(j.out), "ERROR");
-          if (e.empty()) e = "exit code " + std::to_string(j.exit_code) + " (see " + j.out + ")";
-          j.error = e;
+          bool ok = j.exit_code == 0;
+          if (ok && j.run.kind == PlannedRun::PUSH) ok = log.find("granpen push: done") != std::string::npos;
+          if (ok && j.run.kind == PlannedRun::POUR) ok = exists(j.info);
+          if (ok) {
+            j.status = "done";
+            if (j.run.kind == PlannedRun::PUSH) std::ofstream(j.done) << "wall_seconds = " << j.wall << "\n";
+          } else {
+            j.status = "failed";
+            std::string e = first_line_matching(log, "ERROR");
+            if (e.empty()) e = first_line_matching(slurp(j.out), "ERROR");
+            if (e.empty()) e = "exit code " + std::to_string(j.exit_code) + " (see " + j.out + ")";
+            j.error = e;
+          }
+          std::printf("  %s %s%s in %s%s%s\n", j.status == "done" ? "done " : "FAILED", sw.label.c_str(),
+                      j.run.id.c_str(), fmt_seconds(j.wall).c_str(), j.error.empty() ? "" : ": ", j.error.c_str());
+          std::fflush(stdout);
+          write_manifest(sw);
         }
-        std::printf("  %s %s in %s%s%s\n", j.status == "done" ? "done " : "FAILED", j.run.id.c_str(),
-                    fmt_seconds(j.wall).c_str(), j.error.empty() ? "" : ": ", j.error.c_str());
-        std::fflush(stdout);
-        write_manifest();
-      }
       continue;
     }
 
@@ -427,20 +566,21 @@ int run_sweep(const SweepSpec &spec, const RunnerOptions &opt)
       double sum_pour = 0, sum_push = 0;
       int n_pour = 0, n_push = 0, left_pour = 0, left_push = 0;
       std::string now;
-      for (size_t i : order) {
-        const Job &j = jobs[i];
-        const bool pour = j.run.kind == PlannedRun::POUR;
-        if (j.status == "done" || j.status == "skipped") ++done;
+      for (const auto &[s, k] : order) {
+        const Job &j = sweeps[s].jobs[k];
+        const bool pour = j.run.kind == PlannedRun::POUR, linked = links.count({s, k}) > 0;
+        if (finished(j)) ++done;
         if (j.status == "failed") ++failed;
-        if (j.status == "done") (pour ? (sum_pour += j.wall, ++n_pour) : (sum_push += j.wall, ++n_push));
-        if (j.status == "pending" || j.status == "running") (pour ? ++left_pour : ++left_push);
+        if (j.status == "done" && !linked) (pour ? (sum_pour += j.wall, ++n_pour) : (sum_push += j.wall, ++n_push));
+        if ((j.status == "pending" && !linked) || j.status == "running") (pour ? ++left_pour : ++left_push);
         if (j.status == "running") {
-          char b[160];
+          char b[200];
+          const std::string id = sweeps[s].label + j.run.id;
           double z = pour ? NAN : last_depth(j.trace);
           const std::string ps = pour ? pour_status(j.log) : "";
-          if (std::isfinite(z)) std::snprintf(b, sizeof(b), " %s z=%.2f", j.run.id.c_str(), z);
-          else if (!ps.empty()) std::snprintf(b, sizeof(b), " %s (%s)", j.run.id.c_str(), ps.c_str());
-          else std::snprintf(b, sizeof(b), " %s %s", j.run.id.c_str(), fmt_seconds(seconds_since(j.start)).c_str());
+          if (std::isfinite(z)) std::snprintf(b, sizeof(b), " %s z=%.2f", id.c_str(), z);
+          else if (!ps.empty()) std::snprintf(b, sizeof(b), " %s (%s)", id.c_str(), ps.c_str());
+          else std::snprintf(b, sizeof(b), " %s %s", id.c_str(), fmt_seconds(seconds_since(j.start)).c_str());
           now += b;
         }
       }
@@ -456,15 +596,18 @@ int run_sweep(const SweepSpec &spec, const RunnerOptions &opt)
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
   }
 
-  int failed = 0, done = 0;
-  for (size_t i : order) {
-    if (jobs[i].status == "failed") ++failed;
-    if (jobs[i].status == "done" || jobs[i].status == "skipped") ++done;
+  // a run that could not start (its bed never came) is failed, not left pending
+  for (const auto &[s, k] : order)
+    if (Job &j = sweeps[s].jobs[k]; j.status == "pending") j.status = "failed", j.error = "not started: its bed was not made";
+  close_finished();
+  int failed_sweeps = 0;
+  for (size_t s = 0; s < sweeps.size(); ++s) {
+    bool any = false;
+    for (size_t k = 0; k < sweeps[s].jobs.size(); ++k)
+      if (planned_in(k) && sweeps[s].jobs[k].status == "failed") any = true;
+    failed_sweeps += any;
   }
-  write_manifest();
-  std::printf("granpen sweep %s: %d done, %d failed in %s; manifest %s/manifest.json\n", spec.name.c_str(), done,
-              failed, fmt_seconds(seconds_since(t0)).c_str(), dir.c_str());
-  return failed ? 1 : 0;
+  return failed_sweeps;
 }
 
 void write_slurm_script(const SweepSpec &spec, const RunnerOptions &opt, const std::string &cli,

@@ -9,6 +9,7 @@
 #include "sweep_spec.h"
 
 #include <string>
+#include <vector>
 
 namespace granpen {
 
@@ -26,6 +27,20 @@ struct RunnerOptions {
 
 // Returns 0 when every run is done, 1 when any failed (all others still run).
 int run_sweep(const SweepSpec &spec, const RunnerOptions &opt);
+
+// A sweep of a pool; beds_from names another sweep (same presets, mu and seeds) in
+// out_root whose beds it reuses (hard links) instead of pouring its own.
+struct SweepTask {
+  SweepSpec spec;
+  std::string beds_from;
+};
+
+// Several sweeps in one pool of opt.jobs processes: every pour first (pushes wait for
+// theirs), then the pushes longest first, so that no core idles at the end of one sweep
+// while another has runs waiting. Each sweep keeps its folder, manifest and resume; a
+// reused bed is linked as soon as its pour is done. Returns the number of sweeps with a
+// failed run.
+int run_sweeps(const std::vector<SweepTask> &tasks, const RunnerOptions &opt);
 
 // Writes a script that submits the sweep to SLURM as two job arrays, the pours and
 // then (after them) the pushes, each task running `granpen-cli sweep SPEC --only K`.
