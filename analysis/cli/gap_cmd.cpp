@@ -34,7 +34,10 @@ const char *HELP =
     "figures, baseline/ and corrected/ (the simulated traces used, trace CSV v1).\n"
     "options:\n"
     "  --effects LIST  comma-separated candidates (default: all of them)\n"
-    "  --jobs N        simulations at once (default: the number of cores)\n"
+    "  --jobs N        simulations at once (default: the number of cores), every sweep's\n"
+    "                  runs in one pool\n"
+    "  --sweep-by-sweep  run the sweeps one after another, each with its own N (the\n"
+    "                  runner's old way: for bench/pool_vs_sweeps.sh)\n"
     "  --cache DIR     simulation cache (default $GRANPEN_RUNS/gap_cache); interrupted, a\n"
     "                  diagnosis resumes from it; a finished one reruns without simulating\n"
     "  --lmp PATH, --inputs DIR   lmp_granpen and the decks (default: as ./granpen sets them)\n"
@@ -77,6 +80,7 @@ int granpen::cli::gap(int argc, char **argv)
     else if (a == "--prepare-only") opt.prepare_only = true;
     else if (a == "--local") opt.local = true;
     else if (a == "--fit-only") opt.fit_only = true;
+    else if (a == "--sweep-by-sweep") opt.runner.pool = false;
     else if (a == "--slurm") opt.slurm = value();
     else if (a == "--mpirun") opt.runner.mpirun = value();
     else if (a == "--ranks") {

@@ -37,7 +37,10 @@ int run_requests(const std::vector<SimRequest> &requests, const RunnerOptions &o
 {
   std::vector<SweepTask> tasks;
   for (const auto &r : requests) tasks.push_back({r.spec, r.beds_from});
-  return run_sweeps(tasks, opt);
+  if (opt.pool) return run_sweeps(tasks, opt);
+  int failed = 0;
+  for (const auto &t : tasks) failed += run_sweeps({t}, opt);
+  return failed;
 }
 
 std::vector<std::string> finished_traces(const std::string &cache_dir, const std::string &sweep)

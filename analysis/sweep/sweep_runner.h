@@ -20,6 +20,7 @@ struct RunnerOptions {
   std::string inputs;      // the inputs/ folder (decks, presets, observe sets)
   std::string out_root;    // the sweep folder is out_root/NAME
   int jobs = 1;            // runs at once
+  bool pool = true;        // run_requests (granpen gap): all sweeps in one pool, or one by one
   int checkpoint = 5000;   // push checkpoint interval (steps)
   int only_index = -1;     // run just this planned run (as a SLURM array task does)
   double progress_seconds = 5.0;
