@@ -29,7 +29,8 @@ int run_gap(const GapOptions &opt);
 // per second per core, docs/presets.md; grains from the preset's lattice, a pour 0.6 s
 // of simulated time).
 struct Scenario;
-struct SimRequest;
+struct SweepTask;
+using SimRequest = SweepTask;
 double estimate_core_hours(const Scenario &sc, const std::vector<SimRequest> &requests, const std::string &cache);
 
 }    // namespace granpen

@@ -35,11 +35,9 @@ SimRequest effect_request(const std::string &scenario, const Effect &e, double a
 
 int run_requests(const std::vector<SimRequest> &requests, const RunnerOptions &opt)
 {
-  std::vector<SweepTask> tasks;
-  for (const auto &r : requests) tasks.push_back({r.spec, r.beds_from});
-  if (opt.pool) return run_sweeps(tasks, opt);
+  if (opt.pool) return run_sweeps(requests, opt);
   int failed = 0;
-  for (const auto &t : tasks) failed += run_sweeps({t}, opt);
+  for (const auto &r : requests) failed += run_sweeps({r}, opt);
   return failed;
 }
 

@@ -22,10 +22,8 @@
 
 namespace granpen {
 
-struct SimRequest {
-  SweepSpec spec;
-  std::string beds_from;    // a sweep (same preset, seeds) whose beds this one reuses; "" = pour
-};
+// a sweep, and the sweep (same preset, seeds) whose beds it reuses; "" = pour its own
+using SimRequest = SweepTask;
 
 
 // One sweep of the scenario's model, or of an effect at magnitude a, over speeds v0.

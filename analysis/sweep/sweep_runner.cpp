@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <signal.h>
@@ -195,14 +196,14 @@ bool terminal(const Job &j) { return finished(j) || j.status == "failed"; }
 // a bed (restart and info) of another sweep, hard-linked (copied across file systems)
 void link_bed(const std::string &from_dir, const std::string &to_dir, const std::string &id)
 {
+  namespace fs = std::filesystem;
   for (const char *ext : {".restart", ".info"}) {
-    const std::string src = from_dir + "/beds/" + id + ext, dst = to_dir + "/beds/" + id + ext;
-    if (exists(dst)) continue;
-    if (link(src.c_str(), dst.c_str()) == 0) continue;
-    std::ifstream in(src, std::ios::binary);
-    std::ofstream out(dst + ".tmp", std::ios::binary);
-    if (!in || !(out << in.rdbuf()) || (out.close(), !out) || std::rename((dst + ".tmp").c_str(), dst.c_str()) != 0)
-      throw InputError("cannot link " + src + " to " + dst + ": " + std::strerror(errno));
+    const fs::path src = from_dir + "/beds/" + id + ext, dst = to_dir + "/beds/" + id + ext;
+    if (fs::exists(dst)) continue;
+    std::error_code ec;
+    fs::create_hard_link(src, dst, ec);
+    if (ec) fs::copy_file(src, dst, ec);
+    if (ec) throw InputError("cannot link " + src.string() + " to " + dst.string() + ": " + ec.message());
   }
 }
 
