@@ -24,7 +24,8 @@ ratio() { awk -v a="$1" -v b="$2" 'BEGIN{printf "%.4f", a/b}'; }
 probe_pour() {    # DIR
   local t0 t1; mkdir -p "$1"; t0=$(date +%s.%N)
   "$LMP" -in "$ROOT/inputs/in.pour" -var inputs "$ROOT/inputs" -var preset bench -var mu 0.3 -var seed 1 \
-    -var out "$1/probe_bed" -log "$1/probe_pour.log" -screen none > /dev/null
+    -var out "$1/probe_bed" -log "$1/probe_pour.log" -screen none > /dev/null 2>&1 || true
   t1=$(date +%s.%N)
+  [ -f "$1/probe_bed.info" ] || { echo "probe_pour: the pour failed (see $1/probe_pour.log)" >&2; return 1; }
   awk -v a="$t0" -v b="$t1" 'BEGIN { printf "%.1f\n", b - a }'
 }
