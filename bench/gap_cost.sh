@@ -35,8 +35,9 @@ run() {    # label data-set
   local t0; t0=$(date +%s)
   "$CLI" gap --real "$SELF/bench/real_$2" --scenario bench --out "$WORK/diag_$2" --jobs "$JOBS" \
     --cache "$WORK/cache" > "$WORK/$1.log" 2>&1
-  echo "$1 $(( $(date +%s) - t0 )) $(tail -1 "$WORK/$1.log")" >> "$WORK/figures.txt"
-  echo "$1: $(( $(date +%s) - t0 )) s ($(tail -1 "$WORK/$1.log"))"
+  local s=$(( $(date +%s) - t0 )) last; last=$(tail -1 "$WORK/$1.log")
+  echo "$1 $s $last" >> "$WORK/figures.txt"
+  echo "$1: $s s ($last)"
 }
 echo "gap_cost: load average at the start: $(cut -d' ' -f1-3 /proc/loadavg)"
 p1=$(probe_pour "$WORK/probe1")

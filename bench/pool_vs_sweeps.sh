@@ -25,16 +25,16 @@ rm -rf "$WORK"; mkdir -p "$WORK"
 CLI=$ROOT/build/analysis/granpen-cli
 echo "pool_vs_sweeps: $SCENARIO, v0 = $V0, effects: ${EFFECTS:-all}, --jobs $JOBS; load average at the start: $(cut -d' ' -f1-3 /proc/loadavg)"
 make_cache() {    # label [--sweep-by-sweep]
-  local t0 t1; t0=$(date +%s.%N)
+  local t0 wall; t0=$(date +%s.%N)
   "$CLI" gap --prepare-only --scenario "$SCENARIO" --v0 "$V0" --jobs "$JOBS" --cache "$WORK/$1" --lmp "$LMP" \
     --inputs "$ROOT/inputs" ${EFFECTS:+--effects "$EFFECTS"} ${2:-} > "$WORK/$1.log" 2>&1 || { tail -5 "$WORK/$1.log"; exit 1; }
-  t1=$(date +%s.%N)
+  wall=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')
+  echo "$wall" > "$WORK/$1.wall"
   # every run's own wall time, from the manifests (linked beds count 0)
   busy=$(cat "$WORK/$1/$SCENARIO"/*/manifest.json | grep -o '"wall_seconds_run": [0-9.]*' | awk '{s += $2} END {print s}')
-  awk -v a="$t0" -v b="$t1" -v busy="$busy" -v j="$JOBS" -v l="$1" 'BEGIN {
-    printf "%-15s wall %7.1f s; runs %8.1f s; busy %5.1f%%\n", l, b - a, busy, 100 * busy / (j * (b - a)) }' |
+  awk -v w="$wall" -v busy="$busy" -v j="$JOBS" -v l="$1" 'BEGIN {
+    printf "%-15s wall %7.1f s; runs %8.1f s; busy %5.1f%%\n", l, w, busy, 100 * busy / (j * w) }' |
     tee -a "$WORK/summary.txt"
-  awk -v a="$t0" -v b="$t1" 'BEGIN { print b - a }' > "$WORK/$1.wall"
 }
 make_cache sweep_by_sweep --sweep-by-sweep
 make_cache pooled

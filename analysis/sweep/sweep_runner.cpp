@@ -174,11 +174,6 @@ pid_t spawn(const std::vector<std::string> &argv, const std::string &out)
   return pid;
 }
 
-}    // namespace
-
-
-namespace {
-
 // One sweep of a pool: its runs, its folder and what its manifest keeps.
 struct Sweep {
   SweepSpec spec;
