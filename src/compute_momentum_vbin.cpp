@@ -272,7 +272,7 @@ void ComputeMomentumVbin::tally()
     if (!(mask[i] & groupbit)) continue;
     if (cylinder) {
       double dx = x[i][0] - xaxis, dy = x[i][1] - yaxis, dz = 0.0;
-      domain->minimum_image(dx, dy, dz);
+      gp::minimum_image(domain, FLERR, dx, dy, dz);
       if (dx * dx + dy * dy <= r2min) continue;
     }
     if (region && !region->match(x[i][0], x[i][1], x[i][2])) continue;

@@ -18,6 +18,8 @@
 #include "utils.h"
 
 #include <string>
+#include <type_traits>
+#include <utility>
 
 #ifndef LAMMPS_VERSION_NUMBER
 // Dropped into a LAMMPS tree without granpen's CMake: assume a current LAMMPS.
@@ -126,6 +128,39 @@ using dof_t = bigint;
 #else
 using dof_t = int;
 #endif
+
+
+// Domain::minimum_image(FLERR, dx, dy, dz): LAMMPS PR #4610 added the caller's file and
+// line in front (first released in 12Jun2025 and in stable 22Jul2025, which still has
+// no overload without them). Decided by what the header offers, not by a date: the
+// 5-argument overload exists or it does not, whatever a development tree's date says.
+template <typename D, typename = void> struct has_located_minimum_image : std::false_type {};
+template <typename D>
+struct has_located_minimum_image<
+    D,
+    decltype(void(std::declval<const D &>().minimum_image(
+        std::declval<const char *>(), 0, std::declval<double &>(), std::declval<double &>(),
+        std::declval<double &>())))> : std::true_type {};
+
+// (tag dispatch rather than if constexpr: the package sources stay C++11 for 29Sep2021)
+template <typename D>
+inline void minimum_image_impl(D *domain, const char *file, int line, double &dx, double &dy,
+                               double &dz, std::true_type)
+{
+  domain->minimum_image(file, line, dx, dy, dz);
+}
+template <typename D>
+inline void minimum_image_impl(D *domain, const char *, int, double &dx, double &dy, double &dz,
+                               std::false_type)
+{
+  domain->minimum_image(dx, dy, dz);
+}
+template <typename D>
+inline void minimum_image(D *domain, const char *file, int line, double &dx, double &dy,
+                          double &dz)
+{
+  minimum_image_impl(domain, file, line, dx, dy, dz, has_located_minimum_image<D>());
+}
 
 }    // namespace gp
 }    // namespace LAMMPS_NS
