@@ -1,72 +1,198 @@
 #!/usr/bin/env bash
-# Compile-only check of the GRANPEN styles against a LAMMPS source tree
-# (see docs/compat.md): configure granpen in a scratch directory with
-# LAMMPS_SOURCE_DIR pointing at the tree and build the plugin target
-# granpenplugin, which compiles every style plus launcher/style_registry.cpp and
-# launcher/granpen_plugin.cpp against that tree's src/ and links a module that
-# does not need liblammps. Nothing is downloaded.
+# The GRANPEN package against a current LAMMPS source tree, by every route a cluster user
+# has (docs/compat.md says how to get a tree and what each step costs here):
+#   1. compile: the plugin target against the tree's src/ (minutes)
+#   2. plugin route: LAMMPS built from the tree (shared, PLUGIN GRANULAR VORONOI), the
+#      plugin loaded with `plugin load`, a tiny pour and push run through it
+#   3. package route: the tree copied with src/GRANPEN added and GRANPEN in its package
+#      list, built with -D PKG_GRANPEN=on (+ GRANULAR, VORONOI); `lmp -h` and the same runs
+#   4. the project's LAMMPS-level tests (ctest -L lammps: decks and gtests) with lmp_granpen
+#      linked to the liblammps of step 2 and compiled against the tree's headers
+#   5. LAMMPS's own checks on the package: tools/coding_standard/*.py on src/ and the doc
+#      pages, and doc/utils/check-styles.py and check-packages.py with the package's index
+#      entries added to a scratch copy of the doc tree (tests/compat/lammps_doc_entries.py)
+#   6. fix wall/gran against pair gran/hertz/history for a sphere on a flat (docs/compat.md)
+# Nothing is downloaded: the tree is given, GoogleTest and Voro++ come from Debian.
 #
-#   tests/compat/check_current_lammps.sh /path/to/lammps   [the tree, or its src/]
+#   tests/compat/check_current_lammps.sh [--steps "1 2 3 4 5 6"] [--only-compile] LAMMPS_TREE
 #
-# Environment: GRANPEN_JOBS (default 1), KEEP_BUILD=1 keeps the scratch build
-# directory, CMAKE (default cmake).
-# Exit status: 0 when the plugin builds, non-zero otherwise.
+# LAMMPS builds are cached in $GRANPEN_CACHE (default ~/.cache/granpen) by tree version and
+# reused; ccache is used when installed. Environment: GRANPEN_JOBS (default: all cores).
+# Exit status: 0 when every step passed, 1 when one failed, 2 for a usage error, and 77
+# (skipped) without a tree: `ctest -R current_lammps` runs this with GRANPEN_CURRENT_LAMMPS,
+# and CI, which cannot fetch a tree, reports the test as skipped.
 set -euo pipefail
 
 say() { printf 'check_current_lammps: %s\n' "$*" >&2; }
-
-if [ $# -ne 1 ]; then
-  say "usage: $0 /path/to/lammps-source-tree"
-  exit 2
+STEPS="1 2 3 4 5 6"
+while [ $# -gt 1 ]; do
+  case "$1" in
+    --steps) STEPS=$2; shift 2 ;;
+    --only-compile) STEPS=1; shift ;;
+    *) say "unknown option $1"; exit 2 ;;
+  esac
+done
+if [ $# -ne 1 ] || [ -z "$1" ]; then
+  say "skipped: no LAMMPS source tree given (usage: $0 [--steps LIST] LAMMPS_TREE; docs/compat.md)"
+  exit 77
 fi
 
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-CMAKE=${CMAKE:-cmake}
-JOBS=${GRANPEN_JOBS:-1}
+CACHE=${GRANPEN_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/granpen}
+JOBS=${GRANPEN_JOBS:-$(nproc --all)}
+export OMP_NUM_THREADS=1 OMPI_MCA_rmaps_base_oversubscribe=1
+[ "$(id -u)" = 0 ] && export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+LAUNCHER=()
+command -v ccache >/dev/null 2>&1 && LAUNCHER=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 
 src=$1
 [ -d "$src" ] || { say "no such directory: $src"; exit 2; }
 src=$(cd "$src" && pwd)
-# accept the tree's src/ as well as the tree itself
 if [ ! -f "$src/src/version.h" ] && [ -f "$src/version.h" ]; then src=$(dirname "$src"); fi
-if [ ! -f "$src/src/version.h" ] || [ ! -f "$src/src/lammpsplugin.h" ]; then
-  say "$src is not a LAMMPS source tree (no src/version.h or src/lammpsplugin.h)"
+if [ ! -f "$src/src/version.h" ] || [ ! -f "$src/src/lammpsplugin.h" ] || [ ! -d "$src/cmake" ]; then
+  say "$src is not a LAMMPS source tree (needs src/version.h, src/lammpsplugin.h, cmake/)"
   exit 2
 fi
-
-build=$(mktemp -d "${TMPDIR:-/tmp}/granpen-compat.XXXXXX")
-if [ "${KEEP_BUILD:-0}" = 1 ]; then
-  say "build directory kept: $build"
-else
-  trap 'rm -rf "$build"' EXIT
-fi
-
 version=$(sed -n 's/^#define LAMMPS_VERSION "\(.*\)"/\1/p' "$src/src/version.h")
-update=$(sed -n 's/^#define LAMMPS_UPDATE "\(.*\)"/ (\1)/p' "$src/src/version.h")
-say "LAMMPS ${version}${update} in $src"
+update=$(sed -n 's/^#define LAMMPS_UPDATE "\(.*\)"/\1/p' "$src/src/version.h")
+tag=$(echo "${version}_${update}" | tr -c 'A-Za-z0-9_\n' '_')
+say "LAMMPS $version${update:+ ($update)} in $src"
+WORK=$(mktemp -d "${TMPDIR:-/tmp}/granpen-current.XXXXXX")
+say "work directory: $WORK (kept)"
+LBUILD="$CACHE/lammps-current-$tag"
+mkdir -p "$LBUILD"
 
-# The system liblammps (if any) is left out: lmp_granpen is not what is checked,
-# and its configure step would insist on LAMMPS_HEADERS_DIR.
-if ! "$CMAKE" -S "$ROOT" -B "$build" -DLAMMPS_SOURCE_DIR="$src" -DGRANPEN_TESTS=OFF \
-     -DCMAKE_DISABLE_FIND_PACKAGE_LAMMPS=ON >"$build/configure.log" 2>&1; then
-  cat "$build/configure.log" >&2
-  say "FAILED: configure"
-  exit 1
-fi
-grep 'granpen: plugin for LAMMPS' "$build/configure.log" >&2 || true
+declare -A result
+failed=0
+step() {    # N TITLE FUNCTION
+  local n=$1 title=$2 fn=$3
+  case " $STEPS " in *" $n "*) ;; *) return 0 ;; esac
+  say "step $n: $title"
+  local t0=$SECONDS
+  if "$fn" >"$WORK/step$n.log" 2>&1; then
+    result[$n]="PASS ($((SECONDS - t0)) s) $title"
+  else
+    result[$n]="FAIL ($((SECONDS - t0)) s) $title: see $WORK/step$n.log"; failed=1
+    tail -20 "$WORK/step$n.log" >&2
+  fi
+  say "${result[$n]}"
+}
 
-if ! "$CMAKE" --build "$build" -j "$JOBS" --target granpenplugin; then
-  say "FAILED: granpenplugin does not build against $src"
-  exit 1
-fi
+tiny_runs() {    # LMP PREFIX_DECK_LINE: a tiny pour and a 1 cm push; both must finish
+  local lmp=$1 pre=$2 d=$WORK/runs_$3
+  mkdir -p "$d" && cd "$d"
+  printf '%s\ninclude %s/inputs/in.pour\n' "$pre" "$ROOT" > in.pour
+  printf '%s\ninclude %s/inputs/in.push\n' "$pre" "$ROOT" > in.push
+  "$lmp" -in in.pour -var inputs "$ROOT/inputs" -var preset tiny -var out bed -log pour.log -screen none
+  grep -q "granpen pour: bed bed.restart: 1936 grains" pour.log
+  mpirun -np 2 "$lmp" -in in.push -var inputs "$ROOT/inputs" -var preset tiny -var bed bed.restart \
+    -var v0 100 -var depth 1.0 -var trace push.csv -log push.log -screen none
+  grep -q "granpen push: done, depth 1.000 cm" push.log
+  [ "$(grep -vc '^#' push.csv)" -gt 100 ]
+}
 
-plugin="$build/granpenplugin.so"
-if [ ! -f "$plugin" ]; then
-  say "FAILED: $plugin was not produced"
-  exit 1
-fi
-if command -v nm >/dev/null 2>&1 && ! nm -D --defined-only "$plugin" | grep -qw lammpsplugin_init; then
-  say "FAILED: $plugin does not export lammpsplugin_init"
-  exit 1
-fi
-say "OK: granpenplugin builds against $src"
+compile_plugin() {
+  "$CMAKE" -S "$ROOT" -B "$WORK/compile" -DLAMMPS_SOURCE_DIR="$src" -DGRANPEN_TESTS=OFF \
+    -DCMAKE_DISABLE_FIND_PACKAGE_LAMMPS=ON -DCMAKE_CXX_FLAGS="-Wall -Wextra" "${LAUNCHER[@]}"
+  "$CMAKE" --build "$WORK/compile" -j "$JOBS" --target granpenplugin
+  nm -D --defined-only "$WORK/compile/granpenplugin.so" | grep -qw lammpsplugin_init
+}
+
+plugin_route() {
+  # LAMMPS with PLUGIN (shared, as plugin loading needs), installed so that step 4 finds it
+  if [ ! -x "$LBUILD/prefix/bin/lmp" ]; then
+    "$CMAKE" -S "$src/cmake" -B "$LBUILD/plugin" -DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=on \
+      -DBUILD_MPI=on -DBUILD_OMP=off -DPKG_PLUGIN=on -DPKG_GRANULAR=on -DPKG_VORONOI=on -DDOWNLOAD_VORO=off \
+      -DDOWNLOAD_POTENTIALS=off -DCMAKE_INSTALL_PREFIX="$LBUILD/prefix" "${LAUNCHER[@]}"
+    "$CMAKE" --build "$LBUILD/plugin" -j "$JOBS" --target lmp
+    # the man page and docs are not in a src-only tree: install the targets alone
+    "$CMAKE" --install "$LBUILD/plugin" --component Unspecified || true
+    "$CMAKE" --install "$LBUILD/plugin" || true
+    [ -x "$LBUILD/prefix/bin/lmp" ] || { mkdir -p "$LBUILD/prefix/bin"; cp "$LBUILD/plugin/lmp" "$LBUILD/prefix/bin/"; }
+  fi
+  local lmp=$LBUILD/plugin/lmp
+  "$lmp" -h | grep -A3 "Installed packages" | grep -q PLUGIN
+  "$CMAKE" -S "$ROOT" -B "$WORK/plugin" -DLAMMPS_SOURCE_DIR="$src" -DGRANPEN_TESTS=OFF \
+    -DCMAKE_DISABLE_FIND_PACKAGE_LAMMPS=ON -DCMAKE_BUILD_TYPE=Release "${LAUNCHER[@]}"
+  "$CMAKE" --build "$WORK/plugin" -j "$JOBS" --target granpenplugin
+  tiny_runs "$lmp" "plugin load $WORK/plugin/granpenplugin.so" plugin
+  grep -q "Loading plugin: GRANPEN" "$WORK/runs_plugin/pour.log" || grep -qi "loading plugin" "$WORK/runs_plugin/pour.log"
+}
+
+package_route() {
+  # a copy of the tree (hard links: cheap) with src/GRANPEN and GRANPEN in STANDARD_PACKAGES
+  local tree=$LBUILD/package-tree
+  rm -rf "$tree"; cp -al "$src" "$tree"
+  rm -rf "$tree/src/GRANPEN"; mkdir "$tree/src/GRANPEN"
+  cp "$ROOT"/src/*.cpp "$ROOT"/src/*.h "$tree/src/GRANPEN/"
+  cp --remove-destination "$src/cmake/CMakeLists.txt" "$tree/cmake/CMakeLists.txt"
+  sed -i 's/^set(STANDARD_PACKAGES$/set(STANDARD_PACKAGES\n  GRANPEN/' "$tree/cmake/CMakeLists.txt"
+  grep -q "^  GRANPEN$" "$tree/cmake/CMakeLists.txt"
+  CCACHE_BASEDIR=$LBUILD "$CMAKE" -S "$tree/cmake" -B "$LBUILD/package" -DCMAKE_BUILD_TYPE=Release \
+    -DBUILD_MPI=on -DBUILD_OMP=off -DPKG_GRANPEN=on -DPKG_GRANULAR=on -DPKG_VORONOI=on -DDOWNLOAD_VORO=off \
+    -DDOWNLOAD_POTENTIALS=off "${LAUNCHER[@]}"
+  CCACHE_BASEDIR=$LBUILD "$CMAKE" --build "$LBUILD/package" -j "$JOBS" --target lmp
+  local lmp=$LBUILD/package/lmp
+  "$lmp" -h > "$WORK/package-help.txt"
+  grep -A4 "Installed packages" "$WORK/package-help.txt" | grep -q GRANPEN
+  for s in rod/drive rod/drag bed/surface flow/azimuthal momentum/vbin create_rod; do
+    grep -q "$s" "$WORK/package-help.txt" || { echo "lmp -h lacks $s"; return 1; }
+  done
+  tiny_runs "$lmp" "" package
+}
+
+lammps_tests() {
+  [ -f "$LBUILD/prefix/lib/cmake/LAMMPS/LAMMPSConfig.cmake" ] || { echo "step 2 first (the installed LAMMPS)"; return 1; }
+  "$CMAKE" -S "$ROOT" -B "$WORK/tests" -DLAMMPS_DIR="$LBUILD/prefix/lib/cmake/LAMMPS" \
+    -DLAMMPS_HEADERS_DIR="$src/src" -DCMAKE_BUILD_TYPE=RelWithDebInfo "${LAUNCHER[@]}"
+  "$CMAKE" --build "$WORK/tests" -j "$JOBS"
+  # the plugin test rebuilds Debian's LAMMPS: it is not a test of this tree
+  (cd "$WORK/tests" && LD_LIBRARY_PATH="$LBUILD/prefix/lib:${LD_LIBRARY_PATH:-}" \
+     ctest -L lammps -LE plugin -j "$JOBS" --output-on-failure)
+}
+
+coding_standard() {
+  local t=$WORK/coding-standard
+  rm -rf "$t"; mkdir -p "$t/src/GRANPEN" "$t/doc/src"
+  cp "$ROOT"/src/* "$t/src/GRANPEN/"; cp "$ROOT"/docs/*.rst "$t/doc/src/"
+  local s rc=0
+  for s in whitespace permissions homepage errordocs fmtlib versiontags; do
+    if python3 "$src/tools/coding_standard/$s.py" "$t"; then echo "$s: 0 findings"
+    else echo "$s: findings above"; rc=1; fi
+  done
+  # the doc tree's own index checks, with the package's entries added to a scratch copy
+  local d=$WORK/doc-check
+  rm -rf "$d"; mkdir -p "$d"; cp -r "$src/doc/src" "$d/src"; cp "$ROOT"/docs/*.rst "$d/src/"
+  python3 "$ROOT/tests/compat/lammps_doc_entries.py" "$ROOT" "$d/src"
+  local pkgsrc=$LBUILD/package-tree/src
+  [ -d "$pkgsrc/GRANPEN" ] || pkgsrc=$t/src
+  for chk in check-styles check-packages; do
+    python3 "$src/doc/utils/$chk.py" -s "$pkgsrc" -d "$d/src" > "$WORK/$chk.txt" 2>&1 || true
+    if grep -Eiq "granpen|rod/drive|rod/drag|bed/surface|flow/azimuthal|momentum/vbin|create_rod" "$WORK/$chk.txt"; then
+      echo "$chk: findings about GRANPEN:"; grep -Ei "granpen|rod/|bed/surface|flow/azimuthal|momentum/vbin|create_rod" "$WORK/$chk.txt"; rc=1
+    else
+      echo "$chk: no finding about GRANPEN ($(grep -c . "$WORK/$chk.txt") lines about the tree itself: $WORK/$chk.txt)"
+    fi
+  done
+  return $rc
+}
+
+wall_gran() {
+  # the same oblique bounce of a 0.4 cm grain on the floor (fix wall/gran hertz/history) and
+  # on a 200 cm sphere under pair gran/hertz/history (R_eff within 0.2% of the flat's)
+  local lmp=$LBUILD/plugin/lmp d=$WORK/wall
+  mkdir -p "$d" && cd "$d"
+  "$ROOT/tests/compat/wall_vs_pair.sh" "$ROOT/build/lmp_granpen" "$lmp"
+}
+
+CMAKE=${CMAKE:-cmake}
+step 1 "the plugin compiles against $version" compile_plugin
+step 2 "plugin route: plugin load into lmp built from the tree" plugin_route
+step 3 "package route: src/GRANPEN, -D PKG_GRANPEN=on" package_route
+step 4 "LAMMPS-level tests (ctest -L lammps) with lmp_granpen on the tree's liblammps" lammps_tests
+step 5 "LAMMPS's coding-standard and doc index checks" coding_standard
+step 6 "fix wall/gran against pair gran/hertz/history (a sphere on a flat)" wall_gran
+echo
+echo "LAMMPS $version${update:+ ($update)}:"
+for n in 1 2 3 4 5 6; do [ -n "${result[$n]:-}" ] && echo "  step ${result[$n]}"; done
+exit $failed
