@@ -1,7 +1,8 @@
 // granpen gap: diagnosis.json (exact names; other tools read them), report.md and its
 // figures (io/plot_writer.h).
+#include "gap_report.h"
+
 #include "gap_plan.h"
-#include "gap_result.h"
 #include "json_text.h"
 #include "plot_writer.h"
 #include "text_util.h"
@@ -12,8 +13,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <system_error>
 
 namespace granpen {
+
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -277,6 +281,70 @@ void write_gap_report(const Diagnosis &d, const std::string &dir)
   for (const auto &e : failures) std::fprintf(f, "- figure not drawn: %s\n", e.c_str());
   std::fprintf(f, "Simulated traces: `baseline/` (before) and `corrected/` (after; the baseline's when nothing was added).\n");
   if (std::fclose(f) != 0) throw InputError(path + ": write failed");
+}
+
+void gap_by_regime(const GapGrid &grid, double D, Diagnosis &d)
+{
+  const std::size_t nb = grid.nbins();
+  for (const char *reg : {"peak", "transient", "linear"}) {
+    double sb = 0, sa = 0;
+    int n = 0;
+    for (const auto &c : d.speeds) {
+      std::size_t b0 = 0, b1 = 0;
+      for (std::size_t b = 0; b < nb; ++b) {
+        const double z = grid.centre(b);
+        const std::string r = z <= 0.35 * D ? "peak" : (z <= c.z_transient_end ? "transient" : "linear");
+        if (r == reg) {
+          if (b1 == 0) b0 = b;
+          b1 = b + 1;
+        }
+      }
+      if (b1 == 0) continue;
+      Ensemble R, B, C;
+      R.mean = c.real, B.mean = c.base, C.mean = c.corr;
+      R.runs.resize(1), B.runs.resize(1), C.runs.resize(1);    // the debiasing is in the overall G
+      sb += gap_metric(R, B, b0, b1);
+      sa += gap_metric(R, C, b0, b1);
+      ++n;
+    }
+    if (n) d.gap_by_regime[reg] = {sb / n, sa / n};
+  }
+}
+
+void write_gap_output(const Diagnosis &d, const std::string &out_dir)
+{
+  const fs::path out = out_dir, part = fs::path(out_dir + ".partial");
+  std::error_code ec;
+  fs::remove_all(part, ec);
+  try {
+  fs::create_directories(part / "baseline");
+  fs::create_directories(part / "corrected");
+  auto copy_all = [&](const std::vector<std::string> &files, const fs::path &dir) {
+    for (const auto &f : files) {
+      const fs::path src(f);
+      const std::string name = src.parent_path().parent_path().filename().string() + "_" + src.filename().string();
+      fs::copy_file(src, dir / name, fs::copy_options::overwrite_existing);
+    }
+  };
+  copy_all(d.baseline_files, part / "baseline");
+  copy_all(d.corrected_files.empty() ? d.baseline_files : d.corrected_files, part / "corrected");
+  write_gap_report(d, part.string());
+  } catch (const fs::filesystem_error &e) {
+    fs::remove_all(part, ec);
+    throw InputError(part.string() + ": cannot write the output: " + e.code().message());
+  } catch (const InputError &) {
+    fs::remove_all(part, ec);
+    throw;
+  }
+  if (fs::exists(out)) {
+    const fs::path old = fs::path(out_dir + ".old");
+    fs::remove_all(old, ec);
+    fs::rename(out, old);
+    fs::rename(part, out);
+    fs::remove_all(old, ec);
+  } else {
+    fs::rename(part, out);
+  }
 }
 
 }    // namespace granpen
