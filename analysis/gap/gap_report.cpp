@@ -148,12 +148,10 @@ PlotSeries mean_with_band(const std::string &title, const std::vector<double> &z
   return s;
 }
 
-}    // namespace
-
-void write_gap_report(const Diagnosis &d, const std::string &dir)
+// The figures into dir/figures: the names drawn, and why any was not (said in the report).
+void draw_figures(const Diagnosis &d, const std::string &dir, std::vector<std::string> &figures,
+                  std::vector<std::string> &failures)
 {
-  write_json(d, dir + "/diagnosis.json");
-  std::vector<std::string> figures, failures;
   auto draw = [&](const PlotFiles &pf) {
     const PlotResult r = write_plot(dir + "/figures", pf);
     if (!r.ok()) failures.push_back(r.error);
@@ -216,9 +214,11 @@ void write_gap_report(const Diagnosis &d, const std::string &dir)
   }
   bc.guides = {PlotGuide{"0.5", "0.5: needed for explained"}};
   if (!bc.labels.empty()) draw(bar_chart(bc));
+}
 
-  // report.md
-  const std::string path = dir + "/report.md";
+void write_markdown(const Diagnosis &d, const std::string &path, const std::vector<std::string> &figures,
+                    const std::vector<std::string> &failures)
+{
   FILE *f = std::fopen(path.c_str(), "w");
   if (!f) throw InputError(path + ": cannot write");
   std::fprintf(f, "# granpen gap: %s\n\n", d.real_dir.c_str());
@@ -283,6 +283,16 @@ void write_gap_report(const Diagnosis &d, const std::string &dir)
   if (std::fclose(f) != 0) throw InputError(path + ": write failed");
 }
 
+}    // namespace
+
+void write_gap_report(const Diagnosis &d, const std::string &dir)
+{
+  write_json(d, dir + "/diagnosis.json");
+  std::vector<std::string> figures, failures;
+  draw_figures(d, dir, figures, failures);
+  write_markdown(d, dir + "/report.md", figures, failures);
+}
+
 void gap_by_regime(const GapGrid &grid, double D, Diagnosis &d)
 {
   const std::size_t nb = grid.nbins();
@@ -316,9 +326,7 @@ void write_gap_output(const Diagnosis &d, const std::string &out_dir)
   const fs::path out = out_dir, part = fs::path(out_dir + ".partial");
   std::error_code ec;
   fs::remove_all(part, ec);
-  try {
-  fs::create_directories(part / "baseline");
-  fs::create_directories(part / "corrected");
+  // each simulated trace as SWEEP_FILE, the sweep being the folder above traces/
   auto copy_all = [&](const std::vector<std::string> &files, const fs::path &dir) {
     for (const auto &f : files) {
       const fs::path src(f);
@@ -326,9 +334,12 @@ void write_gap_output(const Diagnosis &d, const std::string &out_dir)
       fs::copy_file(src, dir / name, fs::copy_options::overwrite_existing);
     }
   };
-  copy_all(d.baseline_files, part / "baseline");
-  copy_all(d.corrected_files.empty() ? d.baseline_files : d.corrected_files, part / "corrected");
-  write_gap_report(d, part.string());
+  try {
+    fs::create_directories(part / "baseline");
+    fs::create_directories(part / "corrected");
+    copy_all(d.baseline_files, part / "baseline");
+    copy_all(d.corrected_files.empty() ? d.baseline_files : d.corrected_files, part / "corrected");
+    write_gap_report(d, part.string());
   } catch (const fs::filesystem_error &e) {
     fs::remove_all(part, ec);
     throw InputError(part.string() + ": cannot write the output: " + e.code().message());
@@ -336,14 +347,20 @@ void write_gap_output(const Diagnosis &d, const std::string &out_dir)
     fs::remove_all(part, ec);
     throw;
   }
-  if (fs::exists(out)) {
-    const fs::path old = fs::path(out_dir + ".old");
-    fs::remove_all(old, ec);
-    fs::rename(out, old);
-    fs::rename(part, out);
-    fs::remove_all(old, ec);
-  } else {
-    fs::rename(part, out);
+  // an older OUT is replaced only now, when the new one is complete
+  try {
+    if (fs::exists(out)) {
+      const fs::path old = fs::path(out_dir + ".old");
+      fs::remove_all(old, ec);
+      fs::rename(out, old);
+      fs::rename(part, out);
+      fs::remove_all(old, ec);
+    } else {
+      fs::rename(part, out);
+    }
+  } catch (const fs::filesystem_error &e) {
+    throw InputError(out_dir + ": cannot move the output into place (it is complete in " + part.string() +
+                     "): " + e.code().message());
   }
 }
 

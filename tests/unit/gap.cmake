@@ -2,6 +2,10 @@
 add_executable(test_gap test_gap.cpp)
 target_link_libraries(test_gap PRIVATE granpen_analysis GTest::gtest_main)
 gtest_discover_tests(test_gap PROPERTIES LABELS unit)
+# the diagnosis's stages one by one (gap_diagnosis.h), on small fixtures
+add_executable(test_gap_stages test_gap_stages.cpp)
+target_link_libraries(test_gap_stages PRIVATE granpen_analysis GTest::gtest_main)
+gtest_discover_tests(test_gap_stages PROPERTIES LABELS unit)
 
 # granpen gap end to end, blind, in a synthetic world: tests/tools/fake_lmp stands in for
 # lmp_granpen (same command lines and files, effects with known signatures), and
