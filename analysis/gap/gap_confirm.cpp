@@ -4,6 +4,7 @@
 #include "gap_plan.h"
 #include "text_util.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace granpen {
@@ -159,10 +160,11 @@ void confirm_top_effect(const std::map<std::string, const Effect *> &by_name,
   auto req = confirm_requests(sim.scenario, e, d.magnitude, sim.v0s, "confirm");
   const auto [alo, ahi] = magnitude_range(ed);
   const bool own_heldout = std::abs(d.heldout_magnitude - d.magnitude) > 0.05 * (ahi - alo);
-  if (own_heldout) {
-    auto h = confirm_requests(sim.scenario, e, d.heldout_magnitude, {deck_number(f.speeds[hs])}, "heldout");
-    req.insert(req.end(), h.begin(), h.end());
-  }
+  if (own_heldout)
+    for (auto &h : confirm_requests(sim.scenario, e, d.heldout_magnitude, {deck_number(f.speeds[hs])}, "heldout"))
+      // a push-only effect's held-out runs push into the same fresh beds (confirm_beds): once
+      if (std::none_of(req.begin(), req.end(), [&](const SimRequest &r) { return r.spec.name == h.spec.name; }))
+        req.push_back(h);
   run_or_throw(req, sim, "confirming");
   RunsBySpeed corr = load_sweep_runs(sim.runner.out_root, "confirm_" + effect_sweep_name(e, d.magnitude));
   RunsBySpeed held = own_heldout ? load_sweep_runs(sim.runner.out_root, "heldout_" + effect_sweep_name(e, d.heldout_magnitude))

@@ -96,3 +96,8 @@ set_tests_properties(gap_bad_scenario PROPERTIES LABELS unit PASS_REGULAR_EXPRES
 add_test(NAME gap_bad_effect COMMAND $<TARGET_FILE:granpen-cli> gap --real ${GAP_BAD}/wrongD --scenario tiny
   --out ${GAP_BAD}/out_e --effects rolling_resistance,magic --inputs ${PROJECT_SOURCE_DIR}/inputs)
 set_tests_properties(gap_bad_effect PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "unknown effect 'magic'")
+
+# the gap library prints nothing and reads no environment: progress goes to a callback that
+# the CLI renders (gap_progress.h)
+add_test(NAME gap_library_prints_nothing COMMAND sh -c "cd '${PROJECT_SOURCE_DIR}/analysis/gap' && if grep -nE 'std::(printf|puts|cout|cerr|clog)|(^|[^a-z_])(printf|puts) *\\(|fprintf *\\( *(stdout|stderr)|getenv' *.h *.cpp; then echo 'the gap library prints'; else echo 'gap library: silent'; fi")
+set_tests_properties(gap_library_prints_nothing PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "gap library: silent")
