@@ -3,8 +3,8 @@
 // the gap (docs/gap.md, "Verdict", "How far it shrinks"), and the refinement of a
 // magnitude the confirming runs show to be off. Without an explained verdict (or with
 // --fit-only) the "after" is the "before".
-#ifndef GAP_CONFIRM_H
-#define GAP_CONFIRM_H
+#ifndef GRANPEN_GAP_CONFIRM_H
+#define GRANPEN_GAP_CONFIRM_H
 
 #include "effects.h"
 #include "gap_align.h"

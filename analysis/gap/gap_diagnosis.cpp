@@ -122,6 +122,7 @@ int run_gap_diagnosis(const GapOptions &opt, const GapProgressFn &fn)
   const Scenario sc = read_scenario(opt.runner.inputs, opt.scenario);
   const auto effects = choose_effects(opt.effects);
   MeasuredData measured = read_measured(opt.real, sc);
+  check_output_path(opt.out, opt.real, opt.cache);
   for (const auto &n : measured.notes) progress.say(GapProgress::WARNING, "validate", n);
   progress.say(GapProgress::INFO, "validate",
                format("%zu measured runs at %zu speeds (%s cm/s) against scenario %s", measured.files.size(),

@@ -109,4 +109,24 @@ MeasuredData read_measured(const std::string &real, const Scenario &sc)
   return m;
 }
 
+void check_output_path(const std::string &out, const std::string &real, const std::string &cache)
+{
+  // absolute, symbolic links and .. resolved, no trailing separator
+  auto resolved = [](const std::string &p) {
+    std::error_code ec;
+    fs::path r = fs::weakly_canonical(fs::absolute(p, ec), ec);
+    return r.has_filename() ? r : r.parent_path();
+  };
+  const fs::path o = resolved(out);
+  // whether p is o or lies inside it (compared element by element, not as text)
+  auto holds = [&](const std::string &p) {
+    const fs::path q = resolved(p);
+    auto a = o.begin(), b = q.begin();
+    for (; a != o.end() && b != q.end() && *a == *b; ++a, ++b) {}
+    return a == o.end();
+  };
+  if (holds(real)) throw GapRefused("--out " + out + ": would replace the measured traces (--real " + real + ")");
+  if (holds(cache)) throw GapRefused("--out " + out + ": would replace the simulation cache (--cache " + cache + ")");
+}
+
 }    // namespace granpen

@@ -40,6 +40,10 @@ struct MeasuredData {
 // contradicts the scenario and a speed the scenario cannot run.
 MeasuredData read_measured(const std::string &real, const Scenario &sc);
 
+// Refuses an OUT that would replace an input when moved into place: the --real folder or
+// the cache, or a folder holding either.
+void check_output_path(const std::string &out, const std::string &real, const std::string &cache);
+
 }    // namespace granpen
 
 #endif

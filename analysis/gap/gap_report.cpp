@@ -5,6 +5,7 @@
 #include "gap_plan.h"
 #include "json_text.h"
 #include "plot_writer.h"
+#include "sweep_cache.h"
 #include "text_util.h"
 #include "trace_reader.h"    // InputError
 
@@ -326,12 +327,11 @@ void write_gap_output(const Diagnosis &d, const std::string &out_dir)
   const fs::path out = out_dir, part = fs::path(out_dir + ".partial");
   std::error_code ec;
   fs::remove_all(part, ec);
-  // each simulated trace as SWEEP_FILE, the sweep being the folder above traces/
+  // each simulated trace as SWEEP_FILE
   auto copy_all = [&](const std::vector<std::string> &files, const fs::path &dir) {
     for (const auto &f : files) {
-      const fs::path src(f);
-      const std::string name = src.parent_path().parent_path().filename().string() + "_" + src.filename().string();
-      fs::copy_file(src, dir / name, fs::copy_options::overwrite_existing);
+      const std::string name = sweep_of_trace(f) + "_" + fs::path(f).filename().string();
+      fs::copy_file(f, dir / name, fs::copy_options::overwrite_existing);
     }
   };
   try {

@@ -35,6 +35,11 @@ std::vector<std::string> finished_traces(const std::string &out_root, const std:
   return files_in(out_root, name, "traces", ".csv", [](const fs::path &p) { return fs::exists(p.string() + ".done"); });
 }
 
+std::string sweep_of_trace(const std::string &trace_path)
+{
+  return fs::path(trace_path).parent_path().parent_path().filename().string();    // NAME/traces/FILE
+}
+
 std::vector<std::string> bed_info_files(const std::string &out_root, const std::string &name)
 {
   return files_in(out_root, name, "beds", ".info", [](const fs::path &) { return true; });

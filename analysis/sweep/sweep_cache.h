@@ -16,6 +16,9 @@ namespace granpen {
 // empty when the sweep has none (or no folder).
 std::vector<std::string> finished_traces(const std::string &out_root, const std::string &name);
 
+// The name of the sweep a trace of finished_traces belongs to.
+std::string sweep_of_trace(const std::string &trace_path);
+
 // The bed info files (*.info) of sweep `name` under out_root, sorted; empty without any.
 std::vector<std::string> bed_info_files(const std::string &out_root, const std::string &name);
 

@@ -171,6 +171,23 @@ TEST(GapValidate, InputsRefusedBeforeAnythingStarts)
   EXPECT_NO_THROW(read_measured(dir / "close", sc));
 }
 
+TEST(GapValidate, AnOutputThatWouldReplaceAnInputIsRefused)
+{
+  TempDir dir("out");
+  fs::create_directories(dir.path / "real");
+  fs::create_directories(dir.path / "cache");
+  const std::string real = dir / "real", cache = dir / "cache";
+  expect_refused([&] { check_output_path(real, real, cache); }, "would replace the measured traces");
+  expect_refused([&] { check_output_path(real + "/", real, cache); }, "would replace the measured traces");
+  expect_refused([&] { check_output_path(dir / "real/../real", real, cache); }, "would replace the measured traces");
+  expect_refused([&] { check_output_path(dir.path.string(), real, cache); }, "would replace the measured traces");
+  expect_refused([&] { check_output_path(cache, real, dir / "cache/x"); }, "would replace the simulation cache");
+  // beside them, or inside the measured folder: nothing of the inputs is replaced
+  EXPECT_NO_THROW(check_output_path(dir / "out", real, cache));
+  EXPECT_NO_THROW(check_output_path(dir / "real_out", real, cache));
+  EXPECT_NO_THROW(check_output_path(dir / "real/out", real, cache));
+}
+
 // ---- plan
 
 TEST(GapPlan, RequestsAndTheirCostFromWhatTheCacheLacks)
@@ -402,6 +419,7 @@ TEST(SweepCache, FinishedTracesAndBedsOfASweep)
   // c.csv is unfinished (no marker); sorted
   EXPECT_EQ(finished_traces(root.path.string(), "s"), (std::vector<std::string>{root / "s/traces/a.csv", root / "s/traces/b.csv"}));
   EXPECT_EQ(bed_info_files(root.path.string(), "s"), (std::vector<std::string>{root / "s/beds/bed_1.info", root / "s/beds/bed_2.info"}));
+  EXPECT_EQ(sweep_of_trace(finished_traces(root.path.string(), "s")[0]), "s");
 }
 
 TEST(SlurmScript, OneAllocationWrittenWhole)
