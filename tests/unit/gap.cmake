@@ -5,6 +5,10 @@ gtest_discover_tests(test_gap PROPERTIES LABELS unit)
 # the diagnosis's stages one by one (gap_diagnosis.h), on small fixtures
 add_executable(test_gap_stages test_gap_stages.cpp)
 target_link_libraries(test_gap_stages PRIVATE granpen_analysis GTest::gtest_main)
+# a whole diagnosis in the synthetic world: fake_lmp stands in for lmp_granpen
+target_compile_definitions(test_gap_stages PRIVATE GRANPEN_FAKE_LMP="$<TARGET_FILE:fake_lmp>"
+  GRANPEN_INPUTS_DIR="${PROJECT_SOURCE_DIR}/inputs")
+add_dependencies(test_gap_stages fake_lmp)
 gtest_discover_tests(test_gap_stages PROPERTIES LABELS unit)
 
 # granpen gap end to end, blind, in a synthetic world: tests/tools/fake_lmp stands in for

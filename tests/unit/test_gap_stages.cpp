@@ -448,3 +448,66 @@ TEST(SlurmScript, OneAllocationWrittenWhole)
   }
   EXPECT_FALSE(this_executable("fallback").empty());
 }
+
+// ---- the stages in order: a whole diagnosis in the synthetic world (tests/tools/fake_lmp)
+
+#if defined(GRANPEN_FAKE_LMP) && defined(GRANPEN_INPUTS_DIR)
+#include "gap_diagnosis.h"
+#include "sweep_runner.h"
+
+TEST(GapDiagnosis, StagesReportProgressInOrderThroughTheCallback)
+{
+  TempDir dir("whole");
+  RunnerOptions runner;
+  runner.lmp = GRANPEN_FAKE_LMP;
+  runner.inputs = GRANPEN_INPUTS_DIR;
+  runner.jobs = 1;
+  runner.progress_seconds = 1e9;
+  // the "measurement": the tiny scenario with rolling resistance 0.2, on beds no diagnosis uses
+  SweepSpec truth;
+  truth.name = "truth";
+  truth.path = "(test)";
+  truth.presets = {"tiny"};
+  truth.seeds = {"101", "102"};
+  truth.v0 = {"50", "100"};
+  truth.set = {{"mu_roll", "0.2"}};
+  runner.out_root = dir / "measured";
+  ASSERT_EQ(run_sweep(truth, runner), 0);
+
+  GapOptions opt;
+  opt.real = dir / "measured/truth/traces";
+  opt.scenario = "tiny";
+  opt.out = dir / "out";
+  opt.cache = dir / "cache";
+  opt.effects = std::string("rolling_resistance");
+  opt.fit_only = true;    // the confirming runs are confirm's own test
+  opt.runner = runner;
+  std::vector<GapProgress> seen;
+  ASSERT_EQ(run_gap(opt, [&](const GapProgress &p) { seen.push_back(p); }), 0);
+  std::vector<std::string> steps, details;
+  for (const auto &p : seen) {
+    if (p.kind == GapProgress::STEP) steps.push_back(std::to_string(p.done) + "/" + std::to_string(p.total) + " " + p.stage);
+    if (p.kind == GapProgress::DETAIL) details.push_back(p.stage + " " + std::to_string(p.done) + "/" + std::to_string(p.total));
+  }
+  EXPECT_EQ(steps, (std::vector<std::string>{"1/4 simulate", "2/4 align", "3/4 which", "4/4 confirm"}));
+  EXPECT_EQ(details, (std::vector<std::string>{"which 1/1"}));
+  ASSERT_FALSE(seen.empty());
+  EXPECT_EQ(seen.front().stage, "validate");
+  EXPECT_NE(seen.front().message.find("4 measured runs at 2 speeds (50 100 cm/s) against scenario tiny"), std::string::npos)
+      << seen.front().message;
+  EXPECT_EQ(seen.back().stage, "report");
+  EXPECT_EQ(seen.back().message.rfind("verdict explained (rolling_resistance, magnitude ", 0), 0u) << seen.back().message;
+  EXPECT_TRUE(fs::exists(dir.path / "out" / "diagnosis.json"));
+  EXPECT_FALSE(fs::exists(dir.path / "out.partial"));
+
+  // refused input: nothing reported, nothing started, OUT as it was
+  std::vector<GapProgress> none;
+  opt.effects = std::string("");
+  opt.out = dir / "out2";
+  opt.cache = dir / "cache2";
+  EXPECT_THROW(run_gap(opt, [&](const GapProgress &p) { none.push_back(p); }), GapRefused);
+  EXPECT_TRUE(none.empty());
+  EXPECT_FALSE(fs::exists(dir.path / "out2"));
+  EXPECT_FALSE(fs::exists(dir.path / "cache2"));
+}
+#endif
