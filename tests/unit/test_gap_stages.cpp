@@ -449,6 +449,42 @@ TEST(SlurmScript, OneAllocationWrittenWhole)
   EXPECT_FALSE(this_executable("fallback").empty());
 }
 
+// ---- report: the output moved into place whole, or not at all
+
+#include "gap_report.h"
+
+TEST(GapReport, OutputReplacesAnOlderOneOnlyWhenComplete)
+{
+  TempDir dir("report");
+  const std::string out = dir / "out";
+  fs::create_directories(out);
+  write_file(out + "/keep", "before");
+  Diagnosis d;
+  d.scenario = "hand";
+  d.real_dir = dir / "real";
+  // a simulated trace that has gone: the copy fails, OUT stays as it was, no partial left
+  d.baseline_files = {dir / "cache/baseline/traces/gone.csv"};
+  try {
+    write_gap_output(d, out);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError &e) {
+    EXPECT_NE(std::string(e.what()).find("out.partial: cannot write the output"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::exists(out + "/keep"));
+  EXPECT_FALSE(fs::exists(out + ".partial"));
+  // the trace there: the new OUT replaces the old whole, the trace named after its sweep
+  fs::create_directories(dir.path / "cache/baseline/traces");
+  write_file(dir / "cache/baseline/traces/gone.csv", "x");
+  write_gap_output(d, out);
+  EXPECT_FALSE(fs::exists(out + "/keep"));
+  EXPECT_TRUE(fs::exists(out + "/diagnosis.json"));
+  EXPECT_TRUE(fs::exists(out + "/report.md"));
+  EXPECT_TRUE(fs::exists(out + "/baseline/baseline_gone.csv"));
+  EXPECT_TRUE(fs::exists(out + "/corrected/baseline_gone.csv"));    // nothing added: the baseline's
+  EXPECT_FALSE(fs::exists(out + ".partial"));
+  EXPECT_FALSE(fs::exists(out + ".old"));
+}
+
 // ---- the stages in order: a whole diagnosis in the synthetic world (tests/tools/fake_lmp)
 
 #if defined(GRANPEN_FAKE_LMP) && defined(GRANPEN_INPUTS_DIR)
