@@ -10,6 +10,7 @@
 #include "gap_features.h"
 #include "gap_inputs.h"
 #include "gap_plan.h"
+#include "gap_where.h"
 #include "gap_which.h"
 #include "slurm_script.h"
 #include "sweep_cache.h"
@@ -347,6 +348,37 @@ struct HandMade {
 };
 
 }    // namespace
+
+TEST(GapWhere, CurvesAndSignificanceOnAHandMadeFeatureSet)
+{
+  HandMade h(0.5);
+  // a grid whose features are the hand-made six: 2 bins of 0.25 cm, no fluctuation window
+  // (1 cm is deeper than 0.5), the 4 spectral bands
+  GapGrid grid;
+  grid.zmax = 0.5;
+  ASSERT_EQ(grid.nfeatures(), 6u);
+  Diagnosis d;
+  gap_curves(h.f, grid, d);
+  ASSERT_EQ(d.speeds.size(), 2u);
+  // both bins 5 above a reference of 100, no scatter in either ensemble (two equal runs):
+  // G = sqrt(2 x 5^2 / (2 x 105^2)) = 5 / 105 at each speed; rounding only
+  EXPECT_NEAR(d.speeds[0].G_before, 5.0 / 105.0, 1e-12);
+  EXPECT_NEAR(d.gap_before, 5.0 / 105.0, 1e-12);
+  EXPECT_EQ(d.speeds[1].gap, (std::vector<double>{5.0, 5.0}));
+  EXPECT_NEAR(d.speeds[0].band[0], 2.0 * std::sqrt(1e-4 * 105 * 105 / 2 + 0.5), 1e-12);
+  EXPECT_EQ(d.n_real_min, 2);
+  EXPECT_EQ(d.n_sim, 4);
+  gap_significance(h.f, grid, d);
+  // chi^2 = 2 speeds x 3 features x 5^2 / (1e-4 x 105^2 / 2 + 0.5)
+  EXPECT_NEAR(d.chi2_0, 150.0 / (1e-4 * 105 * 105 / 2 + 0.5), 1e-9);
+  EXPECT_EQ(d.nfeatures, 12u);
+  EXPECT_LT(d.p_value, 1e-20);
+  EXPECT_TRUE(d.significant);
+  Diagnosis d0;
+  gap_significance(HandMade(0.0).f, grid, d0);
+  EXPECT_EQ(d0.chi2_0, 0.0);
+  EXPECT_FALSE(d0.significant);
+}
 
 TEST(GapWhich, TheVerdictOnAHandMadeFeatureSet)
 {
