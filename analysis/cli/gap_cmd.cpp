@@ -3,6 +3,7 @@
 #include "args.h"
 #include "effects.h"
 #include "gap_diagnosis.h"
+#include "gap_errors.h"
 #include "subcommands.h"
 #include "trace_reader.h"
 
@@ -50,6 +51,23 @@ const char *HELP =
     "                  more than 8 core-hours (the paper scenario) asks for this, or --local\n"
     "  --list-effects  the candidate effects, their magnitudes and reference values\n"
     "Exit status: 0 diagnosis written, 1 simulations failed or input unreadable, 2 usage.\n";
+
+// The diagnosis's progress, as lines: steps and facts on stdout, warnings on stderr, the
+// ensembles' numbers on stderr with GRANPEN_GAP_DEBUG set.
+void render_progress(const granpen::GapProgress &p)
+{
+  using granpen::GapProgress;
+  switch (p.kind) {
+    case GapProgress::STEP: std::printf("granpen gap: [%d/%d] %s\n", p.done, p.total, p.message.c_str()); break;
+    case GapProgress::INFO: std::printf("granpen gap: %s\n", p.message.c_str()); break;
+    case GapProgress::DETAIL: std::printf("  %s\n", p.message.c_str()); break;
+    case GapProgress::WARNING: std::fprintf(stderr, "granpen gap: warning: %s\n", p.message.c_str()); break;
+    case GapProgress::DEBUG:
+      if (std::getenv("GRANPEN_GAP_DEBUG")) std::fprintf(stderr, "%s\n", p.message.c_str());
+      break;
+  }
+  std::fflush(stdout);
+}
 
 }    // namespace
 
@@ -109,7 +127,10 @@ int granpen::cli::gap(int argc, char **argv)
     return usage.with_help("needs --scenario and either --real and --out, or --prepare-only (or --slurm) and --v0");
   }
   try {
-    return run_gap(opt);
+    return run_gap(opt, render_progress);
+  } catch (GapRefused &e) {
+    std::fprintf(stderr, "granpen gap: %s\n", e.what());
+    return 2;
   } catch (InputError &e) {
     std::fprintf(stderr, "granpen gap: %s\n", e.what());
     return 1;

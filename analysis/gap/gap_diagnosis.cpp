@@ -1,16 +1,27 @@
+// granpen gap: the diagnosis as its stages in order (see gap_diagnosis.h), the cache's
+// preparation, and the cluster script.
 #include "gap_diagnosis.h"
 
 #include "effects.h"
+#include "gap_align.h"
+#include "gap_confirm.h"
+#include "gap_errors.h"
+#include "gap_features.h"
+#include "gap_inputs.h"
 #include "gap_plan.h"
+#include "gap_report.h"
 #include "gap_sims.h"
+#include "gap_where.h"
+#include "gap_which.h"
 #include "scenario.h"
-#include "trace_reader.h"
+#include "slurm_script.h"
+#include "text_util.h"
 
 #include <cmath>
+#include <cstdarg>
 #include <cstdio>
-#include <fstream>
-#include <unistd.h>
 #include <filesystem>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -21,100 +32,169 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<const Effect *> chosen_effects(const std::string &list)
+std::string format(const char *f, ...)
 {
-  std::vector<const Effect *> out;
-  if (list.empty()) {
-    for (const auto &e : effect_library()) out.push_back(&e);
-    return out;
-  }
-  std::stringstream in(list);
-  std::string name;
-  while (std::getline(in, name, ',')) {
-    const Effect *e = find_effect(name);
-    if (!e) {
-      std::string known;
-      for (const auto &x : effect_library()) known += " " + x.name;
-      throw InputError("--effects: unknown effect '" + name + "' (known:" + known + ")");
-    }
-    out.push_back(e);
-  }
-  if (out.empty()) throw InputError("--effects: empty list");
+  va_list ap, again;
+  va_start(ap, f);
+  va_copy(again, ap);
+  const int n = std::vsnprintf(nullptr, 0, f, ap);
+  va_end(ap);
+  std::string out(n > 0 ? (std::size_t) n : 0, '\0');
+  if (n > 0) std::vsnprintf(out.data(), out.size() + 1, f, again);
+  va_end(again);
   return out;
+}
+
+// the progress callback with the stage it is in
+struct Progress {
+  const GapProgressFn &fn;
+  void say(GapProgress::Kind kind, const char *stage, const std::string &message, int done = 0, int total = 0) const
+  {
+    if (fn) fn(GapProgress{kind, stage, done, total, message});
+  }
+};
+
+std::string joined(const std::vector<std::string> &words)
+{
+  std::string s;
+  for (const auto &w : words) s += (s.empty() ? "" : " ") + w;
+  return s;
+}
+
+// the runner of a scenario's cache: CACHE/SCENARIO
+RunnerOptions cache_runner(const GapOptions &opt)
+{
+  RunnerOptions runner = opt.runner;
+  runner.out_root = opt.cache + "/" + opt.scenario;
+  runner.progress_seconds = 30.0;
+  return runner;
+}
+
+// --slurm: one allocation runs the cache's sweeps, --jobs at a time, each on --ranks MPI ranks
+int write_cluster_script(const GapOptions &opt, const Scenario &sc, const std::vector<SimRequest> &req,
+                         const RunnerOptions &runner, const Progress &progress)
+{
+  const double h = estimate_core_hours(sc, req, runner.out_root);
+  const std::string abs_cache = fs::absolute(opt.cache).string(), abs_inputs = fs::absolute(opt.runner.inputs).string();
+  SlurmAllocation job;
+  job.job_name = "granpen-gap-" + opt.scenario;
+  job.ntasks = runner.jobs * runner.ranks;
+  job.what = "granpen gap: the " + opt.scenario + " cache (" + std::to_string(req.size()) + " sweeps, about " +
+             std::to_string((long) std::ceil(h)) + " core-hours at 1.1e7 atom-steps/s/core).";
+  job.command = this_executable("granpen-cli") + " gap --prepare-only --scenario " + opt.scenario + " --v0 \"" + opt.v0 +
+                "\" --jobs " + std::to_string(runner.jobs) + " --mpirun srun --ranks " + std::to_string(runner.ranks) +
+                " --cache " + abs_cache + " --inputs " + abs_inputs + " --lmp " +
+                (opt.runner.lmp.find('/') == std::string::npos ? opt.runner.lmp : fs::absolute(opt.runner.lmp).string()) +
+                (opt.effects ? " --effects " + *opt.effects : "");
+  write_slurm_allocation(job, opt.slurm);
+  progress.say(GapProgress::INFO, "plan",
+               format("wrote %s: the %zu sweeps of the %s cache, about %.0f core-hours; when it has run, "
+                      "rerun this diagnosis with --cache %s",
+                      opt.slurm.c_str(), req.size(), opt.scenario.c_str(), h, abs_cache.c_str()));
+  return 0;
 }
 
 }    // namespace
 
-int run_gap_diagnosis(const GapOptions &opt, const Scenario &sc, const std::vector<const Effect *> &effects,
-                      const RunnerOptions &runner);    // gap_analysis.cpp
-
-double estimate_core_hours(const Scenario &sc, const std::vector<SimRequest> &requests, const std::string &cache)
+int run_gap(const GapOptions &opt, const GapProgressFn &fn)
 {
-  const double lat = sc.number("lat"), box = sc.number("box"), lo = sc.number("fill_lo");
-  const double across = std::floor((box - 2.0 * lo) / lat + 1.0);
-  const double grains = across * across * std::floor((sc.number("zfill_hi") - sc.number("zfill_lo")) / lat + 1.0);
-  const double rate = 1.1e7 * 3600.0;    // atom-steps per core-hour
-  double h = 0.0;
-  for (const auto &r : requests) {
-    const fs::path dir = fs::path(cache) / r.spec.name;
-    for (const auto &run : plan_sweep(r.spec)) {
-      if (run.kind == PlannedRun::POUR) {
-        if (!r.beds_from.empty() || fs::exists(dir / "beds" / (run.id + ".info"))) continue;
-        h += grains * 0.6 / sc.number("dt_pour") / rate;
-      } else {
-        if (fs::exists(dir / "traces" / (run.id + ".csv.done"))) continue;
-        h += grains * (sc.gap + sc.depth) / std::atof(run.v0.c_str()) / sc.number("dt_push") / rate;
-      }
-    }
-  }
-  return h;
+  if (!opt.prepare_only && opt.slurm.empty()) return run_gap_diagnosis(opt, fn);
+  const Progress progress{fn};
+  const Scenario sc = read_scenario(opt.runner.inputs, opt.scenario);
+  const auto effects = choose_effects(opt.effects);
+  std::vector<std::string> v0;
+  std::stringstream in(opt.v0);
+  for (std::string v; in >> v;) v0.push_back(v);
+  if (v0.empty()) throw GapRefused("--prepare-only and --slurm need --v0 \"SPEEDS\"");
+  const RunnerOptions runner = cache_runner(opt);
+  fs::create_directories(runner.out_root);
+  const auto req = signature_requests(opt.scenario, v0, effects);
+  if (!opt.slurm.empty()) return write_cluster_script(opt, sc, req, runner, progress);
+  progress.say(GapProgress::INFO, "simulate",
+               format("preparing the %s cache in %s: %zu sweeps", opt.scenario.c_str(), runner.out_root.c_str(), req.size()));
+  return run_requests(req, runner) == 0 ? 0 : 1;
 }
 
-int run_gap(const GapOptions &opt)
+int run_gap_diagnosis(const GapOptions &opt, const GapProgressFn &fn)
 {
+  const Progress progress{fn};
+  // validate: nothing is started or written before the inputs pass
   const Scenario sc = read_scenario(opt.runner.inputs, opt.scenario);
-  const auto effects = chosen_effects(opt.effects);
-  RunnerOptions runner = opt.runner;
-  runner.out_root = opt.cache + "/" + opt.scenario;
-  runner.progress_seconds = 30.0;
-  fs::create_directories(runner.out_root);
-  std::vector<std::string> v0;
-  if (opt.prepare_only || !opt.slurm.empty()) {
-    std::stringstream in(opt.v0);
-    std::string v;
-    while (in >> v) v0.push_back(v);
-    if (v0.empty()) throw InputError("--prepare-only and --slurm need --v0 \"SPEEDS\"");
+  const auto effects = choose_effects(opt.effects);
+  MeasuredData measured = read_measured(opt.real, sc);
+  check_output_path(opt.out, opt.real, opt.cache);
+  for (const auto &n : measured.notes) progress.say(GapProgress::WARNING, "validate", n);
+  progress.say(GapProgress::INFO, "validate",
+               format("%zu measured runs at %zu speeds (%s cm/s) against scenario %s", measured.files.size(),
+                      measured.runs.size(), joined(measured.v0s).c_str(), sc.name.c_str()));
+
+  // plan and simulate: the baseline and every effect knot (cached)
+  const RunnerOptions runner = cache_runner(opt);
+  const std::string &cache = runner.out_root;
+  progress.say(GapProgress::STEP, "simulate",
+               format("simulations of the baseline and %zu candidate effects (cache %s)", effects.size(), cache.c_str()), 1, 4);
+  const SimulationPlan plan = plan_simulations(sc, measured.v0s, effects, cache, opt.local);
+  if (plan.core_hours > 0.0)
+    progress.say(GapProgress::INFO, "plan", format("about %.1f core-hours of simulation to run", plan.core_hours));
+  fs::create_directories(cache);
+  if (run_requests(plan.requests, runner) != 0)
+    throw InputError("some simulations failed: see the manifests under " + cache + " (rerun to retry them)");
+
+  // align and bin, features and the noise model
+  progress.say(GapProgress::STEP, "align", "comparing ensembles", 2, 4);
+  SimulatedRuns sims = load_simulations(cache, effects);
+  const Alignment al = align_and_bin(measured.runs, sims, sc.depth);
+  Diagnosis d;
+  d.scenario = sc.name;
+  d.real_dir = opt.real;
+  d.real_files = measured.files;
+  d.notes = measured.notes;
+  d.notes.insert(d.notes.end(), al.notes.begin(), al.notes.end());
+  d.grid = al.grid;
+  d.peak_end = 0.35 * sc.D;
+  const Features f = build_features(measured.runs, sims, effects, al.grid, measured.files.size());
+  d.notes.insert(d.notes.end(), f.notes.begin(), f.notes.end());
+  d.n_reference = f.n_reference;
+  for (const auto &line : feature_dump(f)) progress.say(GapProgress::DEBUG, "features", line);
+
+  // where
+  gap_curves(f, al.grid, d);
+  regimes(f, sims.fresh, sc, al.grid, d);
+  observable_findings(f, measured.runs, sims, sc, al.grid, d);
+  gap_significance(f, al.grid, d);
+
+  // which: every effect's magnitude, explained fraction, leave-one-speed-out; the verdict
+  progress.say(GapProgress::STEP, "which", format("fitting %zu candidate effects", effects.size()), 3, 4);
+  std::map<std::string, const Effect *> by_name;
+  for (const Effect *e : effects) by_name[e->name] = e;
+  const auto data = fit_candidates(effects, f, [&](const std::string &sweep) { return mean_phi0(cache, sweep); }, d);
+  for (std::size_t i = 0; i < d.ranking.size(); ++i) {
+    const EffectFit &r = d.ranking[i];
+    progress.say(GapProgress::DETAIL, "which",
+                 format("%-20s magnitude %-10s explained %5.2f  held-out %5.2f  chi2 %.1f -> %.1f  lr %.1f (threshold %.1f)",
+                        r.name.c_str(), printf_number("%.4g", r.magnitude).c_str(), r.explained, r.heldout_explained, r.chi2_0,
+                        r.chi2, r.lr, r.lr_threshold),
+                 (int) i + 1, (int) d.ranking.size());
   }
-  if (!opt.slurm.empty()) {
-    // one allocation runs the cache's sweeps, --jobs at a time, each on --ranks MPI ranks
-    const auto req = signature_requests(opt.scenario, v0, effects);
-    const double h = estimate_core_hours(sc, req, runner.out_root);
-    char self[4096];
-    const ssize_t n = readlink("/proc/self/exe", self, sizeof(self) - 1);
-    const std::string cli = n > 0 ? std::string(self, n) : "granpen-cli";
-    std::ofstream f(opt.slurm);
-    if (!f) throw InputError(opt.slurm + ": cannot write");
-    const std::string abs_cache = fs::absolute(opt.cache).string(), abs_inputs = fs::absolute(opt.runner.inputs).string();
-    f << "#!/bin/bash\n# granpen gap: the " << opt.scenario << " cache (" << req.size() << " sweeps, about " << (long) std::ceil(h)
-      << " core-hours at 1.1e7 atom-steps/s/core).\n# Submit with: sbatch [--partition=... --time=...] " << opt.slurm
-      << "\n#SBATCH --job-name=granpen-gap-" << opt.scenario << "\n#SBATCH --ntasks=" << runner.jobs * runner.ranks
-      << "\nset -e\n" << cli << " gap --prepare-only --scenario " << opt.scenario << " --v0 \"" << opt.v0 << "\" --jobs "
-      << runner.jobs << " --mpirun srun --ranks " << runner.ranks << " --cache " << abs_cache << " --inputs "
-      << abs_inputs << " --lmp "
-      << (opt.runner.lmp.find('/') == std::string::npos ? opt.runner.lmp : fs::absolute(opt.runner.lmp).string())
-      << (opt.effects.empty() ? "" : " --effects " + opt.effects) << "\n";
-    std::printf("granpen gap: wrote %s: the %zu sweeps of the %s cache, about %.0f core-hours; when it has run, "
-                "rerun this diagnosis with --cache %s\n", opt.slurm.c_str(), req.size(), opt.scenario.c_str(), h,
-                abs_cache.c_str());
-    return 0;
-  }
-  if (opt.prepare_only) {
-    const auto req = signature_requests(opt.scenario, v0, effects);
-    std::printf("granpen gap: preparing the %s cache in %s: %zu sweeps\n", opt.scenario.c_str(),
-                runner.out_root.c_str(), req.size());
-    return run_requests(req, runner) == 0 ? 0 : 1;
-  }
-  return run_gap_diagnosis(opt, sc, effects, runner);
+
+  // confirm: the top effect on fresh seeds
+  progress.say(GapProgress::STEP, "confirm",
+               d.verdict != "explained" ? "no effect to confirm"
+               : opt.fit_only           ? "not confirming (--fit-only)"
+                                        : "confirming " + d.top_effect + " on fresh seeds",
+               4, 4);
+  after_is_before(sims.fresh, d);
+  confirm_top_effect(by_name, data, f, al, SimContext{sc.name, measured.v0s, runner}, opt.fit_only, d);
+
+  // report
+  gap_by_regime(al.grid, sc.D, d);
+  write_gap_output(d, opt.out);
+  progress.say(GapProgress::INFO, "report",
+               format("verdict %s%s; G %.3f -> %.3f (%d measured runs per speed at least, %d simulated); %s",
+                      d.verdict.c_str(),
+                      d.top_effect.empty() ? "" : (" (" + d.top_effect + ", magnitude " + printf_number("%.4g", d.magnitude) + ")").c_str(),
+                      d.gap_before, d.gap_after, d.n_real_min, d.n_sim, (opt.out + "/diagnosis.json").c_str()));
+  return 0;
 }
 
 }    // namespace granpen

@@ -1,19 +1,26 @@
 // granpen gap: the diagnosis from measured traces and the simulation cache to OUT/
-// (diagnosis.json, report.md, baseline/, corrected/). The numerics are in gap_data.h
-// and gap_fit.h; this file reads, runs simulations and writes.
+// (diagnosis.json, report.md, baseline/, corrected/), as a sequence of stages with typed
+// results, each in its own file:
+//   validate (gap_inputs.h)  -> plan (gap_plan.h) -> simulate (gap_sims.h, through the
+//   sweep layer) -> align and bin (gap_align.h) -> features and noise model
+//   (gap_features.h) -> where (gap_where.h) -> which: fit, verdict (gap_which.h,
+//   gap_verdict.h) -> confirm (gap_confirm.h) -> report (gap_report.h).
+// The numerics are in gap_data.h and gap_fit.h. Progress goes through a callback
+// (gap_progress.h): the library prints nothing.
 #ifndef GRANPEN_GAP_DIAGNOSIS_H
 #define GRANPEN_GAP_DIAGNOSIS_H
 
+#include "gap_progress.h"
 #include "sweep_runner.h"
 
+#include <optional>
 #include <string>
-#include <vector>
 
 namespace granpen {
 
 struct GapOptions {
   std::string real, scenario, out, cache;
-  std::string effects;         // comma-separated; empty = the whole library
+  std::optional<std::string> effects;    // comma-separated; not given = the whole library
   std::string v0;              // --prepare-only: the speeds
   bool prepare_only = false;
   bool local = false;          // run even what the cost estimate sends to a cluster
@@ -22,16 +29,14 @@ struct GapOptions {
   RunnerOptions runner;        // lmp, inputs, jobs (out_root is set per scenario)
 };
 
-// Returns the exit status; throws InputError for unreadable or mismatched input.
-int run_gap(const GapOptions &opt);
+// The diagnosis (or, with prepare_only, the cache's simulations; with slurm, the script
+// that runs them on a cluster). Returns the exit status (0 done, 1 simulations failed);
+// throws GapRefused (gap_errors.h) for input it refuses before starting anything, and
+// InputError for unreadable input or failed simulations.
+int run_gap(const GapOptions &opt, const GapProgressFn &progress);
 
-// Core-hours of the runs of the requests not yet done in the cache (1.1e7 atom-steps
-// per second per core, docs/presets.md; grains from the preset's lattice, a pour 0.6 s
-// of simulated time).
-struct Scenario;
-struct SweepTask;
-using SimRequest = SweepTask;
-double estimate_core_hours(const Scenario &sc, const std::vector<SimRequest> &requests, const std::string &cache);
+// The diagnosis proper: every stage, from the measured traces to OUT.
+int run_gap_diagnosis(const GapOptions &opt, const GapProgressFn &progress);
 
 }    // namespace granpen
 

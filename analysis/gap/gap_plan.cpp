@@ -1,5 +1,12 @@
 #include "gap_plan.h"
 
+#include "sweep_cache.h"
+#include "text_util.h"
+#include "trace_reader.h"    // InputError
+
+#include <cmath>
+#include <cstdlib>
+
 namespace granpen {
 
 // signature beds; the reference beds the fits measure the gap against (and split for the
@@ -38,6 +45,37 @@ std::vector<SimRequest> confirm_requests(const std::string &scenario, const Effe
   }
   out.push_back(r);
   return out;
+}
+
+double estimate_core_hours(const Scenario &sc, const std::vector<SimRequest> &requests, const std::string &cache)
+{
+  const double lat = sc.number("lat"), box = sc.number("box"), lo = sc.number("fill_lo");
+  const double across = std::floor((box - 2.0 * lo) / lat + 1.0);
+  const double grains = across * across * std::floor((sc.number("zfill_hi") - sc.number("zfill_lo")) / lat + 1.0);
+  const double rate = 1.1e7 * 3600.0;    // atom-steps per core-hour
+  double h = 0.0;
+  for (const auto &r : requests)
+    for (const auto &run : pending_runs(r, cache)) {
+      if (run.kind == PlannedRun::POUR) h += grains * 0.6 / sc.number("dt_pour") / rate;
+      else h += grains * (sc.gap + sc.depth) / std::atof(run.v0.c_str()) / sc.number("dt_push") / rate;
+    }
+  return h;
+}
+
+SimulationPlan plan_simulations(const Scenario &sc, const std::vector<std::string> &v0s,
+                                const std::vector<const Effect *> &effects, const std::string &cache, bool local)
+{
+  SimulationPlan p;
+  p.requests = signature_requests(sc.name, v0s, effects);
+  p.core_hours = estimate_core_hours(sc, p.requests, cache);
+  if (p.core_hours > LOCAL_CORE_HOURS && !local) {
+    std::string speeds;
+    for (const auto &v : v0s) speeds += (speeds.empty() ? "" : " ") + v;
+    throw InputError("the simulations this diagnosis still needs cost about " + printf_number("%.0f", p.core_hours) +
+                     " core-hours (scenario '" + sc.name + "'): write them out for a cluster with --slurm FILE --v0 \"" +
+                     speeds + "\" (then rerun with the filled cache), or run them here with --local");
+  }
+  return p;
 }
 
 }    // namespace granpen

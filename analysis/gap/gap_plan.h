@@ -1,8 +1,11 @@
-// granpen gap: which simulations a diagnosis needs (pure planning over the effect library).
+// granpen gap, stage 2 (plan): which simulations a diagnosis needs, as sweep requests over
+// the effect library, and what they cost. Pure planning, except that the cost counts only
+// the runs the cache does not hold yet (asked of the sweep layer).
 #ifndef GRANPEN_GAP_PLAN_H
 #define GRANPEN_GAP_PLAN_H
 
 #include "gap_sims.h"
+#include "scenario.h"
 
 #include <string>
 #include <vector>
@@ -23,6 +26,24 @@ std::vector<SimRequest> signature_requests(const std::string &scenario, const st
 std::vector<SimRequest> confirm_requests(const std::string &scenario, const Effect &e, double a,
                                          const std::vector<std::string> &v0, const std::string &tag,
                                          const std::vector<std::string> &seeds = CONFIRM_SEEDS);
+
+// Core-hours of the runs of the requests not yet done in the cache (1.1e7 atom-steps
+// per second per core, docs/presets.md; grains from the preset's lattice, a pour 0.6 s
+// of simulated time).
+double estimate_core_hours(const Scenario &sc, const std::vector<SimRequest> &requests, const std::string &cache);
+
+// A diagnosis runs here up to this many core-hours; beyond, it asks for --slurm or --local.
+constexpr double LOCAL_CORE_HOURS = 8.0;
+
+struct SimulationPlan {
+  std::vector<SimRequest> requests;    // the baseline, the reference beds, every effect knot
+  double core_hours = 0;               // of what the cache does not hold yet
+};
+
+// The signature simulations at the measured speeds v0s; throws InputError when they would
+// cost more than LOCAL_CORE_HOURS and `local` is not set (naming --slurm and --local).
+SimulationPlan plan_simulations(const Scenario &sc, const std::vector<std::string> &v0s,
+                                const std::vector<const Effect *> &effects, const std::string &cache, bool local);
 
 }    // namespace granpen
 

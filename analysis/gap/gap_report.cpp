@@ -1,9 +1,11 @@
 // granpen gap: diagnosis.json (exact names; other tools read them), report.md and its
 // figures (io/plot_writer.h).
+#include "gap_report.h"
+
 #include "gap_plan.h"
-#include "gap_result.h"
 #include "json_text.h"
 #include "plot_writer.h"
+#include "sweep_cache.h"
 #include "text_util.h"
 #include "trace_reader.h"    // InputError
 
@@ -12,8 +14,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <string>
+#include <system_error>
 
 namespace granpen {
+
+namespace fs = std::filesystem;
 
 namespace {
 
@@ -144,12 +149,10 @@ PlotSeries mean_with_band(const std::string &title, const std::vector<double> &z
   return s;
 }
 
-}    // namespace
-
-void write_gap_report(const Diagnosis &d, const std::string &dir)
+// The figures into dir/figures: the names drawn, and why any was not (said in the report).
+void draw_figures(const Diagnosis &d, const std::string &dir, std::vector<std::string> &figures,
+                  std::vector<std::string> &failures)
 {
-  write_json(d, dir + "/diagnosis.json");
-  std::vector<std::string> figures, failures;
   auto draw = [&](const PlotFiles &pf) {
     const PlotResult r = write_plot(dir + "/figures", pf);
     if (!r.ok()) failures.push_back(r.error);
@@ -212,9 +215,11 @@ void write_gap_report(const Diagnosis &d, const std::string &dir)
   }
   bc.guides = {PlotGuide{"0.5", "0.5: needed for explained"}};
   if (!bc.labels.empty()) draw(bar_chart(bc));
+}
 
-  // report.md
-  const std::string path = dir + "/report.md";
+void write_markdown(const Diagnosis &d, const std::string &path, const std::vector<std::string> &figures,
+                    const std::vector<std::string> &failures)
+{
   FILE *f = std::fopen(path.c_str(), "w");
   if (!f) throw InputError(path + ": cannot write");
   std::fprintf(f, "# granpen gap: %s\n\n", d.real_dir.c_str());
@@ -277,6 +282,86 @@ void write_gap_report(const Diagnosis &d, const std::string &dir)
   for (const auto &e : failures) std::fprintf(f, "- figure not drawn: %s\n", e.c_str());
   std::fprintf(f, "Simulated traces: `baseline/` (before) and `corrected/` (after; the baseline's when nothing was added).\n");
   if (std::fclose(f) != 0) throw InputError(path + ": write failed");
+}
+
+}    // namespace
+
+void write_gap_report(const Diagnosis &d, const std::string &dir)
+{
+  write_json(d, dir + "/diagnosis.json");
+  std::vector<std::string> figures, failures;
+  draw_figures(d, dir, figures, failures);
+  write_markdown(d, dir + "/report.md", figures, failures);
+}
+
+void gap_by_regime(const GapGrid &grid, double D, Diagnosis &d)
+{
+  const std::size_t nb = grid.nbins();
+  for (const char *reg : {"peak", "transient", "linear"}) {
+    double sb = 0, sa = 0;
+    int n = 0;
+    for (const auto &c : d.speeds) {
+      std::size_t b0 = 0, b1 = 0;
+      for (std::size_t b = 0; b < nb; ++b) {
+        const double z = grid.centre(b);
+        const std::string r = z <= 0.35 * D ? "peak" : (z <= c.z_transient_end ? "transient" : "linear");
+        if (r == reg) {
+          if (b1 == 0) b0 = b;
+          b1 = b + 1;
+        }
+      }
+      if (b1 == 0) continue;
+      Ensemble R, B, C;
+      R.mean = c.real, B.mean = c.base, C.mean = c.corr;
+      R.runs.resize(1), B.runs.resize(1), C.runs.resize(1);    // the debiasing is in the overall G
+      sb += gap_metric(R, B, b0, b1);
+      sa += gap_metric(R, C, b0, b1);
+      ++n;
+    }
+    if (n) d.gap_by_regime[reg] = {sb / n, sa / n};
+  }
+}
+
+void write_gap_output(const Diagnosis &d, const std::string &out_dir)
+{
+  const fs::path out = out_dir, part = fs::path(out_dir + ".partial");
+  std::error_code ec;
+  fs::remove_all(part, ec);
+  // each simulated trace as SWEEP_FILE
+  auto copy_all = [&](const std::vector<std::string> &files, const fs::path &dir) {
+    for (const auto &f : files) {
+      const std::string name = sweep_of_trace(f) + "_" + fs::path(f).filename().string();
+      fs::copy_file(f, dir / name, fs::copy_options::overwrite_existing);
+    }
+  };
+  try {
+    fs::create_directories(part / "baseline");
+    fs::create_directories(part / "corrected");
+    copy_all(d.baseline_files, part / "baseline");
+    copy_all(d.corrected_files.empty() ? d.baseline_files : d.corrected_files, part / "corrected");
+    write_gap_report(d, part.string());
+  } catch (const fs::filesystem_error &e) {
+    fs::remove_all(part, ec);
+    throw InputError(part.string() + ": cannot write the output: " + e.code().message());
+  } catch (const InputError &) {
+    fs::remove_all(part, ec);
+    throw;
+  }
+  // an older OUT is replaced only now, when the new one is complete
+  try {
+    if (fs::exists(out)) {
+      const fs::path old = fs::path(out_dir + ".old");
+      fs::remove_all(old, ec);
+      fs::rename(out, old);
+      fs::rename(part, out);
+      fs::remove_all(old, ec);
+    } else {
+      fs::rename(part, out);
+    }
+  } catch (const fs::filesystem_error &e) {
+    throw InputError(out_dir + ": cannot move the output into place (it is complete in " + part.string() +
+                     "): " + e.code().message());
+  }
 }
 
 }    // namespace granpen

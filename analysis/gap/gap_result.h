@@ -58,9 +58,6 @@ struct Diagnosis {
   int n_real_min = 0, n_sim = 0;
 };
 
-// Writes diagnosis.json, report.md and the figures into dir (which exists).
-void write_gap_report(const Diagnosis &d, const std::string &dir);
-
 }    // namespace granpen
 
 #endif

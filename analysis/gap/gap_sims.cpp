@@ -1,11 +1,11 @@
 #include "gap_sims.h"
 
-#include <algorithm>
-#include <filesystem>
+#include "bed_info.h"
+#include "sweep_cache.h"
+
+#include <cmath>
 
 namespace granpen {
-
-namespace fs = std::filesystem;
 
 SimRequest baseline_request(const std::string &scenario, const std::vector<std::string> &v0,
                             const std::vector<std::string> &seeds, const std::string &name)
@@ -41,17 +41,32 @@ int run_requests(const std::vector<SimRequest> &requests, const RunnerOptions &o
   return failed;
 }
 
-std::vector<std::string> finished_traces(const std::string &cache_dir, const std::string &sweep)
+RunsBySpeed load_sweep_runs(const std::string &cache, const std::string &sweep)
 {
-  std::vector<std::string> out;
-  const fs::path dir = fs::path(cache_dir) / sweep / "traces";
-  if (!fs::is_directory(dir)) return out;
-  for (const auto &entry : fs::directory_iterator(dir)) {
-    const auto p = entry.path();
-    if (p.extension() == ".csv" && fs::exists(p.string() + ".done")) out.push_back(p.string());
+  RunsBySpeed out;
+  for (const auto &p : finished_traces(cache, sweep)) {
+    TraceRun r = run_of_trace(read_trace(p));
+    out[r.v0].push_back(std::move(r));
   }
-  std::sort(out.begin(), out.end());
   return out;
+}
+
+SimulatedRuns load_simulations(const std::string &cache, const std::vector<const Effect *> &effects)
+{
+  SimulatedRuns s;
+  s.base = load_sweep_runs(cache, "baseline");
+  for (const Effect *e : effects)
+    for (double a : e->knots) s.knots[effect_sweep_name(*e, a)] = load_sweep_runs(cache, effect_sweep_name(*e, a));
+  s.fresh = load_sweep_runs(cache, "fresh_baseline");
+  return s;
+}
+
+double mean_phi0(const std::string &cache, const std::string &sweep)
+{
+  double s = 0;
+  int n = 0;
+  for (const auto &p : bed_info_files(cache, sweep)) s += read_bed_info(p).phi_0, ++n;
+  return n ? s / n : NAN;
 }
 
 }    // namespace granpen

@@ -1,5 +1,5 @@
-// granpen gap: the simulations a diagnosis needs, as sweeps (sweep/sweep_runner.h) in a
-// cache folder that every diagnosis of the same scenario shares:
+// granpen gap, stage 3 (simulate): the simulations a diagnosis needs, as sweeps
+// (sweep/sweep_runner.h) in a cache folder that every diagnosis of the same scenario shares:
 //   CACHE/SCENARIO/baseline                 the model as calibrated, seeds 1 2
 //   CACHE/SCENARIO/EFFECT_MAGNITUDE         each library effect at each knot, seeds 1 2
 //   CACHE/SCENARIO/fresh_baseline           the model on the reference beds, seeds 11 to 14
@@ -9,14 +9,17 @@
 // A push-only effect (measurement chain) reuses the beds of the baseline with the same
 // seeds (hard links): its signature is then a paired difference, bed noise cancels.
 // The sweep runner skips what is done and resumes what was interrupted, so a diagnosis
-// resumes from the cache and a repeated one costs nothing.
+// resumes from the cache and a repeated one costs nothing. What a sweep folder holds is
+// the sweep layer's to say (sweep/sweep_cache.h); the gap names sweeps only.
 #ifndef GRANPEN_GAP_SIMS_H
 #define GRANPEN_GAP_SIMS_H
 
 #include "effects.h"
+#include "gap_runs.h"
 #include "sweep_runner.h"
 #include "sweep_spec.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -24,7 +27,6 @@ namespace granpen {
 
 // a sweep, and the sweep (same preset, seeds) whose beds it reuses; "" = pour its own
 using SimRequest = SweepTask;
-
 
 // One sweep of the scenario's model, or of an effect at magnitude a, over speeds v0.
 SimRequest baseline_request(const std::string &scenario, const std::vector<std::string> &v0,
@@ -38,8 +40,20 @@ SimRequest effect_request(const std::string &scenario, const Effect &e, double a
 // opt.out_root is the scenario's cache folder.
 int run_requests(const std::vector<SimRequest> &requests, const RunnerOptions &opt);
 
-// The finished traces (*.csv with a .done marker) of a sweep in the cache, sorted.
-std::vector<std::string> finished_traces(const std::string &cache_dir, const std::string &sweep);
+// The finished runs of one sweep of the cache, by speed (throws InputError for a trace
+// that cannot be read).
+RunsBySpeed load_sweep_runs(const std::string &cache, const std::string &sweep);
+
+// What the fits compare against: the baseline on the signature beds, on the reference
+// beds, and every effect knot (sweep name -> runs).
+struct SimulatedRuns {
+  RunsBySpeed base, fresh;
+  std::map<std::string, RunsBySpeed> knots;
+};
+SimulatedRuns load_simulations(const std::string &cache, const std::vector<const Effect *> &effects);
+
+// The mean phi_0 of a sweep's beds (NaN without any).
+double mean_phi0(const std::string &cache, const std::string &sweep);
 
 }    // namespace granpen
 

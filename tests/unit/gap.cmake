@@ -2,6 +2,14 @@
 add_executable(test_gap test_gap.cpp)
 target_link_libraries(test_gap PRIVATE granpen_analysis GTest::gtest_main)
 gtest_discover_tests(test_gap PROPERTIES LABELS unit)
+# the diagnosis's stages one by one (gap_diagnosis.h), on small fixtures
+add_executable(test_gap_stages test_gap_stages.cpp)
+target_link_libraries(test_gap_stages PRIVATE granpen_analysis GTest::gtest_main)
+# a whole diagnosis in the synthetic world: fake_lmp stands in for lmp_granpen
+target_compile_definitions(test_gap_stages PRIVATE GRANPEN_FAKE_LMP="$<TARGET_FILE:fake_lmp>"
+  GRANPEN_INPUTS_DIR="${PROJECT_SOURCE_DIR}/inputs")
+add_dependencies(test_gap_stages fake_lmp)
+gtest_discover_tests(test_gap_stages PROPERTIES LABELS unit)
 
 # granpen gap end to end, blind, in a synthetic world: tests/tools/fake_lmp stands in for
 # lmp_granpen (same command lines and files, effects with known signatures), and
@@ -32,11 +40,19 @@ add_test(NAME gap_fit_only_is_provisional
 set_tests_properties(gap_fit_only_is_provisional PROPERTIES LABELS unit FIXTURES_REQUIRED gap_synthetic RESOURCE_LOCK gap_synthetic
   PASS_REGULAR_EXPRESSION "provisional, G unchanged")
 
-# bad input: a clear message naming the file or option, exit 1 or 2, nothing in OUT
+# bad input: a clear message naming the file or option, nothing started, nothing written in
+# OUT. Input the diagnosis refuses (gap_errors.h: GapRefused; docs/gap.md) exits 2; an
+# unreadable trace exits 1. Each case runs twice: without OUT (it must not appear, nor
+# OUT.partial, nor the cache) and with an OUT from before (it must stay as it was).
 set(GAP_BAD ${CMAKE_CURRENT_BINARY_DIR}/gap_bad)
-file(MAKE_DIRECTORY ${GAP_BAD}/wrongD ${GAP_BAD}/fast ${GAP_BAD}/nan ${GAP_BAD}/empty)
+file(MAKE_DIRECTORY ${GAP_BAD}/wrongD ${GAP_BAD}/fast ${GAP_BAD}/nan ${GAP_BAD}/empty ${GAP_BAD}/single
+  ${GAP_BAD}/mixed ${GAP_BAD}/two)
 function(gap_bad_trace path header row)
-  set(text "# granpen-trace v1\n# units = cgs\n${header}t,z,F\n")
+  set(units cgs)
+  if(ARGC GREATER 3)
+    set(units ${ARGV3})
+  endif()
+  set(text "# granpen-trace v1\n# units = ${units}\n${header}t,z,F\n")
   foreach(i RANGE 0 40)
     math(EXPR zi "${i} * 10 - 50")
     string(APPEND text "${i}e-4,${zi}e-3,${row}\n")
@@ -44,21 +60,53 @@ function(gap_bad_trace path header row)
   file(WRITE ${path} "${text}")
 endfunction()
 gap_bad_trace(${GAP_BAD}/wrongD/a.csv "# v0 = 100\n# D = 3.0\n# g = 981\n" "5")
+gap_bad_trace(${GAP_BAD}/wrongD/b.csv "# v0 = 100\n# D = 3.0\n# g = 981\n" "5")
 gap_bad_trace(${GAP_BAD}/fast/a.csv "# v0 = 90000\n# D = 2.0\n# g = 981\n" "5")
 gap_bad_trace(${GAP_BAD}/nan/a.csv "# v0 = 100\n# D = 2.0\n# g = 981\n" "nan")
-foreach(case wrongD fast nan empty)
+gap_bad_trace(${GAP_BAD}/single/a.csv "# v0 = 100\n# D = 2.0\n# g = 981\n" "5")
+gap_bad_trace(${GAP_BAD}/two/a.csv "# v0 = 100\n# D = 2.0\n# g = 981\n" "5")
+gap_bad_trace(${GAP_BAD}/two/b.csv "# v0 = 100\n# D = 2.0\n# g = 981\n" "6")
+gap_bad_trace(${GAP_BAD}/mixed/a.csv "# v0 = 100\n# D = 2.0\n# g = 981\n" "5")
+gap_bad_trace(${GAP_BAD}/mixed/b.csv "# v0 = 1.0\n# D = 0.02\n# g = 9.81\n" "0.00005" si)
+# case, folder (or file) given to --real, further options, expected exit status, message
+set(GAP_BAD_CASES
+  "wrongD|wrongD||2|wrongD/a.csv: header D = 3.*scenario 'tiny' has D = 2"
+  "fast|fast||2|fast/a.csv: v0 = 9e\\+04 cm/s is outside what scenario 'tiny' can run"
+  "nan|nan||1|nan/a.csv:[0-9]+: "
+  "empty|empty||2|empty: folder holds no \\*.csv file"
+  "single|single||2|--real [^ ]*/single: a single trace in all"
+  "file|single/a.csv||2|--real [^ ]*/single/a.csv: a file, not a folder"
+  "missing|no_such_folder||2|--real [^ ]*/no_such_folder: no such folder"
+  "mixed|mixed||2|mixed/b.csv: units = si, but [^ ]*/mixed/a.csv has units = cgs"
+  "effects_empty|two|--effects ''|2|--effects: empty list")
+foreach(entry ${GAP_BAD_CASES})
+  string(REPLACE "|" ";" parts "${entry}")
+  list(GET parts 0 case)
+  list(GET parts 1 real)
+  list(GET parts 2 extra)
+  list(GET parts 3 status)
+  list(GET parts 4 message)
+  set(out ${GAP_BAD}/out_${case})
+  set(cache ${GAP_BAD}/cache_${case})
+  set(run "'$<TARGET_FILE:granpen-cli>' gap --real '${GAP_BAD}/${real}' --scenario tiny --out '${out}' --cache '${cache}' --lmp '$<TARGET_FILE:fake_lmp>' --inputs '${PROJECT_SOURCE_DIR}/inputs' ${extra}")
   add_test(NAME gap_bad_${case}
-    COMMAND sh -c "rm -rf '${GAP_BAD}/out_${case}'; '$<TARGET_FILE:granpen-cli>' gap --real '${GAP_BAD}/${case}' --scenario tiny --out '${GAP_BAD}/out_${case}' --cache '${GAP_BAD}/cache' --lmp '$<TARGET_FILE:fake_lmp>' --inputs '${PROJECT_SOURCE_DIR}/inputs'; s=$?; test ! -e '${GAP_BAD}/out_${case}' && test ! -e '${GAP_BAD}/out_${case}.partial' && echo exit=$s")
+    COMMAND sh -c "rm -rf '${out}' '${out}.partial' '${cache}'; ${run}; s1=$?; test ! -e '${out}' || echo 'OUT created'; mkdir '${out}' && echo before > '${out}/keep'; ${run} 2>/dev/null; s2=$?; test \"$(ls -A '${out}')\" = keep && test \"$(cat '${out}/keep')\" = before || echo 'OUT changed'; test ! -e '${out}.partial' && test ! -e '${cache}' || echo 'something was started'; echo exit=$s1,$s2")
+  set_tests_properties(gap_bad_${case} PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "${message}.*exit=${status},${status}\n$"
+    FAIL_REGULAR_EXPRESSION "OUT created|OUT changed|something was started")
 endforeach()
-set_tests_properties(gap_bad_wrongD PROPERTIES LABELS unit
-  PASS_REGULAR_EXPRESSION "wrongD/a.csv: header D = 3.*scenario 'tiny' has D = 2.*exit=1")
-set_tests_properties(gap_bad_fast PROPERTIES LABELS unit
-  PASS_REGULAR_EXPRESSION "fast/a.csv: v0 = 9e\\+04 cm/s is outside what scenario 'tiny' can run.*exit=1")
-set_tests_properties(gap_bad_nan PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "nan/a.csv:[0-9]+: .*exit=1")
-set_tests_properties(gap_bad_empty PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "empty: folder holds no \\*.csv file.*exit=1")
+# OUT naming the measured folder: refused, the folder as it was
+add_test(NAME gap_bad_out_is_real
+  COMMAND sh -c "'$<TARGET_FILE:granpen-cli>' gap --real '${GAP_BAD}/two' --scenario tiny --out '${GAP_BAD}/two' --cache '${GAP_BAD}/cache_out' --lmp '$<TARGET_FILE:fake_lmp>' --inputs '${PROJECT_SOURCE_DIR}/inputs'; s=$?; test \"$(ls -A '${GAP_BAD}/two' | tr '\\n' ' ')\" = 'a.csv b.csv ' && test ! -e '${GAP_BAD}/cache_out' && echo exit=$s")
+set_tests_properties(gap_bad_out_is_real PROPERTIES LABELS unit
+  PASS_REGULAR_EXPRESSION "--out [^ ]*/two: would replace the measured traces.*exit=2")
 add_test(NAME gap_bad_scenario COMMAND $<TARGET_FILE:granpen-cli> gap --real ${GAP_BAD}/wrongD --scenario huge
   --out ${GAP_BAD}/out_s --inputs ${PROJECT_SOURCE_DIR}/inputs)
 set_tests_properties(gap_bad_scenario PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "unknown scenario 'huge'")
 add_test(NAME gap_bad_effect COMMAND $<TARGET_FILE:granpen-cli> gap --real ${GAP_BAD}/wrongD --scenario tiny
   --out ${GAP_BAD}/out_e --effects rolling_resistance,magic --inputs ${PROJECT_SOURCE_DIR}/inputs)
 set_tests_properties(gap_bad_effect PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "unknown effect 'magic'")
+
+# the gap library prints nothing and reads no environment: progress goes to a callback that
+# the CLI renders (gap_progress.h)
+add_test(NAME gap_library_prints_nothing COMMAND sh -c "cd '${PROJECT_SOURCE_DIR}/analysis/gap' && if grep -nE 'std::(printf|puts|cout|cerr|clog)|(^|[^a-z_])(printf|puts) *\\(|fprintf *\\( *(stdout|stderr)|getenv' *.h *.cpp; then echo 'the gap library prints'; else echo 'gap library: silent'; fi")
+set_tests_properties(gap_library_prints_nothing PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "gap library: silent")

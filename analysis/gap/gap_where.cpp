@@ -1,0 +1,146 @@
+// granpen gap, stage 6 (where): see gap_where.h.
+#include "gap_where.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+namespace granpen {
+
+namespace {
+
+double mean_of(const std::vector<double> &v)
+{
+  return v.empty() ? 0.0 : std::accumulate(v.begin(), v.end(), 0.0) / v.size();
+}
+
+using Observations = std::map<std::string, std::vector<double>>;    // observable -> one value per run
+
+Observations observations(const std::vector<TraceRun> &runs, double v, const Scenario &sc, const GapGrid &grid,
+                          double z_transient_end)
+{
+  Observations o;
+  for (const auto &r : runs) {
+    const auto x = run_observables(r.z, r.F, v, sc.D, sc.g, sc.d_g, grid, z_transient_end);
+    o["peak_F"].push_back(x.peak_F);
+    o["peak_z"].push_back(x.peak_z);
+    o["excess"].push_back(x.excess);
+    o["k_z"].push_back(x.k_z);
+    if (x.crossed) o["t_star"].push_back(x.t_star);
+    o["fluct"].push_back(x.fluct);
+    if (x.wavelength > 0) o["wavelength"].push_back(x.wavelength);
+  }
+  return o;
+}
+
+}    // namespace
+
+void gap_curves(const Features &f, const GapGrid &grid, Diagnosis &d)
+{
+  const std::size_t ns = f.nspeeds(), nb = grid.nbins();
+  d.n_real_min = 1 << 30;
+  double gb = 0;
+  for (std::size_t s = 0; s < ns; ++s) {
+    SpeedCurves c;
+    c.v0 = f.speeds[s];
+    c.n_real = (int) f.real[s].n();
+    c.n_base = (int) f.fresh[s].n();
+    d.n_real_min = std::min(d.n_real_min, c.n_real);
+    const auto errB = model_err(f.fresh[s], f.cv2[s]);
+    for (std::size_t b = 0; b < nb; ++b) {
+      c.z.push_back(grid.centre(b));
+      c.real.push_back(f.real[s].mean[b]);
+      c.real_se.push_back(std::sqrt(f.target.err[s][b]));
+      c.base.push_back(f.fresh[s].mean[b]);
+      c.base_se.push_back(std::sqrt(errB[b]));
+      c.gap.push_back(f.real[s].mean[b] - f.fresh[s].mean[b]);
+      c.band.push_back(2.0 * std::sqrt(f.target.err[s][b] + errB[b]));
+    }
+    c.G_before = gap_metric(f.real[s], f.fresh[s], 0, nb);
+    gb += c.G_before / ns;
+    d.speeds.push_back(c);
+  }
+  d.gap_before = gb;
+  d.n_sim = f.n_reference;    // the baseline the gap is measured against: the reference beds
+}
+
+void regimes(const Features &f, const RunsBySpeed &fresh, const Scenario &sc, const GapGrid &grid, Diagnosis &d)
+{
+  for (std::size_t s = 0; s < f.nspeeds(); ++s) {
+    const double v = f.speeds[s];
+    const auto &runs = fresh.at(v);
+    std::vector<double> ts;
+    for (const auto &r : runs) {
+      const auto o = run_observables(r.z, r.F, v, sc.D, sc.g, sc.d_g, grid, grid.zmax);
+      if (o.crossed) ts.push_back(o.t_star);
+    }
+    const double zc = ts.size() == runs.size() && !ts.empty() ? mean_of(ts) * v * std::sqrt(sc.D / sc.g) : grid.zmax;
+    d.speeds[s].z_transient_end = std::clamp(zc, 0.35 * sc.D, grid.zmax);
+  }
+}
+
+void observable_findings(const Features &f, const RunsBySpeed &real, const SimulatedRuns &sims, const Scenario &sc,
+                         const GapGrid &grid, Diagnosis &d)
+{
+  const std::map<std::string, std::string> regime = {{"peak_F", "peak"},     {"peak_z", "peak"},
+                                                     {"excess", "transient"}, {"t_star", "transient"},
+                                                     {"k_z", "linear"},       {"fluct", "linear"},
+                                                     {"wavelength", "linear"}};
+  for (std::size_t s = 0; s < f.nspeeds(); ++s) {
+    const double v = f.speeds[s], zt = d.speeds[s].z_transient_end;
+    const Observations oR = observations(real.at(v), v, sc, grid, zt), oB = observations(sims.fresh.at(v), v, sc, grid, zt);
+    std::map<std::string, std::pair<double, int>> pooled;    // sum of squares, dof
+    auto pool = [&](const Observations &o) {
+      for (const auto &[name, xs] : o) {
+        if (xs.size() < 2) continue;
+        const double m = mean_of(xs);
+        for (double x : xs) pooled[name].first += (x - m) * (x - m);
+        pooled[name].second += (int) xs.size() - 1;
+      }
+    };
+    pool(oB);
+    for (auto &[name, by] : sims.knots) pool(observations(by.at(v), v, sc, grid, zt));
+    const double scale = f.target_scale[s];
+    for (const auto &[name, reg] : regime) {
+      if (!oR.count(name) || !oB.count(name) || !pooled.count(name)) continue;
+      if (name == "excess" && zt <= 0.35 * sc.D + grid.w) continue;    // no transient regime in range
+      const double var1 = pooled[name].first / pooled[name].second;    // one run's variance
+      const std::vector<double> &xr = oR.at(name), &xb = oB.at(name);
+      Finding w;
+      w.regime = reg;
+      w.observable = name;
+      w.v0 = v;
+      w.real = mean_of(xr);
+      w.sim = mean_of(xb);
+      w.real_se = std::sqrt(scale * var1 / xr.size());
+      w.sim_se = std::sqrt(var1 / xb.size());
+      w.zscore = (w.real - w.sim) / std::sqrt(w.real_se * w.real_se + w.sim_se * w.sim_se + 1e-300);
+      w.significant = std::abs(w.zscore) > 3.0;
+      d.where.push_back(w);
+    }
+  }
+  std::sort(d.where.begin(), d.where.end(),
+            [](const Finding &a, const Finding &b) { return std::abs(a.zscore) > std::abs(b.zscore); });
+}
+
+void gap_significance(const Features &f, const GapGrid &grid, Diagnosis &d)
+{
+  const std::size_t ns = f.nspeeds();
+  std::vector<std::size_t> all(ns);
+  std::iota(all.begin(), all.end(), 0);
+  EffectData null;
+  null.knots = {0.0};
+  null.mean = {Table()};
+  null.err = {Table()};
+  for (std::size_t s = 0; s < ns; ++s) {
+    null.mean[0].push_back(f.fresh[s].mean);
+    null.err[0].push_back(f.fresh_err[s]);
+  }
+  d.chi2_0 = effect_chi2(f.target, null, 0.0, all);
+  d.nfeatures = ns * grid.nfeatures();
+  d.p_value = chi2_sf(d.chi2_0, (double) d.nfeatures);
+  d.significant = d.p_value < 1e-3;
+}
+
+}    // namespace granpen

@@ -1,0 +1,125 @@
+// granpen gap, stage 7 (which): see gap_which.h.
+#include "gap_which.h"
+
+#include "gap_verdict.h"
+#include "text_util.h"
+
+#include <algorithm>
+#include <numeric>
+
+namespace granpen {
+
+namespace {
+
+std::string fmt(double v, const char *f = "%.4g") { return printf_number(f, v); }
+
+double mean_of(const std::vector<double> &v)
+{
+  return v.empty() ? 0.0 : std::accumulate(v.begin(), v.end(), 0.0) / v.size();
+}
+
+// variance of the mean of the paired differences knot - baseline, run by run on the same
+// beds (same seed order), per feature; floor: 1e-4 relative, as for the ensembles
+std::vector<double> paired_err(const Ensemble &knot, const Ensemble &base)
+{
+  const std::size_t P = knot.mean.size(), n = std::min(knot.n(), base.n());
+  std::vector<double> dv(P, 0.0);
+  for (std::size_t k = 0; k < P; ++k) {
+    std::vector<double> dd;
+    for (std::size_t i = 0; i < n; ++i) dd.push_back(knot.runs[i][k] - base.runs[i][k]);
+    const double md = mean_of(dd);
+    double ss = 0;
+    for (double x : dd) ss += (x - md) * (x - md);
+    const double var = n > 1 ? ss / (n - 1) : 0.0;
+    dv[k] = std::max(var, 1e-4 * knot.mean[k] * knot.mean[k]) / std::max<std::size_t>(1, n);
+  }
+  return dv;
+}
+
+// knot 0 then e's knots, ascending, with their sweeps ("" = the signature baseline)
+std::vector<std::pair<double, std::string>> knot_sweeps(const Effect &e)
+{
+  std::vector<std::pair<double, std::string>> ks{{0.0, ""}};
+  for (double a : e.knots) ks.push_back({a, effect_sweep_name(e, a)});
+  std::sort(ks.begin(), ks.end());
+  return ks;
+}
+
+}    // namespace
+
+EffectData effect_data(const Effect &e, const Features &f)
+{
+  const std::size_t ns = f.nspeeds();
+  EffectData ed;
+  ed.name = e.name;
+  ed.paired = !e.pour_level;
+  ed.one_sided = e.one_sided;
+  for (const auto &[a, name] : knot_sweeps(e)) {
+    ed.knots.push_back(a);
+    Table m, er, de;
+    for (std::size_t s = 0; s < ns; ++s) {
+      const Ensemble &en = name.empty() ? f.base[s] : f.knots.at(name)[s];
+      m.push_back(en.mean);
+      er.push_back(model_err(en, f.cv2[s]));
+      de.push_back(ed.paired && !name.empty() ? paired_err(en, f.base[s]) : std::vector<double>(en.mean.size(), 0.0));
+    }
+    ed.mean.push_back(m);
+    ed.err.push_back(er);
+    ed.diff_err.push_back(de);
+  }
+  // referenced to the reference beds: every knot shifted by B_ref - B_sig, knot 0's
+  // variance the reference's, the signature baseline's carried by ref_err
+  const std::size_t j0 = (std::size_t) (std::find(ed.knots.begin(), ed.knots.end(), 0.0) - ed.knots.begin());
+  ed.ref_err.assign(1, Table());
+  for (std::size_t s = 0; s < ns; ++s) {
+    for (auto &knot : ed.mean)
+      for (std::size_t k = 0; k < knot[s].size(); ++k) knot[s][k] += f.fresh[s].mean[k] - f.base[s].mean[k];
+    ed.ref_err[0].push_back(ed.err[j0][s]);
+    ed.err[j0][s] = f.fresh_err[s];
+  }
+  ed.noise_r2 = noise_residual(f.nulls, ed);
+  return ed;
+}
+
+EffectFit fit_candidate(const EffectData &ed, const Features &f)
+{
+  EffectFit fit = fit_effect(f.target, ed);
+  double lsum = 0;
+  for (const auto &t : f.nulls) lsum += effect_lr(t, ed);
+  fit.lr_null_mean = f.nulls.empty() ? 0.0 : lsum / f.nulls.size();
+  fit.lr_threshold = lr_threshold(fit.lr_null_mean);
+  fit.detected = fit.lr > fit.lr_threshold && !fit.at_edge;
+  return fit;
+}
+
+std::string packing_note(const EffectData &ed, double a, const std::vector<double> &phi, double phi_baseline)
+{
+  std::size_t i = 0;
+  while (i + 2 < ed.knots.size() && a > ed.knots[i + 1]) ++i;
+  const double w = (a - ed.knots[i]) / (ed.knots[i + 1] - ed.knots[i]);
+  const double p = (1 - w) * phi[i] + w * phi[i + 1];
+  return "pour friction " + fmt(0.3 + a, "%.3f") + ": phi_0 " + fmt(p, "%.4f") + " against the baseline's " +
+         fmt(phi_baseline, "%.4f");
+}
+
+std::map<std::string, EffectData> fit_candidates(const std::vector<const Effect *> &effects, const Features &f,
+                                                 const std::function<double(const std::string &)> &phi0, Diagnosis &d)
+{
+  std::map<std::string, EffectData> data;
+  for (const Effect *e : effects) {
+    EffectData ed = effect_data(*e, f);
+    d.ranking.push_back(fit_candidate(ed, f));
+    if (e->pour_mu_at) {
+      // packing: the phi_0 the fitted pour friction makes, interpolated between the beds'
+      std::vector<double> phi;
+      for (const auto &[a, name] : knot_sweeps(*e)) phi.push_back(phi0(name.empty() ? "baseline" : name));
+      d.magnitude_note[e->name] = packing_note(ed, d.ranking.back().magnitude, phi, phi0("baseline"));
+    }
+    data[e->name] = std::move(ed);
+  }
+  d.n_null = (int) f.nulls.size();
+  decide_verdict(d);
+  return data;
+}
+
+}    // namespace granpen

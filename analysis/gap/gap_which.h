@@ -1,0 +1,42 @@
+// granpen gap, stage 7 (which): every candidate effect's model from its knots' ensembles
+// (referenced to the reference beds), fitted to the measured gap, scored by leaving one
+// speed out, and calibrated on the null replicates (its likelihood ratio's threshold);
+// then the verdict (gap_verdict.h). docs/gap.md, "Which".
+#ifndef GRANPEN_GAP_WHICH_H
+#define GRANPEN_GAP_WHICH_H
+
+#include "effects.h"
+#include "gap_features.h"
+#include "gap_fit.h"
+#include "gap_result.h"
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace granpen {
+
+// Effect e's model data: per knot (0 = the signature baseline, then e's knots, ascending)
+// the ensemble means and variances, paired differences for a push-only effect, every knot
+// shifted onto the reference beds (knot 0's variance the reference's, the signature
+// baseline's in ref_err) and the noise residual of the null replicates.
+EffectData effect_data(const Effect &e, const Features &f);
+
+// The fit of e to the target, its likelihood ratio's null mean and threshold, detected.
+EffectFit fit_candidate(const EffectData &ed, const Features &f);
+
+// Packing's note for the report: the phi_0 its fitted pour friction (0.3 + magnitude)
+// makes, interpolated between the knots' beds (phi0: each knot's mean, knot 0 first),
+// against the baseline's.
+std::string packing_note(const EffectData &ed, double magnitude, const std::vector<double> &phi0, double phi0_baseline);
+
+// Fits every effect (d.ranking, d.magnitude_note, d.n_null) and decides the verdict
+// (decide_verdict). Returns the effects' model data by name, for the confirmation.
+// phi0(sweep): the mean phi_0 of a sweep's beds (for packing's note).
+std::map<std::string, EffectData> fit_candidates(const std::vector<const Effect *> &effects, const Features &f,
+                                                 const std::function<double(const std::string &)> &phi0, Diagnosis &d);
+
+}    // namespace granpen
+
+#endif
