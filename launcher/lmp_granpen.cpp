@@ -10,6 +10,7 @@
 #include "input.h"
 #include "lammps.h"
 #include "lmppython.h"
+#include "granpen_compat.h"
 #include "help_styles.h"
 #include "style_registry.h"
 
@@ -112,7 +113,7 @@ int main(int argc, char **argv)
   } catch (LAMMPSAbortException &ae) {
     KokkosLMP::finalize();
     Python::finalize();
-    MPI_Abort(ae.universe, 1);
+    MPI_Abort(gp::abort_universe(ae), 1);
   } catch (LAMMPSException &e) {
     KokkosLMP::finalize();
     Python::finalize();

@@ -162,6 +162,23 @@ inline void minimum_image(D *domain, const char *file, int line, double &dx, dou
   minimum_image_impl(domain, file, line, dx, dy, dz, has_located_minimum_image<D>());
 }
 
+// LAMMPSAbortException::universe: a public member up to 2023, protected behind
+// get_universe() since (LAMMPS's own main() calls get_universe()). Chosen by overload:
+// the first template applies where get_universe() exists.
+template <typename E>
+inline auto abort_universe_impl(const E &e, int) -> decltype(e.get_universe())
+{
+  return e.get_universe();
+}
+template <typename E> inline MPI_Comm abort_universe_impl(const E &e, long)
+{
+  return e.universe;
+}
+template <typename E> inline MPI_Comm abort_universe(const E &e)
+{
+  return abort_universe_impl(e, 0);
+}
+
 }    // namespace gp
 }    // namespace LAMMPS_NS
 
