@@ -19,6 +19,7 @@
 #include "fix_rod_drive.h"
 #include "granpen_compat.h"
 #include "memory.h"
+#include "momentum_class_limits.h"
 #include "region.h"
 #include "rod_bed_measure.h"
 #include "update.h"
@@ -26,15 +27,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 using namespace LAMMPS_NS;
 
 static constexpr int NCOLS = 3;
-static constexpr int NDEFAULT = 4;
-// the paper's class bounds as divisors of v0: fast >= v0/10 > intermediate >= v0/80 >
-// slow > v0/320 >= noise > v0/640; M_move counts v_z > v0/320
-static const double DEFAULT_DIV[NDEFAULT] = {10.0, 80.0, 320.0, 640.0};
-static constexpr double MOVE_DIV = 320.0;
+static constexpr int NDEFAULT = granpen::MOMENTUM_NCLASS;
 
 /* ---------------------------------------------------------------------- */
 
@@ -138,20 +136,15 @@ ComputeMomentumVbin::ComputeMomentumVbin(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR, "Compute momentum/vbin needs drive FIXID, axis X Y with rmin R, or region ID");
   cylinder = !drive_id.empty() || have_axis;
 
-  // class bounds in velocity units; the defaults divide v0 so that they are exact
-  // whenever v0 / 10 etc. are
-  if (logbins) {
-    edges.resize(nclass + 1);
-    const double q = std::pow(fmax / fmin, 1.0 / nclass);
-    for (int k = 0; k < nclass; k++) edges[k] = v0 * (fmin * std::pow(q, k));
-    edges[nclass] = v0 * fmax;
-  } else {
-    thr.resize(NDEFAULT);
-    for (int k = 0; k < NDEFAULT; k++) thr[k] = have_thresholds ? v0 * frac[k] : v0 / DEFAULT_DIV[k];
+  // class bounds in velocity units: the kernels granpen momentum calls on a dump
+  // (src/momentum_class_limits.h); the keywords are checked above, so they do not throw
+  try {
+    classes = granpen::momentum_classes(v0, have_thresholds ? frac : nullptr, have_mthreshold ? mfrac : 0.0);
+    if (logbins) edges = granpen::momentum_log_edges(v0, nclass, fmin, fmax);
+  } catch (std::invalid_argument &e) {
+    error->all(FLERR, "Compute momentum/vbin: {}", e.what());
   }
-  if (have_mthreshold) vmove = v0 * mfrac;
-  else if (have_thresholds) vmove = thr[2];
-  else vmove = v0 / MOVE_DIV;
+  vmove = classes.vmove;
 
   local.assign(NCOLS * nclass + 1, 0.0);
   global.assign(NCOLS * nclass + 1, 0.0);
@@ -231,22 +224,7 @@ double ComputeMomentumVbin::compute_scalar()
 
 int ComputeMomentumVbin::classify(double vz) const
 {
-  if (logbins) {
-    if (!(vz >= edges[0] && vz < edges[nclass])) return -1;
-    // class k covers [edges[k], edges[k+1]): estimate, then settle on the stored edges
-    const double span = std::log(edges[nclass] / edges[0]);
-    int k = static_cast<int>(std::floor(nclass * std::log(vz / edges[0]) / span));
-    if (k < 0) k = 0;
-    if (k > nclass - 1) k = nclass - 1;
-    while (k > 0 && vz < edges[k]) k--;
-    while (k < nclass - 1 && vz >= edges[k + 1]) k++;
-    return nclass - 1 - k;
-  }
-  if (vz >= thr[0]) return 0;
-  if (vz >= thr[1]) return 1;
-  if (vz > thr[2]) return 2;
-  if (vz > thr[3]) return 3;
-  return -1;
+  return logbins ? granpen::momentum_log_class(edges, vz) : granpen::momentum_class(classes, vz);
 }
 
 /* ----------------------------------------------------------------------

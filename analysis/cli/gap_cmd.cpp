@@ -4,7 +4,7 @@
 #include "effects.h"
 #include "gap_diagnosis.h"
 #include "subcommands.h"
-#include "trace_reader.h"
+#include "errors.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -4,7 +4,7 @@
 #include "gap_plan.h"
 #include "gap_sims.h"
 #include "scenario.h"
-#include "trace_reader.h"
+#include "errors.h"
 
 #include <cmath>
 #include <cstdio>

@@ -5,7 +5,7 @@
 #include "json_text.h"
 #include "plot_writer.h"
 #include "text_util.h"
-#include "trace_reader.h"    // InputError
+#include "errors.h"
 
 #include <algorithm>
 #include <cmath>
