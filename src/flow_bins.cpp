@@ -16,21 +16,6 @@ namespace {
 
 const double PI = 3.14159265358979323846;
 
-std::string num(double v)
-{
-  char b[32];
-  std::snprintf(b, sizeof b, "%g", v);
-  return b;
-}
-
-// the limit as a user reads it: 1000000, not 1e+06
-std::string max_bins_text()
-{
-  char b[32];
-  std::snprintf(b, sizeof b, "%.0f", FLOW_MAX_BINS);
-  return b;
-}
-
 // d(col)/d(coord) at bin b from its neighbours bm, bp (-1: none): centred over the
 // occupied ones, one-sided next to an edge or an empty bin, 0 with neither
 double derivative(const std::vector<FlowBin> &bins, int b, int bm, int bp, bool of_vz, bool along_r)
@@ -43,6 +28,14 @@ double derivative(const std::vector<FlowBin> &bins, int b, int bm, int bp, bool 
   return ((of_vz ? H.vz : H.vr) - (of_vz ? L.vz : L.vr)) / (ch - cl);
 }
 
+// v as printf writes it with `format`: the messages say 1e-09, and the limit 1000000
+std::string num(double v, const char *format = "%g")
+{
+  char b[32];
+  std::snprintf(b, sizeof b, format, v);
+  return b;
+}
+
 }    // namespace
 
 int whole_bin_count(double span, double width, const char *what, bool at_least_one)
@@ -51,7 +44,7 @@ int whole_bin_count(double span, double width, const char *what, bool at_least_o
   const double n = std::round(span / width);    // as lround, but before any cast
   if (!(n <= FLOW_MAX_BINS))
     throw std::invalid_argument(std::string(what) + " " + num(width) + " gives " + num(n) + " bins over the range " +
-                                num(span) + ": more than the limit of " + max_bins_text() + " bins");
+                                num(span) + ": more than the limit of " + num(FLOW_MAX_BINS, "%.0f") + " bins");
   const int count = static_cast<int>(n);
   return at_least_one ? std::max(1, count) : count;
 }
@@ -78,7 +71,7 @@ FlowGrid make_flow_grid(double rmin, double rmax, double dr, double zlo, double 
   if (!(static_cast<double>(g.nr) * g.nz <= FLOW_MAX_BINS))
     throw std::invalid_argument(pre + names.dr + " " + num(dr) + " and " + names.dz + " " + num(dz) + " give " +
                                 num(static_cast<double>(g.nr) * g.nz) + " bins: more than the limit of " +
-                                max_bins_text());
+                                num(FLOW_MAX_BINS, "%.0f"));
   g.dr = (rmax - rmin) / g.nr;    // whole bins over the range
   g.dz = (zhi - zlo) / g.nz;
   return g;
