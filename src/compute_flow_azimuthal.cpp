@@ -12,7 +12,10 @@
      12 shear rate gammadot = sqrt(1/2 (dvr/dr - dvz/dz)^2 + 1/2 (dvr/dz + dvz/dr)^2)
      13 inertial number I = gammadot d_g / sqrt(p / rho_g), 0 where p <= 0
      14 sigma_zz = -sum S_zz,i / V_bin (vertical normal stress, compressive +)
-   One pass over owned atoms and one MPI_Allreduce per invocation.
+   One pass over owned atoms and one MPI_Allreduce per invocation. The grid,
+   the sums, the moments, the shear rate, I and the voro++ cells are the
+   pure kernels of flow_bins.h and voronoi_cells.h, which granpen flow calls
+   on dump frames: this file gathers the atoms and reduces over the ranks.
 ------------------------------------------------------------------------- */
 
 #include "compute_flow_azimuthal.h"

@@ -39,7 +39,7 @@ static constexpr int NDEFAULT = granpen::MOMENTUM_NCLASS;
 ComputeMomentumVbin::ComputeMomentumVbin(LAMMPS *lmp, int narg, char **arg) :
     Compute(lmp, narg, arg), v0(0.0), drive(nullptr), region(nullptr), have_axis(false),
     have_rmin(false), axis_user{0.0, 0.0}, rmin_user(0.0), xaxis(0.0), yaxis(0.0), rmin(0.0),
-    cylinder(false), logbins(false), nclass(NDEFAULT), vmove(0.0), mu(0.3), g_user(-1.0),
+    cylinder(false), logbins(false), nclass(NDEFAULT), mu(0.3), g_user(-1.0),
     gmag(0.0), tally_step(-1), mmove(0.0)
 {
   if (narg < 4) error->all(FLERR, "Illegal compute momentum/vbin command: missing v0");
@@ -144,7 +144,6 @@ ComputeMomentumVbin::ComputeMomentumVbin(LAMMPS *lmp, int narg, char **arg) :
   } catch (std::invalid_argument &e) {
     error->all(FLERR, "Compute momentum/vbin: {}", e.what());
   }
-  vmove = classes.vmove;
 
   local.assign(NCOLS * nclass + 1, 0.0);
   global.assign(NCOLS * nclass + 1, 0.0);
@@ -256,7 +255,7 @@ void ComputeMomentumVbin::tally()
     if (region && !region->match(x[i][0], x[i][1], x[i][2])) continue;
     const double vz = v[i][2];
     const double m = rmass ? rmass[i] : mass[type[i]];
-    if (vz > vmove) local[NCOLS * nclass] += m;
+    if (vz > classes.vmove) local[NCOLS * nclass] += m;
     const int row = classify(vz);
     if (row < 0) continue;
     double *p = &local[NCOLS * row];

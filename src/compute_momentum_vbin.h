@@ -45,9 +45,8 @@ class ComputeMomentumVbin : public Compute {
   // classes
   bool logbins;
   int nclass;
-  granpen::MomentumClasses classes;    // default/thresholds: the four class bounds (velocity)
+  granpen::MomentumClasses classes;    // the four class bounds (velocity); M_move counts v_z > vmove
   std::vector<double> edges;    // logbins: nclass + 1 ascending bounds (velocity)
-  double vmove;                 // M_move counts v_z > vmove
 
   // scalar
   double mu, g_user, gmag;
