@@ -96,6 +96,9 @@ ComputeMomentumVbin::ComputeMomentumVbin(LAMMPS *lmp, int narg, char **arg) :
       nclass = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
       if (nclass < 1)
         error->all(FLERR, "Compute momentum/vbin logbins N must be >= 1, got {}", arg[iarg + 1]);
+      if (nclass > granpen::MOMENTUM_MAX_LOG_CLASSES)    // before allocating a row per class
+        error->all(FLERR, "Compute momentum/vbin logbins N must be <= {}, got {}",
+                   granpen::MOMENTUM_MAX_LOG_CLASSES, arg[iarg + 1]);
       fmin = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
       fmax = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
       if (!(fmin > 0.0 && fmin < fmax))

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace granpen {
 
@@ -49,7 +50,8 @@ int momentum_class(const MomentumClasses &c, double vz)
 std::vector<double> momentum_log_edges(double v0, int n, double fmin, double fmax)
 {
   if (!(v0 > 0.0) || !std::isfinite(v0)) throw std::invalid_argument("momentum classes: v0 must be > 0");
-  if (n < 1) throw std::invalid_argument("momentum classes: logbins N must be >= 1");
+  if (n < 1 || n > MOMENTUM_MAX_LOG_CLASSES)
+    throw std::invalid_argument("momentum classes: logbins N must be 1 to " + std::to_string(MOMENTUM_MAX_LOG_CLASSES));
   if (!(fmin > 0.0 && fmin < fmax) || !std::isfinite(fmax))
     throw std::invalid_argument("momentum classes: logbins needs 0 < fmin < fmax");
   std::vector<double> edges(n + 1);

@@ -41,9 +41,12 @@ MomentumClasses momentum_classes(double v0, const double *frac, double mfrac = 0
 // Class of a grain moving up at vz (0 = fast ... 3 = noise), or -1 (in no class).
 int momentum_class(const MomentumClasses &c, double vz);
 
+// The most log classes (logbins N): a row of 3 sums each in compute momentum/vbin.
+const int MOMENTUM_MAX_LOG_CLASSES = 10000;
+
 // logbins N fmin fmax: N + 1 ascending bounds v0 fmin q^k (q = (fmax / fmin)^(1/N)), the
-// last exactly v0 fmax. Throws std::invalid_argument unless v0 > 0, N >= 1 and
-// 0 < fmin < fmax.
+// last exactly v0 fmax. Throws std::invalid_argument unless v0 > 0,
+// 1 <= N <= MOMENTUM_MAX_LOG_CLASSES and 0 < fmin < fmax.
 std::vector<double> momentum_log_edges(double v0, int n, double fmin, double fmax);
 // Row of vz among log classes (0 = the fastest, [edges[N-1], edges[N])), or -1 outside
 // [edges[0], edges[N]).

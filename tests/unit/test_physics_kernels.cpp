@@ -301,5 +301,7 @@ TEST(MomentumClassLimits, LogBins)
   EXPECT_EQ(momentum_log_class(e, 100.0), -1);
   EXPECT_EQ(momentum_log_class(e, 0.99), -1);
   EXPECT_THROW(momentum_log_edges(100.0, 0, 0.01, 1.0), std::invalid_argument);
+  EXPECT_EQ(momentum_log_edges(100.0, MOMENTUM_MAX_LOG_CLASSES, 0.01, 1.0).size(), 10001u);
+  EXPECT_THROW(momentum_log_edges(100.0, MOMENTUM_MAX_LOG_CLASSES + 1, 0.01, 1.0), std::invalid_argument);
   EXPECT_THROW(momentum_log_edges(100.0, 2, 1.0, 0.01), std::invalid_argument);
 }
