@@ -14,6 +14,7 @@ ComputeStyle(flow/azimuthal,ComputeFlowAzimuthal);
 #define LMP_COMPUTE_FLOW_AZIMUTHAL_H
 
 #include "compute.h"
+#include "flow_bins.h"
 
 #include <string>
 #include <vector>
@@ -34,9 +35,10 @@ class ComputeFlowAzimuthal : public Compute {
   class Compute *voronoi, *stress;
   bool have_axis, tip_frame;
   double xaxis, yaxis;
-  double rmin, rmax, dr, zlo, zhi, dz;
+  double rmin, rmax, dr, zlo, zhi, dz;    // as the user gave them
   bool have_rmax, have_zlo, have_zhi;
-  int nr, nz, nbins;
+  granpen::FlowGrid grid;                  // whole bins over the range (src/flow_bins.h)
+  int nbins;
   double d_g, rho_g;
   std::vector<double> local, global;
   bool voro_direct;                 // voronoi voro++: tessellate here, only the binned grains
@@ -44,6 +46,7 @@ class ComputeFlowAzimuthal : public Compute {
   std::vector<int> atom_bin;        // per owned atom: its bin, or -1
 
   void setup_bins();
+  void bin_atoms(double zref, std::vector<double> &offset);
   void tessellate();
 };
 

@@ -19,6 +19,7 @@
 #include "fix_rod_drive.h"
 #include "granpen_compat.h"
 #include "memory.h"
+#include "momentum_class_limits.h"
 #include "region.h"
 #include "rod_bed_measure.h"
 #include "update.h"
@@ -26,22 +27,19 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <stdexcept>
 
 using namespace LAMMPS_NS;
 
 static constexpr int NCOLS = 3;
-static constexpr int NDEFAULT = 4;
-// the paper's class bounds as divisors of v0: fast >= v0/10 > intermediate >= v0/80 >
-// slow > v0/320 >= noise > v0/640; M_move counts v_z > v0/320
-static const double DEFAULT_DIV[NDEFAULT] = {10.0, 80.0, 320.0, 640.0};
-static constexpr double MOVE_DIV = 320.0;
+static constexpr int NDEFAULT = granpen::MOMENTUM_NCLASS;
 
 /* ---------------------------------------------------------------------- */
 
 ComputeMomentumVbin::ComputeMomentumVbin(LAMMPS *lmp, int narg, char **arg) :
     Compute(lmp, narg, arg), v0(0.0), drive(nullptr), region(nullptr), have_axis(false),
     have_rmin(false), axis_user{0.0, 0.0}, rmin_user(0.0), xaxis(0.0), yaxis(0.0), rmin(0.0),
-    cylinder(false), logbins(false), nclass(NDEFAULT), vmove(0.0), mu(0.3), g_user(-1.0),
+    cylinder(false), logbins(false), nclass(NDEFAULT), mu(0.3), g_user(-1.0),
     gmag(0.0), tally_step(-1), mmove(0.0)
 {
   if (narg < 4) error->all(FLERR, "Illegal compute momentum/vbin command: missing v0");
@@ -98,6 +96,9 @@ ComputeMomentumVbin::ComputeMomentumVbin(LAMMPS *lmp, int narg, char **arg) :
       nclass = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
       if (nclass < 1)
         error->all(FLERR, "Compute momentum/vbin logbins N must be >= 1, got {}", arg[iarg + 1]);
+      if (nclass > granpen::MOMENTUM_MAX_LOG_CLASSES)    // before allocating a row per class
+        error->all(FLERR, "Compute momentum/vbin logbins N must be <= {}, got {}",
+                   granpen::MOMENTUM_MAX_LOG_CLASSES, arg[iarg + 1]);
       fmin = utils::numeric(FLERR, arg[iarg + 2], false, lmp);
       fmax = utils::numeric(FLERR, arg[iarg + 3], false, lmp);
       if (!(fmin > 0.0 && fmin < fmax))
@@ -138,20 +139,14 @@ ComputeMomentumVbin::ComputeMomentumVbin(LAMMPS *lmp, int narg, char **arg) :
     error->all(FLERR, "Compute momentum/vbin needs drive FIXID, axis X Y with rmin R, or region ID");
   cylinder = !drive_id.empty() || have_axis;
 
-  // class bounds in velocity units; the defaults divide v0 so that they are exact
-  // whenever v0 / 10 etc. are
-  if (logbins) {
-    edges.resize(nclass + 1);
-    const double q = std::pow(fmax / fmin, 1.0 / nclass);
-    for (int k = 0; k < nclass; k++) edges[k] = v0 * (fmin * std::pow(q, k));
-    edges[nclass] = v0 * fmax;
-  } else {
-    thr.resize(NDEFAULT);
-    for (int k = 0; k < NDEFAULT; k++) thr[k] = have_thresholds ? v0 * frac[k] : v0 / DEFAULT_DIV[k];
+  // class bounds in velocity units: the kernels granpen momentum calls on a dump
+  // (src/momentum_class_limits.h); the keywords are checked above, so they do not throw
+  try {
+    classes = granpen::momentum_classes(v0, have_thresholds ? frac : nullptr, have_mthreshold ? mfrac : 0.0);
+    if (logbins) edges = granpen::momentum_log_edges(v0, nclass, fmin, fmax);
+  } catch (std::invalid_argument &e) {
+    error->all(FLERR, "Compute momentum/vbin: {}", e.what());
   }
-  if (have_mthreshold) vmove = v0 * mfrac;
-  else if (have_thresholds) vmove = thr[2];
-  else vmove = v0 / MOVE_DIV;
 
   local.assign(NCOLS * nclass + 1, 0.0);
   global.assign(NCOLS * nclass + 1, 0.0);
@@ -231,22 +226,7 @@ double ComputeMomentumVbin::compute_scalar()
 
 int ComputeMomentumVbin::classify(double vz) const
 {
-  if (logbins) {
-    if (!(vz >= edges[0] && vz < edges[nclass])) return -1;
-    // class k covers [edges[k], edges[k+1]): estimate, then settle on the stored edges
-    const double span = std::log(edges[nclass] / edges[0]);
-    int k = static_cast<int>(std::floor(nclass * std::log(vz / edges[0]) / span));
-    if (k < 0) k = 0;
-    if (k > nclass - 1) k = nclass - 1;
-    while (k > 0 && vz < edges[k]) k--;
-    while (k < nclass - 1 && vz >= edges[k + 1]) k++;
-    return nclass - 1 - k;
-  }
-  if (vz >= thr[0]) return 0;
-  if (vz >= thr[1]) return 1;
-  if (vz > thr[2]) return 2;
-  if (vz > thr[3]) return 3;
-  return -1;
+  return logbins ? granpen::momentum_log_class(edges, vz) : granpen::momentum_class(classes, vz);
 }
 
 /* ----------------------------------------------------------------------
@@ -278,7 +258,7 @@ void ComputeMomentumVbin::tally()
     if (region && !region->match(x[i][0], x[i][1], x[i][2])) continue;
     const double vz = v[i][2];
     const double m = rmass ? rmass[i] : mass[type[i]];
-    if (vz > vmove) local[NCOLS * nclass] += m;
+    if (vz > classes.vmove) local[NCOLS * nclass] += m;
     const int row = classify(vz);
     if (row < 0) continue;
     double *p = &local[NCOLS * row];

@@ -15,6 +15,7 @@ ComputeStyle(momentum/vbin,ComputeMomentumVbin);
 #define LMP_COMPUTE_MOMENTUM_VBIN_H
 
 #include "compute.h"
+#include "momentum_class_limits.h"
 
 #include <string>
 #include <vector>
@@ -44,9 +45,8 @@ class ComputeMomentumVbin : public Compute {
   // classes
   bool logbins;
   int nclass;
-  std::vector<double> thr;      // default/thresholds: the four class bounds (velocity)
+  granpen::MomentumClasses classes;    // the four class bounds (velocity); M_move counts v_z > vmove
   std::vector<double> edges;    // logbins: nclass + 1 ascending bounds (velocity)
-  double vmove;                 // M_move counts v_z > vmove
 
   // scalar
   double mu, g_user, gmag;

@@ -131,8 +131,8 @@ using dof_t = int;
 
 
 // Domain::minimum_image(FLERR, dx, dy, dz): LAMMPS PR #4610 added the caller's file and
-// line in front (first released in 12Jun2025 and in stable 22Jul2025, which still has
-// no overload without them). Decided by what the header offers, not by a date: the
+// line in front (absent in 29Aug2024, present in stable 22Jul2025, which has no overload
+// without them). Decided by what the header offers, not by a date: the
 // 5-argument overload exists or it does not, whatever a development tree's date says.
 template <typename D, typename = void> struct has_located_minimum_image : std::false_type {};
 template <typename D>

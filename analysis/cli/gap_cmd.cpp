@@ -5,7 +5,7 @@
 #include "gap_diagnosis.h"
 #include "gap_errors.h"
 #include "subcommands.h"
-#include "trace_reader.h"
+#include "errors.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -9,7 +9,7 @@
 #include "json_text.h"
 #include "linear_fit.h"
 #include "momentum_classes.h"
-#include "trace_reader.h"
+#include "errors.h"
 
 #include <algorithm>
 #include <cmath>

@@ -4,7 +4,7 @@
 #include "sweep_runner.h"
 #include "sweep_spec.h"
 #include "text_util.h"
-#include "trace_reader.h"
+#include "errors.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -2,7 +2,9 @@
    granpen analysis: the flow around the rod from grain snapshots (dump frames),
    on plain arrays, accumulated over frames. The definitions are those of
    compute flow/azimuthal (docs/compute_flow_azimuthal.rst); the paper's
-   observables built on them ("Inertial Number", "Temporal Flows"):
+   observables built on them ("Inertial Number", "Temporal Flows"). The grid,
+   the sums, the moments, the shear rate and I are src/flow_bins.h's kernels,
+   the ones the compute calls:
 
    - FlowAccumulator: (r, z) bins about the rod axis, z measured from a reference
      height (the rod tip: the compute's frame tip, negative below the tip). Per
@@ -29,6 +31,8 @@
 #ifndef GRANPEN_FLOW_FIELDS_H
 #define GRANPEN_FLOW_FIELDS_H
 
+#include "flow_bins.h"
+
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -52,27 +56,8 @@ struct AxisFrame {
   double period_x = 0.0, period_y = 0.0;
 };
 
-// Bins as compute flow/azimuthal makes them: nr = round((rmax - rmin) / dr),
-// nz = round((zhi - zlo) / dz), and dr, dz then adjusted to whole bins.
-struct FlowGrid {
-  double rmin = 0.0, rmax = 0.0, dr = 0.0, zlo = 0.0, zhi = 0.0, dz = 0.0;
-  int nr = 0, nz = 0;
-  int bins() const { return nr * nz; }
-};
-// Throws std::invalid_argument for dr, dz <= 0, rmin < 0, rmax <= rmin, zhi <= zlo or
-// bins larger than their range.
-FlowGrid make_flow_grid(double rmin, double rmax, double dr, double zlo, double zhi, double dz);
-
-struct FlowBin {
-  double r = 0.0, z = 0.0;    // bin centre
-  double count = 0.0;         // grains per frame
-  double mass = 0.0;          // per frame
-  double phi_centre = 0.0, phi_voronoi = 0.0;
-  double vr = 0.0, vz = 0.0, vtheta = 0.0, T = 0.0;
-  double p = 0.0, sigma_zz = 0.0;
-  double gammadot = 0.0, I = 0.0;
-  double rbar = 0.0, zbar = 0.0;    // mass-weighted mean position (bin centre when empty)
-};
+// FlowGrid, make_flow_grid, FlowBin: src/flow_bins.h (the kernels compute flow/azimuthal
+// calls too).
 
 struct FlowFields {
   FlowGrid grid;

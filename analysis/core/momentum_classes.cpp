@@ -1,7 +1,7 @@
 /* ----------------------------------------------------------------------
-   granpen analysis: momentum by vertical-speed class (momentum_classes.h),
-   following src/compute_momentum_vbin.cpp: the same bounds, the same open and
-   closed ends, the same selection r > R with LAMMPS's minimum image.
+   granpen analysis: momentum by vertical-speed class (momentum_classes.h):
+   the classes of src/momentum_class_limits.h, the selection r > R of
+   src/compute_momentum_vbin.cpp with LAMMPS's minimum image.
 ------------------------------------------------------------------------- */
 
 #include "momentum_classes.h"
@@ -13,12 +13,7 @@
 
 namespace granpen {
 
-const char *const MOMENTUM_CLASS_NAMES[MOMENTUM_NCLASS] = {"fast", "intermediate", "slow", "noise"};
-
 namespace {
-const double DEFAULT_DIV[MOMENTUM_NCLASS] = {10.0, 80.0, 320.0, 640.0};
-constexpr double MOVE_DIV = 320.0;
-
 // LAMMPS Domain::minimum_image: one shift by the period when beyond half of it
 double minimum_image(double d, double period)
 {
@@ -26,39 +21,6 @@ double minimum_image(double d, double period)
   return d;
 }
 }    // namespace
-
-MomentumClasses momentum_classes(double v0)
-{
-  if (!(v0 > 0.0) || !std::isfinite(v0)) throw std::invalid_argument("momentum classes: v0 must be > 0");
-  MomentumClasses c;
-  c.v0 = v0;
-  for (int k = 0; k < MOMENTUM_NCLASS; ++k) c.bound[k] = v0 / DEFAULT_DIV[k];
-  c.vmove = v0 / MOVE_DIV;
-  return c;
-}
-
-MomentumClasses momentum_classes(double v0, const double frac[MOMENTUM_NCLASS], double mfrac)
-{
-  if (!(v0 > 0.0) || !std::isfinite(v0)) throw std::invalid_argument("momentum classes: v0 must be > 0");
-  for (int k = 0; k < MOMENTUM_NCLASS; ++k)
-    if (!(frac[k] > 0.0) || !std::isfinite(frac[k]) || (k > 0 && !(frac[k] < frac[k - 1])))
-      throw std::invalid_argument("momentum classes: thresholds must be > 0 and strictly decreasing");
-  if (!(mfrac >= 0.0)) throw std::invalid_argument("momentum classes: mthreshold must be > 0");
-  MomentumClasses c;
-  c.v0 = v0;
-  for (int k = 0; k < MOMENTUM_NCLASS; ++k) c.bound[k] = v0 * frac[k];
-  c.vmove = mfrac > 0.0 ? v0 * mfrac : c.bound[2];
-  return c;
-}
-
-int momentum_class(const MomentumClasses &c, double vz)
-{
-  if (vz >= c.bound[0]) return 0;
-  if (vz >= c.bound[1]) return 1;
-  if (vz > c.bound[2]) return 2;
-  if (vz > c.bound[3]) return 3;
-  return -1;
-}
 
 MomentumTally tally_momentum(const MomentumClasses &c, const double *x, const double *y, const double *vz,
                              const double *mass, std::size_t n, double axis_x, double axis_y, double rmin,

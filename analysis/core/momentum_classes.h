@@ -1,7 +1,8 @@
 /* -*- c++ -*- ----------------------------------------------------------
    granpen analysis: the grains' upward momentum by vertical-speed class
    (paper: "Temporal Flows", figure mom_count) from grain snapshots, on plain
-   arrays. The classes and the selection are compute momentum/vbin's
+   arrays. The classes are src/momentum_class_limits.h's, the kernel compute
+   momentum/vbin calls, and the selection is the compute's
    (docs/compute_momentum_vbin.rst):
      fast          v_z >= f1 v0            (f1 = 1/10)
      intermediate  f2 v0 <= v_z < f1 v0    (f2 = 1/80)
@@ -19,6 +20,7 @@
 #define GRANPEN_MOMENTUM_CLASSES_H
 
 #include "linear_fit.h"
+#include "momentum_class_limits.h"
 
 #include <cstddef>
 #include <string>
@@ -26,25 +28,8 @@
 
 namespace granpen {
 
-constexpr int MOMENTUM_NCLASS = 4;
-extern const char *const MOMENTUM_CLASS_NAMES[MOMENTUM_NCLASS];    // fast ... noise
-
-struct MomentumClasses {
-  double v0 = 0.0;
-  double bound[MOMENTUM_NCLASS] = {0.0, 0.0, 0.0, 0.0};    // velocities, fastest first
-  double vmove = 0.0;
-};
-
-// The paper's classes: v0/10, v0/80, v0/320, v0/640 (divided, so exact whenever these
-// are), v_move = v0/320. Throws std::invalid_argument unless v0 > 0.
-MomentumClasses momentum_classes(double v0);
-// User fractions f1 > f2 > f3 > f4 > 0 of v0; v_move = mfrac v0 when mfrac > 0, else f3 v0.
-// Throws std::invalid_argument for v0 <= 0, fractions not > 0 and strictly decreasing,
-// or mfrac < 0.
-MomentumClasses momentum_classes(double v0, const double frac[MOMENTUM_NCLASS], double mfrac = 0.0);
-
-// Class of a grain moving up at vz (0 = fast ... 3 = noise), or -1 (in no class).
-int momentum_class(const MomentumClasses &c, double vz);
+// MomentumClasses, momentum_classes, momentum_class, MOMENTUM_CLASS_NAMES:
+// src/momentum_class_limits.h (the kernels compute momentum/vbin calls too).
 
 struct MomentumTally {
   double count[MOMENTUM_NCLASS] = {0, 0, 0, 0};

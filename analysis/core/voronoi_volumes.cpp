@@ -4,12 +4,12 @@
 
 #include "voronoi_volumes.h"
 
+#include "voronoi_cells.h"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
-
-#include <voro++.hh>
 
 namespace granpen {
 
@@ -39,54 +39,23 @@ std::vector<double> voronoi_volumes(const double *x, const double *y, const doub
   }
 
   // the container: the box where periodic; else closed 3 radii beyond the outermost grain,
-  // within the box (compute flow/azimuthal's voro++ route)
-  double lo[3], hi[3];
+  // within the box (the kernel compute flow/azimuthal's voro++ route calls too)
+  VoronoiContainer con;
+  bool lid[3];
   for (int d = 0; d < 3; ++d) {
-    lo[d] = box.lo[d];
-    hi[d] = box.hi[d];
-    if (!box.periodic[d] && n > 0) {
-      lo[d] = std::max(lo[d], amin[d] - 3.0 * rmax);
-      hi[d] = std::min(hi[d], amax[d] + 3.0 * rmax);
-      if (!(hi[d] > lo[d])) {    // every grain outside the box on this side
-        lo[d] = box.lo[d];
-        hi[d] = box.hi[d];
-      }
-    }
+    con.lo[d] = box.lo[d], con.hi[d] = box.hi[d];
+    con.periodic[d] = box.periodic[d];
+    lid[d] = !box.periodic[d];
   }
+  if (n > 0) close_container(con, lid, amin, amax, rmax);
   if (info) {
-    for (int d = 0; d < 3; ++d) info->lo[d] = lo[d], info->hi[d] = hi[d];
+    for (int d = 0; d < 3; ++d) info->lo[d] = con.lo[d], info->hi[d] = con.hi[d];
     info->cells = info->missing = 0;
   }
   std::vector<double> vol(n, 0.0);
   if (n == 0) return vol;
-
-  // spatial hash of about 3 grains per block (measured fastest for compute flow/azimuthal)
-  const double V = (hi[0] - lo[0]) * (hi[1] - lo[1]) * (hi[2] - lo[2]);
-  int nb[3];
-  for (int d = 0; d < 3; ++d)
-    nb[d] = std::max(1, static_cast<int>(std::lround((hi[d] - lo[d]) * std::cbrt((double) n / (V * 3.0)))));
-  voro::container_poly con(lo[0], hi[0], lo[1], hi[1], lo[2], hi[2], nb[0], nb[1], nb[2], box.periodic[0],
-                           box.periodic[1], box.periodic[2], 8);
-  std::vector<char> placed(n, 0);
-  for (std::size_t i = 0; i < n; ++i) {
-    bool inside = true;
-    for (int d = 0; d < 3; ++d)
-      if (!box.periodic[d] && (pos[d][i] < lo[d] || pos[d][i] > hi[d])) inside = false;
-    if (!inside) continue;
-    con.put(static_cast<int>(i), x[i], y[i], z[i], radius[i]);    // periodic: wrapped by Voro++
-    placed[i] = 1;
-  }
-  voro::c_loop_all loop(con);
-  voro::voronoicell cell;
-  std::size_t cells = 0;
-  if (loop.start()) do {
-      const std::size_t i = (std::size_t) loop.pid();
-      if (wanted && !(*wanted)[i]) continue;
-      if (con.compute_cell(cell, loop)) {
-        vol[i] = cell.volume();
-        ++cells;
-      }
-    } while (loop.inc());
+  const std::size_t cells = voronoi_cell_volumes(con, n, x, y, z, 1, radius, nullptr,
+                                                 wanted ? wanted->data() : nullptr, vol.data());
   if (info) {
     info->cells = cells;
     std::size_t want = 0;

@@ -3,9 +3,10 @@
    for dumps without a Voronoi volume column (e.g. c_vor[1] of compute
    voronoi/atom). Plain arrays in, volumes out; no files.
 
-   The tessellation is compute flow/azimuthal's "voronoi voro++" route
-   (src/compute_flow_azimuthal.cpp): a radical (power) tessellation with the
-   grains' radii (Voro++ container_poly), periodic where the box is, and in a
+   The tessellation is the kernel of src/voronoi_cells.h, which compute
+   flow/azimuthal's "voronoi voro++" route calls too: a radical (power)
+   tessellation with the grains' radii (Voro++ container_poly), periodic where
+   the box is, and in a
    non-periodic direction closed 1.5 grain diameters (3 largest radii) beyond
    the outermost grain, but not beyond the box: in a poured bed the floor is
    the box bottom and the lid sits 1.5 d_g above the highest grain, so the open

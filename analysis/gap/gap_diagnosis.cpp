@@ -14,6 +14,7 @@
 #include "gap_where.h"
 #include "gap_which.h"
 #include "scenario.h"
+#include "errors.h"
 #include "slurm_script.h"
 #include "text_util.h"
 

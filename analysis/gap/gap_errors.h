@@ -6,7 +6,7 @@
 #ifndef GRANPEN_GAP_ERRORS_H
 #define GRANPEN_GAP_ERRORS_H
 
-#include "trace_reader.h"    // InputError
+#include "errors.h"    // InputError
 
 namespace granpen {
 

@@ -2,7 +2,7 @@
 
 #include "sweep_cache.h"
 #include "text_util.h"
-#include "trace_reader.h"    // InputError
+#include "errors.h"    // InputError
 
 #include <cmath>
 #include <cstdlib>

@@ -7,7 +7,7 @@
 #include "plot_writer.h"
 #include "sweep_cache.h"
 #include "text_util.h"
-#include "trace_reader.h"    // InputError
+#include "errors.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #include "scenario.h"
 
-#include "trace_reader.h"    // InputError
+#include "errors.h"
 
 #include <cmath>
 #include <cstdlib>

@@ -22,7 +22,7 @@
 #ifndef GRANPEN_BED_INFO_H
 #define GRANPEN_BED_INFO_H
 
-#include "trace_reader.h"    // InputError
+#include "errors.h"
 
 #include <map>
 #include <string>

@@ -2,7 +2,7 @@
 #include "csv_table.h"
 
 #include "text_util.h"
-#include "trace_reader.h"
+#include "errors.h"
 
 #include <cerrno>
 #include <cmath>

@@ -7,7 +7,7 @@
 #ifndef GRANPEN_DUMP_READER_H
 #define GRANPEN_DUMP_READER_H
 
-#include "trace_reader.h"    // InputError
+#include "errors.h"
 
 #include <cstddef>
 #include <cstdint>

@@ -1,6 +1,6 @@
 // granpen analysis: shared helpers of the text readers (see text_util.h).
 #include "text_util.h"
-#include "trace_reader.h"    // InputError
+#include "errors.h"
 
 #include <cstdio>
 #include <fstream>

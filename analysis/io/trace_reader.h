@@ -6,6 +6,8 @@
 #ifndef GRANPEN_TRACE_READER_H
 #define GRANPEN_TRACE_READER_H
 
+#include "errors.h"    // InputError: what read_trace and the others throw
+
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -13,11 +15,6 @@
 #include <vector>
 
 namespace granpen {
-
-class InputError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 struct Trace {
   std::string path;

@@ -1,7 +1,7 @@
 // granpen sweep: one SLURM allocation running a command line (see slurm_script.h).
 #include "slurm_script.h"
 
-#include "trace_reader.h"    // InputError
+#include "errors.h"    // InputError
 
 #include <cstdio>
 #include <fstream>

@@ -2,7 +2,7 @@
 #include "sweep_runner.h"
 
 #include "json_text.h"
-#include "trace_reader.h"
+#include "errors.h"
 
 #include <algorithm>
 #include <cerrno>

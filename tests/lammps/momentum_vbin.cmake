@@ -25,6 +25,8 @@ granpen_error_test(mvbin_thresholds_zero
   "${MVBIN} 100 axis 4 4 rmin 1 thresholds 0.1 0.01 0.001 0")
 granpen_error_test(mvbin_logbins_n_zero "Compute momentum/vbin logbins N must be >= 1, got 0"
   "${MVBIN} 100 axis 4 4 rmin 1 logbins 0 0.001 0.1")
+granpen_error_test(mvbin_logbins_n_huge "Compute momentum/vbin logbins N must be <= 10000, got 2000000000"
+  "${MVBIN} 100 axis 4 4 rmin 1 logbins 2000000000 0.001 0.1")
 granpen_error_test(mvbin_logbins_range "Compute momentum/vbin logbins needs 0 < fmin < fmax, got 0.1 0.01"
   "${MVBIN} 100 axis 4 4 rmin 1 logbins 4 0.1 0.01")
 granpen_error_test(mvbin_logbins_equal "Compute momentum/vbin logbins needs 0 < fmin < fmax, got 0.1 0.1"

@@ -2,7 +2,7 @@
 #include "json_text.h"
 #include "sweep_runner.h"
 #include "sweep_spec.h"
-#include "trace_reader.h"
+#include "errors.h"
 
 #include <gtest/gtest.h>
 

@@ -103,10 +103,14 @@ flow_cli_test(cli_momentum_bad_trace "-DCMD=${CLI}^^momentum^^${FLOW_DIR}/lattic
   -DRC=1 -DABSENT=${FLOW_DIR}/bad4 "-DERR_RE=bad_trace\\.csv:[0-9]+: ")
 flow_cli_test(cli_momentum_needs_trace "-DCMD=${CLI}^^momentum^^${FLOW_DIR}/lattice.dump"
   -DRC=2 "-DERR_RE=--trace TRACE is required")
+# a bin width that would give more bins than the grid's limit: refused before allocating
+flow_cli_test(cli_flow_tiny_dr "-DCMD=${CLI}^^flow^^${FLOW_DIR}/lattice.dump^^--trace^^${FLOW_DIR}/lattice.csv^^--dr^^1e-9^^--out^^${FLOW_DIR}/bad5"
+  -DRC=2 -DABSENT=${FLOW_DIR}/bad5 "-DERR_RE=dr 1e-09 gives 3e\\+09 bins over the range 3: more than the limit of 1000000 bins")
 flow_cli_test(cli_flow_help "-DCMD=${CLI}^^flow^^--help" -DRC=0 "-DOUT_RE=usage: granpen flow DUMP")
 flow_cli_test(cli_momentum_help "-DCMD=${CLI}^^momentum^^--help" -DRC=0 "-DOUT_RE=usage: granpen momentum DUMP")
 set_tests_properties(cli_flow_synthetic cli_momentum_synthetic cli_flow_truncated_dump cli_momentum_truncated_dump
-  cli_flow_no_rod cli_flow_rod_by_options cli_momentum_bad_trace cli_momentum_needs_trace cli_flow_help cli_momentum_help
+  cli_flow_no_rod cli_flow_rod_by_options cli_momentum_bad_trace cli_momentum_needs_trace cli_flow_tiny_dr cli_flow_help
+  cli_momentum_help
   PROPERTIES LABELS "unit;cli")
 
 # ---- agreement with the computes on a tiny push (v0 = 100 cm/s to 1 cm, frames every
