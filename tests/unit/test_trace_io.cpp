@@ -275,3 +275,33 @@ TEST(TraceIO, MoreRowsThanTheLimitIsNamed)
   }
   EXPECT_EQ(parse_trace(good_header() + "t,z,F\n" + rows(20), "ok.csv", 20).t.size(), 20u);
 }
+
+// a kill or a full disk can cut the last row short; resuming must not keep half a row
+// (here one whose t, read as far as it goes, is before the restart point)
+TEST(TraceIO, ResumeDropsALastRowCutShort)
+{
+  const std::string path = testing::TempDir() + "granpen_resume_cut.csv";
+  TraceHeader h{"cgs", 100.0, 2.0, 981.0};
+  {
+    TraceWriter w;
+    ASSERT_TRUE(w.open(path, h, false));
+    for (int i = 0; i < 8; ++i) w.row({i * 1e-4, 0.01 * i, 5.0});
+  }
+  {
+    std::ofstream f(path, std::ios::app);
+    f << "0.0008,0.0";    // row 8 cut after its z: no F, no '\n'
+  }
+  long dropped = -1;
+  {
+    TraceWriter w;
+    ASSERT_TRUE(w.open_resume(path, h, 9e-4, dropped));
+    for (int i = 8; i < 14; ++i) w.row({i * 1e-4, 0.01 * i, 6.0});
+  }
+  EXPECT_EQ(dropped, 1);
+  const Trace t = read_trace(path);
+  ASSERT_EQ(t.t.size(), 14u);
+  EXPECT_DOUBLE_EQ(t.F[7], 5.0);
+  EXPECT_DOUBLE_EQ(t.F[8], 6.0);
+  EXPECT_DOUBLE_EQ(t.z[8], 0.08);
+  std::remove(path.c_str());
+}
