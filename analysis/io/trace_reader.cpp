@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -46,20 +47,20 @@ namespace {
 
 // The next line of in (without its '\n') into line; false at the end of the input.
 // A line longer than kMaxTraceLine is an error, not an allocation as large as the file.
-bool bounded_getline(std::istream &in, std::string &line, const std::string &name, long lineno)
+// buf: the caller's scratch of kMaxTraceLine + 2 bytes (istream::getline: no per-line growth).
+bool bounded_getline(std::istream &in, std::vector<char> &buf, std::string &line, const std::string &name,
+                     long lineno)
 {
   line.clear();
-  std::streambuf *sb = in.rdbuf();
-  bool any = false;
-  for (;;) {
-    const int c = sb->sbumpc();
-    if (c == std::char_traits<char>::eof()) return any;
-    any = true;
-    if (c == '\n') return true;
-    if (line.size() >= kMaxTraceLine)
-      fail_at(name, lineno + 1, "line longer than " + std::to_string(kMaxTraceLine) + " bytes: not a trace");
-    line.push_back((char) c);
-  }
+  if (in.eof()) return false;
+  in.getline(buf.data(), (std::streamsize) buf.size());
+  const std::streamsize n = in.gcount();    // with the '\n' when one was taken
+  if (in.bad()) fail_at(name, lineno + 1, "read error");
+  if (in.fail() && !in.eof())
+    fail_at(name, lineno + 1, "line longer than " + std::to_string(kMaxTraceLine) + " bytes: not a trace");
+  if (n == 0 && in.eof()) return false;
+  line.assign(buf.data(), (std::size_t) (in.eof() ? n : n - 1));
+  return true;
 }
 
 // A granpen-trace v1 file read a row at a time: the header on construction, then rows.
@@ -73,7 +74,7 @@ class TraceParser {
   bool next_row(std::vector<double> &values)
   {
     std::string line;
-    while (bounded_getline(in_, line, name_, lineno_)) {
+    while (bounded_getline(in_, buf_, line, name_, lineno_)) {
       ++lineno_;
       const std::string s = trim(line);
       if (s.empty() || s[0] == '#') continue;
@@ -116,6 +117,7 @@ class TraceParser {
   void parse_row(const std::string &s, std::vector<double> &values);
 
   std::istream &in_;
+  std::vector<char> buf_ = std::vector<char>(kMaxTraceLine + 2);
   std::string name_;
   Trace tr_;
   long lineno_ = 0;
@@ -129,7 +131,7 @@ void TraceParser::read_header()
 {
   const std::string &name = name_;
   std::string line;
-  if (!bounded_getline(in_, line, name, 0)) fail_at(name, 1, "empty file, expected '# granpen-trace v1'");
+  if (!bounded_getline(in_, buf_, line, name, 0)) fail_at(name, 1, "empty file, expected '# granpen-trace v1'");
   lineno_ = 1;
   if (trim(line) != "# granpen-trace v1")
     fail_at(name, lineno_, "first line must be '# granpen-trace v1', found '" + trim(line).substr(0, 60) + "'");
@@ -137,7 +139,7 @@ void TraceParser::read_header()
   // header: '# key = value' lines, then the column-name line
   std::map<std::string, long> key_line;
   long colline = 0;
-  while (bounded_getline(in_, line, name, lineno_)) {
+  while (bounded_getline(in_, buf_, line, name, lineno_)) {
     ++lineno_;
     std::string s = trim(line);
     if (s.empty()) continue;
@@ -220,7 +222,15 @@ void TraceParser::parse_row(const std::string &s, std::vector<double> &values)
                                 (fields.size() > ncol ? " (a comma used as decimal separator? the decimal mark is '.')" : ""));
   values.resize(ncol);
   for (std::size_t i = 0; i < ncol; ++i) {
-    values[i] = to_number(fields[i], name_, lineno_, "column " + tr_.columns[i] + " value");
+    // the common case without building a message: a plain finite number
+    const char *b = fields[i].c_str();
+    char *end = nullptr;
+    errno = 0;
+    const double v = std::strtod(b, &end);
+    if (end != b && *end == '\0' && errno != ERANGE && std::isfinite(v) && !std::isspace((unsigned char) *b))
+      values[i] = v;
+    else
+      values[i] = to_number(fields[i], name_, lineno_, "column " + tr_.columns[i] + " value");
     if (!std::isfinite(values[i] * kLargestSiFactor)) too_large(lineno_, "column " + tr_.columns[i] + " value");
   }
   const double t = values[it_];
