@@ -47,20 +47,29 @@ namespace {
 
 // The next line of in (without its '\n') into line; false at the end of the input.
 // A line longer than kMaxTraceLine is an error, not an allocation as large as the file.
-// buf: the caller's scratch of kMaxTraceLine + 2 bytes (istream::getline: no per-line growth).
+// buf: the caller's scratch (istream::getline in pieces of its size: no per-line growth).
 bool bounded_getline(std::istream &in, std::vector<char> &buf, std::string &line, const std::string &name,
                      long lineno)
 {
   line.clear();
   if (in.eof()) return false;
-  in.getline(buf.data(), (std::streamsize) buf.size());
-  const std::streamsize n = in.gcount();    // with the '\n' when one was taken
-  if (in.bad()) fail_at(name, lineno + 1, "read error");
-  if (in.fail() && !in.eof())
-    fail_at(name, lineno + 1, "line longer than " + std::to_string(kMaxTraceLine) + " bytes: not a trace");
-  if (n == 0 && in.eof()) return false;
-  line.assign(buf.data(), (std::size_t) (in.eof() ? n : n - 1));
-  return true;
+  for (;;) {
+    in.getline(buf.data(), (std::streamsize) buf.size());
+    const std::streamsize n = in.gcount();    // with the '\n' when one was taken
+    if (in.bad()) fail_at(name, lineno + 1, "read error");
+    if (in.fail() && !in.eof()) {    // buf filled, the line goes on
+      line.append(buf.data(), (std::size_t) n);
+      if (line.size() > kMaxTraceLine)
+        fail_at(name, lineno + 1, "line longer than " + std::to_string(kMaxTraceLine) + " bytes: not a trace");
+      in.clear();
+      continue;
+    }
+    if (n == 0 && in.eof()) return !line.empty();
+    line.append(buf.data(), (std::size_t) (in.eof() ? n : n - 1));
+    if (line.size() > kMaxTraceLine)
+      fail_at(name, lineno + 1, "line longer than " + std::to_string(kMaxTraceLine) + " bytes: not a trace");
+    return true;
+  }
 }
 
 // A granpen-trace v1 file read a row at a time: the header on construction, then rows.
@@ -117,7 +126,7 @@ class TraceParser {
   void parse_row(const std::string &s, std::vector<double> &values);
 
   std::istream &in_;
-  std::vector<char> buf_ = std::vector<char>(kMaxTraceLine + 2);
+  std::vector<char> buf_ = std::vector<char>(4096);
   std::string name_;
   Trace tr_;
   long lineno_ = 0;

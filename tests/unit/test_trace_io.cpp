@@ -261,6 +261,11 @@ TEST(TraceIO, ALineLongerThanTheLimitIsNamedNotAllocated)
 {
   expect_rejected(good_header() + "t,z,F\n" + rows(5) + std::string(kMaxTraceLine + 10, '1') + "\n",
                   "^bad\\.csv:16: line longer than 1048576 bytes: not a trace$");
+  // a long line under the limit is read whole (it is read in pieces)
+  const std::string source(20000, 'x');
+  const Trace t = parse_trace(good_header() + "# note = " + source + "\nt,z,F\n" + rows(12), "long.csv");
+  EXPECT_EQ(t.keys.at("note"), source);
+  EXPECT_EQ(t.t.size(), 12u);
 }
 
 TEST(TraceIO, MoreRowsThanTheLimitIsNamed)
