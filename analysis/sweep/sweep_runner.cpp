@@ -164,9 +164,10 @@ std::string fmt_seconds(double s)
 
 // Starts argv with stdout and stderr into out. The child is a process group of its own and
 // dies with the runner (PR_SET_PDEATHSIG): a runner killed with -9 leaves no LAMMPS behind
-// writing the trace and checkpoints a resumed runner writes too. lock_fd (the run's lock)
-// stays open in the child, so the run stays locked until both have ended.
-pid_t spawn(const std::vector<std::string> &argv, const std::string &out, int lock_fd)
+// writing the trace and checkpoints a resumed runner writes too. The run's lock is not
+// inherited (close-on-exec): an MPI program forks helpers (Open MPI's singleton orted)
+// that would keep it held long after the run.
+pid_t spawn(const std::vector<std::string> &argv, const std::string &out)
 {
   std::vector<char *> args;
   for (auto &a : argv) args.push_back(const_cast<char *>(a.c_str()));
@@ -178,7 +179,6 @@ pid_t spawn(const std::vector<std::string> &argv, const std::string &out, int lo
     prctl(PR_SET_PDEATHSIG, SIGKILL);
     if (getppid() != runner) _exit(127);    // the runner died before prctl took effect
     signal(SIGXFSZ, SIG_DFL);                // the runner ignores it; LAMMPS must not write on past the limit
-    if (lock_fd >= 0) fcntl(lock_fd, F_SETFD, 0);
     int fd = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (fd >= 0) {
       dup2(fd, 1);
@@ -195,9 +195,9 @@ pid_t spawn(const std::vector<std::string> &argv, const std::string &out, int lo
   return pid;
 }
 
-// The lock of one run, DIR/locks/ID.lock: an flock held from before the run's files are
-// looked at until it ends (by the runner and the process it started); the file names the
-// runner's pid. Returns the descriptor (close-on-exec), or -1 with holder set to the text
+// The lock of one run, DIR/locks/ID.lock: an flock the runner holds from before the run's
+// files are looked at until the run ends (its process dies with the runner); the file
+// names the runner's pid. Returns the descriptor (close-on-exec), or -1 with holder set to the text
 // of the file (the holder's pid) when another process holds it.
 int lock_run(const std::string &path, std::string &holder)
 {
@@ -405,7 +405,7 @@ Sweep setup_sweep(const SweepTask &task, const RunnerOptions &opt)
     if (j.lock_fd < 0) {
       j.status = "failed";
       j.action = "refused";
-      j.error = "locked by another process (granpen sweep pid " + holder + ", or the LAMMPS it started)";
+      j.error = "locked by another process (granpen sweep pid " + holder + ")";
       continue;
     }
     inspect_job(j, true);
@@ -642,7 +642,7 @@ void Pool::start_ready()
       }
       if (b && !finished(*b)) continue;    // the pour has not exited yet
     }
-    j.pid = spawn(j.argv, j.out, j.lock_fd);
+    j.pid = spawn(j.argv, j.out);
     if (j.pid < 0) throw InputError("cannot start " + j.argv[0] + ": " + std::strerror(errno));
     j.start = Clock::now();
     j.status = "running";
