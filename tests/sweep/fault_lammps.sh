@@ -25,6 +25,8 @@ wait_gone() {
   for _ in $(seq 1 10); do pgrep -f -- "$1/lfault/" > /dev/null || return 0; sleep 0.1; done
   fail "lmp_granpen outlived its runner killed with -9 ($2)"
 }
+# alive and not a zombie (an exited runner stays one until waited for)
+running() { ps -o stat= -p "$1" 2>/dev/null | grep -q '^[^Z]'; }
 RANDOM=$SEED
 
 # the reference: an uninterrupted push from the fixture's bed
@@ -41,7 +43,11 @@ run_bg "$d" "$OUT/pour_killed.txt"
 runner=$!
 chunk=$((1 + RANDOM % 8))
 log=$d/lfault/logs/$bed.log
-for _ in $(seq 1 1200); do [ "$(cat "$log" 2>/dev/null | grep -c '^granpen pour: \(chunk\|relaxation\)' || true)" -ge "$chunk" ] && break; sleep 0.05; done
+# (waits without a time limit of its own: a loaded machine can make the pour minutes long)
+until [ "$(cat "$log" 2>/dev/null | grep -c '^granpen pour: \(chunk\|relaxation\)' || true)" -ge "$chunk" ]; do
+  running "$runner" || fail "the runner ended before the pour was killed"
+  sleep 0.05
+done
 kill -9 "$runner" || fail "the runner ended before the pour was killed"
 wait "$runner" 2>/dev/null || true
 wait_gone "$d" "pour"
@@ -53,7 +59,10 @@ target=$((rows / 5 + RANDOM % (rows * 3 / 5)))
 run_bg "$d" "$OUT/push_killed.txt"
 runner=$!
 trace=$d/lfault/traces/$id.csv
-for _ in $(seq 1 2400); do [ "$(cat "$trace" 2>/dev/null | grep -c '^[0-9-]' || true)" -ge "$target" ] && break; sleep 0.05; done
+until [ "$(cat "$trace" 2>/dev/null | grep -c '^[0-9-]' || true)" -ge "$target" ]; do
+  running "$runner" || fail "the runner ended before the push was killed"
+  sleep 0.05
+done
 kill -9 "$runner" || fail "the runner ended before the push was killed"
 wait "$runner" 2>/dev/null || true
 wait_gone "$d" "push"
