@@ -68,6 +68,11 @@ bool TraceWriter::open_resume(const std::string &path, const TraceHeader &h, dou
   const double tol = 1.0e-9 * (t_resume > 0.0 ? t_resume : 1.0);
   while (std::fgets(buf, sizeof(buf), in)) {
     line = buf;
+    // a last line without its '\n' was cut short (a kill or a full disk): never kept
+    if (!line.empty() && line.back() != '\n' && std::feof(in)) {
+      if (tcol >= 0) ++dropped;
+      continue;
+    }
     if (line.empty() || line[0] == '#' || line == "\n") {
       kept += line;
       continue;

@@ -23,12 +23,11 @@ int granpen::cli::check(int argc, char **argv)
   int bad = (int) problems.size();
   for (const auto &file : files) {
     try {
-      auto tr = to_cgs(read_trace(file));
-      double fmax = 0.0;
-      for (double f : tr.F) fmax = std::max(fmax, f);
+      const auto s = to_cgs(scan_trace(file));    // streamed: memory independent of the file's size
+      const double fmax = std::max(0.0, s.F_max);
       std::printf("%s: ok: v0 = %g cm/s, D = %g cm, g = %g cm/s^2, %zu rows, z from %.4g to %.4g cm, "
                   "max F = %.6g dyne\n",
-                  file.c_str(), tr.v0, tr.D, tr.g, tr.t.size(), tr.z.front(), tr.z.back(), fmax);
+                  file.c_str(), s.header.v0, s.header.D, s.header.g, s.rows, s.z_first, s.z_last, fmax);
     } catch (InputError &e) {
       std::fprintf(stderr, "granpen check: %s\n", e.what());
       ++bad;

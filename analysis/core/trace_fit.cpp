@@ -29,6 +29,24 @@ std::string fmt(double v)
   return buf;
 }
 
+std::size_t largest_prime_factor(std::size_t n)
+{
+  std::size_t p = 1;
+  for (std::size_t f = 2; f * f <= n; ++f)
+    while (n % f == 0) p = f, n /= f;
+  return n > 1 ? std::max(p, n) : p;
+}
+
+// the largest number <= n whose prime factors are 2, 3 and 5 (kissfft's fast radices)
+std::size_t smooth_at_most(std::size_t n)
+{
+  std::size_t best = 1;
+  for (std::size_t a = 1; a <= n; a *= 2)
+    for (std::size_t b = a; b <= n; b *= 3)
+      for (std::size_t c = b; c <= n; c *= 5) best = std::max(best, c);
+  return best;
+}
+
 }    // namespace
 
 Wavelength dominant_wavelength(const std::vector<double> &z, const std::vector<double> &y)
@@ -61,9 +79,18 @@ Wavelength dominant_wavelength(const std::vector<double> &z, const std::vector<d
   for (std::size_t i = 0; i + 1 < zs.size(); ++i) dzs[i] = zs[i + 1] - zs[i];
   std::sort(dzs.begin(), dzs.end());
   const std::size_t m = dzs.size();
-  const double dz = (m % 2) ? dzs[m / 2] : 0.5 * (dzs[m / 2 - 1] + dzs[m / 2]);
+  const double median_dz = (m % 2) ? dzs[m / 2] : 0.5 * (dzs[m / 2 - 1] + dzs[m / 2]);
   const double span = zs.back() - zs.front();
-  const std::size_t n = (std::size_t) std::floor(span / dz * (1.0 + 1e-12)) + 1;
+  const double floor_dz = std::max(span / (4.0 * (double) m), span / (double) (kMaxSpectrumPoints - 1));
+  double dz = median_dz;
+  if (dz < floor_dz) dz = floor_dz, w.grid_limited = true;
+  std::size_t n = (std::size_t) std::floor(span / dz * (1.0 + 1e-12)) + 1;
+  n = std::min(n, kMaxSpectrumPoints);
+  if ((double) n * (double) largest_prime_factor(n) > kMaxFftWork) {
+    n = smooth_at_most(n);
+    dz = span / (double) (n - 1);
+    w.grid_limited = true;
+  }
   w.dz = dz;
   w.n = n;
   w.length = (double) n * dz;

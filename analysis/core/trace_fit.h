@@ -31,8 +31,17 @@ struct TraceFitParams {
   double d_g = 0.0;      // grain diameter, cm (the wavelength's natural unit)
 };
 
+// Bounds of the wavelength's grid (docs/reliability.md). The grid is never finer than a
+// quarter of the mean depth step (a 1e-7 cm jitter on repeated depths makes the median dz
+// tiny: that grid would have ~1e7 points and more) nor than kMaxSpectrumPoints points; its
+// FFT (Eigen's kissfft, O(n p) for a prime factor p of n) costs at most kMaxFftWork, else
+// n is lowered to the next 5-smooth number (the span kept, dz slightly larger).
+constexpr std::size_t kMaxSpectrumPoints = std::size_t(1) << 21;    // 2097152 points, 64 MB of buffers
+constexpr double kMaxFftWork = 1.0e9;                                // n times n's largest prime factor
+
 // Dominant wavelength of y(z): y resampled by linear interpolation onto a uniform
-// grid of spacing the median dz (after sorting by z and averaging repeated z), mean
+// grid of spacing the median dz (after sorting by z and averaging repeated z; raised to
+// the bounds above when it is finer), mean
 // removed, Hann window, FFT power spectrum; the bin of largest power among the
 // frequency bins k >= 2 (bins 0 and 1, the mean and the record-length trend, are
 // excluded), refined between bins by a parabola through the log power of the bin
@@ -40,7 +49,8 @@ struct TraceFitParams {
 struct Wavelength {
   bool ok = false;
   double wavelength = 0.0;    // same unit as z
-  double dz = 0.0;            // grid spacing (median dz)
+  double dz = 0.0;            // grid spacing (median dz, unless grid_limited)
+  bool grid_limited = false;  // dz raised above the median dz by the bounds above
   double length = 0.0;        // record length n * dz: bin k is at wavelength length / k
   std::size_t n = 0;          // grid points
   std::size_t bin = 0;        // FFT bin of the peak

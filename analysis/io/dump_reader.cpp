@@ -577,12 +577,12 @@ struct DumpReader::Impl {
                      (s == NumStatus::nonfinite ? "not finite" : "not a number"));
   }
 
-  // reads one frame into f; false at the end of the current file
-  bool read_frame(DumpFrame &f)
+  // the optional ITEM: UNITS and ITEM: TIME (dump_modify units/time yes), then
+  // 'ITEM: TIMESTEP'; false at the end of the current file
+  bool read_frame_start()
   {
     const char *b, *e;
     if (!next_nonblank(b, e)) return false;
-    // optional ITEM: UNITS and ITEM: TIME (dump_modify units/time yes)
     if (line_is(b, e, "ITEM: UNITS")) {
       long l = lineno;
       if (!getline(b, e)) fail(l, "file ends after 'ITEM: UNITS'");
@@ -606,16 +606,37 @@ struct DumpReader::Impl {
         hint = " (not a LAMMPS text dump?)";
       fail(lineno, "expected 'ITEM: TIMESTEP', found '" + show(b, e) + "'" + hint);
     }
-    frame_line = lineno;
-    frame_step = 0;
-    f.file = path;
-    f.line = lineno;
+    return true;
+  }
 
+  // the last frame's timestep and where it was, across files: time must not go backwards
+  bool have_step = false;
+  long long last_step = 0;
+  std::string last_step_at;    // FILE:LINE
+
+  // the timestep line; a step below the previous frame's is an error (one equal to it is
+  // not: a resumed run's first dump repeats the step its restart was written at)
+  void read_timestep(DumpFrame &f)
+  {
+    const char *b, *e;
     long long step = 0;
     if (!getline(b, e)) eof_in_frame("the timestep");
     if (!parse_integer_line(b, e, step)) fail(lineno, "timestep '" + show(b, e) + "' is not an integer");
+    if (have_step && step < last_step) {
+      const bool other_file = last_step_at.compare(0, path.size() + 1, path + ":") != 0;
+      fail(lineno, "timestep " + std::to_string(step) + " goes backwards (after timestep " +
+                       std::to_string(last_step) + " at " + last_step_at + ")" +
+                       (other_file ? ": dump files are read in the order given; give them in time order" : ""));
+    }
+    have_step = true;
+    last_step = step;
+    last_step_at = path + ":" + std::to_string(frame_line);
     f.timestep = frame_step = step;
+  }
 
+  std::size_t read_natoms()
+  {
+    const char *b, *e;
     item_line(b, e, "NUMBER OF ATOMS");
     if (!line_is(b, e, "ITEM: NUMBER OF ATOMS"))
       fail(lineno, "malformed ITEM line '" + show(b, e) + "', expected 'ITEM: NUMBER OF ATOMS'");
@@ -623,16 +644,18 @@ struct DumpReader::Impl {
     if (!getline(b, e)) eof_in_frame("the number of atoms");
     if (!parse_integer_line(b, e, natoms) || natoms < 0)
       fail(lineno, "number of atoms '" + show(b, e) + "' is not an integer >= 0");
+    return static_cast<std::size_t>(natoms);
+  }
 
+  void read_box(DumpFrame &f)
+  {
+    const char *b, *e;
     item_line(b, e, "BOX BOUNDS");
     if (b + 16 < e && !is_space(b[16]))
       fail(lineno, "malformed ITEM line '" + show(b, e) + "', expected 'ITEM: BOX BOUNDS'");
-    {
-      auto flags = tokens(b + 16, e);
-      for (auto &t : flags)
-        if (t == "xy" || t == "xz" || t == "yz" || t == "abc" || t == "origin")
-          fail(lineno, "triclinic box ('" + show(b, e) + "'): only orthogonal boxes are supported");
-    }
+    for (auto &t : tokens(b + 16, e))
+      if (t == "xy" || t == "xz" || t == "yz" || t == "abc" || t == "origin")
+        fail(lineno, "triclinic box ('" + show(b, e) + "'): only orthogonal boxes are supported");
     for (int d = 0; d < 3; ++d) {
       if (!getline(b, e)) eof_in_frame("box bounds");
       double v[3];
@@ -653,7 +676,13 @@ struct DumpReader::Impl {
       f.lo[d] = v[0];
       f.hi[d] = v[1];
     }
+  }
 
+  // the 'ITEM: ATOMS' column names, positions renamed x y z (x beats xu beats xs beats
+  // xsu); scaled[d]: the column of a scaled coordinate to convert, or -1
+  std::vector<std::string> read_atom_columns(int scaled[3])
+  {
+    const char *b, *e;
     item_line(b, e, "ATOMS");
     const long atoms_line = lineno;
     auto names = tokens(b + 11, e);
@@ -664,16 +693,15 @@ struct DumpReader::Impl {
       for (std::size_t j = 0; j < i; ++j)
         if (names[i] == names[j]) fail(lineno, "column '" + names[i] + "' appears twice in 'ITEM: ATOMS'");
 
-    // positions: x beats xu beats xs beats xsu; the chosen one is named x (scaled ones converted)
-    int scaled[3] = {-1, -1, -1};
+    auto find = [&](const std::string &n) -> int {
+      for (std::size_t i = 0; i < names.size(); ++i)
+        if (names[i] == n) return static_cast<int>(i);
+      return -1;
+    };
     static const char *axis[3] = {"x", "y", "z"};
     for (int d = 0; d < 3; ++d) {
+      scaled[d] = -1;
       const std::string a = axis[d];
-      auto find = [&](const std::string &n) -> int {
-        for (std::size_t i = 0; i < names.size(); ++i)
-          if (names[i] == n) return static_cast<int>(i);
-        return -1;
-      };
       if (find(a) >= 0) continue;
       int i = find(a + "u");
       if (i >= 0) {
@@ -693,24 +721,26 @@ struct DumpReader::Impl {
         for (auto &n : names) have += (have.empty() ? "" : " ") + n;
         fail(atoms_line, "frame has no column " + r + " (required; columns: " + have + ")");
       }
+    return names;
+  }
 
-    const std::size_t ncol = names.size();
-    f.columns = std::move(names);
+  // the n atom lines into f.data: the hot loop
+  void read_atom_lines(DumpFrame &f, std::size_t n)
+  {
+    const std::size_t ncol = f.columns.size();
     f.data.resize(ncol);
-    const std::size_t n = static_cast<std::size_t>(natoms);
     const std::size_t reserve = std::min(n, std::max<std::size_t>(1024, kReserveCap / ncol));
     for (auto &c : f.data) {
       c.clear();
       c.reserve(reserve);    // NUMBER OF ATOMS is not trusted with memory: the vectors grow past this
     }
-
-    // atom lines: the hot loop
+    const char *b, *e;
     std::vector<double> *cols = f.data.data();
     for (std::size_t i = 0; i < n; ++i) {
       if (!getline(b, e)) {
-        fail(lineno, "file ends inside the frame of timestep " + std::to_string(step) + " (ITEM: TIMESTEP at line " +
-                         std::to_string(frame_line) + "): " + std::to_string(i) + " of " + std::to_string(n) +
-                         " atom lines");
+        fail(lineno, "file ends inside the frame of timestep " + std::to_string(frame_step) +
+                         " (ITEM: TIMESTEP at line " + std::to_string(frame_line) + "): " + std::to_string(i) +
+                         " of " + std::to_string(n) + " atom lines");
       }
       const char *p = b;
       for (std::size_t c = 0; c < ncol; ++c) {
@@ -730,7 +760,22 @@ struct DumpReader::Impl {
         fail(lineno, "atom line has " + std::to_string(ncol + extra) + " fields, expected " + std::to_string(ncol));
       }
     }
+  }
 
+  // reads one frame into f; false at the end of the current file
+  bool read_frame(DumpFrame &f)
+  {
+    if (!read_frame_start()) return false;
+    frame_line = lineno;
+    frame_step = 0;
+    f.file = path;
+    f.line = lineno;
+    read_timestep(f);
+    const std::size_t n = read_natoms();
+    read_box(f);
+    int scaled[3];
+    f.columns = read_atom_columns(scaled);
+    read_atom_lines(f, n);
     for (int d = 0; d < 3; ++d) {
       if (scaled[d] < 0) continue;
       const double lo = f.lo[d], L = f.hi[d] - f.lo[d];

@@ -55,7 +55,8 @@ class DumpReader {
   // The next complete frame; false at the clean end of the last file. Throws InputError
   // naming file:line (truncated frame, truncated or corrupt gzip, missing required column,
   // non-numeric or non-finite value, wrong field count, missing or malformed ITEM line,
-  // triclinic box, a file without frames). A frame is never returned partly read; after
+  // triclinic box, a file without frames, a timestep below the previous frame's, in this
+  // file or the one before: files are read in the order given). A frame is never returned partly read; after
   // an error the reader is finished (next() throws the same error again).
   bool next(DumpFrame &frame);
   DumpProgress progress() const;

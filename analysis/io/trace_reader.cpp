@@ -9,13 +9,17 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <fstream>
 #include <sstream>
 
 namespace granpen {
 
 namespace {
 
-double to_number(const std::string &field, const std::string &name, int line,
+double to_number(const std::string &field, const std::string &name, long line,
                  const std::string &what)
 {
   const std::string f = trim(field);
@@ -39,23 +43,113 @@ double Trace::number(const std::string &key, double fallback) const
   return (end && *end == '\0' && std::isfinite(v)) ? v : fallback;
 }
 
-Trace parse_trace(const std::string &text, const std::string &name)
-{
-  Trace tr;
-  tr.path = name;
-  std::istringstream in(text);
-  std::string line;
-  int lineno = 0;
+namespace {
 
-  if (!std::getline(in, line)) fail_at(name, 1, "empty file, expected '# granpen-trace v1'");
-  ++lineno;
+// The next line of in (without its '\n') into line; false at the end of the input.
+// A line longer than kMaxTraceLine is an error, not an allocation as large as the file.
+// buf: the caller's scratch (istream::getline in pieces of its size: no per-line growth).
+bool bounded_getline(std::istream &in, std::vector<char> &buf, std::string &line, const std::string &name,
+                     long lineno)
+{
+  line.clear();
+  if (in.eof()) return false;
+  for (;;) {
+    in.getline(buf.data(), (std::streamsize) buf.size());
+    const std::streamsize n = in.gcount();    // with the '\n' when one was taken
+    if (in.bad()) fail_at(name, lineno + 1, "read error");
+    if (in.fail() && !in.eof()) {    // buf filled, the line goes on
+      line.append(buf.data(), (std::size_t) n);
+      if (line.size() > kMaxTraceLine)
+        fail_at(name, lineno + 1, "line longer than " + std::to_string(kMaxTraceLine) + " bytes: not a trace");
+      in.clear();
+      continue;
+    }
+    if (n == 0 && in.eof()) return !line.empty();
+    line.append(buf.data(), (std::size_t) (in.eof() ? n : n - 1));
+    if (line.size() > kMaxTraceLine)
+      fail_at(name, lineno + 1, "line longer than " + std::to_string(kMaxTraceLine) + " bytes: not a trace");
+    return true;
+  }
+}
+
+// A granpen-trace v1 file read a row at a time: the header on construction, then rows.
+class TraceParser {
+ public:
+  TraceParser(std::istream &in, const std::string &name) : in_(in), name_(name) { read_header(); }
+
+  const Trace &header() const { return tr_; }
+
+  // the next row's values in column order; false at the end of the file
+  bool next_row(std::vector<double> &values)
+  {
+    std::string line;
+    while (bounded_getline(in_, buf_, line, name_, lineno_)) {
+      ++lineno_;
+      const std::string s = trim(line);
+      if (s.empty() || s[0] == '#') continue;
+      parse_row(s, values);
+      if (!rows_) z_first_ = values[iz_], first_line_ = lineno_;
+      z_last_ = values[iz_];
+      ++rows_;
+      return true;
+    }
+    return false;
+  }
+
+  // the checks that need every row: enough rows, depth not decreasing over the push
+  void finish() const
+  {
+    if (rows_ < 10)
+      fail_at(name_, lineno_, "only " + std::to_string(rows_) + " data rows, at least 10 needed");
+    if (z_last_ < z_first_)
+      fail_at(name_, lineno_, "z decreases over the push (" + printf_number("%g", z_first_) + " at line " +
+                                  std::to_string(first_line_) + ", " + printf_number("%g", z_last_) +
+                                  " at the last row): z is the depth of the tip below the surface and "
+                                  "grows as the rod goes in; a height (opposite sign) must be negated");
+  }
+
+  long line() const { return lineno_; }
+  int t_index() const { return it_; }
+  int z_index() const { return iz_; }
+  int F_index() const { return iF_; }
+
+ private:
+  // every value must stay finite in cgs (to_cgs scales by up to 1e5: N -> dyne)
+  static constexpr double kLargestSiFactor = 1.0e5;
+  [[noreturn]] void too_large(long line, const std::string &what) const
+  {
+    fail_at(name_, line, what + " is too large (it must stay finite in cgs units)");
+  }
+
+  void read_header();
+  void check_header(long colline);
+  void parse_row(const std::string &s, std::vector<double> &values);
+
+  std::istream &in_;
+  std::vector<char> buf_ = std::vector<char>(4096);
+  std::string name_;
+  Trace tr_;
+  long lineno_ = 0;
+  int it_ = -1, iz_ = -1, iF_ = -1;
+  std::size_t rows_ = 0;
+  double t_prev_ = 0.0, z_first_ = 0.0, z_last_ = 0.0;
+  long first_line_ = 0;
+};
+
+void TraceParser::read_header()
+{
+  const std::string &name = name_;
+  std::string line;
+  if (!bounded_getline(in_, buf_, line, name, 0)) fail_at(name, 1, "empty file, expected '# granpen-trace v1'");
+  lineno_ = 1;
   if (trim(line) != "# granpen-trace v1")
-    fail_at(name, lineno, "first line must be '# granpen-trace v1', found '" + trim(line) + "'");
+    fail_at(name, lineno_, "first line must be '# granpen-trace v1', found '" + trim(line).substr(0, 60) + "'");
 
   // header: '# key = value' lines, then the column-name line
-  int colline = 0;
-  while (std::getline(in, line)) {
-    ++lineno;
+  std::map<std::string, long> key_line;
+  long colline = 0;
+  while (bounded_getline(in_, buf_, line, name, lineno_)) {
+    ++lineno_;
     std::string s = trim(line);
     if (s.empty()) continue;
     if (s[0] == '#') {
@@ -63,68 +157,150 @@ Trace parse_trace(const std::string &text, const std::string &name)
       if (eq == std::string::npos) continue;    // a plain comment
       std::string key = trim(s.substr(1, eq - 1));
       std::string val = trim(s.substr(eq + 1));
-      if (!key.empty()) tr.keys[key] = val;
+      if (key.empty()) continue;
+      // the last one winning would hide a contradiction (two speeds in one file)
+      if (key_line.count(key))
+        fail_at(name, lineno_, "header key '" + key + "' given twice (first at line " +
+                                   std::to_string(key_line[key]) + ")");
+      key_line[key] = lineno_;
+      tr_.keys[key] = val;
       continue;
     }
-    for (auto &c : split(s, ',')) tr.columns.push_back(trim(c));
-    colline = lineno;
+    for (auto &c : split(s, ',')) {
+      const std::string col = trim(c);
+      if (col.empty()) fail_at(name, lineno_, "empty column name in the column line '" + s.substr(0, 60) + "'");
+      if (std::find(tr_.columns.begin(), tr_.columns.end(), col) != tr_.columns.end())
+        fail_at(name, lineno_, "column '" + col + "' named twice");
+      if (tr_.columns.size() == kMaxTraceColumns)
+        fail_at(name, lineno_, "more than " + std::to_string(kMaxTraceColumns) + " columns");
+      tr_.columns.push_back(col);
+    }
+    colline = lineno_;
     break;
   }
-  if (!colline) fail_at(name, lineno, "no column-name line (t,z,F) after the header");
+  if (!colline) fail_at(name, lineno_, "no column-name line (t,z,F) after the header");
+  check_header(colline);
+}
 
+void TraceParser::check_header(long colline)
+{
+  const std::string &name = name_;
+  Trace &tr = tr_;
   for (const char *req : {"units", "v0", "D", "g"})
     if (!tr.keys.count(req)) fail_at(name, colline, std::string("missing required header key '") + req + "'");
   tr.units = tr.keys["units"];
   if (tr.units != "cgs" && tr.units != "si")
     fail_at(name, colline, "unknown unit system '" + tr.units + "' (expected cgs or si)");
-  tr.v0 = to_number(tr.keys["v0"], name, colline, "header v0");
-  tr.D = to_number(tr.keys["D"], name, colline, "header D");
-  tr.g = to_number(tr.keys["g"], name, colline, "header g");
+  // every tool divides by v0, D and g (Froude number, alpha = k_z / (mu rho_g g D^2),
+  // time from depth): zero or negative is a broken header, not a trace
+  auto positive = [&](const char *key, const char *what) {
+    const double v = to_number(tr.keys[key], name, colline, std::string("header ") + key);
+    if (!(v > 0.0))
+      fail_at(name, colline, std::string("header ") + key + " = " + tr.keys[key] + " must be positive (" + what + ")");
+    if (!std::isfinite(v * kLargestSiFactor)) too_large(colline, std::string("header ") + key);
+    return v;
+  };
+  tr.v0 = positive("v0", "the push speed");
+  tr.D = positive("D", "the rod diameter");
+  tr.g = positive("g", "gravity, downwards");
+  // optional keys the tools read as numbers: wrong ones are errors, not silent defaults
+  for (const char *key : {"d_g", "rho_g", "mu"}) {
+    if (!tr.keys.count(key)) continue;
+    const double v = to_number(tr.keys[key], name, colline, std::string("header ") + key);
+    if (!std::isfinite(v * kLargestSiFactor)) too_large(colline, std::string("header ") + key);
+    if (std::string(key) == "mu" ? v < 0.0 : !(v > 0.0))
+      fail_at(name, colline, std::string("header ") + key + " = " + tr.keys[key] + " must be " +
+                                 (std::string(key) == "mu" ? "zero or positive" : "positive"));
+  }
 
-  int it = -1, iz = -1, iF = -1;
   for (int i = 0; i < (int) tr.columns.size(); ++i) {
     const auto &c = tr.columns[i];
-    if (c == "t") it = i;
-    else if (c == "z") iz = i;
-    else if (c == "F") iF = i;
+    if (c == "t") it_ = i;
+    else if (c == "z") iz_ = i;
+    else if (c == "F") iF_ = i;
   }
-  if (it < 0 || iz < 0 || iF < 0)
-    fail_at(name, colline, "column line must name t, z and F");
+  if (it_ < 0 || iz_ < 0 || iF_ < 0) fail_at(name, colline, "column line must name t, z and F");
+}
 
-  const std::size_t ncol = tr.columns.size();
-  while (std::getline(in, line)) {
-    ++lineno;
-    std::string s = trim(line);
-    if (s.empty() || s[0] == '#') continue;
-    auto fields = split(s, ',');
-    if (fields.size() < ncol)
-      fail_at(name, lineno, "row has " + std::to_string(fields.size()) + " fields, expected " +
-                             std::to_string(ncol));
-    for (std::size_t i = 0; i < ncol; ++i) {
-      double v = to_number(fields[i], name, lineno, "column " + tr.columns[i] + " value");
-      if ((int) i == it) {
-        if (!tr.t.empty() && !(v > tr.t.back()))
-          fail_at(name, lineno, "t does not increase (" + trim(fields[i]) + " after previous row)");
-        tr.t.push_back(v);
-      } else if ((int) i == iz) {
-        tr.z.push_back(v);
-      } else if ((int) i == iF) {
-        tr.F.push_back(v);
-      } else {
-        tr.other[tr.columns[i]].push_back(v);
-      }
-    }
+void TraceParser::parse_row(const std::string &s, std::vector<double> &values)
+{
+  const std::size_t ncol = tr_.columns.size();
+  const auto fields = split(s, ',');
+  if (fields.size() != ncol)
+    fail_at(name_, lineno_, "row has " + std::to_string(fields.size()) + " fields, expected " + std::to_string(ncol) +
+                                (fields.size() > ncol ? " (a comma used as decimal separator? the decimal mark is '.')" : ""));
+  values.resize(ncol);
+  for (std::size_t i = 0; i < ncol; ++i) {
+    // the common case without building a message: a plain finite number
+    const char *b = fields[i].c_str();
+    char *end = nullptr;
+    errno = 0;
+    const double v = std::strtod(b, &end);
+    if (end != b && *end == '\0' && errno != ERANGE && std::isfinite(v) && !std::isspace((unsigned char) *b))
+      values[i] = v;
+    else
+      values[i] = to_number(fields[i], name_, lineno_, "column " + tr_.columns[i] + " value");
+    if (!std::isfinite(values[i] * kLargestSiFactor)) too_large(lineno_, "column " + tr_.columns[i] + " value");
   }
-  if (tr.t.size() < 10)
-    fail_at(name, lineno, "only " + std::to_string(tr.t.size()) + " data rows, at least 10 needed");
+  const double t = values[it_];
+  if (rows_ && !(t > t_prev_))
+    fail_at(name_, lineno_, "t does not increase (" + trim(fields[it_]) + " after previous row)");
+  t_prev_ = t;
+}
+
+Trace parse_stream(std::istream &in, const std::string &name, std::size_t max_rows)
+{
+  TraceParser p(in, name);
+  Trace tr = p.header();
+  tr.path = name;
+  std::vector<std::vector<double> *> dest;
+  for (int i = 0; i < (int) tr.columns.size(); ++i)
+    dest.push_back(i == p.t_index() ? &tr.t : i == p.z_index() ? &tr.z : i == p.F_index() ? &tr.F
+                                                                                         : &tr.other[tr.columns[i]]);
+  std::vector<double> values;
+  while (p.next_row(values)) {
+    if (tr.t.size() == max_rows)
+      fail_at(name, p.line(), "more than " + std::to_string(max_rows) +
+                                  " data rows (the limit of a trace read into memory; thin the trace)");
+    for (std::size_t i = 0; i < values.size(); ++i) dest[i]->push_back(values[i]);
+  }
+  p.finish();
   return tr;
+}
+
+}    // namespace
+
+Trace parse_trace(const std::string &text, const std::string &name, std::size_t max_rows)
+{
+  std::istringstream in(text);
+  return parse_stream(in, name, max_rows);
 }
 
 Trace read_trace(const std::string &path)
 {
-  std::string text;
-  if (!read_text_file(path, text)) throw InputError(path + ": cannot open trace file");
-  return parse_trace(text, path);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open trace file (" + std::strerror(errno) + ")");
+  return parse_stream(in, path, kMaxTraceRows);
+}
+
+TraceSummary scan_trace(const std::string &path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open trace file (" + std::strerror(errno) + ")");
+  TraceParser p(in, path);
+  TraceSummary s;
+  s.header = p.header();
+  s.header.path = path;
+  std::vector<double> values;
+  while (p.next_row(values)) {
+    if (!s.rows) s.t_first = values[p.t_index()], s.z_first = values[p.z_index()];
+    s.t_last = values[p.t_index()];
+    s.z_last = values[p.z_index()];
+    s.F_max = std::max(s.F_max, values[p.F_index()]);
+    ++s.rows;
+  }
+  p.finish();
+  return s;
 }
 
 Trace parse_ave_time(const std::string &text, const std::string &name, const AveTimeSpec &spec)
@@ -234,6 +410,16 @@ Trace to_cgs(const Trace &in)
   scale_key("d_g", L);
   scale_key("rho_g", RHO);
   return t;
+}
+
+TraceSummary to_cgs(const TraceSummary &in)
+{
+  if (in.header.units == "cgs") return in;
+  TraceSummary s = in;
+  s.header = to_cgs(in.header);
+  s.z_first *= 100.0, s.z_last *= 100.0;    // m -> cm
+  s.F_max *= 1.0e5;                          // N -> dyne
+  return s;
 }
 
 }    // namespace granpen

@@ -9,6 +9,7 @@
 #include "errors.h"    // InputError: what read_trace and the others throw
 
 #include <cmath>
+#include <cstddef>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -29,9 +30,32 @@ struct Trace {
   double number(const std::string &key, double fallback) const;
 };
 
-// Reads and validates a trace; throws InputError naming path:line.
+// What a reader accepts, at most (docs/reliability.md): beyond these it throws a named
+// InputError instead of allocating without bound.
+constexpr std::size_t kMaxTraceRows = 10000000;    // 240 MB of t, z, F doubles; ~300 MB of text
+constexpr std::size_t kMaxTraceColumns = 64;
+constexpr std::size_t kMaxTraceLine = std::size_t(1) << 20;    // bytes in one line, 1 MiB
+
+// Reads and validates a trace, streaming the file (no copy of its text); throws InputError
+// naming path:line. Validated beyond the format's list: v0 > 0, D > 0, g > 0 (the scalings
+// divide by them), d_g > 0, rho_g > 0, mu >= 0 when given, no header key or column given
+// twice, exactly as many fields in a row as column names (a comma used as decimal separator
+// makes more), z not decreasing from the first row to the last (a height, not a depth), and
+// at most kMaxTraceRows rows.
 Trace read_trace(const std::string &path);
-Trace parse_trace(const std::string &text, const std::string &name);
+Trace parse_trace(const std::string &text, const std::string &name, std::size_t max_rows = kMaxTraceRows);
+
+// The same validation with memory independent of the file's size: the header and a summary
+// of the rows, none kept (granpen check).
+struct TraceSummary {
+  Trace header;               // header, keys and columns; t, z, F empty
+  std::size_t rows = 0;
+  double t_first = 0.0, t_last = 0.0;
+  double z_first = 0.0, z_last = 0.0;
+  double F_max = -INFINITY;
+};
+TraceSummary scan_trace(const std::string &path);
+TraceSummary to_cgs(const TraceSummary &summary);
 
 // The raw output of `fix ave/time` in scalar mode ("# Time-averaged data for fix ID",
 // "# TimeStep NAME...", then rows STEP VALUE...) as a trace: t = (step - step0) dt,

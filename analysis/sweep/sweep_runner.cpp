@@ -15,7 +15,10 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <new>
 #include <signal.h>
+#include <sys/file.h>
+#include <sys/prctl.h>
 #include <sstream>
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -140,7 +143,14 @@ struct Job {
   Clock::time_point start;
   double wall = 0.0;
   double target_depth = 0.0;
+  int lock_fd = -1;                  // the run's lock while this runner holds it
 };
+
+void unlock(Job &j)
+{
+  if (j.lock_fd >= 0) close(j.lock_fd);
+  j.lock_fd = -1;
+}
 
 std::string fmt_seconds(double s)
 {
@@ -152,13 +162,23 @@ std::string fmt_seconds(double s)
   return buf;
 }
 
+// Starts argv with stdout and stderr into out. The child is a process group of its own and
+// dies with the runner (PR_SET_PDEATHSIG): a runner killed with -9 leaves no LAMMPS behind
+// writing the trace and checkpoints a resumed runner writes too. The run's lock is not
+// inherited (close-on-exec): an MPI program forks helpers (Open MPI's singleton orted)
+// that would keep it held long after the run.
 pid_t spawn(const std::vector<std::string> &argv, const std::string &out)
 {
   std::vector<char *> args;
   for (auto &a : argv) args.push_back(const_cast<char *>(a.c_str()));
   args.push_back(nullptr);
+  const pid_t runner = getpid();
   pid_t pid = fork();
   if (pid == 0) {
+    setpgid(0, 0);
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != runner) _exit(127);    // the runner died before prctl took effect
+    signal(SIGXFSZ, SIG_DFL);                // the runner ignores it; LAMMPS must not write on past the limit
     int fd = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     if (fd >= 0) {
       dup2(fd, 1);
@@ -171,7 +191,59 @@ pid_t spawn(const std::vector<std::string> &argv, const std::string &out)
     std::fprintf(stderr, "cannot run %s: %s\n", args[0], std::strerror(errno));
     _exit(127);
   }
+  if (pid > 0) setpgid(pid, pid);    // on both sides: whichever runs first
   return pid;
+}
+
+// The lock of one run, DIR/locks/ID.lock: an flock the runner holds from before the run's
+// files are looked at until the run ends (its process dies with the runner); the file
+// names the runner's pid. Returns the descriptor (close-on-exec), or -1 with holder set to the text
+// of the file (the holder's pid) when another process holds it.
+int lock_run(const std::string &path, std::string &holder)
+{
+  const int fd = open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  if (fd < 0) throw InputError("cannot open lock file " + path + ": " + std::strerror(errno));
+  if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    char buf[64] = {0};
+    const ssize_t n = pread(fd, buf, sizeof buf - 1, 0);
+    holder = n > 0 ? std::string(buf, (std::size_t) n) : std::string("?");
+    while (!holder.empty() && (holder.back() == '\n' || holder.back() == ' ')) holder.pop_back();
+    close(fd);
+    return -1;
+  }
+  const std::string pid = std::to_string(getpid()) + "\n";
+  if (ftruncate(fd, 0) != 0 || pwrite(fd, pid.data(), pid.size(), 0) != (ssize_t) pid.size()) {
+    const std::string e = std::strerror(errno);
+    close(fd);
+    throw InputError("cannot write lock file " + path + ": " + e);
+  }
+  return fd;
+}
+
+// A checkpoint LAMMPS finished writing ends with the restart format's magic string
+// (lmprestart.h, checked by read_restart); one cut short by a kill or a full disk does not,
+// and is never resumed from.
+bool complete_checkpoint(const std::string &p)
+{
+  static const char magic[] = "LammpS RestartT";    // written with its '\0'
+  const int fd = open(p.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  struct stat st;
+  char tail[sizeof magic] = {0};
+  const bool ok = fstat(fd, &st) == 0 && st.st_size >= (off_t) sizeof magic &&
+                  pread(fd, tail, sizeof magic, st.st_size - (off_t) sizeof magic) == (ssize_t) sizeof magic &&
+                  std::memcmp(tail, magic, sizeof magic) == 0;
+  close(fd);
+  return ok;
+}
+
+// "exit code N" or the signal that ended a run, with what it means when it is a known fault
+std::string exit_reason(int wstatus)
+{
+  if (WIFEXITED(wstatus)) return "exit code " + std::to_string(WEXITSTATUS(wstatus));
+  const int sig = WTERMSIG(wstatus);
+  if (sig == SIGXFSZ) return "killed by SIGXFSZ: a file reached the file size limit (ulimit -f)";
+  return "killed by signal " + std::to_string(sig) + " (" + strsignal(sig) + ")";
 }
 
 // One sweep of a pool: its runs, its folder and what its manifest keeps.
@@ -181,6 +253,7 @@ struct Sweep {
   std::string label;                       // "NAME/" before run ids when a pool has several sweeps
   std::vector<Job> jobs;
   std::vector<std::string> other_runs;     // manifest lines of other sweep files of this name
+  std::map<std::string, std::string> held_lines;    // manifest lines of runs another process holds
   std::string lammps_version;
   bool reported = false;                   // its closing line printed
 };
@@ -202,162 +275,235 @@ void link_bed(const std::string &from_dir, const std::string &to_dir, const std:
   }
 }
 
+// the command line of one planned run
+Job make_job(const PlannedRun &r, const Sweep &sw, const RunnerOptions &opt)
+{
+  const std::string &dir = sw.dir;
+  const SweepSpec &spec = sw.spec;
+  Job j;
+  j.run = r;
+  j.log = dir + "/logs/" + r.id + ".log";
+  j.out = dir + "/logs/" + r.id + ".out";
+  std::vector<std::string> a;
+  if (!opt.mpirun.empty()) {
+    // srun counts tasks with -n, mpirun/mpiexec with -np
+    const std::string base = opt.mpirun.substr(opt.mpirun.rfind('/') + 1);
+    a = {opt.mpirun, base == "srun" ? "-n" : "-np", std::to_string(opt.ranks)};
+  }
+  a.push_back(opt.lmp);
+  auto var = [&](const std::string &k, const std::string &v) {
+    if (!v.empty()) a.insert(a.end(), {"-var", k, v});
+  };
+  if (r.kind == PlannedRun::POUR) {
+    j.info = dir + "/beds/" + r.id + ".info";
+    a.insert(a.end(), {"-in", opt.inputs + "/in.pour"});
+    var("inputs", opt.inputs);
+    var("preset", r.preset);
+    var("mu", r.mu);
+    var("seed", r.seed);
+    var("out", dir + "/beds/" + r.id);
+    for (const auto &[k, v] : spec.set) var(k, v);
+  } else {
+    j.trace = dir + "/traces/" + r.id + ".csv";
+    j.done = j.trace + ".done";
+    a.insert(a.end(), {"-in", opt.inputs + "/in.push"});
+    var("inputs", opt.inputs);
+    var("preset", r.preset);
+    var("mu", r.mu);
+    var("bed", dir + "/beds/" + r.bed + ".restart");
+    var("v0", r.v0);
+    var("g_push", r.g);
+    var("D", r.D);
+    var("depth", r.depth);
+    var("mu_push", r.mu_push);
+    var("run", r.seed);
+    var("trace", j.trace);
+    var("checkpoint", std::to_string(opt.checkpoint));
+    var("observe", opt.inputs + "/observe/" + spec.observe + ".lmp");
+    for (const auto &[k, v] : spec.set) var(k, v);
+    for (const auto &[k, v] : spec.push_set) var(k, v);
+    var("drive_extra", "header bed " + r.bed + " header seed " + r.seed + " header preset " + r.preset);
+    j.target_depth = r.depth.empty() ? 0.0 : std::atof(r.depth.c_str());
+  }
+  a.insert(a.end(), {"-log", j.log, "-screen", "none"});
+  j.argv = a;
+  return j;
+}
+
+// What a run's files say: a finished run is skipped, an interrupted push resumed from its
+// newest complete checkpoint. `own`: this runner holds the run's lock and may move files.
+void inspect_job(Job &j, bool own)
+{
+  if (j.run.kind == PlannedRun::POUR) {
+    if (exists(j.info)) j.status = "skipped", j.action = "already done";
+    return;
+  }
+  const std::string ca = j.trace + ".a.restart", cb = j.trace + ".b.restart";
+  const bool ok_a = complete_checkpoint(ca), ok_b = complete_checkpoint(cb);
+  switch (push_action(exists(j.done), exists(j.trace), ok_a || ok_b)) {
+    case PushAction::SKIP_DONE: j.status = "skipped"; j.action = "already done"; break;
+    case PushAction::RESUME: {
+      const std::string from = ok_a && (!ok_b || mtime(ca) >= mtime(cb)) ? ca : cb;
+      j.argv.insert(j.argv.end() - 4, {"-var", "resume", "yes", "-var", "from", from});
+      j.action = "resumed from " + from.substr(from.rfind('/') + 1);
+      if (exists(ca) != ok_a || exists(cb) != ok_b) j.action += " (the other checkpoint is incomplete)";
+      break;
+    }
+    case PushAction::RESTART_FRESH: {
+      if (!own) break;
+      // an interrupted push with no complete checkpoint: keep its partial trace, start over
+      int n = 1;
+      while (exists(j.trace + ".partial" + std::to_string(n))) ++n;
+      const std::string keep = j.trace + ".partial" + std::to_string(n);
+      if (std::rename(j.trace.c_str(), keep.c_str()) != 0)
+        throw InputError("cannot move " + j.trace + " to " + keep + ": " + std::strerror(errno));
+      j.action = "restarted (partial trace kept as " + keep.substr(keep.rfind('/') + 1) + ")";
+      break;
+    }
+    case PushAction::START: j.action = "started"; break;
+  }
+}
+
+// Runs of other sweep files with the same name (sharing its beds, e.g. a v0 and a g sweep)
+// stay in the manifest: each run is one line, keyed by its id.
+void keep_other_runs(Sweep &sw)
+{
+  const std::string &dir = sw.dir;
+  if (!exists(dir + "/manifest.json")) return;
+  std::istringstream in(slurp(dir + "/manifest.json"));
+  const std::string key = "    {\"id\": ";
+  for (std::string line; std::getline(in, line);) {
+    if (line.compare(0, key.size(), key) != 0) continue;
+    if (!line.empty() && line.back() == ',') line.pop_back();
+    const auto planned = std::find_if(sw.jobs.begin(), sw.jobs.end(), [&](const Job &j) {
+      return line.compare(key.size(), json_string(j.run.id).size() + 1, json_string(j.run.id) + ",") == 0;
+    });
+    if (planned == sw.jobs.end()) sw.other_runs.push_back(line);
+    else if (planned->action == "refused") sw.held_lines[planned->run.id] = line;
+  }
+}
+
 Sweep setup_sweep(const SweepTask &task, const RunnerOptions &opt)
 {
   Sweep sw;
   sw.spec = task.spec;
-  const SweepSpec &spec = sw.spec;
-  const std::string dir = sw.dir = opt.out_root + "/" + spec.name;
-  mkdirs(dir + "/beds");
-  mkdirs(dir + "/traces");
-  mkdirs(dir + "/logs");
-  const auto plan = plan_sweep(spec);
+  const std::string dir = sw.dir = opt.out_root + "/" + sw.spec.name;
+  for (const char *sub : {"/beds", "/traces", "/logs", "/locks"}) mkdirs(dir + sub);
+  for (const auto &r : plan_sweep(sw.spec)) sw.jobs.push_back(make_job(r, sw, opt));
 
-  auto &jobs = sw.jobs;
-  for (const auto &r : plan) {
-    Job j;
-    j.run = r;
-    j.log = dir + "/logs/" + r.id + ".log";
-    j.out = dir + "/logs/" + r.id + ".out";
-    std::vector<std::string> a;
-    if (!opt.mpirun.empty()) {
-      // srun counts tasks with -n, mpirun/mpiexec with -np
-      const std::string base = opt.mpirun.substr(opt.mpirun.rfind('/') + 1);
-      a = {opt.mpirun, base == "srun" ? "-n" : "-np", std::to_string(opt.ranks)};
-    }
-    a.push_back(opt.lmp);
-    auto var = [&](const std::string &k, const std::string &v) {
-      if (!v.empty()) a.insert(a.end(), {"-var", k, v});
-    };
-    if (r.kind == PlannedRun::POUR) {
-      j.info = dir + "/beds/" + r.id + ".info";
-      a.insert(a.end(), {"-in", opt.inputs + "/in.pour"});
-      var("inputs", opt.inputs);
-      var("preset", r.preset);
-      var("mu", r.mu);
-      var("seed", r.seed);
-      var("out", dir + "/beds/" + r.id);
-      for (const auto &[k, v] : spec.set) var(k, v);
-    } else {
-      j.trace = dir + "/traces/" + r.id + ".csv";
-      j.done = j.trace + ".done";
-      a.insert(a.end(), {"-in", opt.inputs + "/in.push"});
-      var("inputs", opt.inputs);
-      var("preset", r.preset);
-      var("mu", r.mu);
-      var("bed", dir + "/beds/" + r.bed + ".restart");
-      var("v0", r.v0);
-      var("g_push", r.g);
-      var("D", r.D);
-      var("depth", r.depth);
-      var("mu_push", r.mu_push);
-      var("run", r.seed);
-      var("trace", j.trace);
-      var("checkpoint", std::to_string(opt.checkpoint));
-      var("observe", opt.inputs + "/observe/" + spec.observe + ".lmp");
-      for (const auto &[k, v] : spec.set) var(k, v);
-      for (const auto &[k, v] : spec.push_set) var(k, v);
-      var("drive_extra", "header bed " + r.bed + " header seed " + r.seed + " header preset " + r.preset);
-      j.target_depth = r.depth.empty() ? 0.0 : std::atof(r.depth.c_str());
-    }
-    a.insert(a.end(), {"-log", j.log, "-screen", "none"});
-    j.argv = a;
-    jobs.push_back(j);
-  }
-
-  // what is already there: finished runs are skipped, interrupted pushes resumed
-  for (auto &j : jobs) {
-    if (j.run.kind == PlannedRun::POUR) {
-      if (exists(j.info)) j.status = "skipped", j.action = "already done";
+  // the runs this runner will run are locked before their files are looked at; one another
+  // process holds is refused, its files untouched
+  for (size_t k = 0; k < sw.jobs.size(); ++k) {
+    Job &j = sw.jobs[k];
+    const bool planned = opt.only_index < 0 || (int) k == opt.only_index;
+    if (!planned) {
+      inspect_job(j, false);    // read only: a pour another task may have made
       continue;
     }
-    const std::string ca = j.trace + ".a.restart", cb = j.trace + ".b.restart";
-    const bool cp = exists(ca) || exists(cb);
-    switch (push_action(exists(j.done), exists(j.trace), cp)) {
-      case PushAction::SKIP_DONE: j.status = "skipped"; j.action = "already done"; break;
-      case PushAction::RESUME: {
-        const std::string from = mtime(ca) >= mtime(cb) ? ca : cb;
-        j.argv.insert(j.argv.end() - 4, {"-var", "resume", "yes", "-var", "from", from});
-        j.action = "resumed from " + from.substr(from.rfind('/') + 1);
-        break;
-      }
-      case PushAction::RESTART_FRESH: {
-        // an interrupted push with no checkpoint: keep its partial trace, start over
-        int n = 1;
-        while (exists(j.trace + ".partial" + std::to_string(n))) ++n;
-        const std::string keep = j.trace + ".partial" + std::to_string(n);
-        std::rename(j.trace.c_str(), keep.c_str());
-        j.action = "restarted (partial trace kept as " + keep.substr(keep.rfind('/') + 1) + ")";
-        break;
-      }
-      case PushAction::START: j.action = "started"; break;
+    std::string holder;
+    j.lock_fd = lock_run(dir + "/locks/" + j.run.id + ".lock", holder);
+    if (j.lock_fd < 0) {
+      j.status = "failed";
+      j.action = "refused";
+      j.error = "locked by another process (granpen sweep pid " + holder + ")";
+      continue;
     }
+    inspect_job(j, true);
+    if (j.status == "skipped") unlock(j);
   }
 
-  for (auto &j : jobs) {
+  for (auto &j : sw.jobs) {
     if (j.status != "skipped") continue;
     auto kv = read_info(j.run.kind == PlannedRun::POUR ? j.info : j.done);
     if (kv.count("wall_seconds")) j.wall = std::atof(kv["wall_seconds"].c_str());
   }
 
   // the LAMMPS version from any log already there (all runs may be skipped)
-  for (const auto &j : jobs)
+  for (const auto &j : sw.jobs)
     if (sw.lammps_version.empty() && exists(j.log)) sw.lammps_version = first_line_matching(slurp(j.log), "LAMMPS (");
-  // Runs of other sweep files with the same name (sharing its beds, e.g. a v0 and a g sweep)
-  // stay in the manifest: each run is one line, keyed by its id.
-  if (exists(dir + "/manifest.json")) {
-    std::istringstream in(slurp(dir + "/manifest.json"));
-    const std::string key = "    {\"id\": ";
-    for (std::string line; std::getline(in, line);) {
-      if (line.compare(0, key.size(), key) != 0) continue;
-      const bool planned = std::any_of(jobs.begin(), jobs.end(), [&](const Job &j) {
-        return line.compare(key.size(), json_string(j.run.id).size() + 1, json_string(j.run.id) + ",") == 0;
-      });
-      if (planned) continue;
-      if (!line.empty() && line.back() == ',') line.pop_back();
-      sw.other_runs.push_back(line);
-    }
-  }
+  keep_other_runs(sw);
   return sw;
 }
 
-void write_manifest(const Sweep &sw)
+// one run's line of the manifest (without its comma)
+std::string manifest_line(const Sweep &sw, const Job &j)
 {
-  const std::string tmp = sw.dir + "/manifest.json.tmp";
+  char *buf = nullptr;
+  size_t size = 0;
+  std::FILE *m = open_memstream(&buf, &size);
+  if (!m) throw std::bad_alloc();
+  const auto &r = j.run;
+  std::fprintf(m, "    {\"id\": %s, \"kind\": \"%s\", \"status\": %s, \"action\": %s, \"preset\": %s, "
+                  "\"mu\": %s, \"seed\": %s",
+               json_string(r.id).c_str(), r.kind == PlannedRun::POUR ? "pour" : "push",
+               json_string(j.status).c_str(), json_string(j.action).c_str(), json_string(r.preset).c_str(),
+               json_string(r.mu).c_str(), json_string(r.seed).c_str());
+  if (r.kind == PlannedRun::POUR) {
+    auto info = exists(j.info) ? read_info(j.info) : std::map<std::string, std::string>{};
+    for (const char *k : {"z_s", "phi_0", "grains", "wall_seconds"})
+      if (info.count(k) && positive_number(info[k])) std::fprintf(m, ", \"%s\": %s", k, info[k].c_str());
+    std::fprintf(m, ", \"bed\": %s", json_string(sw.dir + "/beds/" + r.id + ".restart").c_str());
+  } else {
+    std::fprintf(m, ", \"bed\": %s, \"v0\": %s, \"g\": %s, \"D\": %s, \"depth\": %s, \"mu_push\": %s, "
+                    "\"trace\": %s",
+                 json_string(r.bed).c_str(), json_string(r.v0).c_str(), json_string(r.g).c_str(),
+                 json_string(r.D).c_str(), json_string(r.depth).c_str(), json_string(r.mu_push).c_str(),
+                 json_string(j.trace).c_str());
+  }
+  std::fprintf(m, ", \"log\": %s, \"wall_seconds_run\": %.3f, \"exit_code\": %d, \"error\": %s}",
+               json_string(j.log).c_str(), j.wall, j.exit_code, json_string(j.error).c_str());
+  std::fclose(m);
+  std::string line(buf, size);
+  std::free(buf);
+  return line;
+}
+
+// Writes DIR/manifest.json through a temporary file (per process: SLURM tasks of one sweep
+// write it too) renamed into place; every step checked. Returns "" or what failed.
+std::string write_manifest_file(const Sweep &sw)
+{
+  const std::string path = sw.dir + "/manifest.json", tmp = path + ".tmp" + std::to_string(getpid());
   std::FILE *f = std::fopen(tmp.c_str(), "w");
-  if (!f) return;
+  if (!f) return "cannot write " + tmp + ": " + std::strerror(errno);
   const auto &jobs = sw.jobs;
   std::fprintf(f, "{\n  \"sweep\": %s,\n  \"spec\": %s,\n  \"granpen\": %s,\n  \"lammps\": %s,\n  \"runs\": [\n",
                json_string(sw.spec.name).c_str(), json_string(sw.spec.path).c_str(),
                json_string(GRANPEN_VERSION).c_str(), json_string(sw.lammps_version).c_str());
-  for (const auto &line : sw.other_runs) std::fprintf(f, "%s,\n", line.c_str());
-  for (size_t i = 0; i < jobs.size(); ++i) {
-    const auto &j = jobs[i];
-    const auto &r = j.run;
-    std::fprintf(f, "    {\"id\": %s, \"kind\": \"%s\", \"status\": %s, \"action\": %s, \"preset\": %s, "
-                    "\"mu\": %s, \"seed\": %s",
-                 json_string(r.id).c_str(), r.kind == PlannedRun::POUR ? "pour" : "push",
-                 json_string(j.status).c_str(), json_string(j.action).c_str(), json_string(r.preset).c_str(),
-                 json_string(r.mu).c_str(), json_string(r.seed).c_str());
-    if (r.kind == PlannedRun::POUR) {
-      auto info = exists(j.info) ? read_info(j.info) : std::map<std::string, std::string>{};
-      for (const char *k : {"z_s", "phi_0", "grains", "wall_seconds"})
-        if (info.count(k) && positive_number(info[k])) std::fprintf(f, ", \"%s\": %s", k, info[k].c_str());
-      std::fprintf(f, ", \"bed\": %s", json_string(sw.dir + "/beds/" + r.id + ".restart").c_str());
-    } else {
-      std::fprintf(f, ", \"bed\": %s, \"v0\": %s, \"g\": %s, \"D\": %s, \"depth\": %s, \"mu_push\": %s, "
-                      "\"trace\": %s",
-                   json_string(r.bed).c_str(), json_string(r.v0).c_str(), json_string(r.g).c_str(),
-                   json_string(r.D).c_str(), json_string(r.depth).c_str(), json_string(r.mu_push).c_str(),
-                   json_string(j.trace).c_str());
+  // every run one line; a run another process holds keeps the line that process wrote
+  std::vector<std::string> lines = sw.other_runs;
+  for (const auto &j : jobs) {
+    if (j.action == "refused") {
+      const auto held = sw.held_lines.find(j.run.id);
+      if (held != sw.held_lines.end()) lines.push_back(held->second);
+      continue;
     }
-    std::fprintf(f, ", \"log\": %s, \"wall_seconds_run\": %.3f, \"exit_code\": %d, \"error\": %s}%s\n",
-                 json_string(j.log).c_str(), j.wall, j.exit_code, json_string(j.error).c_str(),
-                 i + 1 < jobs.size() ? "," : "");
+    lines.push_back(manifest_line(sw, j));
   }
+  for (size_t i = 0; i < lines.size(); ++i)
+    std::fprintf(f, "%s%s\n", lines[i].c_str(), i + 1 < lines.size() ? "," : "");
   std::fprintf(f, "  ]\n}\n");
-  std::fclose(f);
-  std::rename(tmp.c_str(), (sw.dir + "/manifest.json").c_str());
+  const bool written = !std::ferror(f) && std::fflush(f) == 0;
+  const int err = errno;
+  if (std::fclose(f) != 0 || !written) {
+    std::remove(tmp.c_str());
+    return "cannot write " + tmp + ": " + std::strerror(written ? errno : err);
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    std::remove(tmp.c_str());
+    return "cannot rename " + tmp + " to " + path + ": " + std::strerror(errno);
+  }
+  return "";
+}
+
+// A manifest that cannot be written is said once per sweep, and the sweep counts as failed;
+// the runs go on (their traces are what matters).
+bool manifest_failed = false;
+void write_manifest(const Sweep &sw)
+{
+  const std::string e = write_manifest_file(sw);
+  if (e.empty()) return;
+  if (!manifest_failed) std::fprintf(stderr, "granpen sweep %s: error: manifest: %s\n", sw.spec.name.c_str(), e.c_str());
+  manifest_failed = true;
 }
 
 // A push's cost in steps, up to a common factor: travel / (v0 dt). Pushes are started
@@ -371,11 +517,7 @@ double push_steps(const Job &j, const SweepSpec &spec)
   return v0 > 0 && dt > 0 ? depth / (v0 * dt) : 0.0;
 }
 
-}    // namespace
-
-int run_sweep(const SweepSpec &spec, const RunnerOptions &opt) { return run_sweeps({{spec, ""}}, opt) ? 1 : 0; }
-
-int run_sweeps(const std::vector<SweepTask> &tasks, const RunnerOptions &opt)
+void check_runner_inputs(const std::vector<SweepTask> &tasks, const RunnerOptions &opt)
 {
   if (access(opt.lmp.c_str(), X_OK) != 0)
     throw InputError("lmp_granpen not found or not executable: " + opt.lmp + " (build it: ./granpen build)");
@@ -388,17 +530,44 @@ int run_sweeps(const std::vector<SweepTask> &tasks, const RunnerOptions &opt)
     for (size_t b = a + 1; b < tasks.size(); ++b)
       if (tasks[a].spec.name == tasks[b].spec.name)
         throw InputError("two sweeps named " + tasks[a].spec.name + " in one pool would share a folder");
+}
 
+using RunKey = std::pair<size_t, size_t>;    // (sweep, job)
+
+// The sweeps of a pool run as one: which run starts when, what ended, progress.
+struct Pool {
+  const std::vector<SweepTask> &tasks;
+  const RunnerOptions &opt;
   std::vector<Sweep> sweeps;
-  for (const auto &t : tasks) {
-    sweeps.push_back(setup_sweep(t, opt));
-    if (tasks.size() > 1) sweeps.back().label = t.spec.name + "/";
+  // a sweep that reuses another's beds: its pours become links to that sweep's pours
+  struct Link { int sweep = -1; size_t job = 0; };
+  std::map<RunKey, Link> links;
+  std::vector<RunKey> order;    // pours (every push waits for one), then pushes, longest first
+  Clock::time_point t0 = Clock::now(), last_report = Clock::now();
+  int running = 0;
+
+  Pool(const std::vector<SweepTask> &t, const RunnerOptions &o) : tasks(t), opt(o) {}
+  ~Pool()
+  {
+    for (auto &sw : sweeps)
+      for (auto &j : sw.jobs) unlock(j);
   }
 
-  // A sweep that reuses another's beds: its pours become links, made now when that bed is
-  // there, else as soon as the pool has poured it.
-  struct Link { int sweep = -1; size_t job = 0; };
-  std::map<std::pair<size_t, size_t>, Link> links;
+  static double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+  bool planned_in(size_t k) const { return opt.only_index < 0 || (int) k == opt.only_index; }
+  Job &job(const RunKey &r) { return sweeps[r.first].jobs[r.second]; }
+
+  void plan_links();
+  void plan_order();
+  void start_ready();
+  void reap(pid_t pid, int wstatus);
+  void report_progress();
+  void close_finished();
+  int finish();
+};
+
+void Pool::plan_links()
+{
   for (size_t s = 0; s < sweeps.size(); ++s) {
     const std::string &from = tasks[s].beds_from;
     if (from.empty()) continue;
@@ -408,10 +577,11 @@ int run_sweeps(const std::vector<SweepTask> &tasks, const RunnerOptions &opt)
       if (tasks[t].spec.name == from) src = (int) t;
     for (size_t k = 0; k < sweeps[s].jobs.size(); ++k) {
       Job &j = sweeps[s].jobs[k];
-      if (j.run.kind != PlannedRun::POUR || j.status == "skipped") continue;
+      if (j.run.kind != PlannedRun::POUR || j.status == "skipped" || j.status == "failed") continue;
       if (exists(from_dir + "/beds/" + j.run.id + ".info")) {
         link_bed(from_dir, sweeps[s].dir, j.run.id);
         j.status = "skipped", j.action = "bed of " + from;
+        unlock(j);
         continue;
       }
       Link l;
@@ -424,12 +594,13 @@ int run_sweeps(const std::vector<SweepTask> &tasks, const RunnerOptions &opt)
       links[{s, k}] = l;
     }
   }
+}
 
-  // the order runs start in: pours (every push waits for one), then pushes, longest first
-  std::vector<std::pair<size_t, size_t>> order;
+void Pool::plan_order()
+{
   for (size_t s = 0; s < sweeps.size(); ++s)
     for (size_t k = 0; k < sweeps[s].jobs.size(); ++k)
-      if (opt.only_index < 0 || (int) k == opt.only_index) order.emplace_back(s, k);
+      if (planned_in(k)) order.emplace_back(s, k);
   if (opt.only_index >= 0 && order.empty())
     throw InputError("--only " + std::to_string(opt.only_index) + ": the sweep has " +
                      std::to_string(sweeps[0].jobs.size()) + " runs");
@@ -439,171 +610,215 @@ int run_sweeps(const std::vector<SweepTask> &tasks, const RunnerOptions &opt)
     if (px != py) return px;
     return !px && push_steps(x, sweeps[a.first].spec) > push_steps(y, sweeps[b.first].spec);
   });
+}
 
-  for (auto &sw : sweeps) {
-    int skipped = 0, planned = 0;
-    for (const auto &[s, k] : order)
-      if (&sweeps[s] == &sw) ++planned, skipped += sw.jobs[k].status == "skipped";
-    std::printf("granpen sweep %s: %d runs (%d already done) in %s, up to %d at once%s\n", sw.spec.name.c_str(),
-                planned, skipped, sw.dir.c_str(), opt.jobs,
-                sweeps.size() > 1 ? (" (a pool of " + std::to_string(sweeps.size()) + " sweeps)").c_str() : "");
-    write_manifest(sw);
-  }
-  std::fflush(stdout);
-
-  const auto t0 = Clock::now();
-  auto seconds_since = [](Clock::time_point t) {
-    return std::chrono::duration<double>(Clock::now() - t).count();
-  };
-  auto bed_job = [&](const Sweep &sw, const Job &j) -> const Job * {
-    for (const auto &b : sw.jobs)
-      if (b.run.kind == PlannedRun::POUR && b.run.id == j.run.bed) return &b;
-    return nullptr;
-  };
-  auto planned_in = [&](size_t k) { return opt.only_index < 0 || (int) k == opt.only_index; };
-  // a sweep whose planned runs have all ended gets its closing line
-  auto close_finished = [&]() {
-    for (size_t s = 0; s < sweeps.size(); ++s) {
-      Sweep &sw = sweeps[s];
-      if (sw.reported) continue;
-      int failed = 0, done = 0;
-      bool open = false;
-      for (size_t k = 0; k < sw.jobs.size(); ++k) {
-        if (!planned_in(k)) continue;
-        const Job &j = sw.jobs[k];
-        if (!terminal(j)) open = true;
-        failed += j.status == "failed", done += finished(j);
-      }
-      if (open) continue;
-      sw.reported = true;
+void Pool::start_ready()
+{
+  for (const auto &[s, k] : order) {
+    Sweep &sw = sweeps[s];
+    Job &j = sw.jobs[k];
+    if (j.status != "pending") continue;
+    const auto ln = links.find({s, k});
+    if (ln != links.end()) {
+      const Job &src = sweeps[ln->second.sweep].jobs[ln->second.job];
+      if (src.status == "failed") j.status = "failed", j.error = "the bed it reuses failed";
+      if (!finished(src)) continue;
+      link_bed(sweeps[ln->second.sweep].dir, sw.dir, j.run.id);
+      j.status = "done";
+      unlock(j);
       write_manifest(sw);
-      std::printf("granpen sweep %s: %d done, %d failed in %s; manifest %s/manifest.json\n", sw.spec.name.c_str(),
-                  done, failed, fmt_seconds(seconds_since(t0)).c_str(), sw.dir.c_str());
-      std::fflush(stdout);
-    }
-  };
-
-  auto last_report = Clock::now();
-  int running = 0;
-  while (true) {
-    // start what can start
-    for (const auto &[s, k] : order) {
-      Sweep &sw = sweeps[s];
-      Job &j = sw.jobs[k];
-      if (j.status != "pending") continue;
-      const auto ln = links.find({s, k});
-      if (ln != links.end()) {
-        const Job &src = sweeps[ln->second.sweep].jobs[ln->second.job];
-        if (src.status == "failed") j.status = "failed", j.error = "the bed it reuses failed";
-        if (!finished(src)) continue;
-        link_bed(sweeps[ln->second.sweep].dir, sw.dir, j.run.id);
-        j.status = "done";
-        write_manifest(sw);
-        continue;
-      }
-      if (running >= opt.jobs) continue;
-      if (j.run.kind == PlannedRun::PUSH) {
-        const Job *b = bed_job(sw, j);
-        if (b && b->status == "failed") {
-          j.status = "failed";
-          j.error = "its bed " + b->run.id + " failed";
-          continue;
-        }
-        if (b && !finished(*b)) continue;    // the pour has not exited yet
-      }
-      j.pid = spawn(j.argv, j.out);
-      j.start = Clock::now();
-      j.status = "running";
-      ++running;
-      std::printf("  start %s%s (%s)\n", sw.label.c_str(), j.run.id.c_str(), j.action.empty() ? "started" : j.action.c_str());
-      std::fflush(stdout);
-    }
-    close_finished();
-    if (running == 0) break;
-
-    int wstatus = 0;
-    pid_t pid = waitpid(-1, &wstatus, WNOHANG);
-    if (pid > 0) {
-      for (auto &sw : sweeps)
-        for (auto &j : sw.jobs) {
-          if (j.pid != pid || j.status != "running") continue;
-          --running;
-          j.wall = seconds_since(j.start);
-          j.exit_code = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : 128 + WTERMSIG(wstatus);
-          const std::string log = slurp(j.log);
-          if (sw.lammps_version.empty()) {
-            auto l = first_line_matching(log, "LAMMPS (");
-            if (!l.empty()) sw.lammps_version = l;
-          }
-          bool ok = j.exit_code == 0;
-          if (ok && j.run.kind == PlannedRun::PUSH) ok = log.find("granpen push: done") != std::string::npos;
-          if (ok && j.run.kind == PlannedRun::POUR) ok = exists(j.info);
-          if (ok) {
-            j.status = "done";
-            if (j.run.kind == PlannedRun::PUSH) std::ofstream(j.done) << "wall_seconds = " << j.wall << "\n";
-          } else {
-            j.status = "failed";
-            std::string e = first_line_matching(log, "ERROR");
-            if (e.empty()) e = first_line_matching(slurp(j.out), "ERROR");
-            if (e.empty()) e = "exit code " + std::to_string(j.exit_code) + " (see " + j.out + ")";
-            j.error = e;
-          }
-          std::printf("  %s %s%s in %s%s%s\n", j.status == "done" ? "done " : "FAILED", sw.label.c_str(),
-                      j.run.id.c_str(), fmt_seconds(j.wall).c_str(), j.error.empty() ? "" : ": ", j.error.c_str());
-          std::fflush(stdout);
-          write_manifest(sw);
-        }
       continue;
     }
+    if (running >= opt.jobs) continue;
+    if (j.run.kind == PlannedRun::PUSH) {
+      const Job *b = nullptr;
+      for (const auto &c : sw.jobs)
+        if (c.run.kind == PlannedRun::POUR && c.run.id == j.run.bed) b = &c;
+      if (b && b->status == "failed") {
+        j.status = "failed";
+        j.error = "its bed " + b->run.id + " failed";
+        unlock(j);
+        continue;
+      }
+      if (b && !finished(*b)) continue;    // the pour has not exited yet
+    }
+    j.pid = spawn(j.argv, j.out);
+    if (j.pid < 0) throw InputError("cannot start " + j.argv[0] + ": " + std::strerror(errno));
+    j.start = Clock::now();
+    j.status = "running";
+    ++running;
+    std::printf("  start %s%s (%s)\n", sw.label.c_str(), j.run.id.c_str(), j.action.empty() ? "started" : j.action.c_str());
+    std::fflush(stdout);
+  }
+}
 
-    if (seconds_since(last_report) >= opt.progress_seconds) {
-      last_report = Clock::now();
-      int done = 0, failed = 0, total = (int) order.size();
-      double sum_pour = 0, sum_push = 0;
-      int n_pour = 0, n_push = 0, left_pour = 0, left_push = 0;
-      std::string now;
-      for (const auto &[s, k] : order) {
-        const Job &j = sweeps[s].jobs[k];
-        const bool pour = j.run.kind == PlannedRun::POUR, linked = links.count({s, k}) > 0;
-        if (finished(j)) ++done;
-        if (j.status == "failed") ++failed;
-        if (j.status == "done" && !linked) (pour ? (sum_pour += j.wall, ++n_pour) : (sum_push += j.wall, ++n_push));
-        if ((j.status == "pending" && !linked) || j.status == "running") (pour ? ++left_pour : ++left_push);
-        if (j.status == "running") {
-          char b[200];
-          const std::string id = sweeps[s].label + j.run.id;
-          double z = pour ? NAN : last_depth(j.trace);
-          const std::string ps = pour ? pour_status(j.log) : "";
-          if (std::isfinite(z)) std::snprintf(b, sizeof(b), " %s z=%.2f", id.c_str(), z);
-          else if (!ps.empty()) std::snprintf(b, sizeof(b), " %s (%s)", id.c_str(), ps.c_str());
-          else std::snprintf(b, sizeof(b), " %s %s", id.c_str(), fmt_seconds(seconds_since(j.start)).c_str());
-          now += b;
+void Pool::reap(pid_t pid, int wstatus)
+{
+  for (auto &sw : sweeps)
+    for (auto &j : sw.jobs) {
+      if (j.pid != pid || j.status != "running") continue;
+      --running;
+      j.wall = seconds_since(j.start);
+      j.exit_code = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : 128 + WTERMSIG(wstatus);
+      const std::string log = slurp(j.log);
+      if (sw.lammps_version.empty()) {
+        auto l = first_line_matching(log, "LAMMPS (");
+        if (!l.empty()) sw.lammps_version = l;
+      }
+      bool ok = j.exit_code == 0;
+      if (ok && j.run.kind == PlannedRun::PUSH) ok = log.find("granpen push: done") != std::string::npos;
+      if (ok && j.run.kind == PlannedRun::POUR) ok = exists(j.info);
+      std::string e;
+      if (ok && j.run.kind == PlannedRun::PUSH) {
+        std::ofstream done(j.done);
+        done << "wall_seconds = " << j.wall << "\n";
+        done.close();
+        if (!done) {
+          ok = false;
+          e = "cannot write " + j.done + ": " + std::strerror(errno);
+          std::remove(j.done.c_str());
         }
       }
-      // ETA from the mean time of the finished runs of each kind
-      double eta = NAN;
-      if ((n_pour || !left_pour) && (n_push || !left_push))
-        eta = ((n_pour ? sum_pour / n_pour : 0) * left_pour + (n_push ? sum_push / n_push : 0) * left_push) /
-            std::max(1, opt.jobs);
-      std::printf("  [%s] %d/%d done, %d failed; running:%s; ETA %s\n", fmt_seconds(seconds_since(t0)).c_str(),
-                  done, total, failed, now.c_str(), fmt_seconds(eta).c_str());
+      if (ok) {
+        j.status = "done";
+      } else {
+        j.status = "failed";
+        if (e.empty() && !WIFEXITED(wstatus)) e = exit_reason(wstatus);
+        if (e.empty()) e = first_line_matching(log, "ERROR");
+        if (e.empty()) e = first_line_matching(slurp(j.out), "ERROR");
+        if (e.empty()) e = exit_reason(wstatus) + " (see " + j.out + ")";
+        j.error = e;
+      }
+      unlock(j);
+      std::printf("  %s %s%s in %s%s%s\n", j.status == "done" ? "done " : "FAILED", sw.label.c_str(),
+                  j.run.id.c_str(), fmt_seconds(j.wall).c_str(), j.error.empty() ? "" : ": ", j.error.c_str());
       std::fflush(stdout);
+      write_manifest(sw);
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  }
+}
 
+void Pool::report_progress()
+{
+  last_report = Clock::now();
+  int done = 0, failed = 0, total = (int) order.size();
+  double sum_pour = 0, sum_push = 0;
+  int n_pour = 0, n_push = 0, left_pour = 0, left_push = 0;
+  std::string now;
+  for (const auto &[s, k] : order) {
+    const Job &j = sweeps[s].jobs[k];
+    const bool pour = j.run.kind == PlannedRun::POUR, linked = links.count({s, k}) > 0;
+    if (finished(j)) ++done;
+    if (j.status == "failed") ++failed;
+    if (j.status == "done" && !linked) (pour ? (sum_pour += j.wall, ++n_pour) : (sum_push += j.wall, ++n_push));
+    if ((j.status == "pending" && !linked) || j.status == "running") (pour ? ++left_pour : ++left_push);
+    if (j.status == "running") {
+      char b[200];
+      const std::string id = sweeps[s].label + j.run.id;
+      double z = pour ? NAN : last_depth(j.trace);
+      const std::string ps = pour ? pour_status(j.log) : "";
+      if (std::isfinite(z)) std::snprintf(b, sizeof(b), " %s z=%.2f", id.c_str(), z);
+      else if (!ps.empty()) std::snprintf(b, sizeof(b), " %s (%s)", id.c_str(), ps.c_str());
+      else std::snprintf(b, sizeof(b), " %s %s", id.c_str(), fmt_seconds(seconds_since(j.start)).c_str());
+      now += b;
+    }
+  }
+  // ETA from the mean time of the finished runs of each kind
+  double eta = NAN;
+  if ((n_pour || !left_pour) && (n_push || !left_push))
+    eta = ((n_pour ? sum_pour / n_pour : 0) * left_pour + (n_push ? sum_push / n_push : 0) * left_push) /
+        std::max(1, opt.jobs);
+  std::printf("  [%s] %d/%d done, %d failed; running:%s; ETA %s\n", fmt_seconds(seconds_since(t0)).c_str(), done,
+              total, failed, now.c_str(), fmt_seconds(eta).c_str());
+  std::fflush(stdout);
+}
+
+// a sweep whose planned runs have all ended gets its closing line
+void Pool::close_finished()
+{
+  for (size_t s = 0; s < sweeps.size(); ++s) {
+    Sweep &sw = sweeps[s];
+    if (sw.reported) continue;
+    int failed = 0, done = 0;
+    bool open = false;
+    for (size_t k = 0; k < sw.jobs.size(); ++k) {
+      if (!planned_in(k)) continue;
+      const Job &j = sw.jobs[k];
+      if (!terminal(j)) open = true;
+      failed += j.status == "failed", done += finished(j);
+    }
+    if (open) continue;
+    sw.reported = true;
+    write_manifest(sw);
+    std::printf("granpen sweep %s: %d done, %d failed in %s; manifest %s/manifest.json\n", sw.spec.name.c_str(),
+                done, failed, fmt_seconds(seconds_since(t0)).c_str(), sw.dir.c_str());
+    for (size_t k = 0; k < sw.jobs.size(); ++k)
+      if (planned_in(k) && sw.jobs[k].action == "refused")
+        std::printf("granpen sweep %s: refused %s: %s\n", sw.spec.name.c_str(), sw.jobs[k].run.id.c_str(),
+                    sw.jobs[k].error.c_str());
+    std::fflush(stdout);
+  }
+}
+
+// the number of sweeps with a failed run (or an unwritable manifest)
+int Pool::finish()
+{
   // a run that could not start (its bed never came) is failed, not left pending
   for (const auto &[s, k] : order)
     if (Job &j = sweeps[s].jobs[k]; j.status == "pending") j.status = "failed", j.error = "not started: its bed was not made";
   close_finished();
   int failed_sweeps = 0;
   for (size_t s = 0; s < sweeps.size(); ++s) {
-    bool any = false;
+    bool any = manifest_failed;
     for (size_t k = 0; k < sweeps[s].jobs.size(); ++k)
       if (planned_in(k) && sweeps[s].jobs[k].status == "failed") any = true;
     failed_sweeps += any;
   }
   return failed_sweeps;
+}
+
+}    // namespace
+
+int run_sweep(const SweepSpec &spec, const RunnerOptions &opt) { return run_sweeps({{spec, ""}}, opt) ? 1 : 0; }
+
+int run_sweeps(const std::vector<SweepTask> &tasks, const RunnerOptions &opt)
+{
+  check_runner_inputs(tasks, opt);
+  // a file that outgrows `ulimit -f` is a write error here (EFBIG), not the runner's death;
+  // its children get the default back (spawn)
+  signal(SIGXFSZ, SIG_IGN);
+  manifest_failed = false;
+  Pool pool(tasks, opt);
+  for (const auto &t : tasks) {
+    pool.sweeps.push_back(setup_sweep(t, opt));
+    if (tasks.size() > 1) pool.sweeps.back().label = t.spec.name + "/";
+  }
+  pool.plan_links();
+  pool.plan_order();
+  for (auto &sw : pool.sweeps) {
+    int skipped = 0, planned = 0;
+    for (const auto &[s, k] : pool.order)
+      if (&pool.sweeps[s] == &sw) ++planned, skipped += sw.jobs[k].status == "skipped";
+    std::printf("granpen sweep %s: %d runs (%d already done) in %s, up to %d at once%s\n", sw.spec.name.c_str(),
+                planned, skipped, sw.dir.c_str(), opt.jobs,
+                pool.sweeps.size() > 1 ? (" (a pool of " + std::to_string(pool.sweeps.size()) + " sweeps)").c_str() : "");
+    write_manifest(sw);
+  }
+  std::fflush(stdout);
+
+  while (true) {
+    pool.start_ready();
+    pool.close_finished();
+    if (pool.running == 0) break;
+    int wstatus = 0;
+    const pid_t pid = waitpid(-1, &wstatus, WNOHANG);
+    if (pid > 0) {
+      pool.reap(pid, wstatus);
+      continue;
+    }
+    if (Pool::seconds_since(pool.last_report) >= opt.progress_seconds) pool.report_progress();
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  return pool.finish();
 }
 
 void write_slurm_script(const SweepSpec &spec, const RunnerOptions &opt, const std::string &cli,

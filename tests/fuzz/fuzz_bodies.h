@@ -39,7 +39,11 @@ inline void dump_body(const std::string &path, std::size_t size)
   try {
     granpen::DumpReader r(paths, required);
     std::uint64_t frames = 0;
+    long long last_step = 0;
     while (r.next(f)) {
+      // time never goes backwards (a file read twice does: that is rejected, not returned)
+      GRANPEN_FUZZ_CHECK(!frames || f.timestep >= last_step);
+      last_step = f.timestep;
       ++frames;
       GRANPEN_FUZZ_CHECK(f.columns.size() == f.data.size());
       GRANPEN_FUZZ_CHECK(!f.columns.empty());
@@ -59,12 +63,22 @@ inline void dump_body(const std::string &path, std::size_t size)
   }
 }
 
+// The input's size picks the row limit: the reader's own (even) or 12 rows (odd), so
+// that the limit's rejection is reached by small inputs too.
 inline void trace_body(const std::string &text)
 {
+  const std::size_t max_rows = text.size() % 2 ? 12 : granpen::kMaxTraceRows;
   try {
-    granpen::Trace t = granpen::parse_trace(text, "fuzz.csv");
+    granpen::Trace t = granpen::parse_trace(text, "fuzz.csv", max_rows);
     GRANPEN_FUZZ_CHECK(t.t.size() == t.z.size() && t.t.size() == t.F.size());
-    GRANPEN_FUZZ_CHECK(t.t.size() >= 10);
+    GRANPEN_FUZZ_CHECK(t.t.size() >= 10 && t.t.size() <= max_rows);
+    // the header validation: what every tool divides by is positive and finite
+    for (double v : {t.v0, t.D, t.g}) GRANPEN_FUZZ_CHECK(std::isfinite(v) && v > 0.0);
+    GRANPEN_FUZZ_CHECK(t.units == "cgs" || t.units == "si");
+    for (const char *k : {"d_g", "rho_g", "mu"})
+      if (t.keys.count(k)) GRANPEN_FUZZ_CHECK(std::isfinite(t.number(k, NAN)) && t.number(k, NAN) >= 0.0);
+    GRANPEN_FUZZ_CHECK(t.z.back() >= t.z.front());    // depth, not height
+    GRANPEN_FUZZ_CHECK(t.columns.size() <= granpen::kMaxTraceColumns);
     for (std::size_t i = 0; i < t.t.size(); ++i) {
       GRANPEN_FUZZ_CHECK(std::isfinite(t.t[i]) && std::isfinite(t.z[i]) && std::isfinite(t.F[i]));
       if (i) GRANPEN_FUZZ_CHECK(t.t[i] > t.t[i - 1]);
@@ -72,7 +86,9 @@ inline void trace_body(const std::string &text)
     for (const auto &kv : t.other) GRANPEN_FUZZ_CHECK(kv.second.size() == t.t.size());
     granpen::Trace c = granpen::to_cgs(t);
     GRANPEN_FUZZ_CHECK(c.units == "cgs" && c.t.size() == t.t.size());
-  } catch (granpen::InputError &) {
+    GRANPEN_FUZZ_CHECK(std::isfinite(c.v0) && std::isfinite(c.D) && std::isfinite(c.g));
+  } catch (granpen::InputError &e) {
+    GRANPEN_FUZZ_CHECK(std::string(e.what()).compare(0, 9, "fuzz.csv:") == 0);    // file and line named
   }
 }
 

@@ -715,3 +715,26 @@ TEST(DumpLammps, AgreesWithLammpsOwnValues)
     EXPECT_EQ(n, 3);
   }
 }
+
+// issue 19: timesteps that go backwards were accepted; a repeated step (a resumed run's
+// first dump) still is
+TEST(DumpReaderErrors, TimestepGoingBackwardsIsNamed)
+{
+  const std::string f0 = frame_text(1000, kCols, rows(2)), f1 = frame_text(500, kCols, rows(2));
+  // the second frame's TIMESTEP is at line 12, its step at line 13
+  expect_text_error("backwards.dump", f0 + f1,
+                    ":13: timestep 500 goes backwards \\(after timestep 1000 at .*backwards\\.dump:1\\)$");
+  EXPECT_EQ(read_all({[&] {
+                       const std::string p = tmp("repeat.dump");
+                       write_text(p, f0 + frame_text(1000, kCols, rows(2)) + frame_text(1500, kCols, rows(2)));
+                       return p;
+                     }()})
+                .size(),
+            3u);
+  // across files: given out of order (as a shell glob sorts dump.1000 after dump.500 ... )
+  const std::string a = tmp("order_a.dump"), b = tmp("order_b.dump");
+  write_text(a, f0);
+  write_text(b, f1);
+  expect_error({a, b}, "order_b\\.dump:2: timestep 500 goes backwards \\(after timestep 1000 at .*order_a\\.dump:1\\): "
+                       "dump files are read in the order given; give them in time order");
+}

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <random>
 #include <stdexcept>
@@ -292,4 +293,72 @@ TEST(TraceFit, TooFewPointsIsUndefinedAndFinite)
 
   EXPECT_THROW(fit_trace({1, 2, 3}, {1, 2}, p), std::invalid_argument);
   EXPECT_FALSE(dominant_wavelength({1, 2, 3}, {0, 1, 0}).ok);
+}
+
+// issue 19: depths repeated with a 1e-7 cm jitter made the median dz 1e-7 cm and the grid
+// about 4e7 points (a hang); the grid is now never finer than a quarter of the mean step
+TEST(TraceFit, JitteredRepeatedDepthsFinishQuicklyWithTheRightWavelength)
+{
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> jitter(-1e-7, 1e-7);
+  std::vector<double> z, y;
+  for (int i = 0; i <= 400; ++i)
+    for (int rep = 0; rep < 3; ++rep) {    // each depth three times: 2/3 of the steps are ~1e-7 cm
+      const double v = 3.0 + 0.01 * i + (rep ? jitter(rng) : 0.0);
+      z.push_back(v);
+      y.push_back(std::sin(2 * PI * v / 0.4));
+    }
+  const auto t0 = std::chrono::steady_clock::now();
+  const Wavelength w = dominant_wavelength(z, y);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_TRUE(w.ok) << w.note;
+  EXPECT_TRUE(w.grid_limited);
+  // at most 4 grid points per distinct depth step (1202 distinct depths)
+  EXPECT_LE(w.n, 4u * 1203u);
+  // 5 % of the wavelength: a bin of this 4 cm record is 0.4 / 10 wide, refined by the parabola
+  EXPECT_NEAR(w.wavelength, 0.4, 0.05 * 0.4);
+  // a few thousand points take milliseconds; the old 4e7-point grid took minutes
+  EXPECT_LT(seconds, 5.0);
+}
+
+// a grid with a large prime number of points would make kissfft O(n^2): lowered to a
+// 5-smooth count, the span kept
+TEST(TraceFit, LargePrimeGridIsLoweredToAFastSize)
+{
+  const std::size_t N = 100003;    // prime: N * N = 1e10 > kMaxFftWork
+  std::vector<double> z(N), y(N);
+  for (std::size_t i = 0; i < N; ++i) {
+    z[i] = 1e-4 * (double) i;
+    y[i] = std::sin(2 * PI * z[i] / 0.4);
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const Wavelength w = dominant_wavelength(z, y);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  ASSERT_TRUE(w.ok) << w.note;
+  EXPECT_TRUE(w.grid_limited);
+  EXPECT_LE(w.n, N);
+  std::size_t m = w.n;
+  for (std::size_t f : {2, 3, 5})
+    while (m % f == 0) m /= f;
+  EXPECT_EQ(m, 1u) << w.n << " is not 5-smooth";
+  EXPECT_GT(w.n, N * 95 / 100);    // 5-smooth numbers near 1e5 are less than 5 % apart
+  EXPECT_NEAR(w.dz * (double) (w.n - 1), z.back() - z.front(), 1e-9);    // the whole span
+  EXPECT_NEAR(w.wavelength, 0.4, 0.01 * 0.4);    // 25 periods: the bin width is 4 %, refined
+  EXPECT_LT(seconds, 5.0);
+}
+
+// more distinct depths than kMaxSpectrumPoints: the grid stops at the limit
+TEST(TraceFit, GridNeverExceedsItsLimit)
+{
+  const std::size_t N = kMaxSpectrumPoints + kMaxSpectrumPoints / 4;
+  std::vector<double> z(N), y(N);
+  for (std::size_t i = 0; i < N; ++i) {
+    z[i] = 4.0 * (double) i / (double) (N - 1);
+    y[i] = std::sin(2 * PI * z[i] / 0.4);
+  }
+  const Wavelength w = dominant_wavelength(z, y);
+  ASSERT_TRUE(w.ok) << w.note;
+  EXPECT_LE(w.n, kMaxSpectrumPoints);
+  EXPECT_TRUE(w.grid_limited);
+  EXPECT_NEAR(w.wavelength, 0.4, 0.01 * 0.4);
 }

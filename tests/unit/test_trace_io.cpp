@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -164,5 +165,148 @@ TEST(TraceIO, ResumeDropsRowsAfterTheRestartPointAndAppends)
   }
   EXPECT_EQ(dropped, 0);
   EXPECT_EQ(read_trace(path).t.size(), 10u);
+  std::remove(path.c_str());
+}
+
+// issue 19: what `check` used to accept. Each class with the exact message, file and line.
+TEST(TraceIO, RejectsHeaderValuesNoToolCanUse)
+{
+  auto header = [](const std::string &v0, const std::string &D, const std::string &g, const std::string &more = "") {
+    return "# granpen-trace v1\n# units = cgs\n# v0 = " + v0 + "\n# D = " + D + "\n# g = " + g + "\n" + more + "t,z,F\n";
+  };
+  // the column line is line 6 (7 with one more key): header errors are reported there
+  expect_rejected(header("0", "2", "981") + rows(12), "^bad\\.csv:6: header v0 = 0 must be positive \\(the push speed\\)$");
+  expect_rejected(header("-100", "2", "981") + rows(12), "^bad\\.csv:6: header v0 = -100 must be positive");
+  expect_rejected(header("100", "0", "981") + rows(12), "^bad\\.csv:6: header D = 0 must be positive \\(the rod diameter\\)$");
+  expect_rejected(header("100", "-2", "981") + rows(12), "^bad\\.csv:6: header D = -2 must be positive");
+  expect_rejected(header("100", "2", "-981") + rows(12), "^bad\\.csv:6: header g = -981 must be positive \\(gravity, downwards\\)$");
+  expect_rejected(header("100", "2", "0") + rows(12), "^bad\\.csv:6: header g = 0 must be positive");
+  expect_rejected(header("inf", "2", "981") + rows(12), "^bad\\.csv:6: header v0 'inf' is not finite$");
+  expect_rejected(header("100", "nan", "981") + rows(12), "^bad\\.csv:6: header D 'nan' is not finite$");
+  expect_rejected(header("100", "2", "981", "# d_g = 0\n") + rows(12), "^bad\\.csv:7: header d_g = 0 must be positive$");
+  expect_rejected(header("100", "2", "981", "# rho_g = three\n") + rows(12), "^bad\\.csv:7: header rho_g 'three' is not a number$");
+  expect_rejected(header("100", "2", "981", "# mu = -0.1\n") + rows(12), "^bad\\.csv:7: header mu = -0.1 must be zero or positive$");
+  EXPECT_NO_THROW(parse_trace(header("100", "2", "981", "# mu = 0\n") + rows(12), "ok.csv"));
+}
+
+TEST(TraceIO, RejectsAHeaderKeyGivenTwice)
+{
+  expect_rejected(good_header() + "# v0 = 200\nt,z,F\n" + rows(12),
+                  "^bad\\.csv:10: header key 'v0' given twice \\(first at line 3\\)$");
+  // also a key no tool reads: a file that says two things is wrong whichever is read
+  expect_rejected(good_header() + "# run = 2\nt,z,F\n" + rows(12),
+                  "^bad\\.csv:10: header key 'run' given twice \\(first at line 8\\)$");
+  expect_rejected(good_header() + "t,z,F,z\n" + rows(12), "^bad\\.csv:10: column 'z' named twice$");
+}
+
+TEST(TraceIO, RejectsACommaDecimalRowNamingItsLine)
+{
+  // a row written with a decimal comma (0,0005 for 0.0005) has more fields than columns:
+  // it used to be read as its first three fields, or dropped
+  expect_rejected(good_header() + "t,z,F\n" + rows(5) + "0,0005,0,1,1,5\n" + rows(6, 1.0),
+                  "^bad\\.csv:16: row has 6 fields, expected 3 \\(a comma used as decimal separator\\? the decimal mark is '\\.'\\)$");
+  expect_rejected(good_header() + "t,z,F\n" + rows(5) + "0.0005,0.1,1,\n" + rows(6, 1.0),
+                  "^bad\\.csv:16: row has 4 fields, expected 3");
+}
+
+TEST(TraceIO, RejectsADepthThatDecreasesOverThePush)
+{
+  // z is depth, growing as the rod goes in; a height column (sign flipped) shrinks: error
+  std::string flipped;
+  for (int i = 0; i < 12; ++i) flipped += std::to_string(i * 1e-4) + "," + std::to_string(0.5 - i * 0.01) + ",1\n";
+  expect_rejected(good_header() + "t,z,F\n" + flipped,
+                  "^bad\\.csv:22: z decreases over the push \\(0\\.5 at line 11, 0\\.39 at the last row\\): z is the depth");
+  // a constant depth (a rod held still) and a noisy depth that ends deeper are fine
+  std::string still, noisy;
+  for (int i = 0; i < 12; ++i) {
+    still += std::to_string(i * 1e-4) + ",0.2,1\n";
+    noisy += std::to_string(i * 1e-4) + "," + std::to_string(0.01 * i + (i % 2 ? -0.03 : 0.0)) + ",1\n";
+  }
+  EXPECT_NO_THROW(parse_trace(good_header() + "t,z,F\n" + still, "still.csv"));
+  EXPECT_NO_THROW(parse_trace(good_header() + "t,z,F\n" + noisy, "noisy.csv"));
+}
+
+TEST(TraceIO, ScanAgreesWithReadAndKeepsNoRows)
+{
+  const std::string path = testing::TempDir() + "granpen_scan.csv";
+  {
+    std::ofstream f(path);
+    f << "# granpen-trace v1\n# units = si\n# v0 = 1\n# D = 0.02\n# g = 9.81\nt,z,F\n";
+    for (int i = 0; i < 50; ++i) f << i * 1e-4 << "," << -0.005 + i * 1e-4 << "," << std::sin(0.3 * i) << "\n";
+  }
+  const Trace t = to_cgs(read_trace(path));
+  const TraceSummary s = to_cgs(scan_trace(path));
+  EXPECT_EQ(s.rows, t.t.size());
+  EXPECT_TRUE(s.header.t.empty());
+  EXPECT_EQ(s.header.v0, t.v0);
+  EXPECT_EQ(s.z_first, t.z.front());
+  EXPECT_EQ(s.z_last, t.z.back());
+  EXPECT_EQ(s.t_last, t.t.back());
+  EXPECT_EQ(s.F_max, *std::max_element(t.F.begin(), t.F.end()));
+  // the same rejections, from the same parser
+  {
+    std::ofstream f(path, std::ios::app);
+    f << "0.1,0,1,2\n";
+  }
+  try {
+    scan_trace(path);
+    FAIL() << "accepted";
+  } catch (InputError &e) {
+    EXPECT_TRUE(std::regex_search(e.what(), std::regex(":57: row has 4 fields, expected 3"))) << e.what();
+  }
+  std::remove(path.c_str());
+}
+
+TEST(TraceIO, ALineLongerThanTheLimitIsNamedNotAllocated)
+{
+  expect_rejected(good_header() + "t,z,F\n" + rows(5) + std::string(kMaxTraceLine + 10, '1') + "\n",
+                  "^bad\\.csv:16: line longer than 1048576 bytes: not a trace$");
+  // a long line under the limit is read whole (it is read in pieces)
+  const std::string source(20000, 'x');
+  const Trace t = parse_trace(good_header() + "# note = " + source + "\nt,z,F\n" + rows(12), "long.csv");
+  EXPECT_EQ(t.keys.at("note"), source);
+  EXPECT_EQ(t.t.size(), 12u);
+}
+
+TEST(TraceIO, MoreRowsThanTheLimitIsNamed)
+{
+  // the limit is kMaxTraceRows (10 million); a small one here, through the same code
+  try {
+    parse_trace(good_header() + "t,z,F\n" + rows(30), "big.csv", 20);
+    FAIL() << "accepted";
+  } catch (InputError &e) {
+    EXPECT_TRUE(std::regex_search(e.what(), std::regex("^big\\.csv:31: more than 20 data rows \\(the limit of a trace read into memory")))
+        << e.what();
+  }
+  EXPECT_EQ(parse_trace(good_header() + "t,z,F\n" + rows(20), "ok.csv", 20).t.size(), 20u);
+}
+
+// a kill or a full disk can cut the last row short; resuming must not keep half a row
+// (here one whose t, read as far as it goes, is before the restart point)
+TEST(TraceIO, ResumeDropsALastRowCutShort)
+{
+  const std::string path = testing::TempDir() + "granpen_resume_cut.csv";
+  TraceHeader h{"cgs", 100.0, 2.0, 981.0};
+  {
+    TraceWriter w;
+    ASSERT_TRUE(w.open(path, h, false));
+    for (int i = 0; i < 8; ++i) w.row({i * 1e-4, 0.01 * i, 5.0});
+  }
+  {
+    std::ofstream f(path, std::ios::app);
+    f << "0.0008,0.0";    // row 8 cut after its z: no F, no '\n'
+  }
+  long dropped = -1;
+  {
+    TraceWriter w;
+    ASSERT_TRUE(w.open_resume(path, h, 9e-4, dropped));
+    for (int i = 8; i < 14; ++i) w.row({i * 1e-4, 0.01 * i, 6.0});
+  }
+  EXPECT_EQ(dropped, 1);
+  const Trace t = read_trace(path);
+  ASSERT_EQ(t.t.size(), 14u);
+  EXPECT_DOUBLE_EQ(t.F[7], 5.0);
+  EXPECT_DOUBLE_EQ(t.F[8], 6.0);
+  EXPECT_DOUBLE_EQ(t.z[8], 0.08);
   std::remove(path.c_str());
 }
