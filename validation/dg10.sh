@@ -41,17 +41,8 @@ status() {
 }
 [ "$STATUS" = 1 ] && { status; exit 0; }
 
-# the pours, resumable at every chunk
-for s in 1 2 3; do
-  out=$D/beds/bed_dg10_mu0.3_s$s
-  [ -f "$out.info" ] && continue
-  res=no; [ -f "$out.pour.state" ] && res=yes
-  echo "dg10: pouring bed $s (resume: $res)"
-  nice -n 19 "$LMP" -in "$D/inputs/in.pour" -var inputs "$D/inputs" -var preset dg10 -var mu 0.3 \
-    -var seed "$s" -var out "$out" -var checkpoint 1 -var resume "$res" \
-    -log "$D/logs/bed_dg10_mu0.3_s$s.$(date +%s).log" -screen none
-done
-# the pushes: the sweep runner skips poured beds and finished pushes, resumes the others
+# the sweep runner pours the beds (pour_checkpoint = yes: resumed at their last chunk) and
+# runs the pushes; it skips what is done and resumes the rest
 for part in peak flow D; do
   nice -n 19 "$CLI" sweep "$ROOT/inputs/sweeps/dg10_$part.sweep" --jobs "$JOBS" --out "$OUT" \
     --inputs "$D/inputs" --lmp "$LMP"

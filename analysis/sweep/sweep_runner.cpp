@@ -302,6 +302,7 @@ Job make_job(const PlannedRun &r, const Sweep &sw, const RunnerOptions &opt)
     var("mu", r.mu);
     var("seed", r.seed);
     var("out", dir + "/beds/" + r.id);
+    if (spec.pour_checkpoint) var("checkpoint", "1");
     for (const auto &[k, v] : spec.set) var(k, v);
   } else {
     j.trace = dir + "/traces/" + r.id + ".csv";
@@ -330,12 +331,44 @@ Job make_job(const PlannedRun &r, const Sweep &sw, const RunnerOptions &opt)
   return j;
 }
 
+// in.pour's NAME.pour.state: LAMMPS variable commands; the phase and the saved step
+std::pair<std::string, std::string> read_pour_state(const std::string &path)
+{
+  std::ifstream in(path);
+  std::string line, phase, step;
+  while (std::getline(in, line)) {
+    std::istringstream w(line);
+    std::string cmd, name, style, value;
+    if (!(w >> cmd >> name >> style >> value) || cmd != "variable") continue;
+    if (name == "phase") phase = value;
+    if (name == "step_saved" && value.find_first_not_of("0123456789") == std::string::npos) step = value;
+  }
+  return {phase, step};
+}
+
 // What a run's files say: a finished run is skipped, an interrupted push resumed from its
 // newest complete checkpoint. `own`: this runner holds the run's lock and may move files.
 void inspect_job(Job &j, bool own)
 {
   if (j.run.kind == PlannedRun::POUR) {
-    if (exists(j.info)) j.status = "skipped", j.action = "already done";
+    if (exists(j.info)) {
+      j.status = "skipped", j.action = "already done";
+      return;
+    }
+    // a checkpointed pour (pour_checkpoint = yes): resume from the chunk its state names,
+    // when the restart it names is complete; else pour again from the start
+    const std::string state = j.info.substr(0, j.info.size() - 5) + ".pour.state";
+    if (own && exists(state) && std::find(j.argv.begin(), j.argv.end(), "checkpoint") != j.argv.end()) {
+      const auto kv = read_pour_state(state);
+      const std::string restart = j.info.substr(0, j.info.size() - 5) + ".pour." + kv.second + ".restart";
+      if (!kv.second.empty() && complete_checkpoint(restart)) {
+        j.argv.insert(j.argv.end() - 4, {"-var", "resume", "yes"});
+        j.action = "resumed at step " + kv.second + " (" + kv.first + ")";
+      } else {
+        std::remove(state.c_str());
+        j.action = "started (its last checkpoint was incomplete)";
+      }
+    }
     return;
   }
   const std::string ca = j.trace + ".a.restart", cb = j.trace + ".b.restart";

@@ -105,6 +105,9 @@ SweepSpec parse_sweep(const std::string &text, const std::string &path,
       if (observe_exists && !observe_exists(vals[0]))
         fail_at(path, lineno, "unknown observe set '" + vals[0] + "' (no inputs/observe/" + vals[0] + ".lmp)");
       spec.observe = vals[0];
+    } else if (key == "pour_checkpoint") {
+      if (one() != "yes" && vals[0] != "no") fail_at(path, lineno, "pour_checkpoint '" + vals[0] + "' is not yes or no");
+      spec.pour_checkpoint = vals[0] == "yes";
     } else if (key == "set" || key == "push_set") {
       auto &dst = key == "set" ? spec.set : spec.push_set;
       for (const auto &v : vals) {
@@ -122,7 +125,7 @@ SweepSpec parse_sweep(const std::string &text, const std::string &path,
         dst.emplace_back(name, value);
       }
     } else {
-      fail_at(path, lineno, "unknown key '" + key + "' (known: name preset mu seeds v0 g D depth mu_push observe set push_set)");
+      fail_at(path, lineno, "unknown key '" + key + "' (known: name preset mu seeds v0 g D depth mu_push observe set push_set pour_checkpoint)");
     }
   }
   if (spec.name.empty()) fail_at(path, lineno, "missing 'name'");

@@ -16,6 +16,8 @@
 //   set     = poly=0.1 walls=1  deck variables (-var NAME VALUE) of every pour and push: the
 //                               model knobs of in.pour and inputs/model/contact.lmp
 //   push_set = ramp=0.3         deck variables of the pushes only (the measurement chain)
+//   pour_checkpoint = yes       pours checkpoint every settling chunk and resume from it
+//                               (in.pour -var checkpoint 1; for pours of hours: dg10)
 // Every value is checked: numbers are parsed whole as finite positive numbers, names
 // against a safe character set; no value ever reaches a shell.
 #ifndef GRANPEN_SWEEP_SPEC_H
@@ -37,6 +39,7 @@ struct SweepSpec {
   std::string depth;                 // empty: the preset's
   std::string observe = "none";
   std::vector<std::pair<std::string, std::string>> set, push_set;    // NAME, VALUE
+  bool pour_checkpoint = false;
 };
 
 struct PlannedRun {
