@@ -1,6 +1,10 @@
 // granpen calibration SWEEP_DIR: the friction-calibration table of a sweep folder,
 // phi_0 and k_z against mu (core/calibration.h, core/trace_fit.h, io/bed_info.h).
 #include "args.h"
+#include "atomic_file.h"
+#include "command.h"
+#include "json_writer.h"
+#include "plot_writer.h"
 #include "json_text.h"
 #include "bed_info.h"
 #include "calibration.h"
@@ -9,22 +13,16 @@
 #include "trace_reader.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
-#include <fcntl.h>
-#include <sys/types.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 using granpen::json_number;
 using granpen::json_string;
@@ -110,14 +108,6 @@ std::string markdown(const std::vector<CalibrationRow> &rows, double zmin, doubl
   return o;
 }
 
-bool write_file(const fs::path &path, const std::string &text)
-{
-  std::ofstream o(path, std::ios::binary);
-  if (!o) return false;
-  o << text;
-  return (bool) o.flush();
-}
-
 std::string csv_table(const std::vector<CalibrationRow> &rows)
 {
   std::string o = "mu,n_beds,phi_0_mean,phi_0_sd,n_pushes,v0,k_z_mean,k_z_sd,alpha_mean,alpha_sd\n";
@@ -128,38 +118,28 @@ std::string csv_table(const std::vector<CalibrationRow> &rows)
   return o;
 }
 
-std::string json_table(const std::vector<CalibrationRow> &rows, const std::string &sweep, double zmin,
-                       double zmax, const std::vector<std::string> &problems)
+granpen::Json json_table(const std::vector<CalibrationRow> &rows, const std::string &sweep, double zmin,
+                         double zmax, const std::vector<std::string> &problems)
 {
-  std::ostringstream o;
-  auto stat = [&](const granpen::Stat &s) {
-    return "{\"n\": " + std::to_string(s.n) + ", \"mean\": " + num(s.mean) + ", \"sd\": " + num(s.sd) + "}";
-  };
-  o << "{\n  \"tool\": \"granpen calibration\",\n  \"sweep\": " << json_string(sweep) << ",\n"
-    << "  \"units\": {\"k_z\": \"dyne/cm\", \"v0\": \"cm/s\", \"z\": \"cm\"},\n"
-    << "  \"window\": {\"zmin\": " << num(zmin) << ", \"zmax\": " << num(zmax) << "},\n"
-    << "  \"sd\": \"sample standard deviation (n - 1), 0 for one value\",\n  \"rows\": [";
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const auto &r = rows[i];
-    o << (i ? ",\n" : "\n") << "    {\"mu\": " << num(r.mu) << ", \"v0\": " << num(r.v0)
-      << ", \"phi_0\": " << stat(r.phi_0) << ", \"k_z\": " << stat(r.k_z) << ", \"alpha\": " << stat(r.alpha)
-      << ",\n     \"beds\": [";
-    for (std::size_t k = 0; k < r.beds.size(); ++k)
-      o << (k ? ", " : "") << "{\"name\": " << json_string(r.beds[k].name) << ", \"seed\": " << num(r.beds[k].seed)
-        << ", \"phi_0\": " << num(r.beds[k].phi_0) << "}";
-    o << "],\n     \"pushes\": [";
-    for (std::size_t k = 0; k < r.pushes.size(); ++k) {
-      const auto &p = r.pushes[k];
-      o << (k ? ",\n                 " : "") << "{\"trace\": " << json_string(p.name) << ", \"bed\": "
-        << json_string(p.bed) << ", \"seed\": " << num(p.seed) << ", \"k_z\": " << num(p.k_z)
-        << ", \"alpha\": " << num(p.alpha) << "}";
-    }
-    o << "]}";
+  const auto n = [](double v) { return granpen::json_rounded("%.10g", v); };
+  const auto stat = [&](const granpen::Stat &s) { return granpen::Json{{"n", s.n}, {"mean", n(s.mean)}, {"sd", n(s.sd)}}; };
+  granpen::Json j;
+  j["tool"] = "granpen calibration";
+  j["sweep"] = sweep;
+  j["units"] = {{"k_z", "dyne/cm"}, {"v0", "cm/s"}, {"z", "cm"}};
+  j["window"] = {{"zmin", n(zmin)}, {"zmax", n(zmax)}};
+  j["sd"] = "sample standard deviation (n - 1), 0 for one value";
+  j["rows"] = granpen::Json::array();
+  for (const auto &r : rows) {
+    granpen::Json row = {{"mu", n(r.mu)}, {"v0", n(r.v0)}, {"phi_0", stat(r.phi_0)}, {"k_z", stat(r.k_z)},
+                         {"alpha", stat(r.alpha)}, {"beds", granpen::Json::array()}, {"pushes", granpen::Json::array()}};
+    for (const auto &b : r.beds) row["beds"].push_back({{"name", b.name}, {"seed", n(b.seed)}, {"phi_0", n(b.phi_0)}});
+    for (const auto &p : r.pushes)
+      row["pushes"].push_back({{"trace", p.name}, {"bed", p.bed}, {"seed", n(p.seed)}, {"k_z", n(p.k_z)}, {"alpha", n(p.alpha)}});
+    j["rows"].push_back(row);
   }
-  o << (rows.empty() ? "],\n" : "\n  ],\n") << "  \"problems\": [";
-  for (std::size_t i = 0; i < problems.size(); ++i) o << (i ? ",\n    " : "\n    ") << json_string(problems[i]);
-  o << (problems.empty() ? "]\n}\n" : "\n  ]\n}\n");
-  return o.str();
+  j["problems"] = problems;
+  return j;
 }
 
 // gnuplot script with the data inline (datablocks); run in the output folder
@@ -232,95 +212,24 @@ std::string gnuplot_script(const std::vector<CalibrationRow> &rows)
   return o.str();
 }
 
-// runs `gnuplot SCRIPT` in DIR without a shell; returns "" on success, else why not
-// (missing set when gnuplot is not installed)
-std::string run_gnuplot(const fs::path &dir, const std::string &script, bool &missing)
-{
-  missing = false;
-  int fds[2];
-  if (pipe(fds) != 0) return std::string("pipe failed: ") + std::strerror(errno);
-  fcntl(fds[1], F_SETFD, FD_CLOEXEC);
-  std::string prog = "gnuplot", arg = script;
-  std::vector<char *> args = {&prog[0], &arg[0], nullptr};
-  const std::string where = dir.string();
-  std::fflush(stdout);
-  std::fflush(stderr);
-  const pid_t pid = fork();
-  if (pid < 0) {
-    close(fds[0]);
-    close(fds[1]);
-    return std::string("fork failed: ") + std::strerror(errno);
-  }
-  if (pid == 0) {
-    close(fds[0]);
-    int msg[2] = {0, 0};    // {stage: 0 chdir, 1 exec; errno}
-    if (chdir(where.c_str()) != 0) msg[1] = errno;
-    else {
-      execvp(args[0], args.data());
-      msg[0] = 1;
-      msg[1] = errno;
-    }
-    if (write(fds[1], msg, sizeof msg) < 0) {
-    }
-    _exit(127);
-  }
-  close(fds[1]);
-  int msg[2] = {0, 0};
-  ssize_t got;
-  do got = read(fds[0], msg, sizeof msg);
-  while (got < 0 && errno == EINTR);
-  close(fds[0]);
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  if (got == (ssize_t) sizeof msg) {
-    if (msg[0] == 0) return "cannot enter " + where + ": " + std::strerror(msg[1]);
-    if (msg[1] == ENOENT) {
-      missing = true;
-      return "gnuplot is missing (not found on PATH)";
-    }
-    return std::string("cannot run gnuplot: ") + std::strerror(msg[1]);
-  }
-  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return "";
-  if (WIFEXITED(status)) return "gnuplot failed (exit status " + std::to_string(WEXITSTATUS(status)) + ")";
-  return "gnuplot was killed by signal " + std::to_string(WIFSIGNALED(status) ? WTERMSIG(status) : 0);
-}
-
-const granpen::cli::Usage usage_error{"calibration", HELP};
-
 }    // namespace
 
 int granpen::cli::calibration(int argc, char **argv)
 {
-  if (argc < 1) return usage_error.no_arguments();
+  Command cmd("calibration", HELP);
   double zmin = 1.0, zmax = 3.0;
   std::string sweep, out;
-  for (int i = 0; i < argc; ++i) {
-    std::string a = argv[i];
-    if (a == "--help" || a == "-h") return usage_error.help_asked();
-    if (is_option(a)) {
-      std::string name, value;
-      if (!split_option(a, name, value) && (name == "--zmin" || name == "--zmax" || name == "--out") &&
-          !next_value(argc, argv, i, value))
-        return usage_error(needs_value(name));
-      if (name == "--out") {
-        if (value.empty()) return usage_error("--out needs a folder");
-        out = value;
-      } else if (name == "--zmin" || name == "--zmax") {
-        double v;
-        if (!number_arg(value, v)) return usage_error(not_a_number(name, value));
-        (name == "--zmin" ? zmin : zmax) = v;
-      } else {
-        return usage_error(unknown_option(name));
-      }
-      continue;
-    }
-    if (!sweep.empty()) return usage_error("one SWEEP_DIR only ('" + sweep + "' and '" + a + "')");
-    sweep = a;
-  }
-  if (sweep.empty()) return usage_error("no SWEEP_DIR given");
-  if (!(zmin < zmax)) return usage_error("--zmin must be below --zmax");
+  cmd.app.add_option("sweep", sweep, "the sweep folder (beds/, traces/)")->required();
+  cmd.number("--zmin", zmin, "window start, cm");
+  cmd.number("--zmax", zmax, "window end, cm");
+  cmd.app.add_option("--out", out, "output folder (default SWEEP_DIR)")->check(CLI::Validator(
+      [](std::string &v) { return v.empty() ? std::string("needs a folder") : std::string(); }, "DIR"));
+  if (!cmd.parse(argc, argv)) return EXIT_OK;
+  if (!(zmin < zmax)) throw UsageError("--zmin must be below --zmax");
   if (out.empty()) out = sweep;
+  // nothing is created for a sweep that cannot be read
+  std::error_code dir_ec;
+  if (!fs::is_directory(sweep, dir_ec)) throw InputError(sweep + ": not a readable folder (a sweep folder holds beds/ and traces/)");
 
   std::vector<std::string> problems;
   auto problem = [&](const std::string &msg) {
@@ -422,27 +331,22 @@ int granpen::cli::calibration(int argc, char **argv)
   std::fputs(md.c_str(), stdout);
   for (const auto &n : notes) std::printf("note: %s\n", n.c_str());
 
-  std::error_code ec;
-  fs::create_directories(out, ec);
+  make_output_dir(out);
   const fs::path od(out);
   int status = problems.empty() ? 0 : 1;
   const std::string title = "# Friction calibration: " + md_cell(sweep) + "\n\n";
-  for (const auto &[name, text] : std::vector<std::pair<std::string, std::string>>{
-           {"calibration.csv", csv_table(rows)},
-           {"calibration.json", json_table(rows, sweep, zmin, zmax, problems)},
-           {"calibration.md", title + md}}) {
-    if (write_file(od / name, text)) std::printf("wrote %s\n", (od / name).c_str());
-    else {
-      std::fprintf(stderr, "granpen calibration: cannot write %s\n", (od / name).c_str());
-      status = 1;
-    }
-  }
-  if (!write_file(od / "calibration.gp", gnuplot_script(rows))) {
-    std::fprintf(stderr, "granpen calibration: cannot write %s\n", (od / "calibration.gp").c_str());
-    return 1;
-  }
+  const std::vector<std::pair<std::string, std::string>> outputs = {
+      {(od / "calibration.csv").string(), csv_table(rows)},
+      {(od / "calibration.json").string(), json_layout(json_table(rows, sweep, zmin, zmax, problems), 2)},
+      {(od / "calibration.md").string(), title + md},
+      {(od / "calibration.gp").string(), gnuplot_script(rows)}};
+  std::vector<std::string> inputs = info_files;
+  inputs.insert(inputs.end(), trace_files.begin(), trace_files.end());
+  for (const auto &o : outputs) refuse_overwriting_inputs(o.first, "--out", inputs);
+  write_files_atomic(outputs);
+  for (std::size_t k = 0; k + 1 < outputs.size(); ++k) std::printf("wrote %s\n", outputs[k].first.c_str());
   bool missing = false;
-  const std::string why = run_gnuplot(od, "calibration.gp", missing);
+  const std::string why = granpen::run_gnuplot(od.string(), "calibration.gp", missing);
   if (!why.empty() && !missing) status = 1;
   if (why.empty())
     std::printf("wrote %s and %s (script %s)\n", (od / "calibration_phi0.png").c_str(),

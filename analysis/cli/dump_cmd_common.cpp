@@ -1,14 +1,13 @@
 // granpen flow / granpen momentum: shared parts (dump_cmd_common.h).
 #include "dump_cmd_common.h"
 
+#include "atomic_file.h"
 #include "json_text.h"
 #include "text_util.h"
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <unistd.h>    // getpid
 
 namespace granpen {
 namespace cli {
@@ -146,37 +145,23 @@ std::string js(double v) { return json_number("%.10g", v); }
 bool write_outputs(const std::string &dir, const std::vector<std::pair<std::string, std::string>> &files,
                    std::string &message)
 {
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (ec) {
-    message = "cannot create " + dir + ": " + ec.message();
+  try {
+    make_output_dir(dir);
+    std::vector<std::pair<std::string, std::string>> paths;
+    for (const auto &f : files) paths.emplace_back((fs::path(dir) / f.first).string(), f.second);
+    write_files_atomic(paths);
+  } catch (const OutputError &e) {
+    message = e.what();
     return false;
   }
-  std::vector<fs::path> tmps;
-  auto cleanup = [&]() {
-    for (const auto &t : tmps) fs::remove(t, ec);
-  };
-  const std::string tag = ".tmp" + std::to_string((long) getpid());
-  for (const auto &f : files) {
-    const fs::path tmp = fs::path(dir) / ("." + f.first + tag);
-    tmps.push_back(tmp);
-    std::ofstream o(tmp, std::ios::binary);
-    o << f.second;
-    if (!o.flush()) {
-      message = "cannot write " + (fs::path(dir) / f.first).string();
-      cleanup();
-      return false;
-    }
-  }
-  for (std::size_t k = 0; k < files.size(); ++k) {
-    fs::rename(tmps[k], fs::path(dir) / files[k].first, ec);
-    if (ec) {
-      message = "cannot write " + (fs::path(dir) / files[k].first).string() + ": " + ec.message();
-      cleanup();
-      return false;
-    }
-  }
   return true;
+}
+
+void refuse_outputs_over_inputs(const std::string &dir, const std::vector<const char *> &names, const ParsedArgs &args)
+{
+  std::vector<std::string> inputs = args.positional;
+  if (args.has("--trace")) inputs.push_back(args.value("--trace", ""));
+  for (const char *name : names) refuse_overwriting_inputs((fs::path(dir) / name).string(), "--out", inputs);
 }
 
 }    // namespace cli

@@ -75,11 +75,14 @@ void report_progress(DumpReader &reader, const std::string &tool);
 std::string csv_num(double v);
 std::string js(double v);
 
-// Writes every (name, text) into dir (made if missing) through temporary files renamed
-// into place at the end; on a failure removes what it wrote and returns false with a
-// message.
+// Writes every (name, text) into dir (made if missing) through io/atomic_file (every
+// temporary written before the first rename); false with a message naming the path.
 bool write_outputs(const std::string &dir, const std::vector<std::pair<std::string, std::string>> &files,
                    std::string &message);
+
+// Throws OutputError when dir/NAME for one of names is one of the inputs (the dumps,
+// args.positional, and --trace): checked before anything is read.
+void refuse_outputs_over_inputs(const std::string &dir, const std::vector<const char *> &names, const ParsedArgs &args);
 
 }    // namespace cli
 }    // namespace granpen

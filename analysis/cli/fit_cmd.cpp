@@ -1,7 +1,10 @@
 // granpen fit TRACE...: the paper's observables of each force trace: the depth term
 // k_z and alpha, the transient peak, the fluctuation wavelength (core/trace_fit.h).
 #include "args.h"
+#include "atomic_file.h"
+#include "command.h"
 #include "json_text.h"
+#include "json_writer.h"
 #include "trace_files.h"
 #include "subcommands.h"
 #include "trace_fit.h"
@@ -11,7 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
+#include <sstream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -133,60 +136,51 @@ void print_result(const Result &r)
   for (const auto &n : f.notes) std::printf("  note: %s\n", n.c_str());
 }
 
-bool write_json(const std::string &path, const std::vector<Result> &results,
-                const std::vector<Failure> &failures, double zmin, double zmax, double tmin)
+granpen::Json fit_json(const Result &r)
 {
-  std::ofstream o(path, std::ios::binary);
-  if (!o) return false;
-  o << "{\n  \"tool\": \"granpen fit\",\n"
-    << "  \"units\": {\"z\": \"cm\", \"F\": \"dyne\", \"k_z\": \"dyne/cm\", \"v0\": \"cm/s\", "
-       "\"g\": \"cm/s^2\", \"rho_g\": \"g/cm^3\", \"wavelength\": \"cm\"},\n"
-    << "  \"window\": {\"zmin\": " << (tmin > 0 ? std::string("null") : num(zmin))
-    << ", \"tmin\": " << (tmin > 0 ? num(tmin) : std::string("null")) << ", \"zmax\": " << (std::isfinite(zmax) ? num(zmax) : std::string("null")) << "},\n"
-    << "  \"traces\": [";
-  auto b = [](bool v) { return v ? "true" : "false"; };
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    const Result &r = results[i];
-    const TraceFit &f = r.fit;
-    o << (i ? ",\n" : "\n") << "    {\"file\": " << json_string(r.file) << ", \"v0\": " << num(r.v0)
-      << ", \"D\": " << num(r.D) << ", \"g\": " << num(r.g) << ",\n"
-      << "     \"mu\": " << num(r.mu) << ", \"mu_source\": " << json_string(r.mu_src)
-      << ", \"rho_g\": " << num(r.rho_g) << ", \"rho_g_source\": " << json_string(r.rho_src)
-      << ", \"d_g\": " << num(r.d_g) << ", \"d_g_source\": " << json_string(r.dg_src) << ",\n"
-      << "     \"zlo\": " << num(f.zlo) << ", \"zhi\": " << num(f.zhi)
-      << ", \"n_window\": " << f.n_window << ", \"z_first\": " << num(f.z_first)
-      << ", \"z_last\": " << num(f.z_last) << ",\n"
-      << "     \"slope_ok\": " << b(f.slope_ok) << ", \"k_z\": " << num(f.k_z)
-      << ", \"k_z_se\": " << num(f.k_z_se) << ", \"intercept\": " << num(f.intercept)
-      << ", \"intercept_se\": " << num(f.intercept_se) << ", \"rms\": " << num(f.rms) << ",\n"
-      << "     \"alpha_ok\": " << b(f.alpha_ok) << ", \"alpha\": " << num(f.alpha)
-      << ", \"alpha_se\": " << num(f.alpha_se) << ", \"k_z0\": " << num(f.k_z0) << ", \"k_z0_se\": " << num(f.k_z0_se)
-      << ", \"alpha0\": " << num(f.alpha0) << ", \"alpha0_se\": " << num(f.alpha0_se) << ",\n"
-      << "     \"peak_ok\": " << b(f.peak_ok) << ", \"n_peak\": " << f.n_peak
-      << ", \"peak_zmax\": " << num(f.peak_zmax) << ", \"peak_F\": " << num(f.peak_F)
-      << ", \"peak_z\": " << num(f.peak_z) << ",\n"
-      << "     \"wavelength_ok\": " << b(f.wavelength_ok) << ", \"wavelength\": " << num(f.wavelength)
-      << ", \"wavelength_d_g\": " << num(f.wavelength_dg) << ", \"spectrum\": {\"dz\": "
-      << num(f.spectrum.dz) << ", \"n\": " << f.spectrum.n << ", \"length\": "
-      << num(f.spectrum.length) << ", \"bin\": " << f.spectrum.bin
-      << ", \"power_fraction\": " << num(f.spectrum.power_fraction)
-      << ", \"lowest_bin\": " << b(f.spectrum.lowest_bin) << "},\n"
-      << "     \"notes\": [";
-    for (std::size_t k = 0; k < f.notes.size(); ++k) o << (k ? ", " : "") << json_string(f.notes[k]);
-    o << "]}";
-  }
-  o << (results.empty() ? "],\n" : "\n  ],\n") << "  \"errors\": [";
-  for (std::size_t i = 0; i < failures.size(); ++i)
-    o << (i ? ",\n" : "\n") << "    {\"file\": " << json_string(failures[i].file)
-      << ", \"message\": " << json_string(failures[i].message) << "}";
-  o << (failures.empty() ? "]\n}\n" : "\n  ]\n}\n");
-  return (bool) o.flush();
+  const TraceFit &f = r.fit;
+  const auto n = [](double v) { return granpen::json_rounded("%.10g", v); };
+  granpen::Json t;
+  t["file"] = r.file, t["v0"] = n(r.v0), t["D"] = n(r.D), t["g"] = n(r.g);
+  t["mu"] = n(r.mu), t["mu_source"] = r.mu_src, t["rho_g"] = n(r.rho_g), t["rho_g_source"] = r.rho_src;
+  t["d_g"] = n(r.d_g), t["d_g_source"] = r.dg_src;
+  t["zlo"] = n(f.zlo), t["zhi"] = n(f.zhi), t["n_window"] = f.n_window, t["z_first"] = n(f.z_first);
+  t["z_last"] = n(f.z_last);
+  t["slope_ok"] = f.slope_ok, t["k_z"] = n(f.k_z), t["k_z_se"] = n(f.k_z_se), t["intercept"] = n(f.intercept);
+  t["intercept_se"] = n(f.intercept_se), t["rms"] = n(f.rms);
+  t["alpha_ok"] = f.alpha_ok, t["alpha"] = n(f.alpha), t["alpha_se"] = n(f.alpha_se), t["k_z0"] = n(f.k_z0);
+  t["k_z0_se"] = n(f.k_z0_se), t["alpha0"] = n(f.alpha0), t["alpha0_se"] = n(f.alpha0_se);
+  t["peak_ok"] = f.peak_ok, t["n_peak"] = f.n_peak, t["peak_zmax"] = n(f.peak_zmax), t["peak_F"] = n(f.peak_F);
+  t["peak_z"] = n(f.peak_z);
+  t["wavelength_ok"] = f.wavelength_ok, t["wavelength"] = n(f.wavelength), t["wavelength_d_g"] = n(f.wavelength_dg);
+  t["spectrum"] = {{"dz", n(f.spectrum.dz)}, {"n", f.spectrum.n}, {"length", n(f.spectrum.length)},
+                   {"bin", f.spectrum.bin}, {"power_fraction", n(f.spectrum.power_fraction)},
+                   {"lowest_bin", f.spectrum.lowest_bin}};
+  t["notes"] = f.notes;
+  return t;
 }
 
-bool write_csv(const std::string &path, const std::vector<Result> &results)
+// every result, units cgs; undefined values 0 with a false *_ok flag
+granpen::Json results_json(const std::vector<Result> &results, const std::vector<Failure> &failures, double zmin,
+                           double zmax, double tmin)
 {
-  std::ofstream o(path, std::ios::binary);
-  if (!o) return false;
+  const auto n = [](double v) { return granpen::json_rounded("%.10g", v); };
+  granpen::Json j;
+  j["tool"] = "granpen fit";
+  j["units"] = {{"z", "cm"}, {"F", "dyne"}, {"k_z", "dyne/cm"}, {"v0", "cm/s"}, {"g", "cm/s^2"}, {"rho_g", "g/cm^3"},
+                {"wavelength", "cm"}};
+  j["window"] = {{"zmin", tmin > 0 ? granpen::Json() : n(zmin)}, {"tmin", tmin > 0 ? n(tmin) : granpen::Json()},
+                 {"zmax", std::isfinite(zmax) ? n(zmax) : granpen::Json()}};
+  j["traces"] = granpen::Json::array();
+  for (const auto &r : results) j["traces"].push_back(fit_json(r));
+  j["errors"] = granpen::Json::array();
+  for (const auto &f : failures) j["errors"].push_back({{"file", f.file}, {"message", f.message}});
+  return j;
+}
+
+std::string results_csv(const std::vector<Result> &results)
+{
+  std::ostringstream o;
   o << "file,v0,D,g,mu,mu_source,rho_g,rho_g_source,d_g,d_g_source,zlo,zhi,n_window,z_first,z_last,"
        "slope_ok,k_z,k_z_se,intercept,intercept_se,rms,alpha_ok,alpha,alpha_se,"
        "peak_ok,peak_F,peak_z,wavelength_ok,wavelength,wavelength_d_g,spectrum_length,power_fraction,"
@@ -204,54 +198,33 @@ bool write_csv(const std::string &path, const std::vector<Result> &results)
       << n(f.spectrum.length) << ',' << n(f.spectrum.power_fraction) << ',' << n(f.k_z0) << ',' << n(f.k_z0_se) << ','
       << n(f.alpha0) << ',' << n(f.alpha0_se) << '\n';
   }
-  return (bool) o.flush();
+  return o.str();
 }
-
-const granpen::cli::Usage usage_error{"fit", HELP};
 
 }    // namespace
 
 int granpen::cli::fit(int argc, char **argv)
 {
-  if (argc < 1) return usage_error.no_arguments();
+  Command cmd("fit", HELP);
   double zmin = 3.0, zmax = std::numeric_limits<double>::infinity();
   double mu_opt = 0.0, rho_opt = 0.0, tmin = -1.0;
-  bool have_mu = false, have_rho = false, have_zmin = false;
   std::string json_path, csv_path;
   std::vector<std::string> inputs;
-
-  for (int i = 0; i < argc; ++i) {
-    std::string a = argv[i];
-    if (a == "--help" || a == "-h") return usage_error.help_asked();
-    if (is_option(a)) {
-      std::string name, value;
-      const bool inline_value = split_option(a, name, value);
-      if (name != "--zmin" && name != "--zmax" && name != "--tmin" && name != "--mu" && name != "--rho" &&
-          name != "--json" && name != "--csv")
-        return usage_error(unknown_option(name));
-      if (!inline_value && !next_value(argc, argv, i, value)) return usage_error(needs_value(name));
-      if (name == "--json" || name == "--csv") {
-        if (value.empty()) return usage_error(name + " needs a file name");
-        (name == "--json" ? json_path : csv_path) = value;
-        continue;
-      }
-      double v;
-      if (!number_arg(value, v)) return usage_error(not_a_number(name, value));
-      if (name == "--zmin") zmin = v, have_zmin = true;
-      else if (name == "--tmin") tmin = v;
-      else if (name == "--zmax") zmax = v;
-      else if (name == "--mu") mu_opt = v, have_mu = true;
-      else rho_opt = v, have_rho = true;
-      continue;
-    }
-    inputs.push_back(a);
-  }
-  if (inputs.empty()) return usage_error("no trace given");
-  if (have_zmin && tmin >= 0) return usage_error("give --zmin or --tmin, not both");
-  if (tmin >= 0 && !(tmin > 0)) return usage_error("--tmin must be positive");
-  if (tmin < 0 && !(zmin < zmax)) return usage_error("--zmin must be below --zmax");
-  if (have_mu && !(mu_opt > 0)) return usage_error("--mu must be positive");
-  if (have_rho && !(rho_opt > 0)) return usage_error("--rho must be positive");
+  auto &app = cmd.app;
+  app.add_option("traces", inputs, "trace files, or folders of them")->required();
+  auto *zmin_opt = cmd.number("--zmin", zmin, "window start, cm");
+  auto *tmin_opt = app.add_option("--tmin", tmin, "window start by t~")->check(positive_number());
+  cmd.number("--zmax", zmax, "window end, cm");
+  auto *mu = app.add_option("--mu", mu_opt, "grain friction for alpha")->check(positive_number());
+  auto *rho = app.add_option("--rho", rho_opt, "grain density for alpha, g/cm^3")->check(positive_number());
+  app.add_option("--json", json_path, "write the results as JSON")->check(CLI::Validator(
+      [](std::string &v) { return v.empty() ? std::string("needs a file name") : std::string(); }, "FILE"));
+  app.add_option("--csv", csv_path, "write one CSV row per trace")->check(CLI::Validator(
+      [](std::string &v) { return v.empty() ? std::string("needs a file name") : std::string(); }, "FILE"));
+  if (!cmd.parse(argc, argv)) return EXIT_OK;
+  const bool have_mu = mu->count() > 0, have_rho = rho->count() > 0;
+  if (zmin_opt->count() > 0 && tmin_opt->count() > 0) throw UsageError("give --zmin or --tmin, not both");
+  if (!(tmin_opt->count() > 0) && !(zmin < zmax)) throw UsageError("--zmin must be below --zmax");
 
   std::vector<Result> results;
   std::vector<Failure> failures;
@@ -260,6 +233,8 @@ int granpen::cli::fit(int argc, char **argv)
   const std::vector<std::string> files = expand_trace_paths(inputs, problems);
   for (const auto &m : problems) failures.push_back({m.substr(0, m.find(": ")), m});
   for (const auto &f : failures) std::fprintf(stderr, "granpen fit: %s\n", f.message.c_str());
+  for (const auto &o : {std::make_pair("--json", json_path), std::make_pair("--csv", csv_path)})
+    if (!o.second.empty()) refuse_overwriting_inputs(o.second, o.first, files);
 
   std::printf("granpen fit: window %s; %zu trace%s\n",
               tmin > 0 ? ("t~ >= " + json_number("%g", tmin) + (std::isfinite(zmax) ? ", z <= " + json_number("%g", zmax) + " cm" : std::string())).c_str()
@@ -304,12 +279,12 @@ int granpen::cli::fit(int argc, char **argv)
   if (!failures.empty())
     std::printf("granpen fit: %zu input%s failed (see above)\n", failures.size(), failures.size() == 1 ? "" : "s");
   if (!json_path.empty()) {
-    if (write_json(json_path, results, failures, zmin, zmax, tmin)) std::printf("wrote %s\n", json_path.c_str());
-    else std::fprintf(stderr, "granpen fit: cannot write %s\n", json_path.c_str()), status = 1;
+    write_json(json_path, results_json(results, failures, zmin, zmax, tmin), 2);
+    std::printf("wrote %s\n", json_path.c_str());
   }
   if (!csv_path.empty()) {
-    if (write_csv(csv_path, results)) std::printf("wrote %s\n", csv_path.c_str());
-    else std::fprintf(stderr, "granpen fit: cannot write %s\n", csv_path.c_str()), status = 1;
+    write_file_atomic(csv_path, results_csv(results));
+    std::printf("wrote %s\n", csv_path.c_str());
   }
   return status;
 }

@@ -130,17 +130,22 @@ std::string fit_text(const ExpFit &f, double D)
 
 int granpen::cli::flow(int argc, char **argv)
 {
-  if (argc < 1) return usage_error.no_arguments();
-  const std::map<std::string, int> spec = {
-      {"--trace", 1}, {"--out", 1}, {"--rod-type", 1}, {"--axis", 2}, {"--tip", 1}, {"--D", 1},
-      {"--dg", 1}, {"--rho", 1}, {"--v0", 1}, {"--g", 1}, {"--zs", 1}, {"--dr", 1}, {"--dz", 1},
-      {"--rmax", 1}, {"--zlo", 1}, {"--zhi", 1}, {"--voronoi", 1}, {"--stress", 1}, {"--periodic", 1},
-      {"--profile-radius", 1}, {"--strip", 2}, {"--annulus", 2}, {"--annulus-top", 1}, {"--edge", 2},
-      {"--steps", 1}, {"--rod-cells", 0}};
+  Command cmd("flow", HELP);
+  static const std::vector<OptionSpec> spec = {
+      {"--trace", 1, "the push's force trace"}, {"--out", 1, "output folder"}, {"--rod-type", 1, "atom type of the rod"},
+      {"--axis", 2, "fixed rod axis X Y"}, {"--tip", 1, "fixed tip height"}, {"--D", 1, "rod diameter"},
+      {"--dg", 1, "grain diameter"}, {"--rho", 1, "grain density"}, {"--v0", 1, "push speed"}, {"--g", 1, "gravity"},
+      {"--zs", 1, "bed surface height"}, {"--dr", 1, "radial bin size"}, {"--dz", 1, "vertical bin size"},
+      {"--rmax", 1, "outer radius of the bins"}, {"--zlo", 1, "bin range below the tip"},
+      {"--zhi", 1, "bin range above the tip"}, {"--voronoi", 1, "auto, a column, voro++ or none"},
+      {"--stress", 1, "auto, a compute ID or none"}, {"--periodic", 1, "xy, x, y or none"},
+      {"--profile-radius", 1, "cylinder radius of the profile below the rod"}, {"--strip", 2, "strip distances A B"},
+      {"--annulus", 2, "annulus radii R1 R2"}, {"--annulus-top", 1, "annulus starts H below the surface"},
+      {"--edge", 2, "edge bin widths WR WZ"}, {"--steps", 1, "frames with timesteps A[:B]"},
+      {"--rod-cells", 0, "with voro++: the rod's spheres take part in the tessellation"}};
   ParsedArgs args;
+  if (!parse_table(cmd, spec, "dumps", argc, argv, args)) return EXIT_OK;
   std::string msg;
-  if (!parse_args(argc, argv, spec, args, msg)) return usage_error(msg);
-  if (args.help) return usage_error.help_asked();
   if (args.positional.empty()) return usage_error("no dump given");
 
   if (!args.read_numbers({"--trace", "--out", "--voronoi", "--stress", "--periodic", "--steps"}, msg) ||
@@ -152,6 +157,7 @@ int granpen::cli::flow(int argc, char **argv)
   if (!read_rod_options(args, ro, msg)) return usage_error(msg);
   const std::string out_dir = args.value("--out", ".");
   if (out_dir.empty()) return usage_error("--out needs a folder");
+  refuse_outputs_over_inputs(out_dir, {"flow.json", "flow_fields.csv", "flow_profile_below.csv", "flow_edge_phi_I.csv", "flow_strip.csv", "flow_annulus.csv", "flow_surface.csv"}, args);
   const std::string vor_opt = args.value("--voronoi", "auto");
   const bool rod_cells = args.has("--rod-cells");
   const std::string stress_opt = args.value("--stress", "auto");

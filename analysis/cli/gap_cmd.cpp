@@ -1,6 +1,7 @@
 // granpen gap --real DIR --scenario NAME --out DIR: the sim-to-real gap diagnosis
 // (gap/gap_diagnosis.h); --prepare-only runs (or resumes) the cache's simulations.
-#include "args.h"
+#include "atomic_file.h"
+#include "command.h"
 #include "effects.h"
 #include "gap_diagnosis.h"
 #include "subcommands.h"
@@ -53,61 +54,58 @@ const char *HELP =
 
 }    // namespace
 
+namespace {
+
+void list_effects()
+{
+  for (const auto &e : granpen::effect_library()) {
+    std::printf("%-20s %s\n%-20s magnitude: %s; reference values:", e.name.c_str(), e.what.c_str(), "", e.unit.c_str());
+    for (double k : e.knots) std::printf(" %s", granpen::deck_number(k).c_str());
+    std::printf("%s\n", e.pour_level ? " (new beds)" : " (push only: the baseline's beds)");
+  }
+}
+
+}    // namespace
+
 int granpen::cli::gap(int argc, char **argv)
 {
-  const Usage usage{"gap", HELP};
-  if (argc < 1) return usage.no_arguments();
-  if (!std::strcmp(argv[0], "--help")) return usage.help_asked();
+  Command cmd("gap", HELP);
   GapOptions opt;
   const char *env;
   opt.runner.lmp = (env = std::getenv("GRANPEN_LMP")) ? env : "lmp_granpen";
   opt.runner.inputs = (env = std::getenv("GRANPEN_INPUTS")) ? env : "inputs";
   opt.cache = std::string((env = std::getenv("GRANPEN_RUNS")) ? env : "runs") + "/gap_cache";
   opt.runner.jobs = (int) std::max(1u, std::thread::hardware_concurrency());
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    std::string v;
-    auto value = [&]() -> std::string {
-      if (!next_value(argc, argv, i, v)) std::exit(usage.bare(needs_value(a)));
-      return v;
-    };
-    if (a == "--real") opt.real = value();
-    else if (a == "--scenario") opt.scenario = value();
-    else if (a == "--out") opt.out = value();
-    else if (a == "--cache") opt.cache = value();
-    else if (a == "--lmp") opt.runner.lmp = value();
-    else if (a == "--inputs") opt.runner.inputs = value();
-    else if (a == "--prepare-only") opt.prepare_only = true;
-    else if (a == "--local") opt.local = true;
-    else if (a == "--fit-only") opt.fit_only = true;
-    else if (a == "--sweep-by-sweep") opt.runner.pool = false;
-    else if (a == "--slurm") opt.slurm = value();
-    else if (a == "--mpirun") opt.runner.mpirun = value();
-    else if (a == "--ranks") {
-      const std::string r = value();
-      if (!integer_arg(r, 1, 1000000, opt.runner.ranks)) return usage.bare(needs_integer("--ranks", 1, r));
-    }
-    else if (a == "--v0") opt.v0 = value();
-    else if (a == "--effects") opt.effects = value();
-    else if (a == "--jobs") {
-      const std::string j = value();
-      if (!integer_arg(j, 1, 1024, opt.runner.jobs)) return usage.bare(needs_integer("--jobs", 1, j));
-    } else if (a == "--list-effects") {
-      for (const auto &e : effect_library()) {
-        std::printf("%-20s %s\n%-20s magnitude: %s; reference values:", e.name.c_str(), e.what.c_str(), "",
-                    e.unit.c_str());
-        for (double k : e.knots) std::printf(" %s", deck_number(k).c_str());
-        std::printf("%s\n", e.pour_level ? " (new beds)" : " (push only: the baseline's beds)");
-      }
-      return 0;
-    } else {
-      return usage.with_help(unknown_option(a));
-    }
+  bool sweep_by_sweep = false, list = false;
+  auto &app = cmd.app;
+  app.add_option("--real", opt.real, "the measured traces' folder");
+  app.add_option("--scenario", opt.scenario, "the preset of the set-up");
+  app.add_option("--out", opt.out, "the diagnosis folder");
+  app.add_option("--cache", opt.cache, "simulation cache");
+  app.add_option("--lmp", opt.runner.lmp, "lmp_granpen");
+  app.add_option("--inputs", opt.runner.inputs, "the decks' folder");
+  app.add_flag("--prepare-only", opt.prepare_only, "only run the simulations the cache needs");
+  app.add_flag("--local", opt.local, "run a large diagnosis here anyway");
+  app.add_flag("--fit-only", opt.fit_only, "stop before the confirmation runs");
+  app.add_flag("--sweep-by-sweep", sweep_by_sweep, "run the sweeps one after another");
+  app.add_option("--slurm", opt.slurm, "write a SLURM script and stop");
+  app.add_option("--mpirun", opt.runner.mpirun, "MPI launcher");
+  app.add_option("--ranks", opt.runner.ranks, "MPI ranks per simulation")->check(CLI::Range(1, 1000000));
+  app.add_option("--v0", opt.v0, "speeds for --prepare-only and --slurm, e.g. \"50 100 200\"");
+  app.add_option("--effects", opt.effects, "comma-separated candidate effects");
+  app.add_option("--jobs", opt.runner.jobs, "simulations at once")->check(CLI::Range(1, 1024));
+  app.add_flag("--list-effects", list, "the candidate effects and their magnitudes");
+  if (!cmd.parse(argc, argv)) return EXIT_OK;
+  if (sweep_by_sweep) opt.runner.pool = false;
+  if (list) {
+    list_effects();
+    return EXIT_OK;
   }
   if (opt.scenario.empty() || (!opt.prepare_only && opt.slurm.empty() && (opt.real.empty() || opt.out.empty())) ||
-      ((opt.prepare_only || !opt.slurm.empty()) && opt.v0.empty())) {
-    return usage.with_help("needs --scenario and either --real and --out, or --prepare-only (or --slurm) and --v0");
-  }
+      ((opt.prepare_only || !opt.slurm.empty()) && opt.v0.empty()))
+    throw UsageError("needs --scenario and either --real and --out, or --prepare-only (or --slurm) and --v0");
+  if (!opt.out.empty() && !opt.real.empty() && same_file(opt.out, opt.real))
+    throw UsageError("--out " + opt.out + " is the input --real " + opt.real + ": refusing to overwrite it");
   try {
     return run_gap(opt);
   } catch (InputError &e) {

@@ -81,15 +81,17 @@ std::string jnum(double v) { return std::isfinite(v) ? js(v) : std::string("null
 
 int granpen::cli::momentum(int argc, char **argv)
 {
-  if (argc < 1) return usage_error.no_arguments();
-  const std::map<std::string, int> spec = {
-      {"--trace", 1}, {"--out", 1}, {"--thresholds", 4}, {"--mthreshold", 1}, {"--mu", 1}, {"--rod-type", 1},
-      {"--axis", 2}, {"--tip", 1}, {"--D", 1}, {"--rho", 1}, {"--zs", 1}, {"--push-step", 1}, {"--dt", 1},
-      {"--periodic", 1}};
+  Command cmd("momentum", HELP);
+  static const std::vector<OptionSpec> spec = {
+      {"--trace", 1, "force trace of the push (required)"}, {"--out", 1, "output folder"},
+      {"--thresholds", 4, "class bounds F1 F2 F3 F4 as fractions of v0"}, {"--mthreshold", 1, "M_move counts v_z > F v0"},
+      {"--mu", 1, "friction for mu g M"}, {"--rod-type", 1, "atom type of the rod"}, {"--axis", 2, "fixed rod axis X Y"},
+      {"--tip", 1, "fixed tip height"}, {"--D", 1, "rod diameter"}, {"--rho", 1, "grain density"},
+      {"--zs", 1, "bed surface"}, {"--push-step", 1, "timestep at which the push began"},
+      {"--dt", 1, "timestep size for --push-step"}, {"--periodic", 1, "xy, x, y or none"}};
   ParsedArgs args;
+  if (!parse_table(cmd, spec, "dumps", argc, argv, args)) return EXIT_OK;
   std::string msg;
-  if (!parse_args(argc, argv, spec, args, msg)) return usage_error(msg);
-  if (args.help) return usage_error.help_asked();
   if (args.positional.empty()) return usage_error("no dump given");
   if (!args.has("--trace")) return usage_error("--trace TRACE is required (v0, D, g and the drag come from it)");
   if (!args.read_numbers({"--trace", "--out", "--periodic", "--push-step"}, msg) ||
@@ -105,6 +107,7 @@ int granpen::cli::momentum(int argc, char **argv)
     return usage_error("--push-step '" + args.value("--push-step", "") + "' is not an integer");
   const std::string out_dir = args.value("--out", ".");
   if (out_dir.empty()) return usage_error("--out needs a folder");
+  refuse_outputs_over_inputs(out_dir, {"momentum.json", "momentum_classes.csv", "momentum_drag.csv"}, args);
   const std::string periodic = args.value("--periodic", "xy");
   bool px, py;
   if (!periodic_axes(periodic, px, py)) return usage_error("--periodic must be xy, x, y or none");

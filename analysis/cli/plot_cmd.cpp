@@ -6,7 +6,10 @@
 #include "plot_kinds.h"
 
 #include "args.h"
+#include "atomic_file.h"
+#include "command.h"
 #include "json_text.h"
+#include "json_writer.h"
 #include "linear_fit.h"
 #include "subcommands.h"
 #include "trace_files.h"
@@ -116,7 +119,6 @@ const char *HELP =
 
 namespace fs = std::filesystem;
 
-const cli::Usage usage_error{"plot", HELP};
 
 // ---------------------------------------------------------------- traces
 
@@ -690,60 +692,48 @@ void plot_kz(const std::vector<std::string> &inputs, Run &run)
 int granpen::cli::plot(int argc, char **argv)
 {
   using namespace granpen::plotcmd;
-  if (argc < 1) return usage_error.no_arguments();
-  for (int i = 0; i < argc; ++i)
-    if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) return usage_error.help_asked();
-  const std::string kind = argv[0];
-  static const char *kinds[] = {"force", "ratio", "peak", "kz", "flow", "momentum"};
-  if (std::find_if(std::begin(kinds), std::end(kinds), [&](const char *k) { return kind == k; }) == std::end(kinds))
-    return usage_error("unknown kind '" + kind + "' (force, ratio, peak, kz, flow, momentum)");
-
+  Command cmd("plot", HELP);
   Run run;
   Options &o = run.opt;
+  std::string kind;
   std::vector<std::string> inputs;
-  for (int i = 1; i < argc; ++i) {
-    std::string a = argv[i];
-    if (a.compare(0, 2, "--") != 0) {    // "--" alone is an (unknown) option here
-      inputs.push_back(a);
-      continue;
-    }
-    std::string value;
-    const bool inline_value = split_option(argv[i], a, value);
-    if (a == "--no-run" || a == "--each") {
-      if (inline_value) return usage_error(a + " takes no value");
-      if (a == "--no-run") o.run = false;
-      else o.each = true;
-      continue;
-    }
-    static const char *valued[] = {"--out", "--kz-zmin", "--kz-zmax", "--alpha", "--mu", "--rho", "--band", "--tbin", "--zmin", "--D"};
-    if (std::find_if(std::begin(valued), std::end(valued), [&](const char *k) { return a == k; }) == std::end(valued))
-      return usage_error(unknown_option(a));
-    if (!inline_value && !next_value(argc, argv, i, value)) return usage_error(needs_value(a));
-    if (a == "--out") {
-      if (value.empty()) return usage_error("--out needs a folder");
-      o.out = value;
-      continue;
-    }
-    double x = 0;
-    if (!number_arg(value, x)) return usage_error(needs_number(a, value));
-    if (a == "--kz-zmin") o.kz_zmin = x;
-    else if (a == "--kz-zmax") o.kz_zmax = x;
-    else if (a == "--alpha") o.alpha = x;
-    else if (a == "--mu") o.mu = x;
-    else if (a == "--rho") o.rho = x;
-    else if (a == "--band") o.collapse.band = x;
-    else if (a == "--tbin") o.collapse.tbin = x;
-    else if (a == "--zmin") o.collapse.zmin = x;
-    else o.D = x;
-  }
-  if (o.out.empty()) return usage_error("--out DIR is required");
+  auto &app = cmd.app;
+  app.add_option("kind", kind, "force, ratio, peak, kz, flow or momentum")->required();
+  app.add_option("inputs", inputs, "traces or folders (flow, momentum: the tables' folder)");
+  app.add_option("--out", o.out, "output folder")->check(CLI::Validator(
+      [](std::string &v) { return v.empty() ? std::string("needs a folder") : std::string(); }, "DIR"));
+  bool no_run = false;
+  app.add_flag("--no-run", no_run, "scripts and data only, gnuplot not run");
+  app.add_flag("--each", o.each, "force: every run instead of mean and band");
+  cmd.number("--kz-zmin", o.kz_zmin, "k_z window start, cm");
+  cmd.number("--kz-zmax", o.kz_zmax, "k_z window end, cm");
+  app.add_option("--alpha", o.alpha, "ratio: F_z from alpha")->check(non_negative_number());
+  app.add_option("--mu", o.mu, "friction for --alpha")->check(non_negative_number());
+  app.add_option("--rho", o.rho, "grain density for --alpha")->check(non_negative_number());
+  app.add_option("--band", o.collapse.band, "F/F_z within 1 +- band")->check(positive_number());
+  app.add_option("--tbin", o.collapse.tbin, "t~ bin width")->check(positive_number());
+  cmd.number("--zmin", o.collapse.zmin, "depths used, cm");
+  app.add_option("--D", o.D, "flow: rod diameter when the tables do not say")->check(non_negative_number());
+  if (!cmd.parse(argc, argv)) return EXIT_OK;
+  static const char *kinds[] = {"force", "ratio", "peak", "kz", "flow", "momentum"};
+  if (std::find_if(std::begin(kinds), std::end(kinds), [&](const char *k) { return kind == k; }) == std::end(kinds))
+    throw UsageError("unknown kind '" + kind + "' (force, ratio, peak, kz, flow, momentum)");
+  if (o.out.empty()) throw UsageError("--out DIR is required");
   if (inputs.empty())
-    return usage_error(kind == "flow" || kind == "momentum" ? "give the folder of the tables" : "no trace given");
+    throw UsageError(kind == "flow" || kind == "momentum" ? "give the folder of the tables" : "no trace given");
   if ((kind == "flow" || kind == "momentum") && inputs.size() != 1)
-    return usage_error(kind + " takes one folder, got " + std::to_string(inputs.size()) + " arguments");
-  if (!(o.kz_zmin < o.kz_zmax)) return usage_error("--kz-zmin must be below --kz-zmax");
-  if (!(o.collapse.band > 0 && o.collapse.tbin > 0)) return usage_error("--band and --tbin must be positive");
-  if (o.alpha < 0 || o.mu < 0 || o.rho < 0 || o.D < 0) return usage_error("--alpha, --mu, --rho and --D must be positive");
+    throw UsageError(kind + " takes one folder, got " + std::to_string(inputs.size()) + " arguments");
+  if (!(o.kz_zmin < o.kz_zmax)) throw UsageError("--kz-zmin must be below --kz-zmax");
+  o.run = !no_run;
+  // DIR/KIND.json must not be one of the inputs (plot flow DIR --out DIR: DIR/flow.json)
+  std::vector<std::string> input_files;
+  for (const auto &in : inputs) {
+    std::error_code ec;
+    if (fs::is_directory(in, ec))
+      for (const auto &e : fs::directory_iterator(in, ec)) input_files.push_back(e.path().string());
+    else input_files.push_back(in);
+  }
+  refuse_overwriting_inputs((fs::path(o.out) / (kind + ".json")).string(), "--out", input_files);
 
   if (kind == "force") plot_force(inputs, run);
   else if (kind == "ratio") plot_ratio(inputs, run);
@@ -767,32 +757,21 @@ int granpen::cli::plot(int argc, char **argv)
   }
 
   // DIR/KIND.json: the figures and the numbers drawn
-  std::string json = "{\n  \"tool\": \"granpen plot\",\n  \"kind\": " + json_string(kind) + ",\n  \"out\": " + json_string(o.out) +
-                     ",\n  \"figures\": [";
-  for (std::size_t i = 0; i < run.figures.size(); ++i) {
-    const auto &f = run.figures[i];
-    json += std::string(i ? ",\n" : "\n") + "    {\"name\": " + json_string(fs::path(f.script).stem().string()) +
-            ", \"script\": " + json_string(f.script) + ", \"data\": " + json_string(f.data) + ", \"png\": " +
-            json_string(f.png) + ", \"svg\": " + json_string(f.svg) + ", \"made\": " + (f.ran ? "true" : "false") +
-            ", \"error\": " + json_string(f.error) + "}";
-  }
-  json += run.figures.empty() ? "],\n" : "\n  ],\n";
-  json += "  \"numbers\": {";
-  for (std::size_t i = 0; i < run.numbers.size(); ++i) json += std::string(i ? ",\n    " : "\n    ") + run.numbers[i];
-  json += run.numbers.empty() ? "},\n" : "\n  },\n";
-  json += "  \"problems\": [";
-  for (std::size_t i = 0; i < run.problems.size(); ++i) json += std::string(i ? ", " : "") + json_string(run.problems[i]);
-  json += "],\n  \"notes\": [";
-  for (std::size_t i = 0; i < run.notes.size(); ++i) json += std::string(i ? ", " : "") + json_string(run.notes[i]);
-  json += "]\n}\n";
-  std::error_code ec;
-  fs::create_directories(o.out, ec);
+  Json j;
+  j["tool"] = "granpen plot";
+  j["kind"] = kind;
+  j["out"] = o.out;
+  j["figures"] = Json::array();
+  for (const auto &f : run.figures)
+    j["figures"].push_back({{"name", fs::path(f.script).stem().string()}, {"script", f.script}, {"data", f.data},
+                            {"png", f.png}, {"svg", f.svg}, {"made", f.ran}, {"error", f.error}});
+  j["numbers"] = Json::object();
+  for (const auto &members : run.numbers) j["numbers"].update(Json::parse("{" + members + "}"));
+  j["problems"] = run.problems;
+  j["notes"] = run.notes;
+  make_output_dir(o.out);
   const std::string jpath = (fs::path(o.out) / (kind + ".json")).string();
-  std::ofstream jo(jpath, std::ios::binary);
-  if (!(jo << json) || !jo.flush()) {
-    std::fprintf(stderr, "granpen plot: cannot write %s\n", jpath.c_str());
-    return 1;
-  }
+  write_json(jpath, j, 2);
   std::printf("wrote %s\n", jpath.c_str());
   if (run.figures.empty() && run.problems.empty()) {
     std::fprintf(stderr, "granpen plot: no figure made\n");
