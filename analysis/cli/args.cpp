@@ -132,8 +132,14 @@ bool parse_table(Command &cmd, const std::vector<OptionSpec> &spec, const char *
                                   : cmd.app.add_option(o.name, o.what)->expected(o.values)->take_last());
   cmd.app.add_option(positional, out.positional, positional);
   if (!cmd.parse(argc, argv)) return false;
-  for (std::size_t k = 0; k < spec.size(); ++k)
-    if (added[k]->count() > 0) out.options[spec[k].name] = spec[k].values == 0 ? std::vector<std::string>() : added[k]->results();
+  for (std::size_t k = 0; k < spec.size(); ++k) {
+    if (added[k]->count() == 0) continue;
+    const auto values = spec[k].values == 0 ? std::vector<std::string>() : added[k]->results();
+    if ((int) values.size() != spec[k].values)
+      throw UsageError(std::string(spec[k].name) + " needs " + std::to_string(spec[k].values) +
+                       (spec[k].values == 1 ? " value" : " values"));
+    out.options[spec[k].name] = values;
+  }
   return true;
 }
 

@@ -87,6 +87,7 @@ bool Command::parse(int argc, char **argv)
     std::fputs(app.help().c_str(), stdout);
     return false;
   } catch (const CLI::ValidationError &e) {
+    refuse_unknown_words();
     // CLI11 writes "--band: needs a number, got 'wide'"; granpen has always written it
     // without the colon
     std::string what = e.what();
@@ -94,13 +95,19 @@ bool Command::parse(int argc, char **argv)
     if (what.compare(0, 2, "--") == 0 && colon != std::string::npos) what.erase(colon, 1);
     throw UsageError(what);
   } catch (const CLI::ParseError &e) {
+    refuse_unknown_words();    // an unknown option explains a missing one best
     throw UsageError(e.what());
   }
-  for (const auto &w : app.remaining()) {
-    if (w.size() > 1 && w[0] == '-') throw UsageError("unknown option '" + w.substr(0, w.find('=')) + "'");
-    throw UsageError("unexpected argument '" + w + "'");
-  }
+  refuse_unknown_words();
   return true;
+}
+
+void Command::refuse_unknown_words() const
+{
+  const auto rest = app.remaining();
+  for (const auto &w : rest)
+    if (w.size() > 1 && w[0] == '-') throw UsageError("unknown option '" + w.substr(0, w.find('=')) + "'");
+  if (!rest.empty()) throw UsageError("unexpected argument '" + rest.front() + "'");
 }
 
 int run_subcommand(const char *name, int (*fn)(int, char **), int argc, char **argv)

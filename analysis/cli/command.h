@@ -48,6 +48,8 @@ class Command {
   const std::string &name() const { return name_; }
 
  private:
+  // UsageError for the first word no option took: an unknown option, else a stray argument
+  void refuse_unknown_words() const;
   std::string name_;
 };
 
