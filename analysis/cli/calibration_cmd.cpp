@@ -337,7 +337,7 @@ int granpen::cli::calibration(int argc, char **argv)
   const std::string title = "# Friction calibration: " + md_cell(sweep) + "\n\n";
   const std::vector<std::pair<std::string, std::string>> outputs = {
       {(od / "calibration.csv").string(), csv_table(rows)},
-      {(od / "calibration.json").string(), json_layout(json_table(rows, sweep, zmin, zmax, problems), 2)},
+      {(od / "calibration.json").string(), json_layout(json_table(rows, sweep, zmin, zmax, problems), 1)},
       {(od / "calibration.md").string(), title + md},
       {(od / "calibration.gp").string(), gnuplot_script(rows)}};
   std::vector<std::string> inputs = info_files;

@@ -154,7 +154,7 @@ int granpen::cli::collapse(int argc, char **argv)
     std::printf("wrote %s\n", csv.c_str());
   }
   if (!json.empty()) {
-    write_json(json, collapse_json(r, p), 2);
+    write_json(json, collapse_json(r, p), 1);
     std::printf("wrote %s\n", json.c_str());
   }
   return problems.empty() ? 0 : 1;

@@ -279,7 +279,7 @@ int granpen::cli::fit(int argc, char **argv)
   if (!failures.empty())
     std::printf("granpen fit: %zu input%s failed (see above)\n", failures.size(), failures.size() == 1 ? "" : "s");
   if (!json_path.empty()) {
-    write_json(json_path, results_json(results, failures, zmin, zmax, tmin), 2);
+    write_json(json_path, results_json(results, failures, zmin, zmax, tmin), 1);
     std::printf("wrote %s\n", json_path.c_str());
   }
   if (!csv_path.empty()) {

@@ -771,7 +771,7 @@ int granpen::cli::plot(int argc, char **argv)
   j["notes"] = run.notes;
   make_output_dir(o.out);
   const std::string jpath = (fs::path(o.out) / (kind + ".json")).string();
-  write_json(jpath, j, 2);
+  write_json(jpath, j, 1);
   std::printf("wrote %s\n", jpath.c_str());
   if (run.figures.empty() && run.problems.empty()) {
     std::fprintf(stderr, "granpen plot: no figure made\n");

@@ -11,9 +11,18 @@ namespace granpen {
 
 namespace {
 
+// an array of objects: a table, one row per line
+bool is_table(const Json &j)
+{
+  if (!j.is_array() || j.empty()) return false;
+  for (const auto &e : j)
+    if (!e.is_object()) return false;
+  return true;
+}
+
 void put(const Json &j, int depth, int open_levels, std::string &o)
 {
-  const bool open = depth < open_levels;
+  const bool open = depth < open_levels || (depth == open_levels && is_table(j));
   const std::string pad(2 * (depth + 1), ' '), end_pad(2 * depth, ' ');
   if (j.is_object() && !j.empty()) {
     o += '{';

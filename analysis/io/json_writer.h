@@ -21,7 +21,8 @@ using Json = nlohmann::ordered_json;
 Json json_rounded(const char *f, double v);
 
 // j as text: members (and array elements) each on its own line, indented by 2, for the
-// first `open_levels` levels; anything deeper on one line. A trailing newline.
+// first `open_levels` levels, and one more level for an array of objects (a table: one
+// row per line); anything deeper on one line. A trailing newline.
 std::string json_layout(const Json &j, int open_levels = 1);
 
 // json_layout(j, open_levels) into path through write_file_atomic (throws OutputError).
