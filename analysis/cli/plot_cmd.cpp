@@ -503,15 +503,11 @@ void plot_peak(const std::vector<std::string> &inputs, Run &run)
     run.problems.push_back(e.what());
     return;
   }
-  std::vector<double> logv, logp, v0s;
+  std::vector<double> v0s;
   double pmax = 0;
   for (const auto &c : r.curves) {
     v0s.push_back(c.v0);
-    if (!(c.peak > 0.0)) {
-      run.notes.push_back(c.name + ": no positive force at 0 < z < 0.7 R: no peak");
-      continue;
-    }
-    logv.push_back(std::log(c.v0)), logp.push_back(std::log(c.peak));
+    if (!(c.peak > 0.0)) run.notes.push_back(c.name + ": no positive force at 0 < z < 0.7 R: no peak");
     pmax = std::max(pmax, c.peak);
   }
   SeriesPanel p;
@@ -549,26 +545,21 @@ void plot_peak(const std::vector<std::string> &inputs, Run &run)
   fitblk.columns = {"exponent", "exponent_se", "exponent_ci95", "prefactor", "n"};
   std::string title = "Transient peak against speed";
   if (r.peak_ok) {
-    // the library's exponent; the intercept from the same least squares on the same points
-    const LinearFit lf = linear_fit(logv, logp);
-    const double pref = std::exp(lf.a);
+    const double pref = r.peak_prefactor;
     PlotGuide fit;
     fit.expression = gp_number(pref) + "*x**" + gp_number(r.peak_exponent);
     fit.title = "fit: F_{peak} ∝ v_0^{" + fmt("%.2f", r.peak_exponent) + " ± " + fmt("%.2f", r.peak_exponent_ci95) + "} (95%)";
     fit.colour = "#000000", fit.dash = 1, fit.line_width = 2;
-    double mv = 0, mp = 0;
-    for (std::size_t k = 0; k < logv.size(); ++k) mv += logv[k], mp += logp[k];
-    mv /= logv.size(), mp /= logp.size();
     PlotGuide sq;
-    sq.expression = gp_number(std::exp(mp - 2 * mv)) + "*x**2";
+    sq.expression = gp_number(r.peak_v2_prefactor) + "*x**2";
     sq.title = "∝ v_0^2 guide (paper)";
     sq.colour = "#808080", sq.dash = 2;
     p.guides = {fit, sq};
-    fitblk.rows.push_back({r.peak_exponent, r.peak_exponent_se, r.peak_exponent_ci95, pref, (double) logv.size()});
+    fitblk.rows.push_back({r.peak_exponent, r.peak_exponent_se, r.peak_exponent_ci95, pref, (double) r.peak_points});
     title += ": exponent " + fmt("%.2f", r.peak_exponent) + " ± " + fmt("%.2f", r.peak_exponent_ci95) + " (95%; paper: 2)";
     law = "\"peak_ok\": true, \"exponent\": " + fmt("%.10g", r.peak_exponent) + ", \"exponent_se\": " +
           fmt("%.10g", r.peak_exponent_se) + ", \"exponent_ci95\": " + fmt("%.10g", r.peak_exponent_ci95) +
-          ", \"prefactor\": " + fmt("%.10g", pref) + ", \"n\": " + std::to_string(logv.size());
+          ", \"prefactor\": " + fmt("%.10g", pref) + ", \"n\": " + std::to_string(r.peak_points);
   } else {
     run.notes.push_back("peak law: needs at least 3 peaks over 2 or more speeds; points only");
     title += " (too few speeds for a power law)";
