@@ -2,7 +2,7 @@
 # traces and tables, the command run in-process (its sources compiled in). Included
 # from tests/unit/CMakeLists.txt.
 add_executable(test_plot test_plot.cpp ${PROJECT_SOURCE_DIR}/analysis/cli/plot_cmd.cpp
-  ${PROJECT_SOURCE_DIR}/analysis/cli/plot_flow_cmd.cpp ${PROJECT_SOURCE_DIR}/analysis/cli/args.cpp
+  ${PROJECT_SOURCE_DIR}/analysis/cli/args.cpp
   ${PROJECT_SOURCE_DIR}/analysis/cli/command.cpp)
 target_include_directories(test_plot PRIVATE ${PROJECT_SOURCE_DIR}/analysis/cli)
 target_link_libraries(test_plot PRIVATE granpen_analysis CLI11::CLI11 GTest::gtest_main)
