@@ -3,58 +3,14 @@
 
 #include <cerrno>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 
 namespace granpen {
 namespace cli {
 
-int Usage::operator()(const std::string &what) const
-{
-  std::fprintf(stderr, "granpen %s: error: %s\n(granpen %s --help for usage)\n", name, what.c_str(), name);
-  return 2;
-}
-
-int Usage::bare(const std::string &what) const
-{
-  std::fprintf(stderr, "granpen %s: error: %s\n", name, what.c_str());
-  return 2;
-}
-
-int Usage::with_help(const std::string &what) const
-{
-  std::fprintf(stderr, "granpen %s: %s\n%s", name, what.c_str(), help);
-  return 2;
-}
-
-int Usage::help_asked() const
-{
-  std::fputs(help, stdout);
-  return 0;
-}
-
-int Usage::no_arguments() const
-{
-  std::fputs(help, stderr);
-  return 2;
-}
-
-std::string unknown_option(const std::string &option) { return "unknown option '" + option + "'"; }
-std::string needs_value(const std::string &option) { return option + " needs a value"; }
-
-std::string needs_number(const std::string &option, const std::string &value)
-{
-  return option + " needs a number, got '" + value + "'";
-}
-
 std::string not_a_number(const std::string &option, const std::string &value)
 {
   return option + " '" + value + "' is not a number";
-}
-
-std::string needs_integer(const std::string &option, long long lo, const std::string &value)
-{
-  return option + " needs an integer >= " + std::to_string(lo) + ", got '" + value + "'";
 }
 
 bool number_arg(const std::string &s, double &v, bool accept_underflow)
@@ -71,14 +27,6 @@ bool integer_arg(const std::string &s, long long &v)
   errno = 0;
   v = std::strtoll(s.c_str(), &end, 10);
   return !s.empty() && end && *end == '\0' && errno != ERANGE;
-}
-
-bool integer_arg(const std::string &s, long long lo, long long hi, int &v)
-{
-  long long n;
-  if (!integer_arg(s, n) || n < lo || n > hi) return false;
-  v = (int) n;
-  return true;
 }
 
 std::string ParsedArgs::value(const std::string &name, const std::string &fallback) const

@@ -1,6 +1,6 @@
-// granpen subcommands: the argument helpers they share: the usage-error lines and their
-// wording, the reading of numbers, and (for flow and momentum, whose many options are read
-// as numbers by name) an option table parsed by the one parser into ParsedArgs.
+// granpen subcommands: the argument helpers they share: the reading of numbers, and (for
+// flow and momentum, whose many options are read as numbers by name) an option table
+// parsed by the one parser (command.h) into ParsedArgs.
 #ifndef GRANPEN_CLI_ARGS_H
 #define GRANPEN_CLI_ARGS_H
 
@@ -15,27 +15,8 @@
 namespace granpen {
 namespace cli {
 
-// A subcommand's usage errors and help. The error lines go to stderr as
-// "granpen NAME: WHAT"; every function returns the exit status, 2 for a usage error.
-struct Usage {
-  const char *name;    // the subcommand, e.g. "flow"
-  const char *help;    // its help text
-
-  int operator()(const std::string &what) const;    // the line and "(granpen NAME --help for usage)"
-  int bare(const std::string &what) const;          // the line alone
-  int with_help(const std::string &what) const;     // the line and the help text
-  int help_asked() const;                           // the help text on stdout; 0
-  int no_arguments() const;                         // the help text on stderr; 2
-};
-
-// The wording of the usual complaints.
-std::string unknown_option(const std::string &option);                       // unknown option 'OPTION'
-std::string needs_value(const std::string &option);                          // OPTION needs a value
-std::string needs_number(const std::string &option, const std::string &value);    // OPTION needs a number, got 'VALUE'
-std::string not_a_number(const std::string &option, const std::string &value);    // OPTION 'VALUE' is not a number
-std::string needs_integer(const std::string &option, long long lo, const std::string &value);
-                                                                              // OPTION needs an integer >= LO, got 'VALUE'
-
+// "OPTION 'VALUE' is not a number"
+std::string not_a_number(const std::string &option, const std::string &value);
 
 // s as a whole finite number (strtod; s empty, trailing text or overflow: false). Out of
 // range below (strtod's ERANGE for a value too small for a double) is refused unless
@@ -43,8 +24,6 @@ std::string needs_integer(const std::string &option, long long lo, const std::st
 bool number_arg(const std::string &s, double &v, bool accept_underflow = false);
 // s as a whole base-10 integer (strtoll; out of range: false)
 bool integer_arg(const std::string &s, long long &v);
-// s as a whole integer in lo..hi
-bool integer_arg(const std::string &s, long long lo, long long hi, int &v);
 
 // A command line: positional arguments and options "--name V..." (the values as text).
 struct ParsedArgs {

@@ -4,6 +4,7 @@
 #include "command.h"
 #include "collapse.h"
 #include "json_text.h"
+#include "collapse_tables.h"
 #include "json_writer.h"
 #include "subcommands.h"
 #include "trace_fit.h"
@@ -34,39 +35,6 @@ const char *HELP =
     "against v0. --csv writes the binned curves (trace, v0, g, D, t~, F/F_z); --json all.\n"
     "Outputs are written whole or not at all, never over an input.\n";
 
-std::string curves_csv(const granpen::CollapseResult &r)
-{
-  std::string o = "trace,v0,g,D,t_tilde,F_over_Fz\n";
-  for (const auto &c : r.curves)
-    for (std::size_t k = 0; k < c.t.size(); ++k)
-      o += c.name + "," + json_number("%.10g", c.v0) + "," + json_number("%.10g", c.g) + "," +
-           json_number("%.10g", c.D) + "," + json_number("%.6g", c.t[k]) + "," + json_number("%.6g", c.ratio[k]) + "\n";
-  return o;
-}
-
-granpen::Json collapse_json(const granpen::CollapseResult &r, const granpen::CollapseParams &p)
-{
-  using granpen::json_rounded;
-  granpen::Json j;
-  j["tool"] = "granpen collapse";
-  j["band"] = json_rounded("%g", p.band);
-  j["t_star_mean"] = json_rounded("%.6g", r.t_star_mean);
-  j["t_star_sd"] = json_rounded("%.6g", r.t_star_sd);
-  j["n_crossed"] = r.n_crossed;
-  j["spread_z"] = json_rounded("%.6g", r.spread_z);
-  j["spread_t"] = json_rounded("%.6g", r.spread_t);
-  j["ensemble_crossed"] = r.ens_crossed;
-  j["t_star_ensemble"] = json_rounded("%.6g", r.t_star_ensemble);
-  j["peak_exponent"] = json_rounded("%.6g", r.peak_exponent);
-  j["peak_exponent_ci95"] = json_rounded("%.6g", r.peak_exponent_ci95);
-  j["traces"] = granpen::Json::array();
-  for (const auto &c : r.curves)
-    j["traces"].push_back({{"file", c.name}, {"v0", json_rounded("%.10g", c.v0)}, {"k_z", json_rounded("%.6g", c.k_z)},
-                           {"peak", json_rounded("%.6g", c.peak)}, {"crossed", c.crossed},
-                           {"t_star", json_rounded("%.4g", c.t_star)}});
-  return j;
-}
-
 }    // namespace
 
 int granpen::cli::collapse(int argc, char **argv)
@@ -92,34 +60,10 @@ int granpen::cli::collapse(int argc, char **argv)
 
   std::vector<std::string> problems;
   const auto files = expand_trace_paths(inputs, problems);
-  std::vector<CollapseInput> in;
-  for (const auto &f : files) {
-    try {
-      auto tr = to_cgs(read_trace(f));
-      CollapseInput c;
-      c.name = f;
-      c.z = tr.z;
-      c.F = tr.F;
-      c.v0 = tr.v0, c.D = tr.D, c.g = tr.g;
-      if (alpha > 0.0) {
-        const double mu = mu_opt > 0 ? mu_opt : tr.number("mu", 0.3);
-        const double rho = rho_opt > 0 ? rho_opt : tr.number("rho_g", 3.0);
-        c.k_z = alpha * mu * rho * tr.g * tr.D * tr.D;
-      } else {
-        TraceFitParams fp;
-        fp.zlo = kz_zmin, fp.zhi = kz_zmax, fp.v0 = tr.v0, fp.D = tr.D, fp.g = tr.g;
-        auto fit = fit_trace(tr.z, tr.F, fp);
-        if (!fit.slope_ok || !(fit.k_z > 0)) {
-          problems.push_back(f + ": no positive depth term over the k_z window (use --kz-zmin/--kz-zmax or --alpha)");
-          continue;
-        }
-        c.k_z = fit.k_z;
-      }
-      in.push_back(c);
-    } catch (InputError &e) {
-      problems.push_back(e.what());
-    }
-  }
+  DepthTerm dt;
+  dt.kz_zmin = kz_zmin, dt.kz_zmax = kz_zmax, dt.alpha = alpha, dt.mu = mu_opt, dt.rho_g = rho_opt;
+  const std::vector<CollapseInput> in = read_collapse_inputs(files, dt, problems);
+
   for (const auto &o : {std::make_pair("--csv", csv), std::make_pair("--json", json)})
     if (!o.second.empty()) refuse_overwriting_inputs(o.second, o.first, files);
   for (const auto &m : problems) std::fprintf(stderr, "granpen collapse: %s\n", m.c_str());
@@ -150,7 +94,7 @@ int granpen::cli::collapse(int argc, char **argv)
     std::printf("peak law: needs at least 3 traces over 2 or more speeds\n");
 
   if (!csv.empty()) {
-    write_file_atomic(csv, curves_csv(r));
+    write_file_atomic(csv, collapse_curves_csv(r));
     std::printf("wrote %s\n", csv.c_str());
   }
   if (!json.empty()) {

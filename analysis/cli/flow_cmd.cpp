@@ -201,7 +201,7 @@ Columns choose_columns(const DumpFrame &frame, const FlowOptions &o, FlowProvena
 }
 
 // rho_g: option, trace, the first frame's masses, or 3
-double grain_density(const FlowOptions &o, const TraceHeader &th, FlowProvenance &how)
+double grain_density(const FlowOptions &o, const PushTrace &th, FlowProvenance &how)
 {
   double rho = 3.0;
   how.rho_g_source = "default";
@@ -211,7 +211,7 @@ double grain_density(const FlowOptions &o, const TraceHeader &th, FlowProvenance
 }
 
 // The study's parameters: options, else the trace header, else the first frame (g).
-FlowStudyParams resolve_parameters(const DumpFrame &frame, const GrainFrame &g, const TraceHeader &th,
+FlowStudyParams resolve_parameters(const DumpFrame &frame, const GrainFrame &g, const PushTrace &th,
                                    const FlowOptions &o, double rho, FlowProvenance &how)
 {
   const ParsedArgs &args = o.args;
@@ -345,8 +345,8 @@ int granpen::cli::flow(int argc, char **argv)
   how.dumps = o.args.positional;
   how.rod_type = o.rod.rod_type;
   how.periodic = o.periodic;
-  TraceHeader th;
-  if (o.args.has("--trace")) th = load_trace(o.args.value("--trace", "")), how.trace = th.trace.path;
+  PushTrace th;
+  if (o.args.has("--trace")) th = load_push_trace(o.args.value("--trace", "")), how.trace = th.trace.path;
 
   DumpReader reader(o.args.positional);
   report_progress(reader, "granpen flow");

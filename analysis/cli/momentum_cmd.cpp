@@ -126,7 +126,7 @@ MomentumClasses classes_of(const ParsedArgs &args, double v0, std::string &sourc
 }
 
 // Everything but z_s: options, else the trace header, else defaults.
-MomentumStudyParams resolve_parameters(const MomentumOptions &o, const TraceHeader &th, MomentumProvenance &how)
+MomentumStudyParams resolve_parameters(const MomentumOptions &o, const PushTrace &th, MomentumProvenance &how)
 {
   const ParsedArgs &args = o.args;
   const Trace &tr = th.trace;
@@ -153,7 +153,7 @@ MomentumStudyParams resolve_parameters(const MomentumOptions &o, const TraceHead
 }
 
 // z_s: option, trace, or measured in the first frame
-double bed_surface_of(const MomentumOptions &o, const TraceHeader &th, const DumpFrame &frame, const GrainFrame &g,
+double bed_surface_of(const MomentumOptions &o, const PushTrace &th, const DumpFrame &frame, const GrainFrame &g,
                       MomentumProvenance &how)
 {
   double zs = 0.0;
@@ -201,7 +201,7 @@ int granpen::cli::momentum(int argc, char **argv)
   MomentumOptions o;
   if (!parse_momentum(argc, argv, o)) return EXIT_OK;
   refuse_outputs_over_inputs(o.out_dir, std::vector<const char *>(std::begin(OUTPUTS), std::end(OUTPUTS)), o.args);
-  const TraceHeader th = load_trace(o.args.value("--trace", ""));
+  const PushTrace th = load_push_trace(o.args.value("--trace", ""));
   MomentumProvenance how;
   how.dumps = o.args.positional;
   how.trace = th.trace.path;
