@@ -60,6 +60,42 @@ const char *HELP =
     "unusable or gnuplot is missing or failed (the scripts and data are still written),\n"
     "2 for a usage error.\n";
 
+// Problems, notes and each figure's outcome on the terminal; the number that failed.
+int report_figures(const granpen::figures::Run &run)
+{
+  for (const auto &p : run.problems) std::fprintf(stderr, "granpen plot: %s\n", p.c_str());
+  for (const auto &n : run.notes) std::printf("note: %s\n", n.c_str());
+  int failed = 0;
+  for (const auto &f : run.figures) {
+    if (!f.ok()) {
+      ++failed;
+      std::fprintf(stderr, "granpen plot: %s\n", f.error.c_str());
+    } else if (f.ran) {
+      std::printf("wrote %s and %s (script %s, data %s)\n", f.png.c_str(), f.svg.c_str(), f.script.c_str(), f.data.c_str());
+    } else {
+      std::printf("wrote %s and %s (not run: --no-run)\n", f.script.c_str(), f.data.c_str());
+    }
+  }
+  return failed;
+}
+
+// DIR/KIND.json: the figures and the numbers drawn
+granpen::Json plot_record(const std::string &kind, const granpen::figures::Run &run)
+{
+  granpen::Json j;
+  j["tool"] = "granpen plot";
+  j["kind"] = kind;
+  j["out"] = run.opt.out;
+  j["figures"] = granpen::Json::array();
+  for (const auto &f : run.figures)
+    j["figures"].push_back({{"name", fs::path(f.script).stem().string()}, {"script", f.script}, {"data", f.data},
+                            {"png", f.png}, {"svg", f.svg}, {"made", f.ran}, {"error", f.error}});
+  j["numbers"] = run.numbers;
+  j["problems"] = run.problems;
+  j["notes"] = run.notes;
+  return j;
+}
+
 }    // namespace
 
 int granpen::cli::plot(int argc, char **argv)
@@ -115,39 +151,14 @@ int granpen::cli::plot(int argc, char **argv)
   else if (kind == "flow") plot_flow(inputs, run);
   else plot_momentum(inputs, run);
 
-  for (const auto &p : run.problems) std::fprintf(stderr, "granpen plot: %s\n", p.c_str());
-  for (const auto &n : run.notes) std::printf("note: %s\n", n.c_str());
-  int failed = 0;
-  for (const auto &f : run.figures) {
-    if (!f.ok()) {
-      ++failed;
-      std::fprintf(stderr, "granpen plot: %s\n", f.error.c_str());
-    } else if (f.ran) {
-      std::printf("wrote %s and %s (script %s, data %s)\n", f.png.c_str(), f.svg.c_str(), f.script.c_str(), f.data.c_str());
-    } else {
-      std::printf("wrote %s and %s (not run: --no-run)\n", f.script.c_str(), f.data.c_str());
-    }
+  const int failed = report_figures(run);
+  if (run.figures.empty()) {    // nothing is created for inputs that could not be read
+    std::fprintf(stderr, "granpen plot: no figure made\n");
+    return EXIT_FAILED;
   }
-
-  // DIR/KIND.json: the figures and the numbers drawn
-  Json j;
-  j["tool"] = "granpen plot";
-  j["kind"] = kind;
-  j["out"] = o.out;
-  j["figures"] = Json::array();
-  for (const auto &f : run.figures)
-    j["figures"].push_back({{"name", fs::path(f.script).stem().string()}, {"script", f.script}, {"data", f.data},
-                            {"png", f.png}, {"svg", f.svg}, {"made", f.ran}, {"error", f.error}});
-  j["numbers"] = run.numbers;
-  j["problems"] = run.problems;
-  j["notes"] = run.notes;
   make_output_dir(o.out);
   const std::string jpath = (fs::path(o.out) / (kind + ".json")).string();
-  write_json(jpath, j, 1);
+  write_json(jpath, plot_record(kind, run), 1);
   std::printf("wrote %s\n", jpath.c_str());
-  if (run.figures.empty() && run.problems.empty()) {
-    std::fprintf(stderr, "granpen plot: no figure made\n");
-    return 1;
-  }
-  return (failed || !run.problems.empty() || run.figures.empty()) ? 1 : 0;
+  return (failed || !run.problems.empty()) ? EXIT_FAILED : EXIT_OK;
 }

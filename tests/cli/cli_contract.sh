@@ -94,6 +94,10 @@ ls -a "$W" | grep -q '\.tmp' && fail "a temporary was left in $W"
 # ---- an unreadable input creates nothing
 expect 1 "$W/nonexistent: not a readable folder" "$CLI" calibration "$W/nonexistent"
 [ -e "$W/nonexistent" ] && fail "calibration created $W/nonexistent"
+expect 1 "no figure made" "$CLI" plot peak "$W/no-such.csv" --out "$W/plots"
+[ -e "$W/plots" ] && fail "plot created $W/plots"
+expect 1 "no-such\.dump" "$CLI" flow "$W/no-such.dump" --out "$W/flows"
+[ -e "$W/flows" ] && fail "flow created $W/flows"
 expect 1 "no-such\.txt" "$CLI" convert "$W/no-such.txt" --v0 100 --dt 2e-6 --D 2 --g 981 --out "$W/n.csv"
 [ -e "$W/n.csv" ] && fail "convert created $W/n.csv"
 
