@@ -77,7 +77,7 @@ bool parse_table(Command &cmd, const std::vector<OptionSpec> &spec, const char *
   std::vector<CLI::Option *> added;
   for (const auto &o : spec)
     added.push_back(o.values == 0 ? cmd.app.add_flag(o.name, o.what)
-                                  : cmd.app.add_option(o.name, o.what)->expected(o.values)->take_last());
+                                  : cmd.app.add_option(o.name, o.what)->expected(o.values)->take_last()->type_name(o.type));
   cmd.app.add_option(positional, out.positional, positional);
   if (!cmd.parse(argc, argv)) return false;
   for (std::size_t k = 0; k < spec.size(); ++k) {

@@ -43,10 +43,12 @@ struct ParsedArgs {
   bool positive(std::initializer_list<const char *> names, std::string &message) const;
 };
 
-// One option of a table: its name, how many values it takes (0: a flag), what it is.
+// One option of a table: its name, how many values it takes (0: a flag), their names in
+// the help (e.g. "X Y"), what it is.
 struct OptionSpec {
   const char *name;
   int values;
+  const char *type;
   const char *what;
 };
 // The options of spec and the positional arguments (named positional) on cmd's parser,

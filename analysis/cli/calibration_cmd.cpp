@@ -26,15 +26,6 @@ const char *HELP =
     "For each mu (and v0): phi_0 mean and sd over its beds; k_z (slope of F on z over the\n"
     "window, as granpen fit) and alpha = k_z / (mu rho_g g D^2) mean and sd over its pushes.\n"
     "sd is the sample standard deviation (n - 1); with one value it is 0.\n"
-    "options:\n"
-    "  --zmin Z   window start, cm (default 1.0)\n"
-    "  --zmax Z   window end, cm (default 3.0). The defaults are the bench scenario's usable\n"
-    "             depths: its bed is about 5.7 cm deep and the push goes to 4 cm, so the last\n"
-    "             centimetre feels the floor, and the first grows through the impact peak.\n"
-    "             The paper fits z >= 3 cm in a 13.5 cm bed: widen the window for deeper beds.\n"
-    "  --out DIR  where to write (default SWEEP_DIR): calibration.csv, calibration.json,\n"
-    "             calibration.md, and with gnuplot calibration_phi0.png, calibration_kz.png\n"
-    "             (from calibration.gp, written beside them)\n"
     "Exit status: 0 when every bed and trace was used, 1 when one was rejected or could not\n"
     "be fitted (the tables are still written from the rest), 2 for a usage error.\n";
 
@@ -47,10 +38,17 @@ int granpen::cli::calibration(int argc, char **argv)
   double zmin = 1.0, zmax = 3.0;
   std::string sweep, out;
   cmd.app.add_option("sweep", sweep, "the sweep folder (beds/, traces/)")->required();
-  cmd.number("--zmin", zmin, "window start, cm");
-  cmd.number("--zmax", zmax, "window end, cm");
-  cmd.app.add_option("--out", out, "output folder (default SWEEP_DIR)")->check(CLI::Validator(
-      [](std::string &v) { return v.empty() ? std::string("needs a folder") : std::string(); }, "DIR"));
+  cmd.number("--zmin", zmin, "window start, cm (default 1.0)")->type_name("Z");
+  cmd.number("--zmax", zmax, "window end, cm (default 3.0). The defaults are the bench scenario's\n"
+                            "usable depths: its bed is about 5.7 cm deep and the push goes to\n"
+                            "4 cm, so the last centimetre feels the floor, and the first grows\n"
+                            "through the impact peak. The paper fits z >= 3 cm in a 13.5 cm bed:\n"
+                            "widen the window for deeper beds.")
+      ->type_name("Z");
+  cmd.app.add_option("--out", out, "where to write (default SWEEP_DIR): calibration.csv, calibration.json,\n"
+                                   "calibration.md, and with gnuplot calibration_phi0.png and\n"
+                                   "calibration_kz.png (from calibration.gp, written beside them)")
+      ->check(file_name())->type_name("DIR");
   if (!cmd.parse(argc, argv)) return EXIT_OK;
   if (!(zmin < zmax)) throw UsageError("--zmin must be below --zmax");
   if (out.empty()) out = sweep;

@@ -45,16 +45,17 @@ int granpen::cli::collapse(int argc, char **argv)
   std::string csv, json;
   CollapseParams p;
   cmd.app.add_option("traces", inputs, "trace files, or folders of them")->required();
-  cmd.number("--kz-zmin", kz_zmin, "k_z window start, cm", true);
-  cmd.number("--kz-zmax", kz_zmax, "k_z window end, cm", true);
-  cmd.app.add_option("--alpha", alpha, "F_z = alpha mu rho_g g D^2 z instead of a fit")->check(positive_number());
-  cmd.app.add_option("--mu", mu_opt, "friction for --alpha (default: headers)")->check(positive_number());
-  cmd.app.add_option("--rho", rho_opt, "grain density for --alpha (default: headers)")->check(positive_number());
-  cmd.app.add_option("--band", p.band, "F/F_z within 1 +- band")->check(positive_number());
-  cmd.app.add_option("--tbin", p.tbin, "t~ bin width")->check(positive_number());
-  cmd.number("--zmin", p.zmin, "depths used, cm", true);
-  cmd.app.add_option("--csv", csv, "write the binned curves here");
-  cmd.app.add_option("--json", json, "write every result here");
+  cmd.number("--kz-zmin", kz_zmin, "k_z window start, cm (default 3)", true)->type_name("Z");
+  cmd.number("--kz-zmax", kz_zmax, "k_z window end, cm (default: the deepest point)", true)->type_name("Z");
+  cmd.app.add_option("--alpha", alpha, "F_z = alpha mu rho_g g D^2 z instead of a fit, > 0")->check(positive_number())->type_name("A");
+  cmd.app.add_option("--mu", mu_opt, "friction for --alpha (default: header key mu, else 0.3)")->check(positive_number())->type_name("MU");
+  cmd.app.add_option("--rho", rho_opt, "grain density for --alpha (default: header key rho_g, else 3)")
+      ->check(positive_number())->type_name("RHO");
+  cmd.app.add_option("--band", p.band, "crossover: F/F_z within 1 +- B (default 0.2)")->check(positive_number())->type_name("B");
+  cmd.app.add_option("--tbin", p.tbin, "t~ bin width (default 0.1)")->check(positive_number())->type_name("W");
+  cmd.number("--zmin", p.zmin, "depths used from Z, cm (default 0.2)", true)->type_name("Z");
+  cmd.app.add_option("--csv", csv, "write the binned curves (trace, v0, g, D, t~, F/F_z)")->type_name("FILE");
+  cmd.app.add_option("--json", json, "write every result as JSON")->type_name("FILE");
   if (!cmd.parse(argc, argv)) return EXIT_OK;
   if (!(kz_zmin < kz_zmax)) throw UsageError("--kz-zmin must be below --kz-zmax");
 

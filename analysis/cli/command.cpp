@@ -16,6 +16,16 @@ class Formatter : public CLI::Formatter {
  public:
   std::string make_usage(const CLI::App *, std::string) const override { return ""; }
   std::string make_description(const CLI::App *app) const override { return app->get_description(); }
+  // the value's name alone ("--axis X Y"): ranges and defaults are in the description
+  std::string make_option_opts(const CLI::Option *opt) const override
+  {
+    std::string out;
+    if (opt->get_type_size() != 0 && !opt->get_type_name().empty()) out += " " + opt->get_type_name();
+    if (opt->get_required()) out += " (required)";
+    return out;
+  }
+  // no "Positionals:" list: the usage line names them
+  std::string make_positionals(const CLI::App *) const override { return ""; }
 };
 
 // A text from the C++ library rather than from granpen: one word, no blank ("stod",
@@ -36,7 +46,7 @@ CLI::Validator finite_number(bool accept_underflow)
         double v;
         return number_arg(s, v, accept_underflow) ? std::string() : "needs a number, got '" + s + "'";
       },
-      "NUMBER");
+      "");
 }
 
 CLI::Validator positive_number()
@@ -47,7 +57,7 @@ CLI::Validator positive_number()
         if (!number_arg(s, v)) return "needs a number, got '" + s + "'";
         return v > 0 ? std::string() : "must be > 0, got '" + s + "'";
       },
-      "NUMBER > 0");
+      "");
 }
 
 CLI::Validator non_negative_number()
@@ -58,12 +68,19 @@ CLI::Validator non_negative_number()
         if (!number_arg(s, v)) return "needs a number, got '" + s + "'";
         return v >= 0 ? std::string() : "must be >= 0, got '" + s + "'";
       },
-      "NUMBER >= 0");
+      "");
+}
+
+CLI::Validator file_name()
+{
+  return CLI::Validator([](std::string &s) { return s.empty() ? std::string("needs a name") : std::string(); }, "");
 }
 
 Command::Command(const std::string &name, const std::string &prose) : app(prose, "granpen " + name), name_(name)
 {
-  app.formatter(std::make_shared<Formatter>());
+  auto formatter = std::make_shared<Formatter>();
+  formatter->column_width(24);
+  app.formatter(formatter);
   app.allow_extras();    // unknown words are named below, in granpen's wording
   app.set_help_flag("-h,--help", "this help");
 }

@@ -30,6 +30,8 @@ CLI::Validator finite_number(bool accept_underflow = false);
 // a whole number > 0 / >= 0
 CLI::Validator positive_number();
 CLI::Validator non_negative_number();
+// a file or folder name: not empty
+CLI::Validator file_name();
 
 // The parser of one subcommand. Its --help prints the prose (usage line, what it does,
 // outputs, exit status) and then the options as CLI11 lists them.

@@ -23,15 +23,7 @@ const char *HELP =
     "Writes the raw output of `fix ave/time` (scalar mode: one row per window, the TimeStep\n"
     "and the averaged values) as a granpen-trace v1 file:\n"
     "  t = (TimeStep - step0) * dt,  z = z0 + v0 t,  F = sign * the column's value.\n"
-    "LAMMPS writes no units, speed or geometry into the file, so they are options:\n"
-    "  --v0, --D, --g   push speed, rod diameter, gravity (in --units, default cgs)\n"
-    "  --dt             the timestep\n"
-    "  --column NAME    a column of the '# TimeStep' line (default: the first value column)\n"
-    "  --step0 N        the step at which the push began (default: the first row's step\n"
-    "                   minus the row spacing, i.e. the first window's start)\n"
-    "  --z0 Z           tip depth at step0 (default -0.5: the rod starts 0.5 above the surface)\n"
-    "  --sign -1        when the column is the force on the grains rather than on the rod\n"
-    "  --mu, --d_g, --rho_g  optional header keys\n"
+    "LAMMPS writes no units, speed or geometry into the file, so they are options.\n"
     "The trace is checked through the trace reader, then written to a temporary name and\n"
     "renamed: a failure leaves no TRACE.csv; TRACE.csv must not be FILE.\n"
     "Exit status 0, 1 for bad input, 2 for usage.\n";
@@ -70,20 +62,25 @@ int granpen::cli::convert(int argc, char **argv)
   std::string mu, d_g, rho_g;
   auto &app = cmd.app;
   app.add_option("file", in, "fix ave/time output (scalar mode)")->required();
-  app.add_option("--from", from, "input format")->check(CLI::IsMember({"ave/time"}));
-  app.add_option("--out", out, "the trace to write")->required();
-  app.add_option("--units", spec.units, "units of v0, D, g, dt")->check(CLI::IsMember({"cgs", "si"}));
-  app.add_option("--column", spec.column, "the column holding the force");
-  app.add_option("--v0", spec.v0, "push speed")->check(positive_number())->required();
-  app.add_option("--dt", spec.dt, "timestep")->check(positive_number())->required();
-  app.add_option("--D", spec.D, "rod diameter")->check(positive_number())->required();
-  app.add_option("--g", spec.g, "gravity")->check(positive_number())->required();
-  app.add_option("--step0", spec.step0, "the step at which the push began")->check(timestep());
-  cmd.number("--z0", spec.z0, "tip depth at step0", /*accept_underflow=*/true);
-  app.add_option("--sign", spec.sign, "-1: the column is the force on the grains")->check(unit_sign());
-  app.add_option("--mu", mu, "header key mu")->check(positive_number());
-  app.add_option("--d_g", d_g, "header key d_g")->check(positive_number());
-  app.add_option("--rho_g", rho_g, "header key rho_g")->check(positive_number());
+  app.add_option("--from", from, "input format")->type_name("FORMAT")->check(CLI::IsMember({"ave/time"}));
+  app.add_option("--out", out, "the trace to write")->required()->type_name("TRACE.csv");
+  app.add_option("--units", spec.units, "units of v0, D, g and dt (default cgs)")->type_name("UNITS")->check(CLI::IsMember({"cgs", "si"}));
+  app.add_option("--column", spec.column, "a column of the '# TimeStep' line (default: the first value column)")
+      ->type_name("NAME");
+  app.add_option("--v0", spec.v0, "push speed, > 0")->check(positive_number())->required()->type_name("V");
+  app.add_option("--dt", spec.dt, "the timestep, > 0")->check(positive_number())->required()->type_name("DT");
+  app.add_option("--D", spec.D, "rod diameter, > 0")->check(positive_number())->required()->type_name("D");
+  app.add_option("--g", spec.g, "gravity, > 0")->check(positive_number())->required()->type_name("G");
+  app.add_option("--step0", spec.step0, "the step at which the push began, at most the first row's (default:\n"
+                                         "the first row's step minus the row spacing, the first window's start)")
+      ->check(timestep())->type_name("N");
+  cmd.number("--z0", spec.z0, "tip depth at step0 (default -0.5: the rod starts 0.5 above the surface)",
+             /*accept_underflow=*/true)->type_name("Z");
+  app.add_option("--sign", spec.sign, "-1 when the column is the force on the grains rather than on the rod")
+      ->check(unit_sign())->type_name("+1|-1");
+  app.add_option("--mu", mu, "optional header key mu")->check(positive_number())->type_name("MU");
+  app.add_option("--d_g", d_g, "optional header key d_g")->check(positive_number())->type_name("DG");
+  app.add_option("--rho_g", rho_g, "optional header key rho_g")->check(positive_number())->type_name("RHO");
   if (!cmd.parse(argc, argv)) return EXIT_OK;
   for (const auto &key : {std::make_pair("mu", &mu), std::make_pair("d_g", &d_g), std::make_pair("rho_g", &rho_g)})
     if (!key.second->empty()) extra.emplace_back(key.first, *key.second);

@@ -41,18 +41,6 @@ const char *HELP =
     "  wavelength  dominant wavelength of F about the fit in the window (resampled to the\n"
     "         median dz, mean removed, Hann window, FFT; the lowest two bins excluded);\n"
     "         the paper sees fluctuations of wavelength about d_g\n"
-    "options:\n"
-    "  --zmin Z    window start, cm (default 3, the paper's z >= 3 cm)\n"
-    "  --tmin T    window start by t~ = (z/v0) sqrt(g/D) instead: z >= T v0 sqrt(D/g) per\n"
-    "              trace (the deep regime is t~ > 1)\n"
-    "  --zmax Z    window end, cm (default: the deepest depth of each trace)\n"
-    "  --mu MU     grain friction for alpha (default: header key mu, else 0.3)\n"
-    "  --rho RHO   grain density for alpha, g/cm^3 (default: header key rho_g, else 3.0)\n"
-    "              d_g comes from header key d_g, else 0.4 cm; the summary says which\n"
-    "              values were defaults\n"
-    "  --json FILE write the results as JSON (units cgs; undefined values are 0 with a\n"
-    "              false *_ok flag; unreadable traces under \"errors\")\n"
-    "  --csv FILE  write one CSV row per fitted trace\n"
     "Exit status: 0 when every trace was read, 1 when a trace (or an output file) failed,\n"
     "2 for a usage error. Quantities that cannot be fitted (e.g. a window without data)\n"
     "are reported as undefined and do not change the exit status.\n";
@@ -105,15 +93,21 @@ int granpen::cli::fit(int argc, char **argv)
   std::vector<std::string> inputs;
   auto &app = cmd.app;
   app.add_option("traces", inputs, "trace files, or folders of them")->required();
-  auto *zmin_opt = cmd.number("--zmin", zmin, "window start, cm");
-  auto *tmin_opt = app.add_option("--tmin", tmin, "window start by t~")->check(positive_number());
-  cmd.number("--zmax", zmax, "window end, cm");
-  auto *mu = app.add_option("--mu", mu_opt, "grain friction for alpha")->check(positive_number());
-  auto *rho = app.add_option("--rho", rho_opt, "grain density for alpha, g/cm^3")->check(positive_number());
-  app.add_option("--json", json_path, "write the results as JSON")->check(CLI::Validator(
-      [](std::string &v) { return v.empty() ? std::string("needs a file name") : std::string(); }, "FILE"));
-  app.add_option("--csv", csv_path, "write one CSV row per trace")->check(CLI::Validator(
-      [](std::string &v) { return v.empty() ? std::string("needs a file name") : std::string(); }, "FILE"));
+  auto *zmin_opt = cmd.number("--zmin", zmin, "window start, cm (default 3, the paper's z >= 3 cm)")->type_name("Z");
+  auto *tmin_opt = app.add_option("--tmin", tmin, "window start by t~ = (z/v0) sqrt(g/D) instead: z >= T v0 sqrt(D/g)\n"
+                                                  "per trace (the deep regime is t~ > 1)")
+                       ->check(positive_number())->type_name("T");
+  cmd.number("--zmax", zmax, "window end, cm (default: the deepest depth of each trace)")->type_name("Z");
+  auto *mu = app.add_option("--mu", mu_opt, "grain friction for alpha (default: header key mu, else 0.3)")
+                 ->check(positive_number())->type_name("MU");
+  auto *rho = app.add_option("--rho", rho_opt, "grain density for alpha, g/cm^3 (default: header key rho_g,\n"
+                                               "else 3.0); d_g comes from header key d_g, else 0.4 cm;\n"
+                                               "the summary says which values were defaults")
+                  ->check(positive_number())->type_name("RHO");
+  app.add_option("--json", json_path, "write the results as JSON (units cgs; undefined values are 0\n"
+                                      "with a false *_ok flag; unreadable traces under \"errors\")")
+      ->check(file_name())->type_name("FILE");
+  app.add_option("--csv", csv_path, "write one CSV row per fitted trace")->check(file_name())->type_name("FILE");
   if (!cmd.parse(argc, argv)) return EXIT_OK;
   const bool have_mu = mu->count() > 0, have_rho = rho->count() > 0;
   if (zmin_opt->count() > 0 && tmin_opt->count() > 0) throw UsageError("give --zmin or --tmin, not both");

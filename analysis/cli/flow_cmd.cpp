@@ -53,41 +53,6 @@ const char *HELP =
     "flow_profile_below.csv (z,vz,vz_se,phi), flow_edge_phi_I.csv (I,phi),\n"
     "flow_strip.csv (z,vz), flow_annulus.csv (t_tilde,z_tip,phi,vz,T),\n"
     "flow_surface.csv (t_tilde,z_tip,vz,grains).\n"
-    "options:\n"
-    "  --trace FILE       the push's force trace: v0, D, g, d_g, rho_g and the bed surface\n"
-    "                     (key surface) from its header\n"
-    "  --out DIR          output folder (made if missing; default .)\n"
-    "  --rod-type N       atom type of the rod (default 2); every other atom is a grain\n"
-    "  --axis X Y         fixed rod axis instead of the rod atoms' mean x, y\n"
-    "  --tip Z            fixed tip height instead of the rod atoms' lowest point\n"
-    "  --D D              rod diameter (default: trace header, else measured from the rod atoms\n"
-    "                     as fix rod/drive does: 2 max(r_xy + radius))\n"
-    "  --dg D             grain diameter for I and the default bins (default: trace header,\n"
-    "                     else the mean grain diameter of the first frame)\n"
-    "  --rho RHO          grain density for I and for masses without a mass column\n"
-    "                     (default: trace header rho_g, else 3.0)\n"
-    "  --v0 V --g G       push speed and gravity for t~ (default: trace header)\n"
-    "  --zs Z             bed surface height (default: trace header key surface, else measured\n"
-    "                     in the first frame as compute bed/surface does)\n"
-    "  --dr DR --dz DZ    bin sizes (default d_g), rounded to whole bins as the compute does\n"
-    "  --rmax R           outer radius of the bins (default half the smaller box width)\n"
-    "  --zlo Z --zhi Z    bin range about the tip (default -4 and 6)\n"
-    "  --voronoi WHAT     auto (default: column c_vor[1] if the dump has it, else voro++),\n"
-    "                     a column name, voro++ (tessellate each frame, as compute\n"
-    "                     flow/azimuthal voronoi voro++ does) or none\n"
-    "  --rod-cells        with voro++: the rod's spheres take part in the tessellation, so\n"
-    "                     that the grains' cells end at the rod surface instead of reaching\n"
-    "                     into the rod (phi next to the rod; the compute does not do this)\n"
-    "  --stress WHAT      auto (default: columns c_stress[1..3] if present), a compute ID\n"
-    "                     (columns c_ID[1] c_ID[2] c_ID[3] of compute stress/atom), or none\n"
-    "  --periodic AXES    periodic box directions among x, y: xy (default), x, y or none\n"
-    "  --profile-radius R cylinder radius of the profile below the rod (default D/3)\n"
-    "  --strip A B        strip distances from the shaft surface (default 0.5 1.5)\n"
-    "  --annulus R1 R2    annulus radii (default 2 3)\n"
-    "  --annulus-top H    the annulus starts H below the bed surface (default 0.5)\n"
-    "  --edge WR WZ       edge bins: centres within WR of r = R and WZ of z = 0 (default:\n"
-    "                     one bin size each)\n"
-    "  --steps A[:B]      only the frames with timesteps A to B (either may be left out)\n"
     "Units are the dump's (cgs for granpen's decks). Progress goes to stderr.\n"
     "Exit status: 0 on success, 1 for unreadable input (the message names file and line;\n"
     "no output is written), 2 for a usage error.\n";
@@ -121,17 +86,32 @@ bool parse_flow(int argc, char **argv, FlowOptions &o)
 {
   Command cmd("flow", HELP);
   static const std::vector<OptionSpec> spec = {
-      {"--trace", 1, "the push's force trace"}, {"--out", 1, "output folder"}, {"--rod-type", 1, "atom type of the rod"},
-      {"--axis", 2, "fixed rod axis X Y"}, {"--tip", 1, "fixed tip height"}, {"--D", 1, "rod diameter"},
-      {"--dg", 1, "grain diameter"}, {"--rho", 1, "grain density"}, {"--v0", 1, "push speed"}, {"--g", 1, "gravity"},
-      {"--zs", 1, "bed surface height"}, {"--dr", 1, "radial bin size"}, {"--dz", 1, "vertical bin size"},
-      {"--rmax", 1, "outer radius of the bins"}, {"--zlo", 1, "bin range below the tip"},
-      {"--zhi", 1, "bin range above the tip"}, {"--voronoi", 1, "auto, a column, voro++ or none"},
-      {"--stress", 1, "auto, a compute ID or none"}, {"--periodic", 1, "xy, x, y or none"},
-      {"--profile-radius", 1, "cylinder radius of the profile below the rod"}, {"--strip", 2, "strip distances A B"},
-      {"--annulus", 2, "annulus radii R1 R2"}, {"--annulus-top", 1, "annulus starts H below the surface"},
-      {"--edge", 2, "edge bin widths WR WZ"}, {"--steps", 1, "frames with timesteps A[:B]"},
-      {"--rod-cells", 0, "with voro++: the rod's spheres take part in the tessellation"}};
+      {"--trace", 1, "FILE", "the push's force trace: v0, D, g, d_g, rho_g and the bed surface\n(key surface) from its header"},
+      {"--out", 1, "DIR", "output folder (made if missing; default .)"},
+      {"--rod-type", 1, "N", "atom type of the rod (default 2); every other atom is a grain"},
+      {"--axis", 2, "X Y", "fixed rod axis instead of the rod atoms' mean x, y"},
+      {"--tip", 1, "Z", "fixed tip height instead of the rod atoms' lowest point"},
+      {"--D", 1, "D", "rod diameter (default: trace header, else measured from the rod\natoms as fix rod/drive does: 2 max(r_xy + radius))"},
+      {"--dg", 1, "D", "grain diameter for I and the default bins (default: trace header,\nelse the mean grain diameter of the first frame)"},
+      {"--rho", 1, "RHO", "grain density for I and for masses without a mass column\n(default: trace header rho_g, else 3.0)"},
+      {"--v0", 1, "V", "push speed for t~ (default: trace header)"},
+      {"--g", 1, "G", "gravity for t~ (default: trace header)"},
+      {"--zs", 1, "Z", "bed surface height (default: trace header key surface, else\nmeasured in the first frame as compute bed/surface does)"},
+      {"--dr", 1, "DR", "radial bin size (default d_g), rounded to whole bins as the compute does"},
+      {"--dz", 1, "DZ", "vertical bin size (default d_g), rounded likewise"},
+      {"--rmax", 1, "R", "outer radius of the bins (default half the smaller box width)"},
+      {"--zlo", 1, "Z", "bin range about the tip, lower end (default -4)"},
+      {"--zhi", 1, "Z", "bin range about the tip, upper end (default 6)"},
+      {"--voronoi", 1, "WHAT", "auto (default: column c_vor[1] if the dump has it, else voro++),\na column name, voro++ (tessellate each frame, as compute\nflow/azimuthal voronoi voro++ does) or none"},
+      {"--stress", 1, "WHAT", "auto (default: columns c_stress[1..3] if present), a compute ID\n(columns c_ID[1] c_ID[2] c_ID[3] of compute stress/atom), or none"},
+      {"--periodic", 1, "AXES", "periodic box directions among x, y: xy (default), x, y or none"},
+      {"--profile-radius", 1, "R", "cylinder radius of the profile below the rod (default D/3)"},
+      {"--strip", 2, "A B", "strip distances from the shaft surface (default 0.5 1.5)"},
+      {"--annulus", 2, "R1 R2", "annulus radii (default 2 3)"},
+      {"--annulus-top", 1, "H", "the annulus starts H below the bed surface (default 0.5)"},
+      {"--edge", 2, "WR WZ", "edge bins: centres within WR of r = R and WZ of z = 0 (default:\none bin size each)"},
+      {"--steps", 1, "A[:B]", "only the frames with timesteps A to B (either may be left out)"},
+      {"--rod-cells", 0, "", "with voro++: the rod's spheres take part in the tessellation, so\nthat the grains' cells end at the rod surface instead of reaching\ninto the rod (phi next to the rod; the compute does not do this)"}};
   ParsedArgs &args = o.args;
   if (!parse_table(cmd, spec, "dumps", argc, argv, args)) return false;
   std::string msg;

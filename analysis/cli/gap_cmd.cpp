@@ -33,23 +33,6 @@ const char *HELP =
     "     before and after, overall, per regime and at the held-out speed.\n"
     "Output (written to OUT.partial, then moved to OUT): diagnosis.json, report.md with\n"
     "figures, baseline/ and corrected/ (the simulated traces used, trace CSV v1).\n"
-    "options:\n"
-    "  --effects LIST  comma-separated candidates (default: all of them)\n"
-    "  --jobs N        simulations at once (default: the number of cores), every sweep's\n"
-    "                  runs in one pool\n"
-    "  --sweep-by-sweep  run the sweeps one after another, each with its own N (the\n"
-    "                  runner's old way: for bench/pool_vs_sweeps.sh)\n"
-    "  --cache DIR     simulation cache (default $GRANPEN_RUNS/gap_cache); interrupted, a\n"
-    "                  diagnosis resumes from it; a finished one reruns without simulating\n"
-    "  --lmp PATH, --inputs DIR   lmp_granpen and the decks (default: as ./granpen sets them)\n"
-    "  --prepare-only  only run the simulations the cache needs for --v0 speeds\n"
-    "  --fit-only      stop before step 4: the verdict is provisional (diagnosis.json:\n"
-    "                  \"confirmed\": false; nothing simulated on fresh seeds), G after = before\n"
-    "  --mpirun PROG --ranks R   run each simulation on R MPI ranks (mpirun, srun, ...)\n"
-    "  --slurm FILE    write a SLURM script preparing the cache on a cluster (--jobs runs at\n"
-    "                  once, R ranks each) and stop; a diagnosis whose simulations would take\n"
-    "                  more than 8 core-hours (the paper scenario) asks for this, or --local\n"
-    "  --list-effects  the candidate effects, their magnitudes and reference values\n"
     "Exit status: 0 diagnosis written, 1 simulations failed or input unreadable, 2 usage.\n";
 
 }    // namespace
@@ -78,23 +61,33 @@ int granpen::cli::gap(int argc, char **argv)
   opt.runner.jobs = (int) std::max(1u, std::thread::hardware_concurrency());
   bool sweep_by_sweep = false, list = false;
   auto &app = cmd.app;
-  app.add_option("--real", opt.real, "the measured traces' folder");
-  app.add_option("--scenario", opt.scenario, "the preset of the set-up");
-  app.add_option("--out", opt.out, "the diagnosis folder");
-  app.add_option("--cache", opt.cache, "simulation cache");
-  app.add_option("--lmp", opt.runner.lmp, "lmp_granpen");
-  app.add_option("--inputs", opt.runner.inputs, "the decks' folder");
-  app.add_flag("--prepare-only", opt.prepare_only, "only run the simulations the cache needs");
-  app.add_flag("--local", opt.local, "run a large diagnosis here anyway");
-  app.add_flag("--fit-only", opt.fit_only, "stop before the confirmation runs");
-  app.add_flag("--sweep-by-sweep", sweep_by_sweep, "run the sweeps one after another");
-  app.add_option("--slurm", opt.slurm, "write a SLURM script and stop");
-  app.add_option("--mpirun", opt.runner.mpirun, "MPI launcher");
-  app.add_option("--ranks", opt.runner.ranks, "MPI ranks per simulation")->check(CLI::Range(1, 1000000));
-  app.add_option("--v0", opt.v0, "speeds for --prepare-only and --slurm, e.g. \"50 100 200\"");
-  app.add_option("--effects", opt.effects, "comma-separated candidate effects");
-  app.add_option("--jobs", opt.runner.jobs, "simulations at once")->check(CLI::Range(1, 1024));
-  app.add_flag("--list-effects", list, "the candidate effects and their magnitudes");
+  app.add_option("--real", opt.real, "the measured traces' folder")->type_name("DIR");
+  app.add_option("--scenario", opt.scenario, "the preset of the set-up")->type_name("NAME");
+  app.add_option("--out", opt.out, "the diagnosis folder")->type_name("DIR");
+  app.add_option("--cache", opt.cache, "simulation cache (default $GRANPEN_RUNS/gap_cache); interrupted, a\n"
+                                     "diagnosis resumes from it; a finished one reruns without simulating")
+      ->type_name("DIR");
+  app.add_option("--lmp", opt.runner.lmp, "lmp_granpen (default: as ./granpen sets it)")->type_name("PATH");
+  app.add_option("--inputs", opt.runner.inputs, "the decks (default: as ./granpen sets them)")->type_name("DIR");
+  app.add_flag("--prepare-only", opt.prepare_only, "only run the simulations the cache needs for --v0 speeds");
+  app.add_flag("--local", opt.local, "run here a diagnosis whose simulations would take more than 8\n"
+                                      "core-hours (the paper scenario), instead of asking for --slurm");
+  app.add_flag("--fit-only", opt.fit_only, "stop before step 4: the verdict is provisional (diagnosis.json:\n"
+                                            "\"confirmed\": false; nothing simulated on fresh seeds), G after = before");
+  app.add_flag("--sweep-by-sweep", sweep_by_sweep, "run the sweeps one after another, each with its own N (the\n"
+                                                     "runner's old way: for bench/pool_vs_sweeps.sh)");
+  app.add_option("--slurm", opt.slurm, "write a SLURM script preparing the cache on a cluster (--jobs runs\n"
+                                     "at once, R ranks each) and stop")
+      ->type_name("FILE");
+  app.add_option("--mpirun", opt.runner.mpirun, "run each simulation through PROG (mpirun, srun, ...)")->type_name("PROG");
+  app.add_option("--ranks", opt.runner.ranks, "MPI ranks per simulation (with --mpirun)")->check(CLI::Range(1, 1000000).description(""))
+      ->type_name("R");
+  app.add_option("--v0", opt.v0, "speeds for --prepare-only and --slurm, e.g. \"50 100 200\"")->type_name("LIST");
+  app.add_option("--effects", opt.effects, "comma-separated candidates (default: all of them)")->type_name("LIST");
+  app.add_option("--jobs", opt.runner.jobs, "simulations at once, 1 to 1024 (default: the number of cores), every\n"
+                                                   "sweep's runs in one pool")
+      ->check(CLI::Range(1, 1024).description(""))->type_name("N");
+  app.add_flag("--list-effects", list, "the candidate effects, their magnitudes and reference values");
   if (!cmd.parse(argc, argv)) return EXIT_OK;
   if (sweep_by_sweep) opt.runner.pool = false;
   if (list) {

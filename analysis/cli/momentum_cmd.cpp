@@ -42,23 +42,6 @@ const char *HELP =
     "Outputs in DIR (default .): momentum.json (per frame and the fit, with errors),\n"
     "momentum_classes.csv (t_tilde,z_tip,class,count,p_up), momentum_drag.csv\n"
     "(t_tilde,z_tip,F,mu_g_M).\n"
-    "options:\n"
-    "  --trace FILE          force trace of the push (required): v0, D, g, mu, rho_g, surface, dt\n"
-    "  --out DIR             output folder (made if missing; default .)\n"
-    "  --thresholds F1 F2 F3 F4  class bounds as fractions of v0 (default 1/10 1/80 1/320\n"
-    "                        1/640), > 0 and decreasing; M_move then counts v_z > F3 v0\n"
-    "  --mthreshold F        M_move counts v_z > F v0 instead\n"
-    "  --mu MU               friction for mu g M (default: trace header mu, else 0.3)\n"
-    "  --rod-type N          atom type of the rod (default 2); every other atom is a grain\n"
-    "  --axis X Y            fixed rod axis; --tip Z fixed tip height (dumps without rod atoms)\n"
-    "  --D D                 rod diameter (default: the trace's)\n"
-    "  --rho RHO             grain density for masses without a mass column (default: trace\n"
-    "                        header rho_g, else 3.0)\n"
-    "  --zs Z                bed surface (default: the trace's surface key, else measured in the\n"
-    "                        first frame as compute bed/surface does)\n"
-    "  --push-step N         timestep at which the push began: match the trace by time\n"
-    "  --dt DT               timestep size for --push-step (default: the trace's dt key)\n"
-    "  --periodic AXES       periodic box directions among x, y: xy (default), x, y or none\n"
     "Units are the dump's and the trace's (cgs for granpen's decks). Progress goes to stderr.\n"
     "Exit status: 0 on success, 1 for unreadable input (the message names file and line;\n"
     "no output is written), 2 for a usage error.\n";
@@ -78,12 +61,20 @@ bool parse_momentum(int argc, char **argv, MomentumOptions &o)
 {
   Command cmd("momentum", HELP);
   static const std::vector<OptionSpec> spec = {
-      {"--trace", 1, "force trace of the push (required)"}, {"--out", 1, "output folder"},
-      {"--thresholds", 4, "class bounds F1 F2 F3 F4 as fractions of v0"}, {"--mthreshold", 1, "M_move counts v_z > F v0"},
-      {"--mu", 1, "friction for mu g M"}, {"--rod-type", 1, "atom type of the rod"}, {"--axis", 2, "fixed rod axis X Y"},
-      {"--tip", 1, "fixed tip height"}, {"--D", 1, "rod diameter"}, {"--rho", 1, "grain density"},
-      {"--zs", 1, "bed surface"}, {"--push-step", 1, "timestep at which the push began"},
-      {"--dt", 1, "timestep size for --push-step"}, {"--periodic", 1, "xy, x, y or none"}};
+      {"--trace", 1, "FILE", "force trace of the push (required): v0, D, g, mu, rho_g, surface, dt"},
+      {"--out", 1, "DIR", "output folder (made if missing; default .)"},
+      {"--thresholds", 4, "F1 F2 F3 F4", "class bounds as fractions of v0 (default 1/10 1/80 1/320\n1/640), > 0 and decreasing; M_move then counts v_z > F3 v0"},
+      {"--mthreshold", 1, "F", "M_move counts v_z > F v0 instead"},
+      {"--mu", 1, "MU", "friction for mu g M (default: trace header mu, else 0.3)"},
+      {"--rod-type", 1, "N", "atom type of the rod (default 2); every other atom is a grain"},
+      {"--axis", 2, "X Y", "fixed rod axis (dumps without rod atoms)"},
+      {"--tip", 1, "Z", "fixed tip height (dumps without rod atoms)"},
+      {"--D", 1, "D", "rod diameter (default: the trace's)"},
+      {"--rho", 1, "RHO", "grain density for masses without a mass column (default: trace\nheader rho_g, else 3.0)"},
+      {"--zs", 1, "Z", "bed surface (default: the trace's surface key, else measured in\nthe first frame as compute bed/surface does)"},
+      {"--push-step", 1, "N", "timestep at which the push began: match the trace by time"},
+      {"--dt", 1, "DT", "timestep size for --push-step (default: the trace's dt key)"},
+      {"--periodic", 1, "AXES", "periodic box directions among x, y: xy (default), x, y or none"}};
   ParsedArgs &args = o.args;
   if (!parse_table(cmd, spec, "dumps", argc, argv, args)) return false;
   std::string msg;

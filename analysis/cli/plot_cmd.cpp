@@ -45,16 +45,6 @@ const char *HELP =
     "  momentum DIR   momentum_classes.csv (upward momentum and counts per speed class\n"
     "                 against t~) and momentum_drag.csv (F against mu g M(v_z > v0/320)\n"
     "                 with the 1:1 line).                -> momentum_classes, momentum_drag\n"
-    "options:\n"
-    "  --out DIR      output folder (required; created)\n"
-    "  --no-run       write the scripts and data only, do not run gnuplot\n"
-    "  --each         force: draw every run rather than the mean and range per v0\n"
-    "  --kz-zmin Z, --kz-zmax Z  k_z window, cm (default 3 cm to the deepest point, as\n"
-    "                 granpen fit and granpen collapse)\n"
-    "  --alpha A [--mu MU --rho RHO]  ratio: F_z = alpha mu rho_g g D^2 z instead of the fit\n"
-    "  --band B, --tbin W, --zmin Z   ratio: as granpen collapse (0.2, 0.1, 0.2 cm)\n"
-    "  --D D          flow: rod diameter in cm when the tables' headers do not give it\n"
-    "                 (default 2)\n"
     "gnuplot (gnuplot-nox; $GRANPEN_GNUPLOT overrides the program) needs the pngcairo\n"
     "and svg terminals. Exit status: 0 when every figure was made, 1 when an input was\n"
     "unusable or gnuplot is missing or failed (the scripts and data are still written),\n"
@@ -109,20 +99,25 @@ int granpen::cli::plot(int argc, char **argv)
   auto &app = cmd.app;
   app.add_option("kind", kind, "force, ratio, peak, kz, flow or momentum")->required();
   app.add_option("inputs", inputs, "traces or folders (flow, momentum: the tables' folder)");
-  app.add_option("--out", o.out, "output folder")->check(CLI::Validator(
-      [](std::string &v) { return v.empty() ? std::string("needs a folder") : std::string(); }, "DIR"));
+  app.add_option("--out", o.out, "output folder (required; created)")->check(file_name())->type_name("DIR");
   bool no_run = false;
-  app.add_flag("--no-run", no_run, "scripts and data only, gnuplot not run");
-  app.add_flag("--each", o.each, "force: every run instead of mean and band");
-  cmd.number("--kz-zmin", o.kz_zmin, "k_z window start, cm");
-  cmd.number("--kz-zmax", o.kz_zmax, "k_z window end, cm");
-  app.add_option("--alpha", o.alpha, "ratio: F_z from alpha")->check(non_negative_number());
-  app.add_option("--mu", o.mu, "friction for --alpha")->check(non_negative_number());
-  app.add_option("--rho", o.rho, "grain density for --alpha")->check(non_negative_number());
-  app.add_option("--band", o.collapse.band, "F/F_z within 1 +- band")->check(positive_number());
-  app.add_option("--tbin", o.collapse.tbin, "t~ bin width")->check(positive_number());
-  cmd.number("--zmin", o.collapse.zmin, "depths used, cm");
-  app.add_option("--D", o.D, "flow: rod diameter when the tables do not say")->check(non_negative_number());
+  app.add_flag("--no-run", no_run, "write the scripts and data only, do not run gnuplot");
+  app.add_flag("--each", o.each, "force: draw every run rather than the mean and range per v0");
+  cmd.number("--kz-zmin", o.kz_zmin, "k_z window start, cm (default 3, as granpen fit and collapse)")->type_name("Z");
+  cmd.number("--kz-zmax", o.kz_zmax, "k_z window end, cm (default: the deepest point)")->type_name("Z");
+  app.add_option("--alpha", o.alpha, "ratio: F_z = alpha mu rho_g g D^2 z instead of the fit")
+      ->check(non_negative_number())->type_name("A");
+  app.add_option("--mu", o.mu, "ratio: friction for --alpha (default: header key mu)")->check(non_negative_number())
+      ->type_name("MU");
+  app.add_option("--rho", o.rho, "ratio: grain density for --alpha (default: header key rho_g)")
+      ->check(non_negative_number())->type_name("RHO");
+  app.add_option("--band", o.collapse.band, "ratio: as granpen collapse (default 0.2)")->check(positive_number())
+      ->type_name("B");
+  app.add_option("--tbin", o.collapse.tbin, "ratio: as granpen collapse (default 0.1)")->check(positive_number())
+      ->type_name("W");
+  cmd.number("--zmin", o.collapse.zmin, "ratio: as granpen collapse (default 0.2 cm)")->type_name("Z");
+  app.add_option("--D", o.D, "flow: rod diameter in cm when the tables' headers do not give it\n(default 2)")
+      ->check(non_negative_number())->type_name("D");
   if (!cmd.parse(argc, argv)) return EXIT_OK;
   static const char *kinds[] = {"force", "ratio", "peak", "kz", "flow", "momentum"};
   if (std::find_if(std::begin(kinds), std::end(kinds), [&](const char *k) { return kind == k; }) == std::end(kinds))

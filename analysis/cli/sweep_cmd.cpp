@@ -51,15 +51,18 @@ int granpen::cli::sweep(int argc, char **argv)
   bool plan_only = false;
   auto &app = cmd.app;
   app.add_option("spec", spec_path, "the sweep file")->required();
-  app.add_option("--jobs", opt.jobs, "runs at once")->check(CLI::Range(1, 1000000));
-  app.add_option("--out", opt.out_root, "output root (runs/NAME)");
-  app.add_option("--checkpoint", opt.checkpoint, "checkpoint every STEPS steps")->check(CLI::Range(1, 1000000));
-  app.add_option("--mpirun", opt.mpirun, "MPI launcher");
-  app.add_option("--ranks", opt.ranks, "MPI ranks per run")->check(CLI::Range(1, 1000000));
-  app.add_option("--only", opt.only_index, "run planned run K alone")->check(CLI::Range(0, 1000000));
-  app.add_option("--slurm", slurm, "write a SLURM job-array script instead of running");
-  app.add_option("--lmp", opt.lmp, "lmp_granpen");
-  app.add_option("--inputs", opt.inputs, "the decks' folder");
+  app.add_option("--jobs", opt.jobs, "runs at once, 1 or more (default: the number of cores)")->check(CLI::Range(1, 1000000).description(""))->type_name("N");
+  app.add_option("--out", opt.out_root, "output root: DIR/NAME (default runs)")->check(file_name())->type_name("DIR");
+  app.add_option("--checkpoint", opt.checkpoint, "push checkpoint every STEPS steps (default 5000)")->check(CLI::Range(1, 1000000).description(""))
+      ->type_name("STEPS");
+  app.add_option("--mpirun", opt.mpirun, "run each simulation through this MPI launcher")->type_name("PROG");
+  app.add_option("--ranks", opt.ranks, "MPI ranks per run (with --mpirun)")->check(CLI::Range(1, 1000000).description(""))->type_name("N");
+  app.add_option("--only", opt.only_index, "run planned run K alone (what each SLURM array task does)")
+      ->check(CLI::Range(0, 1000000).description(""))->type_name("K");
+  app.add_option("--slurm", slurm, "write a SLURM job-array script instead of running")->check(file_name())
+      ->type_name("FILE");
+  app.add_option("--lmp", opt.lmp, "lmp_granpen (default $GRANPEN_LMP)")->type_name("PATH");
+  app.add_option("--inputs", opt.inputs, "the decks' folder (default $GRANPEN_INPUTS)")->type_name("DIR");
   app.add_flag("--plan", plan_only, "list the planned runs");
   if (!cmd.parse(argc, argv)) return EXIT_OK;
   if (!slurm.empty()) refuse_overwriting_inputs(slurm, "--slurm", {spec_path});

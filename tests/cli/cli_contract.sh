@@ -30,7 +30,7 @@ expect() {
 same() { cmp -s "$1" "$2" || fail "$1 changed"; }
 
 # ---- --help from the parser: exit 0, the option list with one of each's options
-for sc in "convert --sign" "check traces" "fit --zmin" "calibration --zmin" "collapse --band" \
+for sc in "convert --sign" "check --help" "fit --zmin" "calibration --zmin" "collapse --band" \
           "sweep --jobs" "flow --voronoi" "momentum --thresholds" "plot --no-run" "gap --scenario"; do
   set -- $sc
   cases=$((cases + 1))
