@@ -127,6 +127,17 @@ void Command::refuse_unknown_words() const
   if (!rest.empty()) throw UsageError("unexpected argument '" + rest.front() + "'");
 }
 
+std::string user_text(const std::exception &e)
+{
+  const std::string what = e.what();
+  if (dynamic_cast<const std::bad_alloc *>(&e))
+    return "out of memory (an input or an option asks for more than this machine has)";
+  if (!library_text(what)) return what;
+  if (dynamic_cast<const std::invalid_argument *>(&e)) return "a value is not a number";
+  if (dynamic_cast<const std::out_of_range *>(&e)) return "a value is out of range";
+  return "internal failure; please report it with the command line";
+}
+
 int run_subcommand(const char *name, int (*fn)(int, char **), int argc, char **argv)
 {
   try {
@@ -140,14 +151,8 @@ int run_subcommand(const char *name, int (*fn)(int, char **), int argc, char **a
   } catch (const CLI::Error &e) {
     report(name, e.what());
     return EXIT_USAGE;
-  } catch (const std::bad_alloc &) {
-    report(name, "out of memory (an input or an option asks for more than this machine has)");
-  } catch (const std::invalid_argument &e) {
-    report(name, library_text(e.what()) ? "a value is not a number" : e.what());
-  } catch (const std::out_of_range &e) {
-    report(name, library_text(e.what()) ? "a value is out of range" : e.what());
   } catch (const std::exception &e) {
-    report(name, library_text(e.what()) ? "internal failure; please report it with the command line" : e.what());
+    report(name, user_text(e));
   } catch (...) {
     report(name, "internal failure; please report it with the command line");
   }

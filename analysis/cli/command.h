@@ -55,6 +55,10 @@ class Command {
   std::string name_;
 };
 
+// What an exception says to the user: its message, or for the C++ library's own terse
+// texts ("stod", "basic_string::_M_create", std::bad_alloc) what they mean.
+std::string user_text(const std::exception &e);
+
 // Runs fn(argc, argv) for subcommand name, the top-level handler: UsageError and CLI11's
 // errors -> "granpen NAME: error: ..." and 2; any other exception (InputError,
 // OutputError, std::bad_alloc, std::invalid_argument, ...) -> "granpen NAME: error: ..."

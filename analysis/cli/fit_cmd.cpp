@@ -133,9 +133,9 @@ int granpen::cli::fit(int argc, char **argv)
   for (const auto &file : files) {
     try {
       results.push_back(fit_trace_file(file, w));
-    } catch (std::exception &e) {
-      std::fprintf(stderr, "granpen fit: %s\n", e.what());
-      failures.push_back({file, e.what()});
+    } catch (std::exception &e) {    // one bad trace: the others are still fitted
+      std::fprintf(stderr, "granpen fit: %s\n", user_text(e).c_str());
+      failures.push_back({file, user_text(e)});
       continue;
     }
     print_result(results.back());
