@@ -3,75 +3,14 @@
 
 #include <cerrno>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 
 namespace granpen {
 namespace cli {
 
-int Usage::operator()(const std::string &what) const
-{
-  std::fprintf(stderr, "granpen %s: %s\n(granpen %s --help for usage)\n", name, what.c_str(), name);
-  return 2;
-}
-
-int Usage::bare(const std::string &what) const
-{
-  std::fprintf(stderr, "granpen %s: %s\n", name, what.c_str());
-  return 2;
-}
-
-int Usage::with_help(const std::string &what) const
-{
-  std::fprintf(stderr, "granpen %s: %s\n%s", name, what.c_str(), help);
-  return 2;
-}
-
-int Usage::help_asked() const
-{
-  std::fputs(help, stdout);
-  return 0;
-}
-
-int Usage::no_arguments() const
-{
-  std::fputs(help, stderr);
-  return 2;
-}
-
-std::string unknown_option(const std::string &option) { return "unknown option '" + option + "'"; }
-std::string needs_value(const std::string &option) { return option + " needs a value"; }
-
-std::string needs_number(const std::string &option, const std::string &value)
-{
-  return option + " needs a number, got '" + value + "'";
-}
-
 std::string not_a_number(const std::string &option, const std::string &value)
 {
   return option + " '" + value + "' is not a number";
-}
-
-std::string needs_integer(const std::string &option, long long lo, const std::string &value)
-{
-  return option + " needs an integer >= " + std::to_string(lo) + ", got '" + value + "'";
-}
-
-bool is_option(const std::string &word) { return word.size() > 2 && word.compare(0, 2, "--") == 0; }
-
-bool split_option(const std::string &word, std::string &name, std::string &value)
-{
-  const auto eq = word.find('=');
-  name = word.substr(0, eq);
-  value = eq == std::string::npos ? std::string() : word.substr(eq + 1);
-  return eq != std::string::npos;
-}
-
-bool next_value(int argc, char **argv, int &i, std::string &value)
-{
-  if (i + 1 >= argc) return false;
-  value = argv[++i];
-  return true;
 }
 
 bool number_arg(const std::string &s, double &v, bool accept_underflow)
@@ -88,14 +27,6 @@ bool integer_arg(const std::string &s, long long &v)
   errno = 0;
   v = std::strtoll(s.c_str(), &end, 10);
   return !s.empty() && end && *end == '\0' && errno != ERANGE;
-}
-
-bool integer_arg(const std::string &s, long long lo, long long hi, int &v)
-{
-  long long n;
-  if (!integer_arg(s, n) || n < lo || n > hi) return false;
-  v = (int) n;
-  return true;
 }
 
 std::string ParsedArgs::value(const std::string &name, const std::string &fallback) const
@@ -140,44 +71,22 @@ bool ParsedArgs::positive(std::initializer_list<const char *> names, std::string
   return true;
 }
 
-bool parse_args(int argc, char **argv, const std::map<std::string, int> &spec, ParsedArgs &out,
-                std::string &message)
+bool parse_table(Command &cmd, const std::vector<OptionSpec> &spec, const char *positional, int argc, char **argv,
+                 ParsedArgs &out)
 {
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "--help" || a == "-h") {
-      out.help = true;
-      continue;
-    }
-    if (!is_option(a)) {
-      out.positional.push_back(a);
-      continue;
-    }
-    std::string name, inline_value;
-    const bool has_inline = split_option(a, name, inline_value);
-    const auto it = spec.find(name);
-    if (it == spec.end()) {
-      message = unknown_option(name);
-      return false;
-    }
-    std::vector<std::string> values;
-    if (has_inline) {
-      if (it->second != 1) {
-        message = name + " takes " + std::to_string(it->second) + " values, not " + name + "=VALUE";
-        return false;
-      }
-      values.push_back(inline_value);
-    } else {
-      for (int k = 0; k < it->second; ++k) {
-        std::string v;
-        if (!next_value(argc, argv, i, v)) {
-          message = name + " needs " + std::to_string(it->second) + (it->second == 1 ? " value" : " values");
-          return false;
-        }
-        values.push_back(v);
-      }
-    }
-    out.options[name] = values;
+  std::vector<CLI::Option *> added;
+  for (const auto &o : spec)
+    added.push_back(o.values == 0 ? cmd.app.add_flag(o.name, o.what)
+                                  : cmd.app.add_option(o.name, o.what)->expected(o.values)->take_last()->type_name(o.type));
+  cmd.app.add_option(positional, out.positional, positional);
+  if (!cmd.parse(argc, argv)) return false;
+  for (std::size_t k = 0; k < spec.size(); ++k) {
+    if (added[k]->count() == 0) continue;
+    const auto values = spec[k].values == 0 ? std::vector<std::string>() : added[k]->results();
+    if ((int) values.size() != spec[k].values)
+      throw UsageError(std::string(spec[k].name) + " needs " + std::to_string(spec[k].values) +
+                       (spec[k].values == 1 ? " value" : " values"));
+    out.options[spec[k].name] = values;
   }
   return true;
 }

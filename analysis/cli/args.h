@@ -1,8 +1,10 @@
-// granpen subcommands: the argument helpers they share. Each subcommand keeps its own
-// option table, loop and help text in its file; from here come the usage-error lines,
-// their wording, the reading of option values and of numbers in them.
+// granpen subcommands: the argument helpers they share: the reading of numbers, and (for
+// flow and momentum, whose many options are read as numbers by name) an option table
+// parsed by the one parser (command.h) into ParsedArgs.
 #ifndef GRANPEN_CLI_ARGS_H
 #define GRANPEN_CLI_ARGS_H
+
+#include "command.h"
 
 #include <initializer_list>
 #include <map>
@@ -13,33 +15,8 @@
 namespace granpen {
 namespace cli {
 
-// A subcommand's usage errors and help. The error lines go to stderr as
-// "granpen NAME: WHAT"; every function returns the exit status, 2 for a usage error.
-struct Usage {
-  const char *name;    // the subcommand, e.g. "flow"
-  const char *help;    // its help text
-
-  int operator()(const std::string &what) const;    // the line and "(granpen NAME --help for usage)"
-  int bare(const std::string &what) const;          // the line alone
-  int with_help(const std::string &what) const;     // the line and the help text
-  int help_asked() const;                           // the help text on stdout; 0
-  int no_arguments() const;                         // the help text on stderr; 2
-};
-
-// The wording of the usual complaints.
-std::string unknown_option(const std::string &option);                       // unknown option 'OPTION'
-std::string needs_value(const std::string &option);                          // OPTION needs a value
-std::string needs_number(const std::string &option, const std::string &value);    // OPTION needs a number, got 'VALUE'
-std::string not_a_number(const std::string &option, const std::string &value);    // OPTION 'VALUE' is not a number
-std::string needs_integer(const std::string &option, long long lo, const std::string &value);
-                                                                              // OPTION needs an integer >= LO, got 'VALUE'
-
-// An option word: "--" and a name ("--" alone is not one).
-bool is_option(const std::string &word);
-// "--name=value": name and value, true; any other word: name = word, value empty, false.
-bool split_option(const std::string &word, std::string &name, std::string &value);
-// The argument after argv[i] into value, i stepping on to it; false when argv[i] is the last.
-bool next_value(int argc, char **argv, int &i, std::string &value);
+// "OPTION 'VALUE' is not a number"
+std::string not_a_number(const std::string &option, const std::string &value);
 
 // s as a whole finite number (strtod; s empty, trailing text or overflow: false). Out of
 // range below (strtod's ERANGE for a value too small for a double) is refused unless
@@ -47,17 +24,12 @@ bool next_value(int argc, char **argv, int &i, std::string &value);
 bool number_arg(const std::string &s, double &v, bool accept_underflow = false);
 // s as a whole base-10 integer (strtoll; out of range: false)
 bool integer_arg(const std::string &s, long long &v);
-// s as a whole integer in lo..hi
-bool integer_arg(const std::string &s, long long lo, long long hi, int &v);
 
-// A command line: positional arguments and options "--name V..." (spec: name -> number
-// of values; "--name=V" for one value). help: --help or -h was given. parse_args returns
-// false with a message for an unknown option or missing values.
+// A command line: positional arguments and options "--name V..." (the values as text).
 struct ParsedArgs {
   std::vector<std::string> positional;
   std::map<std::string, std::vector<double>> numbers;         // by read_numbers
   std::map<std::string, std::vector<std::string>> options;    // the last of repeated ones
-  bool help = false;
 
   bool has(const std::string &name) const { return options.count(name) > 0; }
   // the (first) value of option name, fallback when it was not given
@@ -70,8 +42,19 @@ struct ParsedArgs {
   // false with "NAME must be > 0" for the first of names given with a number <= 0
   bool positive(std::initializer_list<const char *> names, std::string &message) const;
 };
-bool parse_args(int argc, char **argv, const std::map<std::string, int> &spec, ParsedArgs &out,
-                std::string &message);
+
+// One option of a table: its name, how many values it takes (0: a flag), their names in
+// the help (e.g. "X Y"), what it is.
+struct OptionSpec {
+  const char *name;
+  int values;
+  const char *type;
+  const char *what;
+};
+// The options of spec and the positional arguments (named positional) on cmd's parser,
+// parsed into out; false when --help was printed (Command::parse; usage errors throw).
+bool parse_table(Command &cmd, const std::vector<OptionSpec> &spec, const char *positional, int argc, char **argv,
+                 ParsedArgs &out);
 
 }    // namespace cli
 }    // namespace granpen

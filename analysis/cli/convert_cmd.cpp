@@ -1,10 +1,14 @@
 // granpen convert FILE --from ave/time ...: a force trace in another format written as a
 // granpen-trace v1 file, so that every other subcommand reads it.
 #include "args.h"
+#include "atomic_file.h"
+#include "command.h"
 #include "subcommands.h"
 #include "trace_reader.h"
+#include "text_util.h"
 #include "trace_writer.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -19,54 +23,68 @@ const char *HELP =
     "Writes the raw output of `fix ave/time` (scalar mode: one row per window, the TimeStep\n"
     "and the averaged values) as a granpen-trace v1 file:\n"
     "  t = (TimeStep - step0) * dt,  z = z0 + v0 t,  F = sign * the column's value.\n"
-    "LAMMPS writes no units, speed or geometry into the file, so they are options:\n"
-    "  --v0, --D, --g   push speed, rod diameter, gravity (in --units, default cgs)\n"
-    "  --dt             the timestep\n"
-    "  --column NAME    a column of the '# TimeStep' line (default: the first value column)\n"
-    "  --step0 N        the step at which the push began (default: the first row's step\n"
-    "                   minus the row spacing, i.e. the first window's start)\n"
-    "  --z0 Z           tip depth at step0 (default -0.5: the rod starts 0.5 above the surface)\n"
-    "  --sign -1        when the column is the force on the grains rather than on the rod\n"
-    "  --mu, --d_g, --rho_g  optional header keys\n"
-    "The trace is written to TRACE.csv.tmp, read back through the trace reader, then\n"
-    "renamed: a failure leaves no TRACE.csv. Exit status 0, 1 for bad input, 2 for usage.\n";
+    "LAMMPS writes no units, speed or geometry into the file, so they are options.\n"
+    "The trace is checked through the trace reader, then written to a temporary name and\n"
+    "renamed: a failure leaves no TRACE.csv; TRACE.csv must not be FILE.\n"
+    "Exit status 0, 1 for bad input, 2 for usage.\n";
 
-const granpen::cli::Usage usage{"convert", HELP};
+// --sign: +1 or -1 only
+CLI::Validator unit_sign()
+{
+  return CLI::Validator(
+      [](std::string &s) -> std::string {
+        double v;
+        return granpen::cli::number_arg(s, v) && (v == 1.0 || v == -1.0) ? std::string()
+                                                                         : "must be +1 or -1, got '" + s + "'";
+      },
+      "+1|-1");
+}
+
+// --step0: a timestep, a whole number >= 0
+CLI::Validator timestep()
+{
+  return CLI::Validator(
+      [](std::string &s) -> std::string {
+        long long n;
+        return granpen::cli::integer_arg(s, n) && n >= 0 ? std::string() : "must be a timestep (an integer >= 0), got '" + s + "'";
+      },
+      "STEP");
+}
 
 }    // namespace
 
 int granpen::cli::convert(int argc, char **argv)
 {
-  if (argc < 1) return usage.no_arguments();
-  if (!std::strcmp(argv[0], "--help")) return usage.help_asked();
+  Command cmd("convert", HELP);
   AveTimeSpec spec;
-  std::string in = argv[0], out, from = "ave/time";
+  std::string in, out, from = "ave/time";
   std::vector<std::pair<std::string, std::string>> extra;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    std::string v;
-    if (!next_value(argc, argv, i, v)) return usage.bare(needs_value(a));
-    auto number = [&]() {
-      double x;
-      if (!number_arg(v, x, /*accept_underflow=*/true)) std::exit(usage.bare(needs_number(a, v)));
-      return x;
-    };
-    if (a == "--from") from = v;
-    else if (a == "--out") out = v;
-    else if (a == "--units") spec.units = v;
-    else if (a == "--column") spec.column = v;
-    else if (a == "--v0") spec.v0 = number();
-    else if (a == "--dt") spec.dt = number();
-    else if (a == "--D") spec.D = number();
-    else if (a == "--g") spec.g = number();
-    else if (a == "--step0") spec.step0 = number();
-    else if (a == "--z0") spec.z0 = number();
-    else if (a == "--sign") spec.sign = number() < 0 ? -1.0 : 1.0;
-    else if (a == "--mu" || a == "--d_g" || a == "--rho_g") extra.emplace_back(a.substr(2), (number(), v));
-    else return usage.with_help(unknown_option(a));
-  }
-  if (from != "ave/time") return usage.bare("--from " + from + ": only ave/time is known");
-  if (out.empty()) return usage.bare("--out TRACE.csv is required");
+  std::string mu, d_g, rho_g;
+  auto &app = cmd.app;
+  app.add_option("file", in, "fix ave/time output (scalar mode)")->required();
+  app.add_option("--from", from, "input format")->type_name("FORMAT")->check(CLI::IsMember({"ave/time"}));
+  app.add_option("--out", out, "the trace to write")->required()->type_name("TRACE.csv");
+  app.add_option("--units", spec.units, "units of v0, D, g and dt (default cgs)")->type_name("UNITS")->check(CLI::IsMember({"cgs", "si"}));
+  app.add_option("--column", spec.column, "a column of the '# TimeStep' line (default: the first value column)")
+      ->type_name("NAME");
+  app.add_option("--v0", spec.v0, "push speed, > 0")->check(positive_number())->required()->type_name("V");
+  app.add_option("--dt", spec.dt, "the timestep, > 0")->check(positive_number())->required()->type_name("DT");
+  app.add_option("--D", spec.D, "rod diameter, > 0")->check(positive_number())->required()->type_name("D");
+  app.add_option("--g", spec.g, "gravity, > 0")->check(positive_number())->required()->type_name("G");
+  app.add_option("--step0", spec.step0, "the step at which the push began, at most the first row's (default:\n"
+                                         "the first row's step minus the row spacing, the first window's start)")
+      ->check(timestep())->type_name("N");
+  cmd.number("--z0", spec.z0, "tip depth at step0 (default -0.5: the rod starts 0.5 above the surface)",
+             /*accept_underflow=*/true)->type_name("Z");
+  app.add_option("--sign", spec.sign, "-1 when the column is the force on the grains rather than on the rod")
+      ->check(unit_sign())->type_name("+1|-1");
+  app.add_option("--mu", mu, "optional header key mu")->check(positive_number())->type_name("MU");
+  app.add_option("--d_g", d_g, "optional header key d_g")->check(positive_number())->type_name("DG");
+  app.add_option("--rho_g", rho_g, "optional header key rho_g")->check(positive_number())->type_name("RHO");
+  if (!cmd.parse(argc, argv)) return EXIT_OK;
+  for (const auto &key : {std::make_pair("mu", &mu), std::make_pair("d_g", &d_g), std::make_pair("rho_g", &rho_g)})
+    if (!key.second->empty()) extra.emplace_back(key.first, *key.second);
+  refuse_overwriting_inputs(out, "--out", {in});
   try {
     const Trace t = read_ave_time(in, spec);
     TraceHeader h;
@@ -76,28 +94,18 @@ int granpen::cli::convert(int argc, char **argv)
     h.g = t.g;
     h.extra = extra;
     h.extra.emplace_back("source", t.keys.at("source"));
-    const std::string tmp = out + ".tmp";
-    std::FILE *f = std::fopen(tmp.c_str(), "w");
-    if (!f) throw InputError(tmp + ": cannot write");
     std::string text = format_trace_header(h);
     for (std::size_t i = 0; i < t.t.size(); ++i) text += format_trace_row({t.t[i], t.z[i], t.F[i]});
-    const bool ok = std::fwrite(text.data(), 1, text.size(), f) == text.size();
-    if (std::fclose(f) != 0 || !ok) {
-      std::remove(tmp.c_str());
-      throw InputError(tmp + ": write failed");
-    }
-    try {
-      read_trace(tmp);
-    } catch (InputError &e) {
-      std::remove(tmp.c_str());
-      throw;
-    }
-    if (std::rename(tmp.c_str(), out.c_str()) != 0) throw InputError(out + ": cannot rename " + tmp);
+    if (!std::isnan(spec.step0) && t.t.front() < 0.0)
+      throw InputError(in + ": --step0 " + std::to_string((long long) spec.step0) +
+                       " is after the file's first timestep (t would start at " + printf_number("%g", t.t.front()) + " s)");
+    parse_trace(text, out);    // what every other subcommand will read back
+    write_file_atomic(out, text);
     std::printf("granpen convert: %s -> %s: %zu rows, t = %.6g to %.6g s, z = %.4g to %.4g\n", in.c_str(), out.c_str(),
                 t.t.size(), t.t.front(), t.t.back(), t.z.front(), t.z.back());
     return 0;
   } catch (InputError &e) {
     std::fprintf(stderr, "granpen convert: %s\n", e.what());
-    return 1;
+    return EXIT_FAILED;
   }
 }

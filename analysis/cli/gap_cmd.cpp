@@ -1,6 +1,7 @@
 // granpen gap --real DIR --scenario NAME --out DIR: the sim-to-real gap diagnosis
 // (gap/gap_diagnosis.h); --prepare-only runs (or resumes) the cache's simulations.
-#include "args.h"
+#include "atomic_file.h"
+#include "command.h"
 #include "effects.h"
 #include "gap_diagnosis.h"
 #include "gap_errors.h"
@@ -33,23 +34,6 @@ const char *HELP =
     "     before and after, overall, per regime and at the held-out speed.\n"
     "Output (written to OUT.partial, then moved to OUT): diagnosis.json, report.md with\n"
     "figures, baseline/ and corrected/ (the simulated traces used, trace CSV v1).\n"
-    "options:\n"
-    "  --effects LIST  comma-separated candidates (default: all of them)\n"
-    "  --jobs N        simulations at once (default: the number of cores), every sweep's\n"
-    "                  runs in one pool\n"
-    "  --sweep-by-sweep  run the sweeps one after another, each with its own N (the\n"
-    "                  runner's old way: for bench/pool_vs_sweeps.sh)\n"
-    "  --cache DIR     simulation cache (default $GRANPEN_RUNS/gap_cache); interrupted, a\n"
-    "                  diagnosis resumes from it; a finished one reruns without simulating\n"
-    "  --lmp PATH, --inputs DIR   lmp_granpen and the decks (default: as ./granpen sets them)\n"
-    "  --prepare-only  only run the simulations the cache needs for --v0 speeds\n"
-    "  --fit-only      stop before step 4: the verdict is provisional (diagnosis.json:\n"
-    "                  \"confirmed\": false; nothing simulated on fresh seeds), G after = before\n"
-    "  --mpirun PROG --ranks R   run each simulation on R MPI ranks (mpirun, srun, ...)\n"
-    "  --slurm FILE    write a SLURM script preparing the cache on a cluster (--jobs runs at\n"
-    "                  once, R ranks each) and stop; a diagnosis whose simulations would take\n"
-    "                  more than 8 core-hours (the paper scenario) asks for this, or --local\n"
-    "  --list-effects  the candidate effects, their magnitudes and reference values\n"
     "Exit status: 0 diagnosis written, 1 simulations failed or input unreadable, 2 usage.\n";
 
 // The diagnosis's progress, as lines: steps and facts on stdout, warnings on stderr, the
@@ -71,61 +55,68 @@ void render_progress(const granpen::GapProgress &p)
 
 }    // namespace
 
+namespace {
+
+void list_effects()
+{
+  for (const auto &e : granpen::effect_library()) {
+    std::printf("%-20s %s\n%-20s magnitude: %s; reference values:", e.name.c_str(), e.what.c_str(), "", e.unit.c_str());
+    for (double k : e.knots) std::printf(" %s", granpen::deck_number(k).c_str());
+    std::printf("%s\n", e.pour_level ? " (new beds)" : " (push only: the baseline's beds)");
+  }
+}
+
+}    // namespace
+
 int granpen::cli::gap(int argc, char **argv)
 {
-  const Usage usage{"gap", HELP};
-  if (argc < 1) return usage.no_arguments();
-  if (!std::strcmp(argv[0], "--help")) return usage.help_asked();
+  Command cmd("gap", HELP);
   GapOptions opt;
   const char *env;
   opt.runner.lmp = (env = std::getenv("GRANPEN_LMP")) ? env : "lmp_granpen";
   opt.runner.inputs = (env = std::getenv("GRANPEN_INPUTS")) ? env : "inputs";
   opt.cache = std::string((env = std::getenv("GRANPEN_RUNS")) ? env : "runs") + "/gap_cache";
   opt.runner.jobs = (int) std::max(1u, std::thread::hardware_concurrency());
-  for (int i = 0; i < argc; ++i) {
-    const std::string a = argv[i];
-    std::string v;
-    auto value = [&]() -> std::string {
-      if (!next_value(argc, argv, i, v)) std::exit(usage.bare(needs_value(a)));
-      return v;
-    };
-    if (a == "--real") opt.real = value();
-    else if (a == "--scenario") opt.scenario = value();
-    else if (a == "--out") opt.out = value();
-    else if (a == "--cache") opt.cache = value();
-    else if (a == "--lmp") opt.runner.lmp = value();
-    else if (a == "--inputs") opt.runner.inputs = value();
-    else if (a == "--prepare-only") opt.prepare_only = true;
-    else if (a == "--local") opt.local = true;
-    else if (a == "--fit-only") opt.fit_only = true;
-    else if (a == "--sweep-by-sweep") opt.runner.pool = false;
-    else if (a == "--slurm") opt.slurm = value();
-    else if (a == "--mpirun") opt.runner.mpirun = value();
-    else if (a == "--ranks") {
-      const std::string r = value();
-      if (!integer_arg(r, 1, 1000000, opt.runner.ranks)) return usage.bare(needs_integer("--ranks", 1, r));
-    }
-    else if (a == "--v0") opt.v0 = value();
-    else if (a == "--effects") opt.effects = value();
-    else if (a == "--jobs") {
-      const std::string j = value();
-      if (!integer_arg(j, 1, 1024, opt.runner.jobs)) return usage.bare(needs_integer("--jobs", 1, j));
-    } else if (a == "--list-effects") {
-      for (const auto &e : effect_library()) {
-        std::printf("%-20s %s\n%-20s magnitude: %s; reference values:", e.name.c_str(), e.what.c_str(), "",
-                    e.unit.c_str());
-        for (double k : e.knots) std::printf(" %s", deck_number(k).c_str());
-        std::printf("%s\n", e.pour_level ? " (new beds)" : " (push only: the baseline's beds)");
-      }
-      return 0;
-    } else {
-      return usage.with_help(unknown_option(a));
-    }
+  bool sweep_by_sweep = false, list = false;
+  auto &app = cmd.app;
+  app.add_option("--real", opt.real, "the measured traces' folder")->type_name("DIR");
+  app.add_option("--scenario", opt.scenario, "the preset of the set-up")->type_name("NAME");
+  app.add_option("--out", opt.out, "the diagnosis folder")->type_name("DIR");
+  app.add_option("--cache", opt.cache, "simulation cache (default $GRANPEN_RUNS/gap_cache); interrupted, a\n"
+                                     "diagnosis resumes from it; a finished one reruns without simulating")
+      ->type_name("DIR");
+  app.add_option("--lmp", opt.runner.lmp, "lmp_granpen (default: as ./granpen sets it)")->type_name("PATH");
+  app.add_option("--inputs", opt.runner.inputs, "the decks (default: as ./granpen sets them)")->type_name("DIR");
+  app.add_flag("--prepare-only", opt.prepare_only, "only run the simulations the cache needs for --v0 speeds");
+  app.add_flag("--local", opt.local, "run here a diagnosis whose simulations would take more than 8\n"
+                                      "core-hours (the paper scenario), instead of asking for --slurm");
+  app.add_flag("--fit-only", opt.fit_only, "stop before step 4: the verdict is provisional (diagnosis.json:\n"
+                                            "\"confirmed\": false; nothing simulated on fresh seeds), G after = before");
+  app.add_flag("--sweep-by-sweep", sweep_by_sweep, "run the sweeps one after another, each with its own N (the\n"
+                                                     "runner's old way: for bench/pool_vs_sweeps.sh)");
+  app.add_option("--slurm", opt.slurm, "write a SLURM script preparing the cache on a cluster (--jobs runs\n"
+                                     "at once, R ranks each) and stop")
+      ->type_name("FILE");
+  app.add_option("--mpirun", opt.runner.mpirun, "run each simulation through PROG (mpirun, srun, ...)")->type_name("PROG");
+  app.add_option("--ranks", opt.runner.ranks, "MPI ranks per simulation (with --mpirun)")->check(CLI::Range(1, 1000000).description(""))
+      ->type_name("R");
+  app.add_option("--v0", opt.v0, "speeds for --prepare-only and --slurm, e.g. \"50 100 200\"")->type_name("LIST");
+  app.add_option("--effects", opt.effects, "comma-separated candidates (default: all of them)")->type_name("LIST");
+  app.add_option("--jobs", opt.runner.jobs, "simulations at once, 1 to 1024 (default: the number of cores), every\n"
+                                                   "sweep's runs in one pool")
+      ->check(CLI::Range(1, 1024).description(""))->type_name("N");
+  app.add_flag("--list-effects", list, "the candidate effects, their magnitudes and reference values");
+  if (!cmd.parse(argc, argv)) return EXIT_OK;
+  if (sweep_by_sweep) opt.runner.pool = false;
+  if (list) {
+    list_effects();
+    return EXIT_OK;
   }
   if (opt.scenario.empty() || (!opt.prepare_only && opt.slurm.empty() && (opt.real.empty() || opt.out.empty())) ||
-      ((opt.prepare_only || !opt.slurm.empty()) && opt.v0.empty())) {
-    return usage.with_help("needs --scenario and either --real and --out, or --prepare-only (or --slurm) and --v0");
-  }
+      ((opt.prepare_only || !opt.slurm.empty()) && opt.v0.empty()))
+    throw UsageError("needs --scenario and either --real and --out, or --prepare-only (or --slurm) and --v0");
+  if (!opt.out.empty() && !opt.real.empty() && same_file(opt.out, opt.real))
+    throw UsageError("--out " + opt.out + " is the input --real " + opt.real + ": refusing to overwrite it");
   try {
     return run_gap(opt, render_progress);
   } catch (GapRefused &e) {

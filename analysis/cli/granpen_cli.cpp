@@ -1,5 +1,7 @@
 // granpen-cli: the post-processor's command-line front end (./granpen SUBCOMMAND).
-// A thin layer: every subcommand parses its arguments and calls the analysis library.
+// A thin layer: every subcommand parses its arguments (cli/command.h) and calls the analysis
+// library; run_subcommand is the one handler that turns what they throw into an exit status.
+#include "command.h"
 #include "subcommands.h"
 
 #include <cstdio>
@@ -42,7 +44,7 @@ int main(int argc, char **argv)
     return argc < 2 ? 2 : 0;
   }
   for (const auto &s : SUBCOMMANDS)
-    if (!std::strcmp(argv[1], s.name)) return s.run(argc - 2, argv + 2);
+    if (!std::strcmp(argv[1], s.name)) return granpen::cli::run_subcommand(s.name, s.run, argc - 2, argv + 2);
   std::fprintf(stderr, "granpen: unknown subcommand '%s'\n", argv[1]);
   usage(stderr);
   return 2;

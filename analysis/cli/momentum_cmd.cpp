@@ -3,20 +3,18 @@
 // M_slow and M(v_z > v0/320) against t~ and depth, and the drag F of the trace against
 // mu g M(v_z > v0/320) (core/momentum_classes.h).
 #include "dump_cmd_common.h"
-#include "json_text.h"
-#include "momentum_classes.h"
+#include "atomic_file.h"
+#include "momentum_study.h"
+#include "momentum_tables.h"
 #include "rod_frame.h"
 #include "subcommands.h"
 
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <vector>
 
-using granpen::json_number;
-using granpen::json_string;
 
 namespace {
 
@@ -44,253 +42,196 @@ const char *HELP =
     "Outputs in DIR (default .): momentum.json (per frame and the fit, with errors),\n"
     "momentum_classes.csv (t_tilde,z_tip,class,count,p_up), momentum_drag.csv\n"
     "(t_tilde,z_tip,F,mu_g_M).\n"
-    "options:\n"
-    "  --trace FILE          force trace of the push (required): v0, D, g, mu, rho_g, surface, dt\n"
-    "  --out DIR             output folder (made if missing; default .)\n"
-    "  --thresholds F1 F2 F3 F4  class bounds as fractions of v0 (default 1/10 1/80 1/320\n"
-    "                        1/640), > 0 and decreasing; M_move then counts v_z > F3 v0\n"
-    "  --mthreshold F        M_move counts v_z > F v0 instead\n"
-    "  --mu MU               friction for mu g M (default: trace header mu, else 0.3)\n"
-    "  --rod-type N          atom type of the rod (default 2); every other atom is a grain\n"
-    "  --axis X Y            fixed rod axis; --tip Z fixed tip height (dumps without rod atoms)\n"
-    "  --D D                 rod diameter (default: the trace's)\n"
-    "  --rho RHO             grain density for masses without a mass column (default: trace\n"
-    "                        header rho_g, else 3.0)\n"
-    "  --zs Z                bed surface (default: the trace's surface key, else measured in the\n"
-    "                        first frame as compute bed/surface does)\n"
-    "  --push-step N         timestep at which the push began: match the trace by time\n"
-    "  --dt DT               timestep size for --push-step (default: the trace's dt key)\n"
-    "  --periodic AXES       periodic box directions among x, y: xy (default), x, y or none\n"
     "Units are the dump's and the trace's (cgs for granpen's decks). Progress goes to stderr.\n"
     "Exit status: 0 on success, 1 for unreadable input (the message names file and line;\n"
     "no output is written), 2 for a usage error.\n";
 
-const Usage usage_error{"momentum", HELP};
-
-struct FrameRecord {
-  long long timestep = 0;
-  std::string where;
-  double tip = 0, z_tip = 0, t = 0, t_tilde = 0, F = 0, mu_g_M = 0;
-  bool matched = false;
-  MomentumTally tally;
+// The command line, read and checked.
+struct MomentumOptions {
+  ParsedArgs args;
+  RodOptions rod;
+  std::string out_dir, periodic;
+  bool px = true, py = true;
 };
 
-std::string jnum(double v) { return std::isfinite(v) ? js(v) : std::string("null"); }
+const char *const OUTPUTS[] = {"momentum.json", "momentum_classes.csv", "momentum_drag.csv"};
+
+// false: --help was printed; usage errors throw UsageError
+bool parse_momentum(int argc, char **argv, MomentumOptions &o)
+{
+  Command cmd("momentum", HELP);
+  static const std::vector<OptionSpec> spec = {
+      {"--trace", 1, "FILE", "force trace of the push (required): v0, D, g, mu, rho_g, surface, dt"},
+      {"--out", 1, "DIR", "output folder (made if missing; default .)"},
+      {"--thresholds", 4, "F1 F2 F3 F4", "class bounds as fractions of v0 (default 1/10 1/80 1/320\n1/640), > 0 and decreasing; M_move then counts v_z > F3 v0"},
+      {"--mthreshold", 1, "F", "M_move counts v_z > F v0 instead"},
+      {"--mu", 1, "MU", "friction for mu g M (default: trace header mu, else 0.3)"},
+      {"--rod-type", 1, "N", "atom type of the rod (default 2); every other atom is a grain"},
+      {"--axis", 2, "X Y", "fixed rod axis (dumps without rod atoms)"},
+      {"--tip", 1, "Z", "fixed tip height (dumps without rod atoms)"},
+      {"--D", 1, "D", "rod diameter (default: the trace's)"},
+      {"--rho", 1, "RHO", "grain density for masses without a mass column (default: trace\nheader rho_g, else 3.0)"},
+      {"--zs", 1, "Z", "bed surface (default: the trace's surface key, else measured in\nthe first frame as compute bed/surface does)"},
+      {"--push-step", 1, "N", "timestep at which the push began: match the trace by time"},
+      {"--dt", 1, "DT", "timestep size for --push-step (default: the trace's dt key)"},
+      {"--periodic", 1, "AXES", "periodic box directions among x, y: xy (default), x, y or none"}};
+  ParsedArgs &args = o.args;
+  if (!parse_table(cmd, spec, "dumps", argc, argv, args)) return false;
+  std::string msg;
+  if (args.positional.empty()) throw UsageError("no dump given");
+  if (!args.has("--trace")) throw UsageError("--trace TRACE is required (v0, D, g and the drag come from it)");
+  if (!args.read_numbers({"--trace", "--out", "--periodic", "--push-step"}, msg) ||
+      !args.positive({"--D", "--rho", "--dt", "--mthreshold"}, msg) || !read_rod_options(args, o.rod, msg))
+    throw UsageError(msg);
+  double mu = 0.0;
+  if (args.number("--mu", mu) && !(mu >= 0.0)) throw UsageError("--mu must be >= 0");
+  long long push_step = 0;
+  if (args.has("--push-step") && !integer_arg(args.value("--push-step", ""), push_step))
+    throw UsageError("--push-step '" + args.value("--push-step", "") + "' is not an integer");
+  o.out_dir = args.value("--out", ".");
+  if (o.out_dir.empty()) throw UsageError("--out needs a folder");
+  o.periodic = args.value("--periodic", "xy");
+  if (!periodic_axes(o.periodic, o.px, o.py)) throw UsageError("--periodic must be xy, x, y or none");
+  return true;
+}
+
+// The classes: the paper's, or --thresholds; --mthreshold moves M_move's bound
+MomentumClasses classes_of(const ParsedArgs &args, double v0, std::string &source)
+{
+  source = "paper (v0/10, v0/80, v0/320, v0/640)";
+  try {
+    double mf = 0.0;
+    if (args.numbers.count("--thresholds")) {
+      double f[MOMENTUM_NCLASS];
+      for (int k = 0; k < MOMENTUM_NCLASS; ++k) f[k] = args.numbers.at("--thresholds")[k];
+      args.number("--mthreshold", mf);
+      source = "option";
+      return momentum_classes(v0, f, mf);
+    }
+    MomentumClasses c = momentum_classes(v0);
+    if (args.number("--mthreshold", mf)) c.vmove = mf * v0;
+    return c;
+  } catch (std::invalid_argument &e) {
+    throw UsageError(e.what());
+  }
+}
+
+// Everything but z_s: options, else the trace header, else defaults.
+MomentumStudyParams resolve_parameters(const MomentumOptions &o, const PushTrace &th, MomentumProvenance &how)
+{
+  const ParsedArgs &args = o.args;
+  const Trace &tr = th.trace;
+  MomentumStudyParams p;
+  p.classes = classes_of(args, tr.v0, how.class_source);
+  p.v0 = tr.v0, p.g = tr.g;
+  how.mu_source = "default";
+  if (args.number("--mu", p.mu)) how.mu_source = "option";
+  else if (th.have_mu) p.mu = th.mu, how.mu_source = "trace";
+  p.D = tr.D, how.D_source = "trace";
+  if (args.number("--D", p.D)) how.D_source = "option";
+  how.rho_g = 3.0, how.rho_g_source = "default";
+  if (args.number("--rho", how.rho_g)) how.rho_g_source = "option";
+  else if (th.have_rho) how.rho_g = th.rho_g, how.rho_g_source = "trace";
+  p.by_time = args.has("--push-step");
+  if (p.by_time) {
+    integer_arg(args.value("--push-step", ""), p.push_step);
+    if (!args.number("--dt", p.dt)) {
+      if (!th.have_dt) throw UsageError("--push-step needs --dt (the trace has no dt key)");
+      p.dt = th.dt;
+    }
+  }
+  return p;
+}
+
+// z_s: option, trace, or measured in the first frame
+double bed_surface_of(const MomentumOptions &o, const PushTrace &th, const DumpFrame &frame, const GrainFrame &g,
+                      MomentumProvenance &how)
+{
+  double zs = 0.0;
+  how.z_s_source = "option";
+  if (o.args.number("--zs", zs)) return zs;
+  how.z_s_source = "trace";
+  if (th.have_surface) return th.surface;
+  const auto &X = frame.col("x"), &Y = frame.col("y"), &Z = frame.col("z"), &Rr = frame.col("radius");
+  int nempty = 0;
+  how.z_s_source = "first frame";
+  how.notes.push_back("bed surface measured in the first frame: the trace has no surface key");
+  return bed_surface(X.data(), Y.data(), Z.data(), Rr.data(), g.is_rod.data(), X.size(), frame.lo[0], frame.hi[0],
+                     frame.lo[1], frame.hi[1], 4, nempty);
+}
+
+void print_summary(const MomentumStudyParams &p, const std::vector<MomentumFrameRecord> &records,
+                   const DragComparison &dc, const MomentumProvenance &how)
+{
+  std::printf("granpen momentum: %zu frames of %zu dump%s; v0 = %g, D = %g (%s), g = %g, mu = %g (%s), z_s = %.4g (%s), "
+              "F matched by %s\n",
+              records.size(), how.dumps.size(), how.dumps.size() == 1 ? "" : "s", p.v0, p.D, how.D_source.c_str(), p.g,
+              p.mu, how.mu_source.c_str(), p.z_s, how.z_s_source.c_str(), p.by_time ? "time" : "depth");
+  std::printf("  %10s %8s %8s %8s %8s %8s %10s %10s %10s %10s\n", "timestep", "z_tip", "t~", "fast", "interm", "slow",
+              "M_slow", "M_move", "mu_g_M", "F");
+  const std::size_t step = records.size() > 20 ? (records.size() + 19) / 20 : 1;
+  for (std::size_t k = 0; k < records.size(); ++k) {
+    if (k % step && k + 1 != records.size()) continue;
+    const MomentumFrameRecord &r = records[k];
+    std::printf("  %10lld %8.4g %8.4g %8.0f %8.0f %8.0f %10.4g %10.4g %10.4g %10.4g\n", r.timestep, r.z_tip, r.t_tilde,
+                r.tally.count[0], r.tally.count[1], r.tally.count[2], r.tally.M_slow, r.tally.M_move, r.mu_g_M, r.F);
+  }
+  if (dc.ok)
+    std::printf("  drag: F = (%.4g +- %.2g) mu g M(v_z > %g) over %zu frames; mean F / (mu g M) = %.4g +- %.2g "
+                "(paper: 1:1)\n",
+                dc.fit.b, dc.fit.se_b, p.classes.vmove, dc.n, dc.ratio_mean, dc.ratio_se);
+  else
+    std::printf("  drag: F against mu g M undefined (%s)\n", dc.note.c_str());
+  for (const auto &n : how.notes) std::printf("  note: %s\n", n.c_str());
+}
 
 }    // namespace
 
 int granpen::cli::momentum(int argc, char **argv)
 {
-  if (argc < 1) return usage_error.no_arguments();
-  const std::map<std::string, int> spec = {
-      {"--trace", 1}, {"--out", 1}, {"--thresholds", 4}, {"--mthreshold", 1}, {"--mu", 1}, {"--rod-type", 1},
-      {"--axis", 2}, {"--tip", 1}, {"--D", 1}, {"--rho", 1}, {"--zs", 1}, {"--push-step", 1}, {"--dt", 1},
-      {"--periodic", 1}};
-  ParsedArgs args;
+  MomentumOptions o;
+  if (!parse_momentum(argc, argv, o)) return EXIT_OK;
+  refuse_outputs_over_inputs(o.out_dir, std::vector<const char *>(std::begin(OUTPUTS), std::end(OUTPUTS)), o.args);
+  const PushTrace th = load_push_trace(o.args.value("--trace", ""));
+  MomentumProvenance how;
+  how.dumps = o.args.positional;
+  how.trace = th.trace.path;
+  how.rod_type = o.rod.rod_type;
+  how.periodic = o.periodic;
+  MomentumStudyParams p = resolve_parameters(o, th, how);
+
+  DumpReader reader(o.args.positional);
+  report_progress(reader, "granpen momentum");
+  DumpFrame frame;
+  if (!reader.next(frame)) throw InputError(o.args.positional[0] + ": no frames");
+  ColumnChoice cols;
+  cols.mass = how.mass_column = frame.has("mass");
+  if (!cols.mass && how.rho_g_source == "default")
+    how.notes.push_back("masses from rho_g = 3 (default): no mass column, no rho_g");
+  GrainFrame g;
+  extract_frame(frame, o.rod, cols, how.rho_g, o.px, o.py, g);
+  p.z_s = bed_surface_of(o, th, frame, g, how);
+
+  const TraceColumns trace{th.trace.t, th.trace.z, th.trace.F};
+  std::vector<MomentumFrameRecord> records;
+  std::size_t unmatched = 0;
+  bool first = true;
+  do {
+    if (!first) extract_frame(frame, o.rod, cols, how.rho_g, o.px, o.py, g);
+    first = false;
+    const MomentumFrameInput in{g.x.data(), g.y.data(), g.vz.data(), g.mass.data(), g.grains(), g.axis_x, g.axis_y,
+                                g.period_x, g.period_y, g.tip, frame.timestep, g.where};
+    records.push_back(momentum_frame(p, trace, in));
+    unmatched += records.back().matched ? 0 : 1;
+  } while (reader.next(frame));
+  if (unmatched)
+    how.notes.push_back(std::to_string(unmatched) + " frame(s) outside the trace's " + (p.by_time ? "time" : "depth") +
+                        " range: F undefined");
+
+  const DragComparison dc = drag_over_frames(records);
+  print_summary(p, records, dc, how);
   std::string msg;
-  if (!parse_args(argc, argv, spec, args, msg)) return usage_error(msg);
-  if (args.help) return usage_error.help_asked();
-  if (args.positional.empty()) return usage_error("no dump given");
-  if (!args.has("--trace")) return usage_error("--trace TRACE is required (v0, D, g and the drag come from it)");
-  if (!args.read_numbers({"--trace", "--out", "--periodic", "--push-step"}, msg) ||
-      !args.positive({"--D", "--rho", "--dt", "--mthreshold"}, msg))
-    return usage_error(msg);
-  double mu_opt = 0.0;
-  if (args.number("--mu", mu_opt) && !(mu_opt >= 0.0)) return usage_error("--mu must be >= 0");
-  RodOptions ro;
-  if (!read_rod_options(args, ro, msg)) return usage_error(msg);
-  long long push_step = 0;
-  const bool by_time = args.has("--push-step");
-  if (by_time && !integer_arg(args.value("--push-step", ""), push_step))
-    return usage_error("--push-step '" + args.value("--push-step", "") + "' is not an integer");
-  const std::string out_dir = args.value("--out", ".");
-  if (out_dir.empty()) return usage_error("--out needs a folder");
-  const std::string periodic = args.value("--periodic", "xy");
-  bool px, py;
-  if (!periodic_axes(periodic, px, py)) return usage_error("--periodic must be xy, x, y or none");
-
-  std::vector<std::string> notes;
-  try {
-    const TraceHeader th = load_trace(args.value("--trace", ""));
-    const Trace &tr = th.trace;
-    MomentumClasses classes;
-    std::string class_src = "paper (v0/10, v0/80, v0/320, v0/640)";
-    try {
-      if (args.numbers.count("--thresholds")) {
-        double f[MOMENTUM_NCLASS];
-        for (int k = 0; k < MOMENTUM_NCLASS; ++k) f[k] = args.numbers.at("--thresholds")[k];
-        double mf = 0.0;
-        args.number("--mthreshold", mf);
-        classes = momentum_classes(tr.v0, f, mf);
-        class_src = "option";
-      } else {
-        classes = momentum_classes(tr.v0);
-        double mf;
-        if (args.number("--mthreshold", mf)) classes.vmove = mf * tr.v0;
-      }
-    } catch (std::invalid_argument &e) {
-      return usage_error(e.what());
-    }
-    double mu = 0.3;
-    std::string mu_src = "default";
-    if (args.has("--mu")) mu = mu_opt, mu_src = "option";
-    else if (th.have_mu) mu = th.mu, mu_src = "trace";
-    double D = tr.D;
-    std::string D_src = "trace";
-    if (args.number("--D", D)) D_src = "option";
-    const double R = 0.5 * D;
-    double rho = 3.0;
-    std::string rho_src = "default";
-    if (args.number("--rho", rho)) rho_src = "option";
-    else if (th.have_rho) rho = th.rho_g, rho_src = "trace";
-    double dt = 0.0;
-    if (by_time) {
-      if (!args.number("--dt", dt)) {
-        if (!th.have_dt) return usage_error("--push-step needs --dt (the trace has no dt key)");
-        dt = th.dt;
-      }
-    }
-
-    DumpReader reader(args.positional);
-    report_progress(reader, "granpen momentum");
-    DumpFrame frame;
-    if (!reader.next(frame)) throw InputError(args.positional[0] + ": no frames");
-    ColumnChoice cols;
-    cols.mass = frame.has("mass");
-    if (!cols.mass && rho_src == "default") notes.push_back("masses from rho_g = 3 (default): no mass column, no rho_g");
-    GrainFrame g;
-    extract_frame(frame, ro, cols, rho, px, py, g);
-    double zs = 0.0;
-    std::string zs_src = "option";
-    if (!args.number("--zs", zs)) {
-      if (th.have_surface) zs = th.surface, zs_src = "trace";
-      else {
-        const auto &X = frame.col("x"), &Y = frame.col("y"), &Z = frame.col("z"), &Rr = frame.col("radius");
-        int nempty = 0;
-        zs = bed_surface(X.data(), Y.data(), Z.data(), Rr.data(), g.is_rod.data(), X.size(), frame.lo[0],
-                         frame.hi[0], frame.lo[1], frame.hi[1], 4, nempty);
-        zs_src = "first frame";
-        notes.push_back("bed surface measured in the first frame: the trace has no surface key");
-      }
-    }
-
-    std::vector<FrameRecord> records;
-    bool first = true;
-    std::size_t unmatched = 0;
-    do {
-      if (!first) extract_frame(frame, ro, cols, rho, px, py, g);
-      first = false;
-      FrameRecord r;
-      r.timestep = frame.timestep;
-      r.where = g.where;
-      r.tip = g.tip;
-      r.z_tip = zs - g.tip;
-      r.t_tilde = t_tilde(r.z_tip, tr.v0, tr.g, D);
-      r.tally = tally_momentum(classes, g.x.data(), g.y.data(), g.vz.data(), g.mass.data(), g.grains(), g.axis_x,
-                               g.axis_y, R, g.period_x, g.period_y);
-      r.mu_g_M = mu * tr.g * r.tally.M_move;
-      double pos;
-      if (by_time) {
-        r.t = (double) (frame.timestep - push_step) * dt;
-        pos = locate_first(tr.t, r.t);
-      } else {
-        pos = locate_first(tr.z, r.z_tip);
-        r.t = value_at(tr.t, pos);
-      }
-      r.F = value_at(tr.F, pos);
-      r.matched = std::isfinite(r.F);
-      if (!r.matched) ++unmatched;
-      records.push_back(r);
-    } while (reader.next(frame));
-    if (unmatched)
-      notes.push_back(std::to_string(unmatched) + " frame(s) outside the trace's " +
-                      (by_time ? "time" : "depth") + " range: F undefined");
-
-    std::vector<double> x, y;
-    for (const auto &r : records)
-      if (r.matched && r.z_tip > 0.0) x.push_back(r.mu_g_M), y.push_back(r.F);
-    const DragComparison dc = compare_drag(x, y);
-
-    std::ostringstream cls_csv, drag_csv, json;
-    cls_csv << "t_tilde,z_tip,class,count,p_up\n";
-    drag_csv << "t_tilde,z_tip,F,mu_g_M\n";
-    for (const auto &r : records) {
-      for (int k = 0; k < MOMENTUM_NCLASS; ++k)
-        cls_csv << csv_num(r.t_tilde) << ',' << csv_num(r.z_tip) << ',' << MOMENTUM_CLASS_NAMES[k] << ','
-                << csv_num(r.tally.count[k]) << ',' << csv_num(r.tally.p_up[k]) << '\n';
-      drag_csv << csv_num(r.t_tilde) << ',' << csv_num(r.z_tip) << ',' << csv_num(r.F) << ',' << csv_num(r.mu_g_M)
-               << '\n';
-    }
-    json << "{\n  \"tool\": \"granpen momentum\",\n"
-         << "  \"units\": \"those of the dump and the trace (granpen decks: cgs: cm, g, s, dyne)\",\n"
-         << "  \"inputs\": {\"dumps\": [";
-    for (std::size_t k = 0; k < args.positional.size(); ++k) json << (k ? ", " : "") << json_string(args.positional[k]);
-    json << "], \"trace\": " << json_string(tr.path) << ", \"frames\": " << records.size() << "},\n"
-         << "  \"parameters\": {\"v0\": " << js(tr.v0) << ", \"g\": " << js(tr.g) << ", \"D\": " << js(D)
-         << ", \"D_source\": " << json_string(D_src) << ", \"R\": " << js(R) << ", \"mu\": " << js(mu)
-         << ", \"mu_source\": " << json_string(mu_src) << ", \"rho_g\": " << js(rho) << ", \"rho_g_source\": "
-         << json_string(rho_src) << ", \"masses\": " << json_string(cols.mass ? "column mass" : "rho_g 4/3 pi r^3")
-         << ",\n    \"z_s\": " << js(zs) << ", \"z_s_source\": " << json_string(zs_src)
-         << ", \"match\": " << json_string(by_time ? "time" : "depth");
-    if (by_time) json << ", \"push_step\": " << push_step << ", \"dt\": " << js(dt);
-    json << ", \"rod_type\": " << ro.rod_type << ", \"periodic\": " << json_string(periodic) << ",\n"
-         << "    \"classes\": {\"source\": " << json_string(class_src) << ", \"names\": [";
-    for (int k = 0; k < MOMENTUM_NCLASS; ++k) json << (k ? ", " : "") << json_string(MOMENTUM_CLASS_NAMES[k]);
-    json << "], \"bounds\": [";
-    for (int k = 0; k < MOMENTUM_NCLASS; ++k) json << (k ? ", " : "") << js(classes.bound[k]);
-    json << "], \"v_move\": " << js(classes.vmove) << "}},\n"
-         << "  \"drag\": {\"ok\": " << (dc.ok ? "true" : "false") << ", \"n\": " << dc.n
-         << ", \"k\": " << js(dc.fit.b) << ", \"k_se\": " << js(dc.fit.se_b) << ", \"rms\": " << js(dc.fit.rms)
-         << ", \"ratio_mean\": " << js(dc.ratio_mean) << ", \"ratio_se\": " << js(dc.ratio_se)
-         << ", \"note\": " << json_string(dc.note) << ", \"paper\": \"F about equal to mu g M (1:1)\"},\n"
-         << "  \"frames\": [";
-    for (std::size_t k = 0; k < records.size(); ++k) {
-      const FrameRecord &r = records[k];
-      json << (k ? ",\n" : "\n") << "    {\"timestep\": " << r.timestep << ", \"where\": " << json_string(r.where)
-           << ", \"t\": " << jnum(r.t) << ", \"t_tilde\": " << jnum(r.t_tilde) << ", \"z_tip\": " << js(r.z_tip)
-           << ", \"selected\": " << r.tally.selected << ", \"classes\": [";
-      for (int c = 0; c < MOMENTUM_NCLASS; ++c)
-        json << (c ? ", " : "") << "{\"count\": " << js(r.tally.count[c]) << ", \"mass\": " << js(r.tally.mass[c])
-             << ", \"p_up\": " << js(r.tally.p_up[c]) << "}";
-      json << "], \"M_slow\": " << js(r.tally.M_slow) << ", \"M_move\": " << js(r.tally.M_move)
-           << ", \"mu_g_M\": " << js(r.mu_g_M) << ", \"F\": " << jnum(r.F) << "}";
-    }
-    json << (records.empty() ? "],\n" : "\n  ],\n") << "  \"notes\": [";
-    for (std::size_t k = 0; k < notes.size(); ++k) json << (k ? ", " : "") << json_string(notes[k]);
-    json << "]\n}\n";
-
-    std::printf("granpen momentum: %zu frames of %zu dump%s; v0 = %g, D = %g (%s), g = %g, mu = %g (%s), z_s = %.4g (%s), "
-                "F matched by %s\n",
-                records.size(), args.positional.size(), args.positional.size() == 1 ? "" : "s", tr.v0, D,
-                D_src.c_str(), tr.g, mu, mu_src.c_str(), zs, zs_src.c_str(), by_time ? "time" : "depth");
-    std::printf("  %10s %8s %8s %8s %8s %8s %10s %10s %10s %10s\n", "timestep", "z_tip", "t~", "fast", "interm",
-                "slow", "M_slow", "M_move", "mu_g_M", "F");
-    const std::size_t step = records.size() > 20 ? (records.size() + 19) / 20 : 1;
-    for (std::size_t k = 0; k < records.size(); ++k) {
-      if (k % step && k + 1 != records.size()) continue;
-      const FrameRecord &r = records[k];
-      std::printf("  %10lld %8.4g %8.4g %8.0f %8.0f %8.0f %10.4g %10.4g %10.4g %10.4g\n", r.timestep, r.z_tip,
-                  r.t_tilde, r.tally.count[0], r.tally.count[1], r.tally.count[2], r.tally.M_slow, r.tally.M_move,
-                  r.mu_g_M, r.F);
-    }
-    if (dc.ok)
-      std::printf("  drag: F = (%.4g +- %.2g) mu g M(v_z > %g) over %zu frames; mean F / (mu g M) = %.4g +- %.2g "
-                  "(paper: 1:1)\n",
-                  dc.fit.b, dc.fit.se_b, classes.vmove, dc.n, dc.ratio_mean, dc.ratio_se);
-    else
-      std::printf("  drag: F against mu g M undefined (%s)\n", dc.note.c_str());
-    for (const auto &n : notes) std::printf("  note: %s\n", n.c_str());
-
-    const std::vector<std::pair<std::string, std::string>> files = {
-        {"momentum.json", json.str()}, {"momentum_classes.csv", cls_csv.str()}, {"momentum_drag.csv", drag_csv.str()}};
-    if (!write_outputs(out_dir, files, msg)) {
-      std::fprintf(stderr, "granpen momentum: %s\n", msg.c_str());
-      return 1;
-    }
-    std::printf("wrote %s/{momentum.json, momentum_classes.csv, momentum_drag.csv}\n", out_dir.c_str());
-  } catch (std::exception &e) {    // InputError names file:line
-    std::fprintf(stderr, "granpen momentum: %s\n", e.what());
-    return 1;
-  }
-  return 0;
+  if (!write_outputs(o.out_dir, momentum_files(p, records, dc, how), msg)) throw OutputError(msg);
+  std::printf("wrote %s/{momentum.json, momentum_classes.csv, momentum_drag.csv}\n", o.out_dir.c_str());
+  return EXIT_OK;
 }

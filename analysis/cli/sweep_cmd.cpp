@@ -1,5 +1,6 @@
 // granpen sweep SPEC [options]: run a sweep of pours and pushes (see sweep/sweep_spec.h).
-#include "args.h"
+#include "atomic_file.h"
+#include "command.h"
 #include "subcommands.h"
 #include "sweep_runner.h"
 #include "sweep_spec.h"
@@ -35,47 +36,36 @@ const char *HELP =
     "example: inputs/sweeps/v0_bench.sweep. lmp_granpen and inputs/ come from the environment\n"
     "that ./granpen sets (GRANPEN_LMP, GRANPEN_INPUTS) unless given.\n";
 
-const granpen::cli::Usage usage{"sweep", HELP};
-
 }    // namespace
 
 int granpen::cli::sweep(int argc, char **argv)
 {
-  if (argc < 1) return usage.no_arguments();
-  if (!std::strcmp(argv[0], "--help")) return usage.help_asked();
+  Command cmd("sweep", HELP);
   RunnerOptions opt;
   const char *env;
   opt.lmp = (env = std::getenv("GRANPEN_LMP")) ? env : "lmp_granpen";
   opt.inputs = (env = std::getenv("GRANPEN_INPUTS")) ? env : "inputs";
   opt.out_root = (env = std::getenv("GRANPEN_RUNS")) ? env : "runs";
   opt.jobs = (int) std::max(1u, std::thread::hardware_concurrency());
-  std::string spec_path = argv[0], slurm;
+  std::string spec_path, slurm;
   bool plan_only = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() {
-      std::string v;
-      if (!next_value(argc, argv, i, v)) std::exit(usage.bare(needs_value(a)));
-      return v;
-    };
-    auto integer = [&](int lo) {    // lo to 1000000
-      const std::string v = value();
-      int n;
-      if (!integer_arg(v, lo, 1000000, n)) std::exit(usage.bare(needs_integer(a, lo, v)));
-      return n;
-    };
-    if (a == "--jobs") opt.jobs = integer(1);
-    else if (a == "--out") opt.out_root = value();
-    else if (a == "--checkpoint") opt.checkpoint = integer(1);
-    else if (a == "--mpirun") opt.mpirun = value();
-    else if (a == "--ranks") opt.ranks = integer(1);
-    else if (a == "--only") opt.only_index = integer(0);
-    else if (a == "--slurm") slurm = value();
-    else if (a == "--lmp") opt.lmp = value();
-    else if (a == "--inputs") opt.inputs = value();
-    else if (a == "--plan") plan_only = true;
-    else return usage.with_help(unknown_option(a));
-  }
+  auto &app = cmd.app;
+  app.add_option("spec", spec_path, "the sweep file")->required();
+  app.add_option("--jobs", opt.jobs, "runs at once, 1 or more (default: the number of cores)")->check(CLI::Range(1, 1000000).description(""))->type_name("N");
+  app.add_option("--out", opt.out_root, "output root: DIR/NAME (default runs)")->check(file_name())->type_name("DIR");
+  app.add_option("--checkpoint", opt.checkpoint, "push checkpoint every STEPS steps (default 5000)")->check(CLI::Range(1, 1000000).description(""))
+      ->type_name("STEPS");
+  app.add_option("--mpirun", opt.mpirun, "run each simulation through this MPI launcher")->type_name("PROG");
+  app.add_option("--ranks", opt.ranks, "MPI ranks per run (with --mpirun)")->check(CLI::Range(1, 1000000).description(""))->type_name("N");
+  app.add_option("--only", opt.only_index, "run planned run K alone (what each SLURM array task does)")
+      ->check(CLI::Range(0, 1000000).description(""))->type_name("K");
+  app.add_option("--slurm", slurm, "write a SLURM job-array script instead of running")->check(file_name())
+      ->type_name("FILE");
+  app.add_option("--lmp", opt.lmp, "lmp_granpen (default $GRANPEN_LMP)")->type_name("PATH");
+  app.add_option("--inputs", opt.inputs, "the decks' folder (default $GRANPEN_INPUTS)")->type_name("DIR");
+  app.add_flag("--plan", plan_only, "list the planned runs");
+  if (!cmd.parse(argc, argv)) return EXIT_OK;
+  if (!slurm.empty()) refuse_overwriting_inputs(slurm, "--slurm", {spec_path});
   g_inputs = opt.inputs;
   try {
     std::string text;

@@ -154,7 +154,13 @@ CollapseResult collapse(const std::vector<CollapseInput> &inputs, const Collapse
     res.peak_exponent = f.b;
     res.peak_exponent_se = f.se_b;
     res.peak_exponent_ci95 = t95(static_cast<int>(f.n) - 2) * f.se_b;
+    res.peak_prefactor = std::exp(f.a);
+    double mv = 0, mp = 0;
+    for (std::size_t k = 0; k < logv.size(); ++k) mv += logv[k], mp += logpeak[k];
+    mv /= (double) logv.size(), mp /= (double) logv.size();
+    res.peak_v2_prefactor = std::exp(mp - 2 * mv);
   }
+  res.peak_points = logv.size();
   return res;
 }
 

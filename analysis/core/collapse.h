@@ -57,6 +57,9 @@ struct CollapseResult {
   double t_star_ensemble = 0.0;
   bool peak_ok = false;                     // at least 3 curves with distinct v0
   double peak_exponent = 0.0, peak_exponent_se = 0.0, peak_exponent_ci95 = 0.0;
+  double peak_prefactor = 0.0;              // peak = prefactor v0^exponent (the fit's exp(intercept))
+  double peak_v2_prefactor = 0.0;           // the paper's peak ~ v0^2 through the points' mean (log-log)
+  std::size_t peak_points = 0;              // curves with a positive peak, in the fit
 };
 
 // Throws std::invalid_argument for an input with non-positive v0, D, g or k_z.

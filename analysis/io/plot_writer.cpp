@@ -1,6 +1,8 @@
 // granpen analysis: figures as gnuplot scripts with their data (see plot_writer.h).
 #include "plot_writer.h"
 
+#include "atomic_file.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
@@ -116,21 +118,6 @@ std::string comment_lines(const std::string &text)
   std::string line;
   while (std::getline(in, line)) o += "# " + line + "\n";
   return o;
-}
-
-bool write_text(const fs::path &p, const std::string &text, std::string &why)
-{
-  std::ofstream o(p, std::ios::binary);
-  if (!o) {
-    why = "cannot write " + p.string() + ": " + std::strerror(errno);
-    return false;
-  }
-  o << text;
-  if (!o.flush()) {
-    why = "cannot write " + p.string();
-    return false;
-  }
-  return true;
 }
 
 // last n non-empty lines of text, indented
@@ -266,11 +253,13 @@ PlotResult write_plot(const std::string &dir, const PlotFiles &f, bool run)
     r.error = "cannot create folder " + d.string() + ": " + ec.message();
     return r;
   }
-  std::string why;
-  if (!write_text(r.data, data_text(f), why) || !write_text(r.script, plot_script(f), why)) {
-    r.error = why;
+  try {
+    write_files_atomic({{r.data, data_text(f)}, {r.script, plot_script(f)}});
+  } catch (const OutputError &e) {
+    r.error = e.what();
     return r;
   }
+  std::string why;
   r.written = true;
   if (!run) return r;
   fs::remove(r.png, ec);

@@ -2,9 +2,10 @@
 # traces and tables, the command run in-process (its sources compiled in). Included
 # from tests/unit/CMakeLists.txt.
 add_executable(test_plot test_plot.cpp ${PROJECT_SOURCE_DIR}/analysis/cli/plot_cmd.cpp
-  ${PROJECT_SOURCE_DIR}/analysis/cli/plot_flow_cmd.cpp ${PROJECT_SOURCE_DIR}/analysis/cli/args.cpp)
+  ${PROJECT_SOURCE_DIR}/analysis/cli/args.cpp
+  ${PROJECT_SOURCE_DIR}/analysis/cli/command.cpp)
 target_include_directories(test_plot PRIVATE ${PROJECT_SOURCE_DIR}/analysis/cli)
-target_link_libraries(test_plot PRIVATE granpen_analysis GTest::gtest_main)
+target_link_libraries(test_plot PRIVATE granpen_analysis CLI11::CLI11 GTest::gtest_main)
 target_compile_definitions(test_plot PRIVATE GRANPEN_PLOT_TEST_DIR="${CMAKE_CURRENT_BINARY_DIR}/plot_test"
   GRANPEN_BENCH_TRACES="${PROJECT_SOURCE_DIR}/data/sims/v0_bench")
 gtest_discover_tests(test_plot PROPERTIES LABELS unit)

@@ -10,6 +10,7 @@
 #include "linear_fit.h"
 #include "momentum_classes.h"
 #include "plot_writer.h"
+#include "command.h"
 #include "subcommands.h"
 #include "trace_fit.h"
 #include "trace_reader.h"
@@ -125,7 +126,7 @@ Outcome run_plot(std::vector<std::string> args)
   testing::internal::CaptureStdout();
   testing::internal::CaptureStderr();
   Outcome o;
-  o.status = granpen::cli::plot((int) argv.size(), argv.data());
+  o.status = granpen::cli::run_subcommand("plot", granpen::cli::plot, (int) argv.size(), argv.data());
   o.out = testing::internal::GetCapturedStdout();
   o.err = testing::internal::GetCapturedStderr();
   return o;

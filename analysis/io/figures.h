@@ -1,9 +1,12 @@
-// granpen plot: what the figure kinds share (plot_cmd.cpp: the command and the
-// trace kinds force, ratio, peak, kz; plot_flow_cmd.cpp: flow and momentum).
-#ifndef GRANPEN_CLI_PLOT_KINDS_H
-#define GRANPEN_CLI_PLOT_KINDS_H
+// granpen analysis: the figure kinds of granpen plot, each a function from its inputs
+// (traces, or the tables of granpen flow and granpen momentum) to figures written by
+// io/plot_writer and the numbers drawn (figures_trace.cpp: force, ratio, peak, kz;
+// figures_flow.cpp: flow and momentum).
+#ifndef GRANPEN_FIGURES_H
+#define GRANPEN_FIGURES_H
 
 #include "collapse.h"
+#include "json_writer.h"
 #include "plot_writer.h"
 
 #include <cmath>
@@ -11,7 +14,7 @@
 #include <vector>
 
 namespace granpen {
-namespace plotcmd {
+namespace figures {
 
 struct Options {
   std::string out;              // --out DIR
@@ -24,13 +27,12 @@ struct Options {
 };
 
 // What one invocation made: the figures' outcomes, problems with the inputs (each a
-// line naming the file), notes, and the kind's numbers as JSON members
-// ("\"key\": value" lines, joined with commas by the caller).
+// line naming the file), notes, and the kind's numbers (a JSON object).
 struct Run {
   Options opt;
   std::vector<PlotResult> figures;
   std::vector<std::string> problems, notes;
-  std::vector<std::string> numbers;
+  Json numbers = Json::object();
   void make(const PlotFiles &f) { figures.push_back(write_plot(opt.out, f, opt.run)); }
 };
 
@@ -50,12 +52,13 @@ struct AxisScale {
 AxisScale axis_scale(double maxabs, const std::string &unit);
 
 std::string fmt(const char *f, double v);    // printf one number
+Json num(const char *f, double v);           // a JSON number rounded as printf's f would (json_rounded)
 std::string sci(double v);                   // 2.94×10^{4} (enhanced text); plain below 1e4
 // labelled tics of a log axis over [lo, hi] at 1, 2, 5 x 10^e (only 10^e when that
 // makes more than 9), labels 10^{e} style or plain %g
 std::string log_tics(const char *axis, double lo, double hi, bool plain = false);
 
-}    // namespace plotcmd
+}    // namespace figures
 }    // namespace granpen
 
 #endif

@@ -1,8 +1,8 @@
-// granpen plot flow DIR and granpen plot momentum DIR: figures of the tables written by
-// granpen flow --out DIR and granpen momentum (plot_kinds.h). The fits drawn are the
+// granpen analysis: the figures of granpen plot flow DIR and granpen plot momentum DIR,
+// from the tables written by granpen flow --out DIR and granpen momentum (figures.h). The fits drawn are the
 // library's (core/flow_fields.h fit_exponential, core/momentum_classes.h compare_drag,
 // core/linear_fit.h), as the tables' writers use them.
-#include "plot_kinds.h"
+#include "figures.h"
 
 #include "csv_table.h"
 #include "flow_fields.h"
@@ -22,7 +22,7 @@
 #include <vector>
 
 namespace granpen {
-namespace plotcmd {
+namespace figures {
 
 namespace {
 
@@ -236,9 +236,8 @@ void flow_heatmaps(const std::string &dir, Run &run)
   b << "unset multiplot\n";
   f.body = b.str();
   run.make(f);
-  run.numbers.push_back("\"fields\": {\"bins_r\": " + std::to_string(nr) + ", \"bins_z\": " + std::to_string(nz) + ", \"D\": " +
-                        fmt("%g", D) + ", \"phi_range\": [" + fmt("%.4g", plo) + ", " + fmt("%.4g", phi_hi) +
-                        "], \"vz_abs_p99\": " + fmt("%.4g", vmax) + "}");
+  run.numbers["fields"] = {{"bins_r", nr}, {"bins_z", nz}, {"D", num("%g", D)},
+                           {"phi_range", {num("%.4g", plo), num("%.4g", phi_hi)}}, {"vz_abs_p99", num("%.4g", vmax)}};
 }
 
 // ---------------------------------------------------------------- profile below the face
@@ -282,7 +281,7 @@ void flow_profile(const std::string &dir, Run &run)
     a.extra = log_tics("y", a.ymin, a.ymax, true);
   }
   std::string title = "Flow below the rod face";
-  std::string num = "\"profile\": {\"fit_ok\": false, \"note\": " + json_string(fit.note) + "}";
+  Json profile = {{"fit_ok", false}, {"note", fit.note}};
   if (fit.ok) {
     PlotSeries line;
     line.colour = "#000000";
@@ -294,9 +293,8 @@ void flow_profile(const std::string &dir, Run &run)
     }
     a.series.push_back(line);
     title += ": λ_{vz} = " + fmt("%.3g", fit.lambda) + " cm = " + fmt("%.2f", fit.lambda / D) + " D (paper: 0.98 D ± 0.15)";
-    num = "\"profile\": {\"fit_ok\": true, \"A\": " + fmt("%.6g", fit.A) + ", \"lambda\": " + fmt("%.6g", fit.lambda) +
-          ", \"lambda_se\": " + fmt("%.6g", fit.lambda_se) + ", \"lambda_over_D\": " + fmt("%.6g", fit.lambda / D) +
-          ", \"n\": " + std::to_string(fit.n) + "}";
+    profile = {{"fit_ok", true}, {"A", num("%.6g", fit.A)}, {"lambda", num("%.6g", fit.lambda)},
+               {"lambda_se", num("%.6g", fit.lambda_se)}, {"lambda_over_D", num("%.6g", fit.lambda / D)}, {"n", fit.n}};
   } else {
     run.notes.push_back(t.path + ": no exponential fit: " + fit.note);
     title += " (no exponential fit: " + fit.note + ")";
@@ -309,7 +307,7 @@ void flow_profile(const std::string &dir, Run &run)
   fig.width = 1300, fig.height = 560;
   fig.panels = {a, b};
   run.make(series_figure(fig));
-  run.numbers.push_back(num);
+  run.numbers["profile"] = profile;
 }
 
 // ---------------------------------------------------------------- phi against I at the edge
@@ -342,7 +340,7 @@ void flow_phi_I(const std::string &dir, Run &run)
   paper.title = "paper: φ = 0.57 − 0.35 I";
   paper.colour = "#d62728";
   p.guides.push_back(paper);
-  std::string num = "\"edge\": {\"n\": " + std::to_string(x.size());
+  Json edge = {{"n", x.size()}};
   std::string title = "Packing fraction against inertial number at the rod edge";
   const auto xd = distinct(x);
   if (x.size() >= 3 && xd.size() >= 2) {
@@ -352,12 +350,12 @@ void flow_phi_I(const std::string &dir, Run &run)
     g.title = "fit: φ = " + fmt("%.3f", lf.a) + (lf.b < 0 ? " − " : " + ") + fmt("%.3f", std::fabs(lf.b)) + " I";
     g.colour = "#000000", g.dash = 1;
     p.guides.push_back(g);
-    num += ", \"fit_ok\": true, \"intercept\": " + fmt("%.6g", lf.a) + ", \"intercept_se\": " + fmt("%.6g", lf.se_a) +
-           ", \"slope\": " + fmt("%.6g", lf.b) + ", \"slope_se\": " + fmt("%.6g", lf.se_b);
+    edge.update({{"fit_ok", true}, {"intercept", num("%.6g", lf.a)}, {"intercept_se", num("%.6g", lf.se_a)},
+                 {"slope", num("%.6g", lf.b)}, {"slope_se", num("%.6g", lf.se_b)}});
     title += ": fit φ(0) = " + fmt("%.3f", lf.a) + " ± " + fmt("%.3f", lf.se_a) + ", slope " + fmt("%.2f", lf.b) +
              " ± " + fmt("%.2f", lf.se_b);
   } else {
-    num += ", \"fit_ok\": false";
+    edge["fit_ok"] = false;
   }
   SeriesFigure fig;
   fig.name = "flow_phi_I";
@@ -367,7 +365,7 @@ void flow_phi_I(const std::string &dir, Run &run)
   fig.width = 1100, fig.height = 620;
   fig.panels = {p};
   run.make(series_figure(fig));
-  run.numbers.push_back(num + "}");
+  run.numbers["edge"] = edge;
 }
 
 // ---------------------------------------------------------------- near-shaft strip
@@ -448,7 +446,7 @@ void flow_surface(const std::string &dir, Run &run)
   fig.width = 900, fig.height = 620;
   fig.panels = {p};
   run.make(series_figure(fig));
-  run.numbers.push_back("\"surface_crossing_t_tilde\": " + (std::isfinite(cross) ? fmt("%.6g", cross) : std::string("null")));
+  run.numbers["surface_crossing_t_tilde"] = std::isfinite(cross) ? num("%.6g", cross) : Json();
 }
 
 // ---------------------------------------------------------------- annulus means against t~
@@ -627,7 +625,7 @@ void momentum_drag_figure(const std::string &dir, Run &run)
   one.expression = "x", one.title = "1:1 (paper)", one.colour = "#404040";
   p.guides.push_back(one);
   std::string title = "Drag against μ g M of the moving grains";
-  std::string num = "\"drag\": {\"ok\": " + std::string(cmp.ok ? "true" : "false") + ", \"n\": " + std::to_string(cmp.n);
+  Json drag = {{"ok", cmp.ok}, {"n", cmp.n}};
   if (cmp.ok) {
     PlotGuide g;
     g.expression = gp_number(cmp.fit.b) + "*x";
@@ -638,8 +636,8 @@ void momentum_drag_figure(const std::string &dir, Run &run)
     // grains move yet
     title += ": k = " + fmt("%.2f", cmp.fit.b) + " ± " + fmt("%.2f", cmp.fit.se_b) + " (paper: about 1); mean F / μgM over the frames " +
              fmt("%.2f", cmp.ratio_mean) + " ± " + fmt("%.2f", cmp.ratio_se);
-    num += ", \"k\": " + fmt("%.6g", cmp.fit.b) + ", \"k_se\": " + fmt("%.6g", cmp.fit.se_b) + ", \"ratio_mean\": " +
-           fmt("%.6g", cmp.ratio_mean) + ", \"ratio_se\": " + fmt("%.6g", cmp.ratio_se);
+    drag.update({{"k", num("%.6g", cmp.fit.b)}, {"k_se", num("%.6g", cmp.fit.se_b)}, {"ratio_mean", num("%.6g", cmp.ratio_mean)},
+                 {"ratio_se", num("%.6g", cmp.ratio_se)}});
   } else {
     run.notes.push_back(t.path + ": no drag comparison: " + cmp.note);
   }
@@ -651,7 +649,7 @@ void momentum_drag_figure(const std::string &dir, Run &run)
   fig.width = 980, fig.height = 680;
   fig.panels = {p};
   run.make(series_figure(fig));
-  run.numbers.push_back(num + "}");
+  run.numbers["drag"] = drag;
 }
 
 bool folder_ok(const std::vector<std::string> &inputs, Run &run)
@@ -691,5 +689,5 @@ void plot_momentum(const std::vector<std::string> &inputs, Run &run)
     run.problems.push_back(dir + ": neither momentum_classes.csv nor momentum_drag.csv is there");
 }
 
-}    // namespace plotcmd
+}    // namespace figures
 }    // namespace granpen

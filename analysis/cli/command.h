@@ -1,0 +1,72 @@
+// granpen subcommands: the one option parser (CLI11) and the one top-level error handler.
+// A subcommand builds a Command with its prose, adds its options (typed, with ranges),
+// parses, calls the library and writes; any exception it lets go is turned into
+// "granpen NAME: error: ..." and an exit status by run_subcommand.
+#ifndef GRANPEN_CLI_COMMAND_H
+#define GRANPEN_CLI_COMMAND_H
+
+#include <CLI/CLI.hpp>
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace granpen {
+namespace cli {
+
+// Exit statuses of every subcommand.
+enum Exit { EXIT_OK = 0, EXIT_FAILED = 1, EXIT_USAGE = 2 };
+
+// A usage error (an option's value against its meaning, options that contradict each
+// other): exit 2. An empty message: already reported.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// A value check for CLI11: a whole finite number (args.h's number_arg), else
+// "needs a number, got 'V'".
+CLI::Validator finite_number(bool accept_underflow = false);
+// a whole number > 0 / >= 0
+CLI::Validator positive_number();
+CLI::Validator non_negative_number();
+// a file or folder name: not empty
+CLI::Validator file_name();
+
+// The parser of one subcommand. Its --help prints the prose (usage line, what it does,
+// outputs, exit status) and then the options as CLI11 lists them.
+class Command {
+ public:
+  Command(const std::string &name, const std::string &prose);
+  CLI::App app;
+
+  // A number option bound to v: checked as a finite number (with lo/hi bounds when given).
+  CLI::Option *number(const std::string &flag, double &v, const std::string &what, bool accept_underflow = false);
+  // argv[0] is the first word after the subcommand. false: --help was printed on stdout
+  // (exit 0). No words at all: the help on stderr and UsageError(""). A parse error
+  // (unknown option, missing or bad value) throws UsageError naming the option.
+  bool parse(int argc, char **argv);
+
+  const std::string &name() const { return name_; }
+
+ private:
+  // UsageError for the first word no option took: an unknown option, else a stray argument
+  void refuse_unknown_words() const;
+  std::string name_;
+};
+
+// What an exception says to the user: its message, or for the C++ library's own terse
+// texts ("stod", "basic_string::_M_create", std::bad_alloc) what they mean.
+std::string user_text(const std::exception &e);
+
+// Runs fn(argc, argv) for subcommand name, the top-level handler: UsageError and CLI11's
+// errors -> "granpen NAME: error: ..." and 2; any other exception (InputError,
+// OutputError, std::bad_alloc, std::invalid_argument, ...) -> "granpen NAME: error: ..."
+// and 1, the C++ library's own terse texts ("stod", "basic_string::...") replaced by
+// what they mean.
+int run_subcommand(const char *name, int (*fn)(int, char **), int argc, char **argv);
+
+}    // namespace cli
+}    // namespace granpen
+
+#endif

@@ -1,0 +1,299 @@
+// granpen analysis: a calibration sweep folder read and written (see calibration_sweep.h).
+#include "calibration_sweep.h"
+
+#include "bed_info.h"
+#include "json_text.h"
+#include "json_writer.h"
+#include "trace_fit.h"
+#include "trace_reader.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdlib>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+namespace granpen {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// s as a whole finite number (strtod; trailing text, overflow or underflow: false)
+bool number_arg(const std::string &s, double &v)
+{
+  char *end = nullptr;
+  errno = 0;
+  v = std::strtod(s.c_str(), &end);
+  return !s.empty() && end && *end == '\0' && errno != ERANGE && std::isfinite(v);
+}
+
+std::string num(double v) { return json_number("%.10g", v); }
+
+
+std::string csv_field(const std::string &s)
+{
+  if (s.find_first_of(",\"\n\r") == std::string::npos) return s;
+  std::string o = "\"";
+  for (char c : s) o += (c == '"') ? std::string("\"\"") : std::string(1, c);
+  return o + "\"";
+}
+
+// markdown cell text: no pipes or line breaks
+std::string md_cell(std::string s)
+{
+  for (char &c : s)
+    if (c == '|' || c == '\n' || c == '\r') c = ' ';
+  return s;
+}
+
+std::vector<std::string> files_with(const fs::path &dir, const std::string &ext, std::string &err)
+{
+  std::vector<std::string> out;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) {
+    err = dir.string() + ": no such folder";
+    return out;
+  }
+  for (const auto &e : fs::directory_iterator(dir, ec))
+    if (e.path().extension() == ext && e.is_regular_file(ec)) out.push_back(e.path().string());
+  if (ec) err = dir.string() + ": cannot list folder: " + ec.message();
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::string pm(const Stat &s, const char *mf, const char *sf)
+{
+  if (!s.n) return "-";
+  return json_number(mf, s.mean) + " +- " + json_number(sf, s.sd);
+}
+
+std::string markdown(const std::vector<CalibrationRow> &rows, double zmin, double zmax)
+{
+  std::string o = "| mu | n beds | phi_0 (mean +- sd) | n pushes | v0 (cm/s) | k_z (dyne/cm, mean +- sd) | "
+                  "alpha (mean +- sd) |\n|---:|---:|---|---:|---:|---|---|\n";
+  for (const auto &r : rows)
+    o += "| " + json_number("%g", r.mu) + " | " + std::to_string(r.phi_0.n) + " | " + pm(r.phi_0, "%.4f", "%.4f") +
+         " | " + std::to_string(r.k_z.n) + " | " + (r.pushes.empty() ? std::string("-") : json_number("%g", r.v0)) +
+         " | " + pm(r.k_z, "%.4g", "%.2g") + " | " + pm(r.alpha, "%.3g", "%.2g") + " |\n";
+  o += "\nk_z: slope of F on z over z = " + json_number("%g", zmin) + ".." + json_number("%g", zmax) +
+       " cm; alpha = k_z / (mu rho_g g D^2); sd over beds/pushes (n - 1).\n";
+  return o;
+}
+
+std::string csv_table(const std::vector<CalibrationRow> &rows)
+{
+  std::string o = "mu,n_beds,phi_0_mean,phi_0_sd,n_pushes,v0,k_z_mean,k_z_sd,alpha_mean,alpha_sd\n";
+  for (const auto &r : rows)
+    o += num(r.mu) + "," + std::to_string(r.phi_0.n) + "," + num(r.phi_0.mean) + "," + num(r.phi_0.sd) + "," +
+         std::to_string(r.k_z.n) + "," + num(r.v0) + "," + num(r.k_z.mean) + "," + num(r.k_z.sd) + "," +
+         num(r.alpha.mean) + "," + num(r.alpha.sd) + "\n";
+  return o;
+}
+
+Json json_table(const std::vector<CalibrationRow> &rows, const std::string &sweep, double zmin,
+                         double zmax, const std::vector<std::string> &problems)
+{
+  const auto n = [](double v) { return json_rounded("%.10g", v); };
+  const auto stat = [&](const Stat &s) { return Json{{"n", s.n}, {"mean", n(s.mean)}, {"sd", n(s.sd)}}; };
+  Json j;
+  j["tool"] = "granpen calibration";
+  j["sweep"] = sweep;
+  j["units"] = {{"k_z", "dyne/cm"}, {"v0", "cm/s"}, {"z", "cm"}};
+  j["window"] = {{"zmin", n(zmin)}, {"zmax", n(zmax)}};
+  j["sd"] = "sample standard deviation (n - 1), 0 for one value";
+  j["rows"] = Json::array();
+  for (const auto &r : rows) {
+    Json row = {{"mu", n(r.mu)}, {"v0", n(r.v0)}, {"phi_0", stat(r.phi_0)}, {"k_z", stat(r.k_z)},
+                         {"alpha", stat(r.alpha)}, {"beds", Json::array()}, {"pushes", Json::array()}};
+    for (const auto &b : r.beds) row["beds"].push_back({{"name", b.name}, {"seed", n(b.seed)}, {"phi_0", n(b.phi_0)}});
+    for (const auto &p : r.pushes)
+      row["pushes"].push_back({{"trace", p.name}, {"bed", p.bed}, {"seed", n(p.seed)}, {"k_z", n(p.k_z)}, {"alpha", n(p.alpha)}});
+    j["rows"].push_back(row);
+  }
+  j["problems"] = problems;
+  return j;
+}
+
+// gnuplot script with the data inline (datablocks); run in the output folder
+std::string gnuplot_script(const std::vector<CalibrationRow> &rows)
+{
+  double lo = 0, hi = 0;
+  bool any = false;
+  for (const auto &r : rows) {
+    lo = any ? std::min(lo, r.mu) : r.mu;
+    hi = any ? std::max(hi, r.mu) : r.mu;
+    any = true;
+  }
+  const double pad = hi > lo ? 0.1 * (hi - lo) : std::max(0.05, 0.1 * std::fabs(lo));
+  std::ostringstream o;
+  o << "# granpen calibration: phi_0 and k_z against the grain friction mu (written by granpen calibration)\n"
+    << "set encoding utf8\nset terminal pngcairo size 1000,600 font \",12\"\nset grid\nset key outside right top box\nset offsets 0, 0, graph 0.05, graph 0.05\n"
+    << "set xrange [" << num(lo - pad) << ":" << num(hi + pad) << "]\n"
+    << "set xlabel \"grain friction coefficient {/Symbol m}\"\n\n";
+
+  // phi_0: per-bed points, mean +- sd per mu
+  o << "$beds << EOD\n# mu phi_0 seed\n";
+  for (const auto &r : rows) {
+    if (&r != &rows.front() && r.mu == (&r - 1)->mu) continue;    // each mu's beds once
+    for (const auto &b : r.beds) o << num(b.mu) << " " << num(b.phi_0) << " " << num(b.seed) << "\n";
+  }
+  o << "EOD\n$phi << EOD\n# mu mean sd n\n";
+  for (const auto &r : rows) {
+    if (&r != &rows.front() && r.mu == (&r - 1)->mu) continue;
+    if (r.phi_0.n) o << num(r.mu) << " " << num(r.phi_0.mean) << " " << num(r.phi_0.sd) << " " << r.phi_0.n << "\n";
+  }
+  o << "EOD\n"
+    << "set output \"calibration_phi0.png\"\nset title \"Bed packing fraction against friction\"\n"
+    << "set ylabel \"packing fraction {/Symbol f}_0\"\n"
+    << "plot $phi using 1:2:3 with yerrorbars pt 7 ps 1.5 lw 2 lc rgb \"#1f77b4\" title \"mean ± sd over seeds\", \\\n"
+    << "     $beds using 1:2 with points pt 6 ps 1.2 lc rgb \"#555555\" title \"each seed's bed\"\n"
+    << "unset output\n\n";
+
+  // k_z: one series per v0
+  std::vector<double> v0s;
+  for (const auto &r : rows)
+    if (!r.pushes.empty() && std::find(v0s.begin(), v0s.end(), r.v0) == v0s.end()) v0s.push_back(r.v0);
+  for (std::size_t i = 0; i < v0s.size(); ++i) {
+    o << "$kz" << i << " << EOD\n# mu mean sd n\n";
+    for (const auto &r : rows)
+      if (!r.pushes.empty() && r.v0 == v0s[i])
+        o << num(r.mu) << " " << num(r.k_z.mean) << " " << num(r.k_z.sd) << " " << r.k_z.n << "\n";
+    o << "EOD\n$pts" << i << " << EOD\n# mu k_z seed\n";
+    for (const auto &r : rows)
+      if (!r.pushes.empty() && r.v0 == v0s[i])
+        for (const auto &p : r.pushes) o << num(p.mu) << " " << num(p.k_z) << " " << num(p.seed) << "\n";
+    o << "EOD\n";
+  }
+  o << "set output \"calibration_kz.png\"\nset title \"Depth term k_z against friction\"\n"
+    << "set ylabel \"k_z (dyne/cm)\"\n";
+  if (v0s.empty()) {
+    o << "set label 1 \"no fitted pushes\" at graph 0.5, graph 0.5 center\nset yrange [0:1]\n"
+      << "plot 1/0 notitle\n";
+  } else {
+    const char *colours[] = {"#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#17becf"};
+    o << "plot ";
+    for (std::size_t i = 0; i < v0s.size(); ++i) {
+      const char *c = colours[i % 6];
+      o << (i ? ", \\\n     " : "") << "$kz" << i << " using 1:2:3 with yerrorbars pt 7 ps 1.5 lw 2 lc rgb \"" << c
+        << "\" title \"v_0 = " << json_number("%g", v0s[i]) << " cm/s: mean ± sd over seeds\", \\\n     $pts" << i
+        << " using 1:2 with points pt 6 ps 1.2 lc rgb \"" << c << "\" title \"each seed's push\"";
+    }
+    o << "\n";
+  }
+  o << "unset output\n";
+  return o.str();
+}
+
+}    // namespace
+
+CalibrationSweep read_calibration_sweep(const std::string &sweep, double zmin, double zmax)
+{
+  CalibrationSweep sw;
+  // beds
+  std::string err;
+  sw.info_files = files_with(fs::path(sweep) / "beds", ".info", err);
+  if (!err.empty()) sw.problems.push_back(err);
+  std::map<std::string, CalibrationBed> bed_by_name;
+  for (const auto &f : sw.info_files) {
+    try {
+      const BedInfo info = read_bed_info(f);
+      CalibrationBed b;
+      b.name = info.name;
+      b.mu = info.mu;
+      b.seed = info.seed;
+      b.phi_0 = info.phi_0;
+      sw.beds.push_back(b);
+      bed_by_name[b.name] = b;
+    } catch (InputError &e) {
+      sw.problems.push_back(e.what());
+    }
+  }
+
+  // pushes
+  err.clear();
+  sw.trace_files = files_with(fs::path(sweep) / "traces", ".csv", err);
+  if (!err.empty()) sw.problems.push_back(err);
+  for (const auto &f : sw.trace_files) {
+    try {
+      const Trace tr = to_cgs(read_trace(f));
+      CalibrationPush p;
+      p.name = fs::path(f).filename().string();
+      p.v0 = tr.v0;
+      const CalibrationBed *bed = nullptr;
+      auto bk = tr.keys.find("bed");
+      if (bk != tr.keys.end()) {
+        p.bed = bed_name(bk->second);
+        auto it = bed_by_name.find(p.bed);
+        if (it != bed_by_name.end()) bed = &it->second;
+        else sw.notes.push_back(f + ": bed '" + p.bed + "' has no beds/" + p.bed + ".info");
+      } else {
+        sw.notes.push_back(f + ": no 'bed' header key");
+      }
+      auto key = [&](const char *k, double &v) {
+        auto it = tr.keys.find(k);
+        if (it == tr.keys.end()) return false;
+        if (it->second.find('\0') != std::string::npos || !number_arg(it->second, v))    // nor with a NUL byte in it
+          throw InputError(f + ": header key " + k + " = '" + it->second + "' is not a number");
+        return true;
+      };
+      if (!key("mu", p.mu)) {
+        if (!bed) throw InputError(f + ": no header key mu and no known bed to take it from");
+        p.mu = bed->mu;
+      }
+      if (!key("seed", p.seed) && bed) p.seed = bed->seed;
+      if (bed && std::fabs(bed->mu - p.mu) > 1e-9 * std::fabs(p.mu))
+        sw.notes.push_back(f + ": pushed at mu = " + json_number("%g", p.mu) + " into bed '" + p.bed + "' poured at mu = " +
+                        json_number("%g", bed->mu) + " (grouped by the push's mu)");
+      double rho_g = 3.0;
+      if (!key("rho_g", rho_g)) sw.notes.push_back(f + ": no rho_g header key; alpha uses rho_g = 3 g/cm^3");
+
+      TraceFitParams par;
+      par.zlo = zmin;
+      par.zhi = zmax;
+      par.v0 = tr.v0;
+      par.D = tr.D;
+      par.g = tr.g;
+      par.mu = p.mu;
+      par.rho_g = rho_g;
+      double dg = 0.4;
+      key("d_g", dg);
+      par.d_g = dg;
+      const TraceFit fit = fit_trace(tr.z, tr.F, par);
+      if (!fit.slope_ok) {
+        sw.problems.push_back(f + ": " + (fit.notes.empty() ? std::string("k_z undefined") : fit.notes.front()));
+        continue;
+      }
+      p.k_z = fit.k_z;
+      p.alpha = fit.alpha_ok ? fit.alpha : 0.0;
+      if (!fit.alpha_ok) sw.notes.push_back(f + ": alpha undefined, counted as 0");
+      sw.pushes.push_back(p);
+    } catch (std::exception &e) {
+      sw.problems.push_back(e.what());
+    }
+  }
+
+  return sw;
+}
+
+std::string calibration_markdown(const std::vector<CalibrationRow> &rows, double zmin, double zmax)
+{
+  return markdown(rows, zmin, zmax);
+}
+
+std::vector<std::pair<std::string, std::string>> calibration_files(const std::vector<CalibrationRow> &rows,
+                                                                   const std::string &sweep, double zmin, double zmax,
+                                                                   const std::vector<std::string> &problems,
+                                                                   const std::string &out_dir)
+{
+  const fs::path od(out_dir);
+  const std::string title = "# Friction calibration: " + md_cell(sweep) + "\n\n";
+  return {{(od / "calibration.csv").string(), csv_table(rows)},
+          {(od / "calibration.json").string(), json_layout(json_table(rows, sweep, zmin, zmax, problems), 1)},
+          {(od / "calibration.md").string(), title + markdown(rows, zmin, zmax)},
+          {(od / "calibration.gp").string(), gnuplot_script(rows)}};
+}
+
+}    // namespace granpen

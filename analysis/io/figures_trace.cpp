@@ -1,0 +1,623 @@
+// granpen analysis: the paper's figure types of force traces (force, ratio, peak, kz) as
+// gnuplot scripts with their data beside them (io/figures.h, io/plot_writer.h). The
+// numbers come from core/collapse.h and core/trace_fit.h, so they match granpen collapse
+// and granpen fit.
+#include "figures.h"
+
+#include "json_text.h"
+#include "linear_fit.h"
+#include "trace_files.h"
+#include "trace_fit.h"
+#include "trace_reader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace granpen {
+namespace figures {
+
+std::string fmt(const char *f, double v) { return json_number(f, v); }
+Json num(const char *f, double v) { return json_rounded(f, v); }
+
+AxisScale axis_scale(double maxabs, const std::string &unit)
+{
+  AxisScale s;
+  s.unit = unit;
+  if (!(maxabs > 0) || !std::isfinite(maxabs)) return s;
+  const int e = static_cast<int>(std::floor(std::log10(maxabs)));
+  if (e < 3) return s;
+  s.factor = std::pow(10.0, e);
+  s.unit = "10^{" + std::to_string(e) + "} " + unit;
+  return s;
+}
+
+// labelled tics at 1, 2 and 5 x 10^e over [lo, hi] of a log axis (only 10^e when
+// that makes more than 9)
+std::string log_tics(const char *axis, double lo, double hi, bool plain)
+{
+  std::vector<std::string> all, decades;
+  for (int e = (int) std::floor(std::log10(lo)); e <= (int) std::ceil(std::log10(hi)); ++e)
+    for (int m : {1, 2, 5}) {
+      const double v = m * std::pow(10.0, e);
+      if (v < lo * (1 - 1e-9) || v > hi * (1 + 1e-9)) continue;
+      const std::string lab = plain ? fmt("%g", v)
+                                    : (m == 1 ? std::string("10^{") : std::to_string(m) + "×10^{") + std::to_string(e) + "}";
+      all.push_back(gp_quote(lab) + " " + gp_number(v));
+      if (m == 1) decades.push_back(all.back());
+    }
+  const auto &use = all.size() > 9 && decades.size() >= 2 ? decades : all;
+  std::string t = std::string("set ") + axis + "tics (";
+  for (std::size_t i = 0; i < use.size(); ++i) t += (i ? ", " : "") + use[i];
+  return t + ")\nset m" + axis + "tics 10\n";
+}
+
+// a number as 2.94×10^{4} (plain below 1e4)
+std::string sci(double v)
+{
+  if (v == 0 || !std::isfinite(v) || std::fabs(v) < 1e4) return fmt("%.3g", v);
+  const int e = (int) std::floor(std::log10(std::fabs(v)));
+  return fmt("%.3g", v / std::pow(10.0, e)) + "×10^{" + std::to_string(e) + "}";
+}
+
+namespace {
+
+namespace fs = std::filesystem;
+
+
+// ---------------------------------------------------------------- traces
+
+struct TraceIn {
+  std::string file, label;    // label: "seed 1", "run 2" or the file's stem
+  Trace tr;                   // cgs
+};
+
+std::vector<TraceIn> load_traces(const std::vector<std::string> &inputs, Run &run)
+{
+  std::vector<std::string> problems;
+  const auto files = expand_trace_paths(inputs, problems);
+  for (const auto &p : problems) run.problems.push_back(p);
+  std::vector<TraceIn> out;
+  for (const auto &f : files) {
+    try {
+      TraceIn t;
+      t.file = f;
+      t.tr = to_cgs(read_trace(f));
+      auto seed = t.tr.keys.find("seed"), r = t.tr.keys.find("run");
+      if (seed != t.tr.keys.end()) t.label = "seed " + seed->second;
+      else if (r != t.tr.keys.end()) t.label = "run " + r->second;
+      else t.label = fs::path(f).stem().string();
+      out.push_back(t);
+    } catch (std::exception &e) {
+      run.problems.push_back(e.what());
+    }
+  }
+  if (out.empty() && run.problems.empty()) run.problems.push_back("no trace given");
+  return out;
+}
+
+// traces grouped by v0 (ascending): indices into the traces
+std::vector<std::vector<int>> by_speed(const std::vector<TraceIn> &t)
+{
+  std::map<double, std::vector<int>> m;
+  for (std::size_t i = 0; i < t.size(); ++i) m[t[i].tr.v0].push_back((int) i);
+  std::vector<std::vector<int>> g;
+  for (auto &kv : m) g.push_back(kv.second);
+  return g;
+}
+
+std::string v0_text(double v0) { return "v_0 = " + fmt("%g", v0) + " cm/s"; }
+
+// log-axis tics at the given values (and the minor tics gnuplot adds)
+std::string value_tics(const char *axis, std::vector<double> v)
+{
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  std::string s = std::string("set ") + axis + "tics (";
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? ", " : "") + gp_number(v[i]);
+  return s + ")\n";
+}
+
+bool increasing(const std::vector<double> &z)
+{
+  for (std::size_t i = 1; i < z.size(); ++i)
+    if (!(z[i] > z[i - 1])) return false;
+  return z.size() >= 2;
+}
+
+double interp(const std::vector<double> &x, const std::vector<double> &y, double xq)
+{
+  auto it = std::lower_bound(x.begin(), x.end(), xq);
+  if (it == x.begin()) return y.front();
+  if (it == x.end()) return y.back();
+  const std::size_t k = it - x.begin();
+  const double f = (xq - x[k - 1]) / (x[k] - x[k - 1]);
+  return y[k - 1] + f * (y[k] - y[k - 1]);
+}
+
+// the k_z window as text: "z = 1..3 cm" or "z ≥ 3 cm"
+std::string window_text(const Options &o)
+{
+  return std::isfinite(o.kz_zmax) ? "z = " + fmt("%g", o.kz_zmin) + ".." + fmt("%g", o.kz_zmax) + " cm"
+                                  : "z ≥ " + fmt("%g", o.kz_zmin) + " cm";
+}
+
+// k_z as granpen collapse: fit over the k_z window, or from alpha
+bool depth_term(const TraceIn &t, const Options &o, double &k_z, std::string &why)
+{
+  if (o.alpha > 0.0) {
+    const double mu = o.mu > 0 ? o.mu : t.tr.number("mu", 0.3);
+    const double rho = o.rho > 0 ? o.rho : t.tr.number("rho_g", 3.0);
+    k_z = o.alpha * mu * rho * t.tr.g * t.tr.D * t.tr.D;
+    return true;
+  }
+  TraceFitParams fp;
+  fp.zlo = o.kz_zmin, fp.zhi = o.kz_zmax, fp.v0 = t.tr.v0, fp.D = t.tr.D, fp.g = t.tr.g;
+  const TraceFit fit = fit_trace(t.tr.z, t.tr.F, fp);
+  if (!fit.slope_ok || !(fit.k_z > 0)) {
+    why = t.file + ": no positive depth term over the k_z window (use --kz-zmin/--kz-zmax or --alpha)";
+    return false;
+  }
+  k_z = fit.k_z;
+  return true;
+}
+
+}    // namespace
+
+// ---------------------------------------------------------------- force
+
+void plot_force(const std::vector<std::string> &inputs, Run &run)
+{
+  const auto traces = load_traces(inputs, run);
+  if (traces.empty()) return;
+  const auto groups = by_speed(traces);
+  double Dmax = 0, Fmax = 0;
+  for (const auto &t : traces) {
+    Dmax = std::max(Dmax, t.tr.D);
+    for (double F : t.tr.F) Fmax = std::max(Fmax, std::fabs(F));
+  }
+  const double zpeak = 0.35 * Dmax;    // 0.7 R
+  const AxisScale ys = axis_scale(Fmax, "dyne");
+
+  SeriesPanel main, inset;
+  main.xlabel = "rod tip depth z below the bed surface (cm)";
+  main.ylabel = "drag force F (" + ys.unit + ")";
+  main.extra = "set offsets 0, 0, graph 0.04, 0\n"
+               "set object 2 rectangle from first 0, graph 0 to first " + gp_number(zpeak) +
+               ", graph 1 behind fillcolor rgb \"#e8e8e8\" fillstyle solid 1.0 noborder\n"
+               "set label 2 \"z < 0.7 R\" at first " + gp_number(0.5 * zpeak) + ", graph 0.975 center textcolor rgb \"#606060\"\n";
+  main.title = "";
+  const bool mean_mode = !run.opt.each;
+  main.key = "column";
+  main.extra += std::string("set key title ") +
+                gp_quote(mean_mode ? "lines: mean of the runs at each v_0\nbands: their range" : "every run") + "\n";
+  // the peak region, enlarged beside the main plot (an inset over the plot would hide data)
+  inset.at_x = 0.655, inset.at_y = 0.04, inset.at_w = 0.335, inset.at_h = 0.64;
+  inset.key = "off";
+  inset.title = "peak region z < 0.7 R = " + fmt("%g", zpeak) + " cm\n(dots: each run's peak)";
+  inset.xlabel = "z (cm)";
+  inset.ylabel = "F (" + ys.unit + ")";
+  inset.xmin = -0.1, inset.xmax = zpeak;
+  inset.ymin = 0;
+  inset.extra = "set xtics 0.2\nset mxtics 2\nset tics font \",11\"\nset title font \",11\"\n"
+                "set xlabel font \",11\"\nset ylabel font \",11\"\n";
+
+  Json json_runs = Json::array();
+  for (std::size_t gi = 0; gi < groups.size(); ++gi) {
+    const auto &g = groups[gi];
+    const std::string colour = plot_colour((int) gi);
+    const double v0 = traces[g[0]].tr.v0;
+    bool can_mean = mean_mode && g.size() > 1;
+    for (int i : g) can_mean = can_mean && increasing(traces[i].tr.z);
+    if (mean_mode && g.size() > 1 && !can_mean)
+      run.notes.push_back(v0_text(v0) + ": depth not increasing in every run; each run drawn");
+    // the peaks (trace_fit's definition, as granpen fit and collapse)
+    PlotSeries peaks;
+    peaks.style = "points", peaks.colour = colour, peaks.point_type = 7, peaks.point_size = 1.3;
+    for (std::size_t j = 0; j < g.size(); ++j) {
+      const auto &t = traces[g[j]];
+      TraceFitParams fp;
+      fp.D = t.tr.D, fp.g = t.tr.g, fp.v0 = t.tr.v0;
+      const TraceFit fit = fit_trace(t.tr.z, t.tr.F, fp);
+      if (fit.peak_ok) peaks.x.push_back(fit.peak_z), peaks.y.push_back(fit.peak_F / ys.factor);
+      json_runs.push_back({{"file", t.file}, {"v0", num("%.10g", v0)}, {"peak_F", num("%.6g", fit.peak_F)},
+                           {"peak_z", num("%.6g", fit.peak_z)}});
+    }
+    if (can_mean) {
+      std::vector<double> zs;
+      double z0 = -INFINITY, z1 = INFINITY;
+      for (int i : g) z0 = std::max(z0, traces[i].tr.z.front()), z1 = std::min(z1, traces[i].tr.z.back());
+      const auto &zr = traces[g[0]].tr.z;
+      std::vector<double> dz;
+      for (std::size_t k = 1; k < zr.size(); ++k) dz.push_back(zr[k] - zr[k - 1]);
+      std::nth_element(dz.begin(), dz.begin() + dz.size() / 2, dz.end());
+      const double step = dz[dz.size() / 2];
+      PlotSeries s;
+      s.title = v0_text(v0) + " (" + std::to_string(g.size()) + " runs)";
+      s.colour = colour;
+      for (std::size_t k = 0; z0 + k * step <= z1 + 1e-9 * step; ++k) {
+        const double z = z0 + k * step;
+        double sum = 0, lo = INFINITY, hi = -INFINITY;
+        for (int i : g) {
+          const double F = interp(traces[i].tr.z, traces[i].tr.F, z) / ys.factor;
+          sum += F, lo = std::min(lo, F), hi = std::max(hi, F);
+        }
+        s.x.push_back(z), s.y.push_back(sum / g.size()), s.band_lo.push_back(lo), s.band_hi.push_back(hi);
+      }
+      PlotSeries in = s;
+      in.title.clear();
+      in.x.clear(), in.y.clear(), in.band_lo.clear(), in.band_hi.clear();
+      for (std::size_t k = 0; k < s.x.size(); ++k)
+        if (s.x[k] >= -0.1 && s.x[k] <= zpeak + step)
+          in.x.push_back(s.x[k]), in.y.push_back(s.y[k]), in.band_lo.push_back(s.band_lo[k]),
+              in.band_hi.push_back(s.band_hi[k]);
+      main.series.push_back(s);
+      inset.series.push_back(in);
+    } else {
+      for (std::size_t j = 0; j < g.size(); ++j) {
+        const auto &t = traces[g[j]];
+        PlotSeries s, in;
+        s.title = v0_text(v0) + (g.size() > 1 ? ", " + t.label : "");
+        s.colour = in.colour = plot_shade(colour, (int) j, (int) g.size());
+        s.line_width = in.line_width = g.size() > 1 ? 1.5 : 2.0;
+        for (std::size_t k = 0; k < t.tr.z.size(); ++k) {
+          s.x.push_back(t.tr.z[k]), s.y.push_back(t.tr.F[k] / ys.factor);
+          if (t.tr.z[k] >= -0.1 && t.tr.z[k] <= zpeak * 1.05) in.x.push_back(t.tr.z[k]), in.y.push_back(t.tr.F[k] / ys.factor);
+        }
+        main.series.push_back(s);
+        inset.series.push_back(in);
+      }
+    }
+    inset.series.push_back(peaks);
+  }
+  SeriesFigure fig;
+  fig.name = "force";
+  fig.title = "Drag force against depth";
+  fig.about = "granpen plot force: F against the tip depth z for each v0 (" +
+              std::string(mean_mode ? "mean of the runs at each v0, band: their min..max" : "every run") +
+              "), F in " + ys.unit + ";\nbeside it, enlarged: the transient peak region 0 < z < 0.7 R, dots at each run's peak.";
+  fig.width = 1250, fig.height = 720;
+  fig.grid_width = 0.64;
+  fig.panels = {main, inset};
+  run.make(series_figure(fig));
+  run.numbers["F_unit"] = "dyne";
+  run.numbers["F_scale"] = num("%g", ys.factor);
+  run.numbers["peak_zmax"] = num("%g", zpeak);
+  run.numbers["runs"] = json_runs;
+}
+
+// ---------------------------------------------------------------- ratio
+
+void plot_ratio(const std::vector<std::string> &inputs, Run &run)
+{
+  const auto traces = load_traces(inputs, run);
+  std::vector<CollapseInput> in;
+  std::vector<int> which;
+  for (std::size_t i = 0; i < traces.size(); ++i) {
+    const auto &t = traces[i];
+    CollapseInput c;
+    std::string why;
+    if (!depth_term(t, run.opt, c.k_z, why)) {
+      run.problems.push_back(why);
+      continue;
+    }
+    c.name = t.file, c.z = t.tr.z, c.F = t.tr.F, c.v0 = t.tr.v0, c.D = t.tr.D, c.g = t.tr.g;
+    in.push_back(c);
+    which.push_back((int) i);
+  }
+  if (in.empty()) {
+    run.problems.push_back("no usable trace for the ratio");
+    return;
+  }
+  CollapseResult r;
+  try {
+    r = collapse(in, run.opt.collapse);
+  } catch (std::invalid_argument &e) {
+    run.problems.push_back(e.what());
+    return;
+  }
+  // colours: by v0, shades for the runs of one v0
+  std::map<double, std::vector<int>> speed;
+  for (std::size_t i = 0; i < r.curves.size(); ++i) speed[r.curves[i].v0].push_back((int) i);
+  std::vector<std::string> colour(r.curves.size());
+  int gi = 0;
+  for (auto &kv : speed) {
+    for (std::size_t j = 0; j < kv.second.size(); ++j)
+      colour[kv.second[j]] = plot_shade(plot_colour(gi), (int) j, (int) kv.second.size());
+    ++gi;
+  }
+  const double band = run.opt.collapse.band;
+  SeriesPanel a, b;
+  a.title = "(a) against depth";
+  a.xlabel = "rod tip depth z (cm)";
+  b.title = "(b) against rescaled time";
+  b.xlabel = "t̃ = (z / v_0) √(g / D)";
+  a.ylabel = b.ylabel = run.opt.alpha > 0 ? "F / F_z   (F_z = α μ ρ_g g D² z)" : "F / F_z   (F_z = k_z z)";
+  a.key = "off";
+  b.key = "column";
+  PlotHBand hb;
+  hb.lo = 1 - band, hb.hi = 1 + band;
+  a.hbands.push_back(hb);
+  hb.title = "1 ± " + fmt("%g", band);
+  b.hbands.push_back(hb);
+  PlotVLine v;
+  v.x = 1.0, v.label = "t̃ = 1 (paper)";
+  b.vlines.push_back(v);
+  double ymax = 0, ymin = 0;
+  Json json_curves = Json::array();
+  // a legend entry per run while it stays readable, else one per speed
+  const bool per_run = r.curves.size() <= 12;
+  for (auto &kv : speed)
+    for (int i : kv.second) {
+      const CollapseCurve &c = r.curves[i];
+      const auto &t = traces[which[i]];
+      PlotSeries sa, sb;
+      sa.colour = sb.colour = colour[i];
+      if (per_run)
+        sb.title = v0_text(c.v0) + (kv.second.size() > 1 ? ", " + t.label : "");
+      else if (i == kv.second.front())
+        sb.title = v0_text(c.v0) + " (" + std::to_string(kv.second.size()) + " runs)";
+      sa.line_width = sb.line_width = 1.8;
+      const double scale = std::sqrt(c.g / c.D) / c.v0;
+      for (std::size_t k = 0; k < c.t.size(); ++k) {
+        sa.x.push_back(c.t[k] / scale), sa.y.push_back(c.ratio[k]);
+        sb.x.push_back(c.t[k]), sb.y.push_back(c.ratio[k]);
+        ymax = std::max(ymax, c.ratio[k]), ymin = std::min(ymin, c.ratio[k]);
+      }
+      a.series.push_back(sa);
+      b.series.push_back(sb);
+      json_curves.push_back({{"file", c.name}, {"v0", num("%.10g", c.v0)}, {"k_z", num("%.6g", c.k_z)},
+                             {"crossed", c.crossed}, {"t_star", num("%.4g", c.t_star)}});
+    }
+  if (r.curves.size() > 1 && !r.ens_t.empty()) {
+    // the mean over the runs, where the grain-scale fluctuations of single runs average out
+    PlotSeries e;
+    e.colour = "#000000";
+    e.line_width = 3.0;
+    e.title = "mean of the runs ± se" + (r.ens_crossed ? " (t̃* = " + fmt("%.2f", r.t_star_ensemble) + ")" : std::string());
+    e.x = r.ens_t, e.y = r.ens_ratio;
+    for (std::size_t k = 0; k < r.ens_t.size(); ++k)
+      e.band_lo.push_back(r.ens_ratio[k] - r.ens_se[k]), e.band_hi.push_back(r.ens_ratio[k] + r.ens_se[k]);
+    b.series.push_back(e);
+  }
+  // linear up to 4; beyond, a log axis, so that the early, large ratios of fast pushes
+  // stay in view next to the band about 1
+  std::string clipped;
+  if (ymax > 4.0) {
+    double pos = ymax;
+    int nonpos = 0;
+    for (const auto &c : r.curves)
+      for (double y : c.ratio) y > 0 ? (void) (pos = std::min(pos, y)) : (void) ++nonpos;
+    const double lo = std::min(0.5, pos / 1.3), hi = ymax * 1.3;
+    a.logy = b.logy = true;
+    a.ymin = b.ymin = lo, a.ymax = b.ymax = hi;
+    a.extra = b.extra = log_tics("y", lo, hi, true);
+    if (nonpos) clipped = " (" + std::to_string(nonpos) + " bins with F/F_z <= 0 not drawn on the log axis)";
+  } else {
+    a.ymin = b.ymin = std::min(0.0, ymin);
+  }
+  SeriesFigure fig;
+  fig.name = "ratio";
+  fig.title = "F over its depth term F_z" + clipped + ": t̃* = " +
+              (r.n_crossed ? fmt("%.2f", r.t_star_mean) + " ± " + fmt("%.2f", r.t_star_sd) : std::string("not reached")) +
+              " (" + std::to_string(r.n_crossed) + " of " + std::to_string(r.curves.size()) + " traces" +
+              (r.curves.size() > 1 ? std::string("; their mean: ") +
+                                         (r.ens_crossed ? fmt("%.2f", r.t_star_ensemble) : std::string("not reached"))
+                                   : std::string()) +
+              "), spread " +
+              fmt("%.3f", r.spread_z) + " against z, " + fmt("%.3f", r.spread_t) + " against t̃";
+  fig.about = "granpen plot ratio: the binned F/F_z curves of granpen collapse (bins of t~ of width " +
+              fmt("%g", run.opt.collapse.tbin) + ", z >= " + fmt("%g", run.opt.collapse.zmin) +
+              " cm), against z (bin centre t~ converted back to z)\nand against t~; the band 1 +- " + fmt("%g", band) +
+              "; k_z " +
+              (run.opt.alpha > 0 ? "from alpha = " + fmt("%g", run.opt.alpha)
+                                 : "fitted over " + window_text(run.opt)) +
+              ".";
+  fig.width = 1450, fig.height = 620;
+  fig.grid_width = 0.8;
+  fig.panels = {a, b};
+  run.make(series_figure(fig));
+  Json &n = run.numbers;
+  n["band"] = num("%g", band), n["tbin"] = num("%g", run.opt.collapse.tbin), n["zmin"] = num("%g", run.opt.collapse.zmin);
+  n["t_star_mean"] = num("%.6g", r.t_star_mean), n["t_star_sd"] = num("%.6g", r.t_star_sd), n["n_crossed"] = r.n_crossed;
+  n["spread_z"] = num("%.6g", r.spread_z), n["spread_t"] = num("%.6g", r.spread_t);
+  n["ensemble_crossed"] = r.ens_crossed, n["t_star_ensemble"] = num("%.6g", r.t_star_ensemble);
+  n["curves"] = json_curves;
+}
+
+// ---------------------------------------------------------------- peak
+
+void plot_peak(const std::vector<std::string> &inputs, Run &run)
+{
+  const auto traces = load_traces(inputs, run);
+  if (traces.empty()) return;
+  // the peak law of granpen collapse; peaks and the law do not depend on k_z
+  std::vector<CollapseInput> in;
+  for (const auto &t : traces) {
+    CollapseInput c;
+    c.name = t.file, c.z = t.tr.z, c.F = t.tr.F, c.v0 = t.tr.v0, c.D = t.tr.D, c.g = t.tr.g, c.k_z = 1.0;
+    in.push_back(c);
+  }
+  CollapseResult r;
+  try {
+    r = collapse(in, run.opt.collapse);
+  } catch (std::invalid_argument &e) {
+    run.problems.push_back(e.what());
+    return;
+  }
+  std::vector<double> v0s;
+  double pmax = 0;
+  for (const auto &c : r.curves) {
+    v0s.push_back(c.v0);
+    if (!(c.peak > 0.0)) run.notes.push_back(c.name + ": no positive force at 0 < z < 0.7 R: no peak");
+    pmax = std::max(pmax, c.peak);
+  }
+  SeriesPanel p;
+  p.logx = p.logy = true;
+  p.xlabel = "rod speed v_0 (cm/s)";
+  p.ylabel = "peak force F_{peak} (dyne), max over 0 < z < 0.7 R";
+  std::vector<double> vs = v0s;
+  std::sort(vs.begin(), vs.end());
+  if (!vs.empty()) p.xmin = vs.front() / 1.35, p.xmax = vs.back() * 1.35;
+  double pmin = pmax;
+  for (const auto &c : r.curves)
+    if (c.peak > 0) pmin = std::min(pmin, c.peak);
+  if (pmax > 0) p.ymin = pmin / 2.5, p.ymax = pmax * 2.5;
+  p.extra = value_tics("x", v0s) + "set mxtics 10\n";
+  if (pmax > 0) p.extra += log_tics("y", p.ymin, p.ymax);
+
+  const auto groups = by_speed(traces);
+  PlotBlock points;
+  points.title = "peaks: v0 (cm/s), peak F (dyne), its depth (cm)";
+  points.columns = {"v0", "peak_F", "peak_z"};
+  for (std::size_t gi = 0; gi < groups.size(); ++gi) {
+    PlotSeries s;
+    s.style = "points", s.colour = plot_colour((int) gi), s.point_size = 1.6;
+    s.title = v0_text(traces[groups[gi][0]].tr.v0) + (groups[gi].size() > 1 ? " (" + std::to_string(groups[gi].size()) + " runs)" : "");
+    for (int i : groups[gi]) {
+      const auto &c = r.curves[i];
+      points.rows.push_back({c.v0, c.peak, c.peak_z});
+      if (c.peak > 0) s.x.push_back(c.v0), s.y.push_back(c.peak);
+    }
+    p.series.push_back(s);
+  }
+  Json law = {{"peak_ok", false}};
+  PlotBlock fitblk;
+  fitblk.title = "peak law (granpen collapse): F_peak = prefactor * v0^exponent; exponent_ci95 = t95 * se";
+  fitblk.columns = {"exponent", "exponent_se", "exponent_ci95", "prefactor", "n"};
+  std::string title = "Transient peak against speed";
+  if (r.peak_ok) {
+    const double pref = r.peak_prefactor;
+    PlotGuide fit;
+    fit.expression = gp_number(pref) + "*x**" + gp_number(r.peak_exponent);
+    fit.title = "fit: F_{peak} ∝ v_0^{" + fmt("%.2f", r.peak_exponent) + " ± " + fmt("%.2f", r.peak_exponent_ci95) + "} (95%)";
+    fit.colour = "#000000", fit.dash = 1, fit.line_width = 2;
+    PlotGuide sq;
+    sq.expression = gp_number(r.peak_v2_prefactor) + "*x**2";
+    sq.title = "∝ v_0^2 guide (paper)";
+    sq.colour = "#808080", sq.dash = 2;
+    p.guides = {fit, sq};
+    fitblk.rows.push_back({r.peak_exponent, r.peak_exponent_se, r.peak_exponent_ci95, pref, (double) r.peak_points});
+    title += ": exponent " + fmt("%.2f", r.peak_exponent) + " ± " + fmt("%.2f", r.peak_exponent_ci95) + " (95%; paper: 2)";
+    law = {{"peak_ok", true}, {"exponent", num("%.10g", r.peak_exponent)}, {"exponent_se", num("%.10g", r.peak_exponent_se)},
+           {"exponent_ci95", num("%.10g", r.peak_exponent_ci95)}, {"prefactor", num("%.10g", pref)}, {"n", r.peak_points}};
+  } else {
+    run.notes.push_back("peak law: needs at least 3 peaks over 2 or more speeds; points only");
+    title += " (too few speeds for a power law)";
+  }
+  SeriesFigure fig;
+  fig.name = "peak";
+  fig.title = title;
+  fig.about = "granpen plot peak: the transient peak (max F over 0 < z < 0.7 R) of each trace against v0, log-log;\n"
+              "the power law fitted by granpen collapse (least squares of ln F_peak on ln v0) and a v0^2 guide.";
+  fig.width = 1050, fig.height = 650;
+  fig.panels = {p};
+  PlotFiles f = series_figure(fig);
+  f.add_block(points);
+  f.add_block(fitblk);
+  run.make(f);
+  run.numbers.update(law);
+  Json pts = Json::array();
+  for (const auto &c : r.curves)
+    pts.push_back({{"file", c.name}, {"v0", num("%.10g", c.v0)}, {"peak_F", num("%.10g", c.peak)}, {"peak_z", num("%.6g", c.peak_z)}});
+  run.numbers["peaks"] = pts;
+}
+
+// ---------------------------------------------------------------- kz
+
+void plot_kz(const std::vector<std::string> &inputs, Run &run)
+{
+  const auto traces = load_traces(inputs, run);
+  if (traces.empty()) return;
+  const auto groups = by_speed(traces);
+  struct K {
+    double v0, k, se;
+    std::string file, label;
+  };
+  std::vector<std::vector<K>> per(groups.size());
+  double kmax = 0, sum = 0, sum2 = 0;
+  int n = 0;
+  std::vector<double> v0s;
+  Json json_fits = Json::array();
+  for (std::size_t gi = 0; gi < groups.size(); ++gi)
+    for (int i : groups[gi]) {
+      const auto &t = traces[i];
+      TraceFitParams fp;
+      fp.zlo = run.opt.kz_zmin, fp.zhi = run.opt.kz_zmax, fp.v0 = t.tr.v0, fp.D = t.tr.D, fp.g = t.tr.g;
+      const TraceFit fit = fit_trace(t.tr.z, t.tr.F, fp);
+      if (!fit.slope_ok) {
+        run.problems.push_back(t.file + ": k_z undefined over the window: " +
+                               (fit.notes.empty() ? std::string("no fit") : fit.notes.front()));
+        continue;
+      }
+      per[gi].push_back({t.tr.v0, fit.k_z, fit.k_z_se, t.file, t.label});
+      kmax = std::max(kmax, std::fabs(fit.k_z) + fit.k_z_se);
+      sum += fit.k_z, sum2 += fit.k_z * fit.k_z, ++n;
+      v0s.push_back(t.tr.v0);
+      json_fits.push_back({{"file", t.file}, {"v0", num("%.10g", t.tr.v0)}, {"k_z", num("%.10g", fit.k_z)},
+                           {"k_z_se", num("%.10g", fit.k_z_se)}, {"z_first", num("%.6g", fit.z_first)},
+                           {"z_last", num("%.6g", fit.z_last)}});
+    }
+  if (n == 0) {
+    run.problems.push_back("no trace with k_z over the window " + window_text(run.opt));
+    return;
+  }
+  const AxisScale ys = axis_scale(kmax, "dyne/cm");
+  const double mean = sum / n, sd = n > 1 ? std::sqrt(std::max(0.0, (sum2 - n * mean * mean) / (n - 1))) : 0.0;
+  SeriesPanel p;
+  p.logx = true;
+  p.xlabel = "rod speed v_0 (cm/s)";
+  p.ylabel = "depth coefficient k_z (" + ys.unit + ")";
+  double kmin = 0;
+  for (const auto &g : per)
+    for (const auto &k : g) kmin = std::min(kmin, k.k - k.se);
+  p.ymin = kmin < 0 ? 1.1 * kmin / ys.factor : 0.0;    // negative fits are drawn, not cut off
+  std::sort(v0s.begin(), v0s.end());
+  p.xmin = v0s.front() / 1.35, p.xmax = v0s.back() * 1.35;
+  p.extra = value_tics("x", v0s) + "set mxtics 10\nset offsets 0, 0, graph 0.1, 0\n";
+  p.extra += "set key title \"runs of one v_0 side by side\"\n";
+  if (kmin < 0) p.extra += "set xzeroaxis lt 1 lw 1 lc rgb \"#606060\"\n";
+  PlotHBand hb;
+  hb.lo = (mean - sd) / ys.factor, hb.hi = (mean + sd) / ys.factor;
+  hb.title = "mean ± sd over the " + std::to_string(n) + " traces";
+  hb.colour = "#606060";
+  if (n > 1) p.hbands.push_back(hb);
+  PlotGuide mg;
+  mg.expression = gp_number(mean / ys.factor);
+  mg.title = "mean k_z = " + sci(mean) + " dyne/cm";
+  p.guides.push_back(mg);
+  for (std::size_t gi = 0; gi < per.size(); ++gi) {
+    if (per[gi].empty()) continue;
+    PlotSeries s;
+    s.style = "points", s.colour = plot_colour((int) gi), s.point_size = 1.4, s.line_width = 1.5;
+    s.title = v0_text(per[gi][0].v0) + (per[gi].size() > 1 ? " (" + std::to_string(per[gi].size()) + " runs)" : "");
+    const std::size_t m = per[gi].size();
+    for (std::size_t j = 0; j < m; ++j) {
+      const double shift = std::pow(1.04, double(j) - 0.5 * (m - 1));
+      s.x.push_back(per[gi][j].v0 * shift), s.y.push_back(per[gi][j].k / ys.factor);
+      s.y_err.push_back(per[gi][j].se / ys.factor);
+    }
+    p.series.push_back(s);
+  }
+  SeriesFigure fig;
+  fig.name = "kz";
+  fig.title = "Depth coefficient against speed (fit over " + window_text(run.opt) + "; bars: standard errors)";
+  fig.about = "granpen plot kz: k_z of each trace (granpen fit's linear fit of F on z over the window) with its\n"
+              "standard error, against v0; runs of one v0 drawn side by side (x scaled by 1.04 per run);\n"
+              "k_z in " + ys.unit + ".";
+  fig.width = 1050, fig.height = 620;
+  fig.panels = {p};
+  run.make(series_figure(fig));
+  run.numbers["k_z_unit"] = "dyne/cm";
+  run.numbers["window"] = {{"zmin", num("%g", run.opt.kz_zmin)},
+                           {"zmax", std::isfinite(run.opt.kz_zmax) ? num("%g", run.opt.kz_zmax) : Json()}};
+  run.numbers["k_z_mean"] = num("%.10g", mean), run.numbers["k_z_sd"] = num("%.10g", sd);
+  run.numbers["fits"] = json_fits;
+}
+
+}    // namespace figures
+}    // namespace granpen

@@ -1,0 +1,42 @@
+// granpen analysis: granpen fit's per-trace fit (a trace file read, its header's mu,
+// rho_g and d_g or the defaults, core/trace_fit.h over a window) and its result files:
+// JSON (units cgs; undefined values 0 with a false *_ok flag) and one CSV row per trace.
+#ifndef GRANPEN_FIT_TABLES_H
+#define GRANPEN_FIT_TABLES_H
+
+#include "json_writer.h"
+#include "trace_fit.h"
+
+#include <string>
+#include <vector>
+
+namespace granpen {
+
+struct FitResult {
+  std::string file;
+  double v0 = 0, D = 0, g = 0;
+  double mu = 0, rho_g = 0, d_g = 0;
+  std::string mu_src, rho_src, dg_src;    // "option", "header" or "default"
+  TraceFit fit;
+};
+
+struct FitFailure {
+  std::string file, message;
+};
+
+// The window and the values given as options (mu, rho_g: <= 0 when not given).
+struct FitWindow {
+  double zmin = 3.0, zmax = 0.0;    // zmax: infinity for the deepest depth
+  double tmin = -1.0;               // > 0: the window starts at t~ = tmin instead of zmin
+  double mu = 0.0, rho_g = 0.0;
+};
+
+// Reads and fits one trace (cgs); throws InputError naming the file.
+FitResult fit_trace_file(const std::string &path, const FitWindow &w);
+
+Json fit_results_json(const std::vector<FitResult> &results, const std::vector<FitFailure> &failures, const FitWindow &w);
+std::string fit_results_csv(const std::vector<FitResult> &results);
+
+}    // namespace granpen
+
+#endif

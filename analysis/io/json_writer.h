@@ -1,0 +1,33 @@
+// granpen analysis: the one JSON writer. Results are built as nlohmann::ordered_json (key
+// order as inserted) and written here, as text that keeps granpen's layout: one member per
+// line down to a given depth, deeper objects and arrays on one line ("a": 1, "b": 2), so
+// that a line-oriented grep still finds a frame or a fit.
+#ifndef GRANPEN_JSON_WRITER_H
+#define GRANPEN_JSON_WRITER_H
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace granpen {
+
+using Json = nlohmann::ordered_json;
+
+// v as a JSON number rounded to the printf format f ("%.6g"): the text nlohmann writes for
+// it is then the shortest one that reads back as that rounded value (for "%.6g", six
+// significant digits or fewer), a whole value as an integer (25300, not 25300.0), as
+// printf wrote it. Non-finite values (not valid JSON) become 0, as json_text.h's
+// json_number writes them.
+Json json_rounded(const char *f, double v);
+
+// j as text: members (and array elements) each on its own line, indented by 2, for the
+// first `open_levels` levels, and one more level for an array of objects (a table: one
+// row per line); anything deeper on one line. A trailing newline.
+std::string json_layout(const Json &j, int open_levels = 1);
+
+// json_layout(j, open_levels) into path through write_file_atomic (throws OutputError).
+void write_json(const std::string &path, const Json &j, int open_levels = 1);
+
+}    // namespace granpen
+
+#endif

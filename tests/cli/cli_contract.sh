@@ -1,0 +1,110 @@
+#!/usr/bin/env bash
+# granpen-cli's contract with its user, every subcommand:
+#   --help exits 0 and lists the options (from the one parser);
+#   a bad option, or a value against its meaning, exits 2 naming the option;
+#   an output that is one of the inputs is refused, the input byte-identical;
+#   an output into a missing folder or under a file is a named error, exit 1;
+#   an unreadable input creates nothing; no raw C++ exception text reaches the user.
+# usage: cli_contract.sh GRANPEN_CLI WORK_DIR TRACE AVE_TIME DUMP DUMP_TRACE
+set -u
+CLI=$1 W=$2 TRACE=$3 AVE=$4 DUMP=$5 DTRACE=$6
+rm -rf "$W" && mkdir -p "$W" || exit 1
+fails=0 cases=0
+fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+
+# expect STATUS ERR_REGEX CMD...: the exit status and stderr (extended regex)
+expect() {
+  local want=$1 re=$2; shift 2
+  cases=$((cases + 1))
+  "$@" > "$W/out" 2> "$W/err"
+  local rc=$?
+  [ "$rc" = "$want" ] || { fail "exit $rc, expected $want: $*"; cat "$W/err"; return; }
+  grep -Eq -- "$re" "$W/err" || { fail "stderr does not match '$re': $*"; cat "$W/err"; }
+  # the C++ library's own texts never reach the user
+  if grep -Eq 'terminate called|what\(\)|basic_string|std::|stod|stoi|bad_alloc' "$W/err"; then
+    fail "raw C++ text in stderr: $*"; cat "$W/err"
+  fi
+}
+
+# same INPUT COPY: the input is byte-identical to its copy taken before
+same() { cmp -s "$1" "$2" || fail "$1 changed"; }
+
+# ---- --help from the parser: exit 0, the option list with one of each's options
+for sc in "convert --sign" "check --help" "fit --zmin" "calibration --zmin" "collapse --band" \
+          "sweep --jobs" "flow --voronoi" "momentum --thresholds" "plot --no-run" "gap --scenario"; do
+  set -- $sc
+  cases=$((cases + 1))
+  "$CLI" "$1" --help > "$W/out" 2>&1 || fail "$1 --help exits $?"
+  grep -q "^Options:" "$W/out" && grep -q -- "$2" "$W/out" || fail "$1 --help does not list $2"
+done
+
+# ---- usage errors: exit 2, the option named
+for sc in convert check fit calibration collapse sweep flow momentum plot gap; do
+  expect 2 "unknown option '--no-such-option'" "$CLI" "$sc" x --no-such-option 1
+done
+expect 2 "--sign must be \+1 or -1, got '2'" "$CLI" convert "$AVE" --v0 100 --dt 2e-6 --D 2 --g 981 --out "$W/c.csv" --sign 2
+expect 2 "--step0 must be a timestep" "$CLI" convert "$AVE" --v0 100 --dt 2e-6 --D 2 --g 981 --out "$W/c.csv" --step0 -5
+expect 2 "--v0 must be > 0, got '0'" "$CLI" convert "$AVE" --v0 0 --dt 2e-6 --D 2 --g 981 --out "$W/c.csv"
+expect 2 "--units" "$CLI" convert "$AVE" --v0 100 --dt 2e-6 --D 2 --g 981 --out "$W/c.csv" --units furlong
+expect 2 "--out is required" "$CLI" convert "$AVE" --v0 100 --dt 2e-6 --D 2 --g 981
+expect 2 "--zmax needs a number, got 'deep'" "$CLI" fit "$TRACE" --zmax deep
+expect 2 "--mu must be > 0, got '-1'" "$CLI" fit "$TRACE" --mu -1
+expect 2 "--zmin needs a number, got 'nan'" "$CLI" calibration "$W" --zmin nan
+expect 2 "--band must be > 0" "$CLI" collapse "$TRACE" --band -1
+expect 2 "--jobs" "$CLI" sweep x.sweep --jobs 0
+expect 2 "--ranks" "$CLI" gap --scenario tiny --real x --out y --ranks 0
+expect 2 "--dr must be > 0" "$CLI" flow "$DUMP" --dr 0
+expect 2 "--axis needs 2 values" "$CLI" momentum "$DUMP" --trace "$DTRACE" --axis 1
+expect 2 "--tbin must be > 0" "$CLI" plot peak "$TRACE" --out "$W/p" --tbin 0
+expect 2 "usage: granpen check" "$CLI" check
+
+# ---- an output that is an input: refused, the input untouched
+cp "$TRACE" "$W/t.csv" && cp "$TRACE" "$W/t.orig"
+expect 1 "--json .*t\.csv is the input" "$CLI" fit "$W/t.csv" --json "$W/t.csv"; same "$W/t.csv" "$W/t.orig"
+expect 1 "--csv .*t\.csv is the input" "$CLI" fit "$W/t.csv" --csv "$W/./t.csv"; same "$W/t.csv" "$W/t.orig"
+expect 1 "--json .*t\.csv is the input" "$CLI" collapse "$W" --json "$W/t.csv"; same "$W/t.csv" "$W/t.orig"
+expect 1 "--csv .*t\.csv is the input" "$CLI" collapse "$W/t.csv" --csv "$W/t.csv"; same "$W/t.csv" "$W/t.orig"
+ln -sf "$W/t.csv" "$W/link.csv"
+expect 1 "--json .*link\.csv is the input" "$CLI" fit "$W/t.csv" --json "$W/link.csv"; same "$W/t.csv" "$W/t.orig"
+cp "$AVE" "$W/ave.txt" && cp "$AVE" "$W/ave.orig"
+expect 1 "--out .*ave\.txt is the input" "$CLI" convert "$W/ave.txt" --v0 100 --dt 2e-6 --D 2 --g 981 --out "$W/ave.txt"
+same "$W/ave.txt" "$W/ave.orig"
+mkdir -p "$W/sw/beds" "$W/sw/traces" && cp "$TRACE" "$W/sw/traces/calibration.csv"
+expect 1 "calibration\.csv is the input" "$CLI" calibration "$W/sw" --out "$W/sw/traces"; same "$W/sw/traces/calibration.csv" "$TRACE"
+mkdir -p "$W/fl" && cp "$DUMP" "$W/fl/flow_fields.csv"
+expect 1 "flow_fields\.csv is the input" "$CLI" flow "$W/fl/flow_fields.csv" --out "$W/fl"; same "$W/fl/flow_fields.csv" "$DUMP"
+mkdir -p "$W/mo" && cp "$DTRACE" "$W/mo/momentum_drag.csv"
+expect 1 "momentum_drag\.csv is the input" "$CLI" momentum "$DUMP" --trace "$W/mo/momentum_drag.csv" --out "$W/mo"
+same "$W/mo/momentum_drag.csv" "$DTRACE"
+mkdir -p "$W/pf" && echo '{}' > "$W/pf/flow.json" && cp "$W/pf/flow.json" "$W/pf.orig"
+expect 1 "flow\.json is the input" "$CLI" plot flow "$W/pf" --out "$W/pf"; same "$W/pf/flow.json" "$W/pf.orig"
+echo "name = x" > "$W/s.sweep" && cp "$W/s.sweep" "$W/s.orig"
+expect 1 "--slurm .*s\.sweep is the input" "$CLI" sweep "$W/s.sweep" --slurm "$W/s.sweep"; same "$W/s.sweep" "$W/s.orig"
+expect 2 "--out .* is the input --real" "$CLI" gap --scenario tiny --real "$W/sw" --out "$W/sw/"
+
+# ---- outputs that cannot be written: named, exit 1, nothing left behind
+expect 1 "cannot write $W/missing/c\.json: No such file or directory" "$CLI" collapse "$TRACE" --json "$W/missing/c.json"
+expect 1 "cannot write $W/missing/c\.csv: No such file or directory" "$CLI" collapse "$TRACE" --csv "$W/missing/c.csv"
+expect 1 "cannot write $W/t\.orig/f\.json: Not a directory" "$CLI" fit "$TRACE" --json "$W/t.orig/f.json"
+expect 1 "cannot write $W/missing/x\.csv" "$CLI" convert "$AVE" --v0 100 --dt 2e-6 --D 2 --g 981 --out "$W/missing/x.csv"
+expect 1 "cannot create $W/t\.orig/o" "$CLI" flow "$DUMP" --trace "$DTRACE" --voronoi none --out "$W/t.orig/o"
+[ -e "$W/missing" ] && fail "$W/missing was created"
+ls -a "$W" | grep -q '\.tmp' && fail "a temporary was left in $W"
+
+# ---- an unreadable input creates nothing
+expect 1 "$W/nonexistent: not a readable folder" "$CLI" calibration "$W/nonexistent"
+[ -e "$W/nonexistent" ] && fail "calibration created $W/nonexistent"
+expect 1 "no figure made" "$CLI" plot peak "$W/no-such.csv" --out "$W/plots"
+[ -e "$W/plots" ] && fail "plot created $W/plots"
+expect 1 "no-such\.dump" "$CLI" flow "$W/no-such.dump" --out "$W/flows"
+[ -e "$W/flows" ] && fail "flow created $W/flows"
+expect 1 "no-such\.txt" "$CLI" convert "$W/no-such.txt" --v0 100 --dt 2e-6 --D 2 --g 981 --out "$W/n.csv"
+[ -e "$W/n.csv" ] && fail "convert created $W/n.csv"
+
+# ---- a library exception becomes a named error (collapse on a header with v0 = 0)
+{ printf '# granpen-trace v1\n# units = cgs\n# v0 = 0\n# D = 2\n# g = 981\nt,z,F\n'
+  for i in $(seq 0 20); do echo "$i,$i,$i"; done; } > "$W/v0zero.csv"
+expect 1 "^granpen collapse: (error: )?.*v0zero\.csv" "$CLI" collapse "$W/v0zero.csv"
+
+echo "granpen-cli contract: $cases cases, $fails failed"
+[ "$fails" = 0 ]
