@@ -4,7 +4,7 @@
 #ifndef GRANPEN_CLI_ARGS_H
 #define GRANPEN_CLI_ARGS_H
 
-#include "command.h"
+#include "subcommand.h"
 
 #include <initializer_list>
 #include <map>

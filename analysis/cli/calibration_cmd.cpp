@@ -2,7 +2,7 @@
 // phi_0 and k_z against mu (core/calibration.h, core/trace_fit.h, io/bed_info.h).
 #include "atomic_file.h"
 #include "calibration_sweep.h"
-#include "command.h"
+#include "subcommand.h"
 #include "plot_writer.h"
 #include "subcommands.h"
 #include "trace_reader.h"

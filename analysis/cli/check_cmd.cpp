@@ -1,5 +1,5 @@
 // granpen check TRACE...: validate traces the way every granpen tool reads them.
-#include "command.h"
+#include "subcommand.h"
 #include "subcommands.h"
 #include "trace_files.h"
 #include "trace_reader.h"

@@ -1,7 +1,7 @@
 // granpen collapse TRACE-OR-FOLDER...: F/F_z against t~ = (z/v0) sqrt(g/D) over a set of
 // traces, the crossover t~*, the collapse quality and the peak law (core/collapse.h).
 #include "atomic_file.h"
-#include "command.h"
+#include "subcommand.h"
 #include "collapse.h"
 #include "json_text.h"
 #include "collapse_tables.h"

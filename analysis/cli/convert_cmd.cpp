@@ -2,7 +2,7 @@
 // granpen-trace v1 file, so that every other subcommand reads it.
 #include "args.h"
 #include "atomic_file.h"
-#include "command.h"
+#include "subcommand.h"
 #include "subcommands.h"
 #include "trace_reader.h"
 #include "text_util.h"

@@ -2,7 +2,7 @@
 // k_z and alpha, the transient peak, the fluctuation wavelength (core/trace_fit.h).
 #include "args.h"
 #include "atomic_file.h"
-#include "command.h"
+#include "subcommand.h"
 #include "json_text.h"
 #include "fit_tables.h"
 #include "json_writer.h"

@@ -1,7 +1,7 @@
 // granpen gap --real DIR --scenario NAME --out DIR: the sim-to-real gap diagnosis
 // (gap/gap_diagnosis.h); --prepare-only runs (or resumes) the cache's simulations.
 #include "atomic_file.h"
-#include "command.h"
+#include "subcommand.h"
 #include "effects.h"
 #include "gap_diagnosis.h"
 #include "gap_errors.h"

@@ -1,7 +1,7 @@
 // granpen-cli: the post-processor's command-line front end (./granpen SUBCOMMAND).
 // A thin layer: every subcommand parses its arguments (cli/command.h) and calls the analysis
 // library; run_subcommand is the one handler that turns what they throw into an exit status.
-#include "command.h"
+#include "subcommand.h"
 #include "subcommands.h"
 
 #include <cstdio>

@@ -2,7 +2,7 @@
 // with their data beside them, run to PNG and SVG (io/figures.h, io/plot_writer.h):
 // parse, make the figures, write KIND.json.
 #include "atomic_file.h"
-#include "command.h"
+#include "subcommand.h"
 #include "figures.h"
 #include "json_writer.h"
 #include "subcommands.h"

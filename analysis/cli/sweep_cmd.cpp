@@ -1,6 +1,6 @@
 // granpen sweep SPEC [options]: run a sweep of pours and pushes (see sweep/sweep_spec.h).
 #include "atomic_file.h"
-#include "command.h"
+#include "subcommand.h"
 #include "subcommands.h"
 #include "sweep_runner.h"
 #include "sweep_spec.h"

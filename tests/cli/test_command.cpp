@@ -1,7 +1,7 @@
 // The top-level handler of granpen-cli (cli/command.h): every exception a subcommand lets
 // go becomes "granpen NAME: error: ..." and an exit status; the C++ library's own texts
 // never reach the user.
-#include "command.h"
+#include "subcommand.h"
 #include "trace_reader.h"
 
 #include <gtest/gtest.h>

@@ -10,7 +10,7 @@
 #include "linear_fit.h"
 #include "momentum_classes.h"
 #include "plot_writer.h"
-#include "command.h"
+#include "subcommand.h"
 #include "subcommands.h"
 #include "trace_fit.h"
 #include "trace_reader.h"

@@ -1,5 +1,5 @@
 // granpen subcommands: the option parser and the top-level handler (command.h).
-#include "command.h"
+#include "subcommand.h"
 
 #include "args.h"
 

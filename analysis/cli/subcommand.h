@@ -2,8 +2,8 @@
 // A subcommand builds a Command with its prose, adds its options (typed, with ranges),
 // parses, calls the library and writes; any exception it lets go is turned into
 // "granpen NAME: error: ..." and an exit status by run_subcommand.
-#ifndef GRANPEN_CLI_COMMAND_H
-#define GRANPEN_CLI_COMMAND_H
+#ifndef GRANPEN_CLI_SUBCOMMAND_H
+#define GRANPEN_CLI_SUBCOMMAND_H
 
 #include <CLI/CLI.hpp>
 
