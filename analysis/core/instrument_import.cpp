@@ -284,8 +284,8 @@ void TraceBuilder::add(const std::vector<ImportRow> &rows, std::vector<TracePoin
 void TraceBuilder::emit(const ImportRow &r, std::vector<TracePoint> &out)
 {
   const double t = r.t - sum_.limits.t_first, z = depth(r), F = r.F - sum_.limits.tare;
-  if (std::isnan(sum_.z_first)) sum_.z_first = z;
   if (!(rules_.window > 0.0)) {
+    if (std::isnan(sum_.z_first)) sum_.z_first = z;
     out.push_back({t, z, F});
     ++sum_.points;
     sum_.z_last = z;
@@ -296,6 +296,7 @@ void TraceBuilder::emit(const ImportRow &r, std::vector<TracePoint> &out)
   const long k = (long) std::ceil(t / rules_.window - 1e-9) - 1;
   if (window_open_ && k != window_) {
     if (window_ >= 0) {    // window -1 holds only the first row: it began before the data
+      if (std::isnan(sum_.z_first)) sum_.z_first = window_z_;
       out.push_back({(window_ + 1) * rules_.window, window_z_, window_F_ / (double) window_n_});
       ++sum_.points;
       sum_.z_last = window_z_;
@@ -318,6 +319,7 @@ ImportSummary TraceBuilder::finish(std::vector<TracePoint> &out)
 {
   // the last window counts only when the data reach its end
   if (window_open_ && window_ >= 0 && window_t_ >= (window_ + 1 - 1e-6) * rules_.window) {
+    if (std::isnan(sum_.z_first)) sum_.z_first = window_z_;
     out.push_back({(window_ + 1) * rules_.window, window_z_, window_F_ / (double) window_n_});
     ++sum_.points;
     sum_.z_last = window_z_;
