@@ -216,6 +216,11 @@ void warn_speed(const Imported &r, const granpen::ImportRules &rules)
                  "granpen import: warning: %s: speed not constant within %g%%: ripple %.3g%%, a stretch %.3g%% off "
                  "the mean %.6g\n",
                  r.in.c_str(), 100.0 * rules.speed_tolerance, 100.0 * sp.ripple, 100.0 * sp.worst, sp.mean);
+  // the speed rule cuts a deceleration; a large cut is a slow stop or a second speed
+  if (r.sum.rows_cut_by_speed > 0.05 * (double) (r.sum.rows_pushed + r.sum.rows_cut_by_speed))
+    std::fprintf(stderr, "granpen import: warning: %s: the speed rule cut %zu rows of the push (%.3g%%): a slow stop, "
+                 "or a second speed at the end\n", r.in.c_str(), r.sum.rows_cut_by_speed,
+                 100.0 * r.sum.rows_cut_by_speed / (double) (r.sum.rows_pushed + r.sum.rows_cut_by_speed));
   if (r.sum.ramp.ramp_depth > 0.0)
     std::fprintf(stderr, "granpen import: warning: %s: the rod reaches its steady speed only at depth %.4g, below the "
                  "surface (the rows above it ramp up)\n", r.in.c_str(), r.sum.ramp.ramp_depth);

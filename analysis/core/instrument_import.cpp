@@ -199,13 +199,23 @@ void SpeedProfile::close_block()
   prev_ = last_;
   has_prev_ = true;
   ++ramp_.blocks;
+  // at speed: two blocks running within the tolerance of the mean (one block alone may be
+  // the mixture of two speeds that happens to average to it)
   if (std::isfinite(s) && std::fabs(s - ref) <= rules_.speed_tolerance * std::fabs(ref)) {
-    if (std::isnan(ramp_.ramp_t)) {
-      ramp_.ramp_t = last_.t;
-      ramp_.ramp_depth = rules_.has_position ? last_.x - lim_.surface : rules_.v0 * (last_.t - lim_.surface);
+    if (!run_++) {
+      run_t_ = last_.t;
+      run_depth_ = rules_.has_position ? last_.x - lim_.surface : rules_.v0 * (last_.t - lim_.surface);
     }
-    ramp_.cut_line = last_.line;
-    ramp_.cut_t = last_.t;
+    if (run_ >= 2) {
+      if (std::isnan(ramp_.ramp_t)) {
+        ramp_.ramp_t = run_t_;
+        ramp_.ramp_depth = run_depth_;
+      }
+      ramp_.cut_line = last_.line;
+      ramp_.cut_t = last_.t;
+    }
+  } else {
+    run_ = 0;
   }
   n_ = 0;
   v_sum_ = 0.0;
@@ -248,8 +258,10 @@ void TraceBuilder::add(const std::vector<ImportRow> &rows, std::vector<TracePoin
     ++sum_.rows_read;
     if (r.line > cut_line_) {
       ++sum_.rows_cut;
+      if (r.line <= sum_.limits.end_line) ++sum_.rows_cut_by_speed;
       continue;
     }
+    ++sum_.rows_pushed;
     emit(r, out);
     if (!sum_.speed.measured || !(r.t >= seg_t0_) || !(seg_t1_ > seg_t0_)) continue;
     // the push at speed: its blocks (ripple) and its segments (constant, or two speeds)
@@ -340,18 +352,22 @@ ImportSummary TraceBuilder::finish(std::vector<TracePoint> &out)
   const double tol = rules_.speed_tolerance;
   st.worst = 0.0;
   for (double v : s) st.worst = std::max(st.worst, std::fabs(v - st.mean) / std::fabs(st.mean));
-  // two speeds: a split after which both parts are constant within the tolerance about
-  // their own means, and those means differ by more than it
-  for (std::size_t j = 1; j < s.size() && st.worst > tol; ++j) {
+  // two speeds: the segments before segment j and those after it (j itself may hold the
+  // change) each constant within the tolerance about their own means, and those means
+  // apart by more than it; each side at least two segments, so that what is left of a
+  // ramp or a deceleration is not a second speed
+  for (std::size_t j = 2; j + 3 <= s.size() && st.worst > tol; ++j) {
     double a = 0.0, b = 0.0;
-    for (std::size_t i = 0; i < s.size(); ++i) (i < j ? a : b) += s[i];
+    for (std::size_t i = 0; i < s.size(); ++i)
+      if (i != j) (i < j ? a : b) += s[i];
     a /= (double) j;
-    b /= (double) (s.size() - j);
+    b /= (double) (s.size() - j - 1);
     bool flat = true;
-    for (std::size_t i = 0; i < s.size(); ++i) flat = flat && std::fabs(s[i] - (i < j ? a : b)) <= tol * std::fabs(i < j ? a : b);
+    for (std::size_t i = 0; i < s.size(); ++i)
+      if (i != j) flat = flat && std::fabs(s[i] - (i < j ? a : b)) <= tol * std::fabs(i < j ? a : b);
     if (flat && std::fabs(a - b) > tol * 0.5 * std::fabs(a + b))
-      throw ImportRejected(line[j], "two speeds in one file: " + num(a) + " before this line, " + num(b) +
-                                        " from it (one push speed per trace)");
+      throw ImportRejected(line[j], "two speeds in one file: " + num(a) + " until about this line, " + num(b) +
+                                        " after it (one push speed per trace)");
   }
   st.constant = st.worst <= tol && st.ripple <= tol;
   return sum_;

@@ -98,9 +98,9 @@ class PushScan {
 
 // ---- pass 2 (with a position or a speed column)
 struct SpeedRamp {
-  double ramp_depth = NAN;        // depth at the end of the first block at speed (NaN: never)
+  double ramp_depth = NAN;        // depth at the end of the first of two blocks at speed (NaN: never)
   double ramp_t = NAN;            // raw time there
-  long cut_line = 0;              // last row kept: the end of the last block at speed <= end_line
+  long cut_line = 0;              // last row kept: the end of the last block at speed (after one) <= end_line
   double cut_t = NAN;             // raw time of that row
   std::size_t blocks = 0;
 };
@@ -119,6 +119,8 @@ class SpeedProfile {
   std::size_t n_ = 0;
   ImportRow first_, last_, prev_;
   bool has_prev_ = false;
+  int run_ = 0;                 // blocks at speed in a row
+  double run_t_ = NAN, run_depth_ = NAN;
   double v_sum_ = 0.0;
   bool done_ = false;
 };
@@ -138,6 +140,8 @@ struct SpeedStats {
 
 struct ImportSummary {
   std::size_t rows_read = 0, rows_cut = 0, points = 0;
+  std::size_t rows_pushed = 0;           // rows kept
+  std::size_t rows_cut_by_speed = 0;     // of rows_cut, those before the furthest advance
   double z_first = NAN, z_last = NAN;
   PushLimits limits;
   SpeedRamp ramp;

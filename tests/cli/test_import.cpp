@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -136,6 +137,119 @@ TEST(ImportUnits, KnownFactors)
   EXPECT_DOUBLE_EQ(f, 1e-3 / 60.0);
   EXPECT_FALSE(granpen::force_unit_factor("kip", true, f));
   EXPECT_FALSE(granpen::length_unit_factor("furlong", true, f));
+}
+
+// ---- kernels on arrays, without files
+
+namespace {
+
+// the three passes over rows held in memory, in chunks of `chunk` rows
+granpen::ImportSummary run_passes(const granpen::ImportRules &rules, const std::vector<granpen::ImportRow> &rows,
+                                  std::vector<granpen::TracePoint> &out, std::size_t chunk = 7)
+{
+  auto feed = [&](const std::function<void(const std::vector<granpen::ImportRow> &)> &f) {
+    for (std::size_t i = 0; i < rows.size(); i += chunk)
+      f(std::vector<granpen::ImportRow>(rows.begin() + i, rows.begin() + std::min(rows.size(), i + chunk)));
+  };
+  granpen::PushScan scan(rules);
+  feed([&](const auto &c) { scan.add(c); });
+  const auto lim = scan.finish();
+  granpen::SpeedProfile prof(rules, lim);
+  feed([&](const auto &c) { prof.add(c); });
+  const auto ramp = prof.finish();
+  granpen::TraceBuilder b(rules, lim, ramp);
+  feed([&](const auto &c) { b.add(c, out); });
+  return b.finish(out);
+}
+
+// a push at 100 cm/s sampled at 100 kHz from x = -0.3, F = offset + 1000 z beyond contact,
+// speed `v1` from row `change` on
+std::vector<granpen::ImportRow> push_rows(int n, double offset, int change = 1 << 30, double v1 = 100.0)
+{
+  std::vector<granpen::ImportRow> rows;
+  double x = -0.3;
+  for (int i = 0; i < n; ++i) {
+    granpen::ImportRow r;
+    r.t = i * 1e-5;
+    if (i) x += (i >= change ? v1 : 100.0) * 1e-5;
+    r.x = x;
+    r.F = offset + (x > 0 ? 1000.0 * x : 0.0);
+    r.line = i + 2;
+    rows.push_back(r);
+  }
+  return rows;
+}
+
+}    // namespace
+
+// tare, contact and the depth: the offset exactly, the surface at the first row at
+// onset_force (x = 0.01 there: F = 1000 x reaches 10 at x = 0.01), the end at the last row
+TEST(ImportKernels, TareSurfaceAndEnd)
+{
+  granpen::ImportRules rules;
+  rules.has_position = true;
+  rules.tare_rows = 100;
+  rules.onset_force = 10.0;
+  const auto rows = push_rows(4000, 250.0);
+  std::vector<granpen::TracePoint> out;
+  const auto s = run_passes(rules, rows, out);
+  EXPECT_DOUBLE_EQ(s.limits.tare, 250.0);
+  EXPECT_NEAR(s.limits.surface, 0.01, 1e-3 + 1e-9);    // one row's advance (1e-3 cm)
+  EXPECT_EQ(s.limits.end_line, rows.back().line);
+  EXPECT_EQ(s.rows_cut, 0u);
+  ASSERT_EQ(out.size(), rows.size());
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    ASSERT_NEAR(out[i].z, rows[i].x - s.limits.surface, 1e-12);
+    ASSERT_NEAR(out[i].F, rows[i].F - 250.0, 1e-9);
+  }
+  EXPECT_NEAR(s.speed.mean, 100.0, 1e-6);
+  EXPECT_TRUE(s.speed.constant);
+}
+
+// windows conserve the impulse: sum F w over the windows written equals sum F dt over
+// their rows (two routes to the same integral; rounding only)
+TEST(ImportKernels, WindowsConserveImpulse)
+{
+  granpen::ImportRules rules;
+  rules.has_position = true;
+  rules.tare_rows = 10;
+  rules.onset_force = 10.0;
+  rules.window = 1e-4;    // 10 rows a window
+  auto rows = push_rows(2001, 0.0);
+  for (std::size_t i = 0; i < rows.size(); ++i) rows[i].F += 3.0 * std::sin(0.37 * i) * (rows[i].x > 0);
+  std::vector<granpen::TracePoint> out;
+  run_passes(rules, rows, out, 13);
+  ASSERT_EQ(out.size(), 200u);    // rows 1..2000 in 200 windows; row 0 alone before them
+  double by_window = 0.0, by_row = 0.0;
+  for (const auto &p : out) by_window += p.F * rules.window;
+  for (std::size_t i = 1; i < rows.size(); ++i) by_row += rows[i].F * 1e-5;
+  EXPECT_NEAR(by_window, by_row, 1e-9 * std::fabs(by_row));
+  for (std::size_t k = 0; k < out.size(); ++k) ASSERT_NEAR(out[k].t, (k + 1) * 1e-4, 1e-15);
+}
+
+// two speeds are rejected at the line where the second begins (within a segment of the
+// push, 1/16 of it); a change of speed in the last few rows is a deceleration, cut
+TEST(ImportKernels, TwoSpeedsAndDeceleration)
+{
+  granpen::ImportRules rules;
+  rules.has_position = true;
+  rules.tare_rows = 10;
+  rules.onset_force = 10.0;
+  rules.speed_rows = 20;
+  std::vector<granpen::TracePoint> out;
+  try {
+    const auto s2 = run_passes(rules, push_rows(6000, 0.0, 3000, 130.0), out);
+    FAIL() << "two speeds accepted: ramp " << s2.ramp.ramp_t << " cut " << s2.ramp.cut_line << " mean " << s2.speed.mean
+           << " worst " << s2.speed.worst << " lim mean " << s2.limits.mean_speed << " end " << s2.limits.end_line;
+  } catch (const granpen::ImportRejected &e) {
+    EXPECT_NE(std::string(e.what()).find("two speeds in one file"), std::string::npos);
+    EXPECT_NEAR(e.line, 3002, 6000 / 16.0);
+  }
+  out.clear();
+  const auto s = run_passes(rules, push_rows(6000, 0.0, 5970, 30.0), out);
+  EXPECT_GE(s.rows_cut, 30u);
+  EXPECT_LE(s.rows_cut, 30u + rules.speed_rows);
+  EXPECT_TRUE(s.speed.constant);
 }
 
 // ---- round trips through granpen-cli
