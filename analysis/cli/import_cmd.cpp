@@ -275,10 +275,18 @@ int granpen::cli::import(int argc, char **argv)
     refuse_overwriting_inputs(out, "--out", all_inputs);
     plan.emplace_back(in, out);
   }
+  std::error_code ec;
+  const bool made_dir = !dry && !std::filesystem::exists(out_dir, ec);
   if (!dry) make_output_dir(out_dir);
   std::vector<Imported> done;
   int run = run0;
-  for (const auto &p : plan) done.push_back(import_file(p.first, p.second, m, hd, run++, dry));
+  try {
+    for (const auto &p : plan) done.push_back(import_file(p.first, p.second, m, hd, run++, dry));
+  } catch (...) {
+    done.clear();    // the staged traces' temporaries removed
+    if (made_dir) std::filesystem::remove(out_dir, ec);    // the folder this run made, now empty
+    throw;
+  }
   // every file imported: now, and only now, the traces take their names
   for (auto &r : done)
     if (r.staged) r.staged->rename();

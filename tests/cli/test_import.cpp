@@ -502,9 +502,28 @@ TEST(ImportBadInput, NamedErrorNothingWritten)
                              (d / "m.map").string() + " --out " + (d / "out").string() + " --D 2 --g 981 --v0 100");
     EXPECT_EQ(r.status, 1) << r.err;
     EXPECT_TRUE(std::regex_search(r.err, std::regex(c.message))) << r.err;
-    EXPECT_TRUE(listing(d / "out").empty()) << "written: " << (listing(d / "out").empty() ? "" : listing(d / "out")[0]);
+    EXPECT_FALSE(fs::exists(d / "out")) << "written: " << (listing(d / "out").empty() ? "" : listing(d / "out")[0]);
     EXPECT_EQ(r.err.find("what()"), std::string::npos);
   }
+}
+
+// an output folder that existed keeps what it held and gains nothing, temporaries included
+TEST(ImportBadInput, ExistingFolderKeptClean)
+{
+  const fs::path d = fresh("keep");
+  fs::create_directories(d / "out");
+  write(d / "out" / "old.csv", "kept\n");
+  write(d / "good.csv", good_csv(plain));
+  write(d / "bad.csv", good_csv([](std::size_t i, double t, double F, double z) {
+          return i == 300 ? fmt("%.6f", t) + ",1e999," + fmt("%.10g", z) + "\n" : plain(i, t, F, z);
+        }));
+  write(d / "m.map", MAP);
+  const CliRun r = cli(d, "import " + (d / "good.csv").string() + " " + (d / "bad.csv").string() + " --mapping " +
+                              (d / "m.map").string() + " --out " + (d / "out").string() + " --D 2 --g 981 --v0 100");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(std::regex_search(r.err, std::regex("bad.csv:302: force column 'F' is not a number: '1e999'"))) << r.err;
+  EXPECT_EQ(listing(d / "out"), std::vector<std::string>{"old.csv"});
+  EXPECT_EQ(slurp(d / "out" / "old.csv"), "kept\n");
 }
 
 // an output that would overwrite an input is refused before anything is written
