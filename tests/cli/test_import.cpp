@@ -393,6 +393,14 @@ TEST(ImportRoundTrip, KeyValueRows)
   EXPECT_NE(r.out.find("speed 100 cm/s"), std::string::npos) << r.out;
   const auto tr = granpen::read_trace((d / "out" / "kv1.csv").string());
   expect_equal(tr, 0, ORIG.t[0], 1e-8, 1e-9, 0);
+  // the same in SI: the trace's cgs view (trace_reader's to_cgs) is the cgs import's
+  const CliRun si = cli(d, "import " + (d / "kv1.log").string() + " --mapping " + (d / "kv.map").string() +
+                               " --out " + (d / "si").string() + " --units si --D 0.02 --g 9.81");
+  ASSERT_EQ(si.status, 0) << si.err;
+  const auto tsi = granpen::read_trace((d / "si" / "kv1.csv").string());
+  EXPECT_EQ(tsi.units, "si");
+  EXPECT_NEAR(tsi.v0, 1.0, 1e-12);
+  expect_equal(granpen::to_cgs(tsi), 0, ORIG.t[0], 1e-8, 1e-9, 0);
 }
 
 // --dry-run writes nothing and prints the header it would write
