@@ -136,7 +136,8 @@ void PushScan::row(const ImportRow &r)
   }
   if (retreat_line_ && r.x > retreat_x_ + rules_.position_noise)
     throw ImportRejected(retreat_line_, "displacement goes backwards (below its furthest, " + num(retreat_x_) +
-                                            ") and advances past it again at line " + std::to_string(r.line));
+                                            ") and advances past it again at line " + std::to_string(r.line) +
+                                            " (a sensor's noise: set position_noise above it)");
   if (!retreat_line_ && r.x < furthest_ - rules_.position_noise) {
     retreat_line_ = r.line;
     retreat_x_ = furthest_;
