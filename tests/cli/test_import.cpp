@@ -252,6 +252,24 @@ TEST(ImportKernels, TwoSpeedsAndDeceleration)
   EXPECT_TRUE(s.speed.constant);
 }
 
+// a sensor's jitter of +-5e-4 cm on the position: a retreat without position_noise, none
+// with position_noise above the jitter's full swing (1e-3 cm)
+TEST(ImportKernels, PositionNoise)
+{
+  granpen::ImportRules rules;
+  rules.has_position = true;
+  rules.tare_rows = 10;
+  rules.onset_force = 10.0;
+  auto rows = push_rows(3000, 0.0);
+  for (std::size_t i = 0; i < 100; ++i) rows[i].x = -0.3 + (i % 2 ? 5e-4 : -5e-4);    // at rest: jitter only
+  std::vector<granpen::TracePoint> out;
+  EXPECT_THROW(run_passes(rules, rows, out), granpen::ImportRejected);
+  rules.position_noise = 1.5e-3;
+  out.clear();
+  const auto s = run_passes(rules, rows, out);
+  EXPECT_EQ(s.limits.end_line, rows.back().line);
+}
+
 // ---- round trips through granpen-cli
 
 // A DAQ at 100 kHz: semicolon-delimited, decimal comma, metadata header lines, SI units
