@@ -17,6 +17,7 @@ struct Subcommand {
 
 const Subcommand SUBCOMMANDS[] = {
     {"convert", granpen::cli::convert, "write fix ave/time output as a force trace (granpen-trace v1)"},
+    {"import", granpen::cli::import, "write a lab's instrument files (own columns, units, layout) as force traces"},
     {"check", granpen::cli::check, "validate force traces (granpen-trace v1) and summarise them"},
     {"fit", granpen::cli::fit, "fit the depth term k_z, alpha, the peak and the fluctuation wavelength"},
     {"calibration", granpen::cli::calibration, "summarise a friction-calibration sweep: phi_0(mu), k_z(mu)"},

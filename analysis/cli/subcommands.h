@@ -17,6 +17,7 @@ int momentum(int argc, char **argv);       // momentum_cmd.cpp
 int plot(int argc, char **argv);           // plot_cmd.cpp, plot_flow_cmd.cpp
 int gap(int argc, char **argv);            // gap_cmd.cpp
 int convert(int argc, char **argv);        // convert_cmd.cpp
+int import(int argc, char **argv);         // import_cmd.cpp
 
 }    // namespace cli
 }    // namespace granpen

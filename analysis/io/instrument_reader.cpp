@@ -1,0 +1,274 @@
+// granpen analysis: instrument files read row by row (see instrument_reader.h).
+#include "instrument_reader.h"
+
+#include "text_util.h"
+#include "trace_reader.h"
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+
+namespace granpen {
+
+namespace {
+
+// lines searched for the column names or the first data row before giving up
+constexpr long MAX_HEADER_LINES = 10000;
+
+std::string unquote(const std::string &s)
+{
+  const std::string t = trim(s);
+  if (t.size() >= 2 && (t.front() == '"' || t.front() == '\'') && t.back() == t.front()) return trim(t.substr(1, t.size() - 2));
+  return t;
+}
+
+std::string lower(std::string s)
+{
+  for (auto &c : s) c = (char) std::tolower((unsigned char) c);
+  return s;
+}
+
+}    // namespace
+
+InstrumentReader::InstrumentReader(const std::string &path, const ImportMapping &mapping) : path_(path), m_(mapping)
+{
+  in_.open(path, std::ios::binary);
+  if (!in_) throw InputError(path + ": cannot read: " + std::strerror(errno));
+  find_layout();
+}
+
+bool InstrumentReader::read_line(std::string &line)
+{
+  if (!std::getline(in_, line)) {
+    if (in_.bad()) throw InputError(path_ + ": read error after line " + std::to_string(line_no_));
+    return false;
+  }
+  ++line_no_;
+  if (!line.empty() && line.back() == '\r') line.pop_back();
+  return true;
+}
+
+std::vector<std::string> InstrumentReader::fields(const std::string &line, Delim d) const
+{
+  std::vector<std::string> out;
+  switch (d) {
+    case Delim::comma: out = split(line, ','); break;
+    case Delim::semicolon: out = split(line, ';'); break;
+    case Delim::tab: out = split(line, '\t'); break;
+    case Delim::whitespace: return words(line);
+    case Delim::keyvalue: {    // pairs between blanks, semicolons and (with a decimal point) commas
+      std::string s = line;
+      for (auto &c : s)
+        if (c == ';' || c == '\t' || (c == ',' && !m_.decimal_comma)) c = ' ';
+      return words(s);
+    }
+  }
+  for (auto &f : out) f = unquote(f);
+  return out;
+}
+
+bool InstrumentReader::parse_number(const std::string &field, double &v) const
+{
+  std::string s = unquote(field);
+  if (m_.decimal_comma)
+    for (auto &c : s)
+      if (c == ',') c = '.';
+  if (s.empty()) return false;
+  errno = 0;
+  char *end = nullptr;
+  v = std::strtod(s.c_str(), &end);
+  return *end == '\0' && errno != ERANGE && std::isfinite(v);
+}
+
+bool InstrumentReader::locate(const std::vector<std::string> &names, std::string &missing)
+{
+  auto find = [&](const ColumnRef &c, int &index) {
+    index = -1;
+    if (!c.given()) return true;
+    if (c.index > 0) {
+      index = c.index - 1;
+      return true;
+    }
+    for (std::size_t i = 0; i < names.size(); ++i)
+      if (names[i] == c.name) index = (int) i;
+    for (std::size_t i = 0; i < names.size() && index < 0; ++i)    // then without regard to case
+      if (lower(names[i]) == lower(c.name)) index = (int) i;
+    if (index < 0 && missing.empty()) missing = c.name;
+    return index >= 0;
+  };
+  missing.clear();
+  bool ok = find(m_.time, i_time_);
+  ok = find(m_.force, i_force_) && ok;
+  ok = find(m_.position, i_position_) && ok;
+  ok = find(m_.speed, i_speed_) && ok;
+  return ok;
+}
+
+bool InstrumentReader::numeric_row(const std::string &line, Delim d) const
+{
+  double v;
+  if (d == Delim::keyvalue) {
+    for (const ColumnRef *c : {&m_.time, &m_.force, &m_.position, &m_.speed}) {
+      if (!c->given()) continue;
+      bool found = false;
+      for (const auto &kv : fields(line, d)) {
+        const auto eq = kv.find('=');
+        if (eq != std::string::npos && kv.substr(0, eq) == c->name) found = parse_number(kv.substr(eq + 1), v);
+      }
+      if (!found) return false;
+    }
+    return true;
+  }
+  const auto f = fields(line, d);
+  for (const ColumnRef *c : {&m_.time, &m_.force, &m_.position, &m_.speed})
+    if (c->given() && (c->index > (int) f.size() || !parse_number(f[c->index - 1], v))) return false;
+  return f.size() >= 2 || (f.size() == 1 && m_.force.index == 1 && !m_.time.given() && !m_.position.given());
+}
+
+void InstrumentReader::find_layout()
+{
+  std::vector<Delim> candidates;
+  static const std::pair<const char *, Delim> named[] = {{"comma", Delim::comma}, {"semicolon", Delim::semicolon},
+                                                          {"tab", Delim::tab}, {"whitespace", Delim::whitespace},
+                                                          {"keyvalue", Delim::keyvalue}};
+  if (m_.delimiter == "auto") {
+    candidates = {Delim::tab, Delim::semicolon};
+    if (!m_.decimal_comma) candidates.push_back(Delim::comma);
+    candidates.push_back(Delim::whitespace);
+  } else {
+    for (const auto &n : named)
+      if (m_.delimiter == n.first) candidates = {n.second};
+  }
+  const bool by_name = m_.column_names && (!m_.time.name.empty() || !m_.force.name.empty() ||
+                                           !m_.position.name.empty() || !m_.speed.name.empty());
+  std::string line, best_missing, best_names;
+  long best_line = 0;
+  std::size_t best_found = 0;
+  while (read_line(line)) {
+    if (m_.header_lines >= 0 && line_no_ <= m_.header_lines) continue;
+    if (trim(line).empty()) continue;
+    if (line_no_ > MAX_HEADER_LINES) break;
+    const bool fixed = m_.header_lines >= 0;
+    if (by_name) {
+      for (Delim d : candidates) {
+        const auto names = fields(line, d);
+        std::string missing;
+        if (locate(names, missing)) {
+          delim_ = d;
+          names_line_ = line_no_;
+          header_lines_ = line_no_ - 1;
+          return;
+        }
+        std::size_t found = 0;
+        for (const ColumnRef *c : {&m_.time, &m_.force, &m_.position, &m_.speed})
+          for (const auto &n : names)
+            if (!c->name.empty() && lower(n) == lower(c->name)) ++found;
+        if (found > best_found || (fixed && !best_line)) {
+          best_found = found;
+          best_line = line_no_;
+          best_missing = missing;
+          best_names.clear();
+          for (const auto &n : names) best_names += (best_names.empty() ? "" : ", ") + n;
+        }
+      }
+      if (fixed) break;    // the line after the header lines must be the names
+      continue;
+    }
+    for (Delim d : candidates) {
+      if (!numeric_row(line, d)) continue;
+      std::string missing;
+      if (d != Delim::keyvalue) locate({}, missing);
+      delim_ = d;
+      header_lines_ = line_no_ - 1;
+      names_line_ = 0;
+      pending_ = line;
+      pending_no_ = line_no_;
+      return;
+    }
+    if (fixed) fail_at(path_, line_no_, "the first row after header_lines = " + std::to_string(m_.header_lines) +
+                                            " has no number in the mapped columns");
+  }
+  if (best_line)
+    fail_at(path_, best_line, "no column '" + best_missing + "' in the column names (" + best_names + ")");
+  if (by_name)
+    throw InputError(path_ + ": no column-name line holds the mapped columns (in the first " +
+                     std::to_string(MAX_HEADER_LINES) + " lines)");
+  throw InputError(path_ + ": no data row with numbers in the mapped columns");
+}
+
+double InstrumentReader::field_value(const std::vector<std::string> &f, int index, const ColumnRef &c, const char *what,
+                                     long line_no) const
+{
+  if (index >= (int) f.size())
+    fail_at(path_, line_no, std::to_string(f.size()) + " fields: no " + what + " column " + c.text());
+  double v;
+  if (!parse_number(f[index], v))
+    fail_at(path_, line_no, std::string(what) + " column " + c.text() + " is not a number: '" + unquote(f[index]) + "'");
+  return v;
+}
+
+double InstrumentReader::key_value(const std::string &line, const ColumnRef &c, const char *what, long line_no) const
+{
+  for (const auto &kv : fields(line, Delim::keyvalue)) {
+    const auto eq = kv.find('=');
+    if (eq == std::string::npos || kv.substr(0, eq) != c.name) continue;
+    double v;
+    if (!parse_number(kv.substr(eq + 1), v))
+      fail_at(path_, line_no, std::string(what) + " key '" + c.name + "' is not a number: '" + kv.substr(eq + 1) + "'");
+    return v;
+  }
+  fail_at(path_, line_no, "no " + std::string(what) + " key '" + c.name + "=' in the row");
+}
+
+ImportRow InstrumentReader::to_row(const std::string &line, long line_no)
+{
+  ImportRow r;
+  r.line = line_no;
+  if (delim_ == Delim::keyvalue) {
+    r.F = key_value(line, m_.force, "force", line_no);
+    if (m_.time.given()) r.t = key_value(line, m_.time, "time", line_no);
+    if (m_.position.given()) r.x = key_value(line, m_.position, "position", line_no);
+    if (m_.speed.given()) r.v = key_value(line, m_.speed, "speed", line_no);
+  } else {
+    const auto f = fields(line, delim_);
+    r.F = field_value(f, i_force_, m_.force, "force", line_no);
+    if (i_time_ >= 0) r.t = field_value(f, i_time_, m_.time, "time", line_no);
+    if (i_position_ >= 0) r.x = field_value(f, i_position_, m_.position, "position", line_no);
+    if (i_speed_ >= 0) r.v = field_value(f, i_speed_, m_.speed, "speed", line_no);
+  }
+  r.t = m_.time.given() ? r.t * m_.time_factor : (double) rows_ / m_.sample_rate;
+  r.F *= m_.force_factor;
+  r.x *= m_.position_factor;
+  r.v *= m_.speed_factor;
+  ++rows_;
+  return r;
+}
+
+bool InstrumentReader::next(std::vector<ImportRow> &rows, std::size_t max_rows)
+{
+  rows.clear();
+  if (!pending_.empty()) {
+    rows.push_back(to_row(pending_, pending_no_));
+    pending_.clear();
+  }
+  std::string line;
+  while (rows.size() < max_rows && read_line(line)) {
+    if (names_line_ && line_no_ <= names_line_ + m_.lines_after_names) continue;    // a units line
+    const std::string t = trim(line);
+    if (t.empty() || t[0] == '#') continue;    // blank lines and comments between rows
+    rows.push_back(to_row(line, line_no_));
+  }
+  return !rows.empty();
+}
+
+std::string InstrumentReader::layout() const
+{
+  static const char *names[] = {"comma", "semicolon", "tab", "white-space", "key=value"};
+  std::string s = std::string(names[(int) delim_]) + (delim_ == Delim::keyvalue ? " rows" : "-delimited");
+  s += m_.decimal_comma ? ", decimal comma" : ", decimal point";
+  s += ", " + std::to_string(header_lines_) + " header line" + (header_lines_ == 1 ? "" : "s");
+  if (names_line_) s += ", column names at line " + std::to_string(names_line_);
+  return s;
+}
+
+}    // namespace granpen
