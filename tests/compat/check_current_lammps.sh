@@ -102,7 +102,7 @@ plugin_route() {
   # LAMMPS with PLUGIN (shared, as plugin loading needs), installed so that step 4 finds it
   if [ ! -x "$LBUILD/prefix/bin/lmp" ]; then
     "$CMAKE" -S "$src/cmake" -B "$LBUILD/plugin" -DCMAKE_BUILD_TYPE=Release -DBUILD_SHARED_LIBS=on \
-      -DBUILD_MPI=on -DBUILD_OMP=off -DPKG_PLUGIN=on -DPKG_GRANULAR=on -DPKG_VORONOI=on -DDOWNLOAD_VORO=off \
+      -DBUILD_MPI=on -DBUILD_OMP=off -DPKG_PLUGIN=on -DPKG_GRANULAR=on -DPKG_VORONOI=on -DDOWNLOAD_VORO=off -DPKG_COMPRESS=on \
       -DDOWNLOAD_POTENTIALS=off -DCMAKE_INSTALL_PREFIX="$LBUILD/prefix" "${LAUNCHER[@]}"
     "$CMAKE" --build "$LBUILD/plugin" -j "$JOBS" --target lmp
     # the man page and docs are not in a src-only tree: install the targets alone
