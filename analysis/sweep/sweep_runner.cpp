@@ -331,6 +331,21 @@ Job make_job(const PlannedRun &r, const Sweep &sw, const RunnerOptions &opt)
   return j;
 }
 
+// A finished pour's checkpoints (NAME.pour.state, NAME.pour.STEP.restart): in.pour removes
+// the one its state names, but a kill between LAMMPS writing a restart and the deck
+// renaming the state leaves that newer restart behind, which only a listing finds.
+void remove_pour_checkpoints(const std::string &info)
+{
+  namespace fs = std::filesystem;
+  const fs::path bed(info.substr(0, info.size() - 5));    // NAME (without .info)
+  const std::string prefix = bed.filename().string() + ".pour.";
+  std::error_code ec;
+  std::vector<fs::path> left;
+  for (const auto &e : fs::directory_iterator(bed.parent_path(), ec))
+    if (e.path().filename().string().rfind(prefix, 0) == 0) left.push_back(e.path());
+  for (const auto &p : left) fs::remove(p, ec);
+}
+
 // in.pour's NAME.pour.state: LAMMPS variable commands; the phase and the saved step
 std::pair<std::string, std::string> read_pour_state(const std::string &path)
 {
@@ -701,6 +716,7 @@ void Pool::reap(pid_t pid, int wstatus)
       bool ok = j.exit_code == 0;
       if (ok && j.run.kind == PlannedRun::PUSH) ok = log.find("granpen push: done") != std::string::npos;
       if (ok && j.run.kind == PlannedRun::POUR) ok = exists(j.info);
+      if (ok && j.run.kind == PlannedRun::POUR) remove_pour_checkpoints(j.info);
       std::string e;
       if (ok && j.run.kind == PlannedRun::PUSH) {
         std::ofstream done(j.done);

@@ -98,7 +98,7 @@ endforeach()
 add_test(NAME gap_bad_out_is_real
   COMMAND sh -c "'$<TARGET_FILE:granpen-cli>' gap --real '${GAP_BAD}/two' --scenario tiny --out '${GAP_BAD}/two' --cache '${GAP_BAD}/cache_out' --lmp '$<TARGET_FILE:fake_lmp>' --inputs '${PROJECT_SOURCE_DIR}/inputs'; s=$?; test \"$(ls -A '${GAP_BAD}/two' | tr '\\n' ' ')\" = 'a.csv b.csv ' && test ! -e '${GAP_BAD}/cache_out' && echo exit=$s")
 set_tests_properties(gap_bad_out_is_real PROPERTIES LABELS unit
-  PASS_REGULAR_EXPRESSION "--out [^ ]*/two: would replace the measured traces.*exit=2")
+  PASS_REGULAR_EXPRESSION "--out [^ ]*/two is the input --real [^ ]*/two: refusing to overwrite it.*exit=2")
 add_test(NAME gap_bad_scenario COMMAND $<TARGET_FILE:granpen-cli> gap --real ${GAP_BAD}/wrongD --scenario huge
   --out ${GAP_BAD}/out_s --inputs ${PROJECT_SOURCE_DIR}/inputs)
 set_tests_properties(gap_bad_scenario PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "unknown scenario 'huge'")
