@@ -10,8 +10,9 @@
 #               that a new checkout does not lose hours of pouring); DIR/dg10/ is the
 #               sweep folder of inputs/sweeps/dg10_{peak,flow,D}.sweep
 #   --status    print how far it got (beds poured, pushes done) and stop
-# The decks are copied into DIR/dg10/inputs once, so that editing inputs/ in the work tree
-# never changes a run under way (LAMMPS rereads a deck at every jump).
+# The decks are copied into DIR/dg10/inputs at every start, so that editing inputs/ in the
+# work tree never changes a run under way (LAMMPS rereads a deck at every jump); a pour
+# resumed under newer decks reads the same checkpoint state.
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 OUT=/work/granpen-runs JOBS=1 STATUS=0
@@ -26,7 +27,7 @@ done
 LMP=${GRANPEN_LMP:-$ROOT/build/lmp_granpen} CLI=${GRANPEN_CLI:-$ROOT/build/analysis/granpen-cli}
 D=$OUT/dg10
 mkdir -p "$D/beds" "$D/logs"
-[ -d "$D/inputs" ] || cp -r "$ROOT/inputs" "$D/inputs"
+if [ "$STATUS" = 0 ]; then rm -rf "$D/inputs.new"; cp -r "$ROOT/inputs" "$D/inputs.new"; rm -rf "$D/inputs"; mv "$D/inputs.new" "$D/inputs"; fi
 
 status() {
   local beds pushes
