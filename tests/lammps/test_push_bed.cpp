@@ -106,7 +106,11 @@ TEST_F(PushBed, ThirdLawWithFriction)
 TEST_F(PushBed, ZeroBeforeContactAndGrowsWithDepthWhenSlow)
 {
   // v0 = 20 cm/s, below v_c = sqrt(2 g d_g) = 28 cm/s
-  const std::string trace = ::testing::TempDir() + "granpen_slow_push.csv";
+  // in the test's working folder, one name per rank count: np1 and np2 run at once, and
+  // other build folders run the same test (a shared /tmp name collided)
+  int nprocs = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &nprocs);
+  const std::string trace = "granpen_slow_push_np" + std::to_string(nprocs) + ".csv";
   {
     LmpSession s;
     setup_push(s, bed_path(), 20.0, "depth 1.5 at_depth halt file " + trace);
@@ -142,7 +146,11 @@ TEST_F(PushBed, MountSensorBalancesRodMomentum)
   // grains push up with F_grain; the rod (mass m, speed v_rod counted downward) obeys
   // m dv/dt = F - F_grain, so m (v_rod(b) - v_rod(a)) = sum over windows of (F - F_grain) dt.
   // Checked over the whole push; and the sensor must carry the drag on average.
-  const std::string trace = ::testing::TempDir() + "granpen_mount_push.csv";
+  // in the test's working folder, one name per rank count: np1 and np2 run at once, and
+  // other build folders run the same test (a shared /tmp name collided)
+  int nprocs = 1;
+  MPI_Comm_size(MPI_COMM_WORLD, &nprocs);
+  const std::string trace = "granpen_mount_push_np" + std::to_string(nprocs) + ".csv";
   const double m = 50.0;
   {
     LmpSession s;
