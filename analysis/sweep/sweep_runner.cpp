@@ -135,6 +135,7 @@ struct Job {
   PlannedRun run;
   std::vector<std::string> argv;
   std::string log, out, trace, info, done;
+  std::string pour_checkpoints;      // a checkpointed pour's NAME.pour (pour_checkpoint = yes)
   std::string status = "pending";    // pending, running, done, skipped, failed
   std::string action;                // what was done: started, resumed, restarted, already done
   std::string error;
@@ -302,7 +303,10 @@ Job make_job(const PlannedRun &r, const Sweep &sw, const RunnerOptions &opt)
     var("mu", r.mu);
     var("seed", r.seed);
     var("out", dir + "/beds/" + r.id);
-    if (spec.pour_checkpoint) var("checkpoint", "1");
+    if (spec.pour_checkpoint) {
+      var("checkpoint", "1");
+      j.pour_checkpoints = dir + "/beds/" + r.id + ".pour";
+    }
     for (const auto &[k, v] : spec.set) var(k, v);
   } else {
     j.trace = dir + "/traces/" + r.id + ".csv";
@@ -334,14 +338,14 @@ Job make_job(const PlannedRun &r, const Sweep &sw, const RunnerOptions &opt)
 // A finished pour's checkpoints (NAME.pour.state, NAME.pour.STEP.restart): in.pour removes
 // the one its state names, but a kill between LAMMPS writing a restart and the deck
 // renaming the state leaves that newer restart behind, which only a listing finds.
-void remove_pour_checkpoints(const std::string &info)
+void remove_pour_checkpoints(const std::string &stem)    // DIR/NAME.pour
 {
   namespace fs = std::filesystem;
-  const fs::path bed(info.substr(0, info.size() - 5));    // NAME (without .info)
-  const std::string prefix = bed.filename().string() + ".pour.";
+  const fs::path pour(stem);
+  const std::string prefix = pour.filename().string() + ".";
   std::error_code ec;
   std::vector<fs::path> left;
-  for (const auto &e : fs::directory_iterator(bed.parent_path(), ec))
+  for (const auto &e : fs::directory_iterator(pour.parent_path(), ec))
     if (e.path().filename().string().rfind(prefix, 0) == 0) left.push_back(e.path());
   for (const auto &p : left) fs::remove(p, ec);
 }
@@ -372,10 +376,10 @@ void inspect_job(Job &j, bool own)
     }
     // a checkpointed pour (pour_checkpoint = yes): resume from the chunk its state names,
     // when the restart it names is complete; else pour again from the start
-    const std::string state = j.info.substr(0, j.info.size() - 5) + ".pour.state";
-    if (own && exists(state) && std::find(j.argv.begin(), j.argv.end(), "checkpoint") != j.argv.end()) {
+    const std::string state = j.pour_checkpoints + ".state";
+    if (own && !j.pour_checkpoints.empty() && exists(state)) {
       const auto kv = read_pour_state(state);
-      const std::string restart = j.info.substr(0, j.info.size() - 5) + ".pour." + kv.second + ".restart";
+      const std::string restart = j.pour_checkpoints + "." + kv.second + ".restart";
       if (!kv.second.empty() && complete_checkpoint(restart)) {
         j.argv.insert(j.argv.end() - 4, {"-var", "resume", "yes"});
         j.action = "resumed at step " + kv.second + " (" + kv.first + ")";
@@ -716,7 +720,7 @@ void Pool::reap(pid_t pid, int wstatus)
       bool ok = j.exit_code == 0;
       if (ok && j.run.kind == PlannedRun::PUSH) ok = log.find("granpen push: done") != std::string::npos;
       if (ok && j.run.kind == PlannedRun::POUR) ok = exists(j.info);
-      if (ok && j.run.kind == PlannedRun::POUR) remove_pour_checkpoints(j.info);
+      if (ok && !j.pour_checkpoints.empty()) remove_pour_checkpoints(j.pour_checkpoints);
       std::string e;
       if (ok && j.run.kind == PlannedRun::PUSH) {
         std::ofstream done(j.done);
