@@ -5,13 +5,14 @@
 // memory does not grow with its length; every trace is staged under a temporary name and
 // renamed only when every file has been imported.
 #include "atomic_file.h"
-#include "subcommand.h"
 #include "import_mapping.h"
 #include "instrument_import.h"
 #include "instrument_reader.h"
 #include "staged_file.h"
+#include "subcommand.h"
 #include "subcommands.h"
 #include "text_util.h"
+#include "trace_files.h"
 #include "trace_reader.h"
 #include "trace_writer.h"
 
@@ -45,25 +46,18 @@ const char *HELP =
 
 std::string num(const char *f, double v) { return granpen::printf_number(f, v); }
 
-// the inputs as files: a folder stands for its regular files, sorted
+// the inputs as files: a folder stands for its regular files (not hidden), sorted
 std::vector<std::string> input_files(const std::vector<std::string> &inputs)
 {
-  namespace fs = std::filesystem;
-  std::vector<std::string> files;
-  for (const auto &in : inputs) {
-    std::error_code ec;
-    if (!fs::is_directory(in, ec)) {
-      files.push_back(in);
-      continue;
-    }
-    std::vector<std::string> inside;
-    for (const auto &e : fs::directory_iterator(in, ec))
-      if (e.is_regular_file() && e.path().filename().string()[0] != '.') inside.push_back(e.path().string());
-    if (ec) throw granpen::InputError(in + ": cannot list the folder: " + ec.message());
-    if (inside.empty()) throw granpen::InputError(in + ": an empty folder");
-    std::sort(inside.begin(), inside.end());
-    files.insert(files.end(), inside.begin(), inside.end());
-  }
+  std::vector<std::string> problems;
+  auto files = granpen::expand_paths(
+      inputs,
+      [](const std::filesystem::directory_entry &e) {
+        std::error_code ec;
+        return e.is_regular_file(ec) && e.path().filename().string()[0] != '.';
+      },
+      "an empty folder", problems);
+  if (!problems.empty()) throw granpen::InputError(problems.front());
   return files;
 }
 

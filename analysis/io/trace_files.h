@@ -4,11 +4,20 @@
 #ifndef GRANPEN_TRACE_FILES_H
 #define GRANPEN_TRACE_FILES_H
 
+#include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
 namespace granpen {
 
+// Files as given; a folder stands for its entries that `keep` accepts, sorted. A folder
+// that cannot be listed, or keeps none ("FOLDER: " + none_kept), adds to problems.
+std::vector<std::string> expand_paths(const std::vector<std::string> &inputs,
+                                      const std::function<bool(const std::filesystem::directory_entry &)> &keep,
+                                      const std::string &none_kept, std::vector<std::string> &problems);
+
+// expand_paths for traces: a folder's regular *.csv files
 std::vector<std::string> expand_trace_paths(const std::vector<std::string> &inputs,
                                             std::vector<std::string> &problems);
 
