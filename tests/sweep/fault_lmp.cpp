@@ -6,6 +6,8 @@
 // byte for byte to an uninterrupted one. Like LAMMPS, a checkpoint ends with the restart
 // format's magic string, and resuming from one without it is an ERROR.
 //   FAULT_LMP_MS: milliseconds per push row and per pour chunk (default 4)
+#include "lmp_command_line.h"
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -65,15 +67,9 @@ std::string checkpoint_text(long row)
 
 int main(int argc, char **argv)
 {
-  std::map<std::string, std::string> var;
-  std::string in, log;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "-in" && i + 1 < argc) in = argv[++i];
-    else if (a == "-log" && i + 1 < argc) log = argv[++i];
-    else if (a == "-screen" && i + 1 < argc) ++i;
-    else if (a == "-var" && i + 2 < argc) var[argv[i + 1]] = argv[i + 2], i += 2;
-  }
+  auto cmd = read_lmp_command_line(argc, argv);
+  auto &var = cmd.var;
+  const std::string &in = cmd.in, &log = cmd.log;
   std::ofstream L(log.empty() ? "/dev/null" : log);
   L << "LAMMPS (fault_lmp: the sweep runner's fault tests)" << std::endl;
   const int seed = std::atoi(var.count("seed") ? var["seed"].c_str() : var["run"].c_str());

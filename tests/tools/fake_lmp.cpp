@@ -12,6 +12,8 @@
 //   ramp L: the peak moves deeper by (L - 0.5) / 2 once L > 0.5 (the rod is still slow)
 //   mount_k, mount_c, mount_m: the signal goes through the mount's spring-damper
 //   rho_g r: F *= r / 3 (an effect outside the library)
+#include "lmp_command_line.h"
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -22,15 +24,9 @@
 
 int main(int argc, char **argv)
 {
-  std::map<std::string, std::string> var;
-  std::string in, log;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    if (a == "-in" && i + 1 < argc) in = argv[++i];
-    else if (a == "-log" && i + 1 < argc) log = argv[++i];
-    else if (a == "-screen" && i + 1 < argc) ++i;
-    else if (a == "-var" && i + 2 < argc) var[argv[i + 1]] = argv[i + 2], i += 2;
-  }
+  auto cmd = read_lmp_command_line(argc, argv);
+  auto &var = cmd.var;
+  const std::string &in = cmd.in, &log = cmd.log;
   auto num = [&](const char *k, double d) { return var.count(k) ? std::atof(var[k].c_str()) : d; };
   std::ofstream L(log.empty() ? "/dev/null" : log);
   L << "LAMMPS (fake_lmp: granpen's synthetic world for tests)\n";
