@@ -69,7 +69,10 @@ step() {    # N TITLE FUNCTION
   case " $STEPS " in *" $n "*) ;; *) return 0 ;; esac
   say "step $n: $title"
   local t0=$SECONDS
-  if "$fn" >"$WORK/step$n.log" 2>&1; then
+  # in the background, not as the condition of the if: there bash would ignore set -e in the
+  # function, and a step would fail only when its last command did
+  "$fn" >"$WORK/step$n.log" 2>&1 &
+  if wait $!; then
     result[$n]="PASS ($((SECONDS - t0)) s) $title"
   else
     result[$n]="FAIL ($((SECONDS - t0)) s) $title: see $WORK/step$n.log"; failed=1
@@ -167,7 +170,8 @@ coding_standard() {
   local pkgsrc=$LBUILD/package-tree/src
   [ -d "$pkgsrc/GRANPEN" ] || pkgsrc=$t/src
   for chk in check-styles check-packages; do
-    python3 "$src/doc/utils/$chk.py" -s "$pkgsrc" -d "$d/src" > "$WORK/$chk.txt" 2>&1 || true
+    # paths are cut from its output: the work and cache directories have "granpen" in them
+    python3 "$src/doc/utils/$chk.py" -s "$pkgsrc" -d "$d/src" 2>&1 | sed -e "s|$d/src/||g" -e "s|$pkgsrc|SRC|g" > "$WORK/$chk.txt" || true
     if grep -Eiq "granpen|rod/drive|rod/drag|bed/surface|flow/azimuthal|momentum/vbin|create_rod" "$WORK/$chk.txt"; then
       echo "$chk: findings about GRANPEN:"; grep -Ei "granpen|rod/|bed/surface|flow/azimuthal|momentum/vbin|create_rod" "$WORK/$chk.txt"; rc=1
     else
