@@ -12,9 +12,12 @@
 #      pages, and doc/utils/check-styles.py and check-packages.py with the package's index
 #      entries added to a scratch copy of the doc tree (tests/compat/lammps_doc_entries.py)
 #   6. fix wall/gran against pair gran/hertz/history for a sphere on a flat (docs/compat.md)
-# Nothing is downloaded: the tree is given, GoogleTest and Voro++ come from Debian.
+#   7. LAMMPS's fix-style harness (unittest/force-styles/test_fix_timestep) on fix rod/drive,
+#      from the YAML files in tests/compat/force-styles/, in step 3's tree and build directory
+# Nothing is downloaded: the tree is given, GoogleTest (Debian's googletest package, packed as
+# LAMMPS's unittest/ fetches it), libyaml and Voro++ come from Debian.
 #
-#   tests/compat/check_current_lammps.sh [--steps "1 2 3 4 5 6"] [--only-compile] LAMMPS_TREE
+#   tests/compat/check_current_lammps.sh [--steps "1 2 3 4 5 6 7"] [--only-compile] LAMMPS_TREE
 #
 # LAMMPS builds are cached in $GRANPEN_CACHE (default ~/.cache/granpen) by tree version and
 # reused; ccache is used when installed. Environment: GRANPEN_JOBS (default: all cores).
@@ -24,7 +27,7 @@
 set -euo pipefail
 
 say() { printf 'check_current_lammps: %s\n' "$*" >&2; }
-STEPS="1 2 3 4 5 6"
+STEPS="1 2 3 4 5 6 7"
 while [ $# -gt 1 ]; do
   case "$1" in
     --steps) STEPS=$2; shift 2 ;;
@@ -69,7 +72,10 @@ step() {    # N TITLE FUNCTION
   case " $STEPS " in *" $n "*) ;; *) return 0 ;; esac
   say "step $n: $title"
   local t0=$SECONDS
-  if "$fn" >"$WORK/step$n.log" 2>&1; then
+  # in the background, not as the condition of the if: there bash would ignore set -e in the
+  # function, and a step would fail only when its last command did
+  "$fn" >"$WORK/step$n.log" 2>&1 &
+  if wait $!; then
     result[$n]="PASS ($((SECONDS - t0)) s) $title"
   else
     result[$n]="FAIL ($((SECONDS - t0)) s) $title: see $WORK/step$n.log"; failed=1
@@ -119,19 +125,29 @@ plugin_route() {
   grep -q "Loading plugin: GRANPEN" "$WORK/runs_plugin/pour.log" || grep -qi "loading plugin" "$WORK/runs_plugin/pour.log"
 }
 
-package_route() {
-  # a copy of the tree (hard links: cheap) with src/GRANPEN and GRANPEN in STANDARD_PACKAGES
+make_package_tree() {
+  # a copy of the tree (hard links: cheap) with src/GRANPEN and GRANPEN in STANDARD_PACKAGES;
+  # the package's files keep their times (cp -p), so a cached build recompiles only changes
   local tree=$LBUILD/package-tree
   rm -rf "$tree"; cp -al "$src" "$tree"
   rm -rf "$tree/src/GRANPEN"; mkdir "$tree/src/GRANPEN"
-  cp "$ROOT"/src/*.cpp "$ROOT"/src/*.h "$tree/src/GRANPEN/"
+  cp -p "$ROOT"/src/*.cpp "$ROOT"/src/*.h "$tree/src/GRANPEN/"
   cp --remove-destination "$src/cmake/CMakeLists.txt" "$tree/cmake/CMakeLists.txt"
   sed -i 's/^set(STANDARD_PACKAGES$/set(STANDARD_PACKAGES\n  GRANPEN/' "$tree/cmake/CMakeLists.txt"
   grep -q "^  GRANPEN$" "$tree/cmake/CMakeLists.txt"
-  CCACHE_BASEDIR=$LBUILD "$CMAKE" -S "$tree/cmake" -B "$LBUILD/package" -DCMAKE_BUILD_TYPE=Release \
+}
+
+build_package() {    # TARGET [CMAKE_OPTION...]: the package tree's LAMMPS, built in $LBUILD/package
+  local target=$1; shift
+  CCACHE_BASEDIR=$LBUILD "$CMAKE" -S "$LBUILD/package-tree/cmake" -B "$LBUILD/package" -DCMAKE_BUILD_TYPE=Release \
     -DBUILD_MPI=on -DBUILD_OMP=off -DPKG_GRANPEN=on -DPKG_GRANULAR=on -DPKG_VORONOI=on -DDOWNLOAD_VORO=off \
-    -DDOWNLOAD_POTENTIALS=off "${LAUNCHER[@]}"
-  CCACHE_BASEDIR=$LBUILD "$CMAKE" --build "$LBUILD/package" -j "$JOBS" --target lmp
+    -DDOWNLOAD_POTENTIALS=off "${LAUNCHER[@]}" "$@"
+  CCACHE_BASEDIR=$LBUILD "$CMAKE" --build "$LBUILD/package" -j "$JOBS" --target "$target"
+}
+
+package_route() {
+  make_package_tree
+  build_package lmp
   local lmp=$LBUILD/package/lmp
   "$lmp" -h > "$WORK/package-help.txt"
   grep -A4 "Installed packages" "$WORK/package-help.txt" | grep -q GRANPEN
@@ -139,6 +155,57 @@ package_route() {
     grep -q "$s" "$WORK/package-help.txt" || { echo "lmp -h lacks $s"; return 1; }
   done
   tiny_runs "$lmp" "" package
+}
+
+gtest_tarball() {    # prints the path and md5 of GoogleTest 1.12.1 packed as LAMMPS's unittest/ fetches it
+  # LAMMPS's unittest/CMakeLists.txt downloads googletest release-1.12.1 from GitHub; Debian's
+  # googletest package (/usr/src/googletest, 1.12.1-0.2 on bookworm) is the same release.
+  # GRANPEN_GTEST_TARBALL names a ready tarball instead.
+  local tgz=${GRANPEN_GTEST_TARBALL:-$CACHE/googletest-release-1.12.1.tar.gz}
+  if [ ! -f "$tgz" ]; then
+    local deb=/usr/src/googletest
+    [ -f "$deb/CMakeLists.txt" ] && [ -d "$deb/googletest" ] || {
+      echo "no GoogleTest sources: apt-get install googletest (or set GRANPEN_GTEST_TARBALL)" >&2; return 1; }
+    local t; t=$(mktemp -d "$WORK/gtest.XXXXXX")
+    cp -r "$deb" "$t/googletest-release-1.12.1"
+    tar -C "$t" -czf "$tgz" googletest-release-1.12.1
+  fi
+  echo "$tgz $(md5sum < "$tgz" | cut -d' ' -f1)"
+}
+
+fix_harness() {
+  # LAMMPS's fix-style harness (unittest/force-styles/test_fix_timestep) on fix rod/drive:
+  # the YAML files of tests/compat/force-styles (and their input decks) copied into the
+  # package tree's unittest/force-styles/tests/, the tree configured with ENABLE_TESTING and
+  # MOLECULE (the harness's default force field needs it), test_fix_timestep built, and each
+  # file run under ctest as FixTimestep:NAME (a full run, a run from the restart file)
+  make_package_tree
+  local tests=$LBUILD/package-tree/unittest/force-styles/tests f names=()
+  for f in "$ROOT"/tests/compat/force-styles/*; do
+    cp --remove-destination "$f" "$tests/"
+    case $f in *.yaml) names+=("$(basename "$f" .yaml | sed 's/^fix-timestep-//')") ;; esac
+  done
+  local gt; gt=$(gtest_tarball)
+  build_package test_fix_timestep -DPKG_MOLECULE=on -DENABLE_TESTING=on \
+    -DGTEST_URL="file://${gt% *}" -DGTEST_MD5="${gt#* }"
+  local re; re=$(printf '|%s' "${names[@]}"); re="^FixTimestep:(${re#|})\$"
+  (cd "$LBUILD/package" && ctest -R "$re" -V) > "$WORK/fix-harness.txt" 2>&1 || true
+  grep -E "Test +#|tests passed|SKIPPED|FAILED|Failure|Expected|Which is" "$WORK/fix-harness.txt" || true
+  grep -q "100% tests passed, 0 tests failed out of ${#names[@]}\$" "$WORK/fix-harness.txt"
+  # each file's checks ran: FixTimestep.plain passed, not skipped (omp and kokkos_omp skip
+  # without the OPENMP and KOKKOS packages)
+  [ "$(grep -c '\[       OK \] FixTimestep.plain' "$WORK/fix-harness.txt")" = "${#names[@]}" ]
+  ! grep -q '\[  SKIPPED \] FixTimestep.plain' "$WORK/fix-harness.txt"
+  # and the check can fail: the rigid push's file with v0 0.3 -> 0.301 must fail its checks
+  # (a gtest failure, not a crash); not named fix-timestep-*, so ctest does not list it
+  sed 's|rod/drive 0.3 |rod/drive 0.301 |' "$tests/fix-timestep-rod_drive.yaml" > "$tests/perturbed-rod_drive.yaml"
+  grep -q "rod/drive 0.301 " "$tests/perturbed-rod_drive.yaml"
+  if "$LBUILD/package/test_fix_timestep" "$tests/perturbed-rod_drive.yaml" > "$WORK/fix-harness-perturbed.txt" 2>&1; then
+    echo "the file with v0 = 0.301 passed against the references for 0.3: the harness does not compare"
+    return 1
+  fi
+  grep -q '\[  FAILED  \] FixTimestep.plain' "$WORK/fix-harness-perturbed.txt"
+  echo "v0 0.3 -> 0.301: FixTimestep.plain fails $(grep -c ': Failure$' "$WORK/fix-harness-perturbed.txt") checks, as it must"
 }
 
 lammps_tests() {
@@ -167,7 +234,8 @@ coding_standard() {
   local pkgsrc=$LBUILD/package-tree/src
   [ -d "$pkgsrc/GRANPEN" ] || pkgsrc=$t/src
   for chk in check-styles check-packages; do
-    python3 "$src/doc/utils/$chk.py" -s "$pkgsrc" -d "$d/src" > "$WORK/$chk.txt" 2>&1 || true
+    # paths are cut from its output: the work and cache directories have "granpen" in them
+    python3 "$src/doc/utils/$chk.py" -s "$pkgsrc" -d "$d/src" 2>&1 | sed -e "s|$d/src/||g" -e "s|$pkgsrc|SRC|g" > "$WORK/$chk.txt" || true
     if grep -Eiq "granpen|rod/drive|rod/drag|bed/surface|flow/azimuthal|momentum/vbin|create_rod" "$WORK/$chk.txt"; then
       echo "$chk: findings about GRANPEN:"; grep -Ei "granpen|rod/|bed/surface|flow/azimuthal|momentum/vbin|create_rod" "$WORK/$chk.txt"; rc=1
     else
@@ -192,7 +260,8 @@ step 3 "package route: src/GRANPEN, -D PKG_GRANPEN=on" package_route
 step 4 "LAMMPS-level tests (ctest -L lammps) with lmp_granpen on the tree's liblammps" lammps_tests
 step 5 "LAMMPS's coding-standard and doc index checks" coding_standard
 step 6 "fix wall/gran against pair gran/hertz/history (a sphere on a flat)" wall_gran
+step 7 "LAMMPS's fix-style harness (test_fix_timestep) on fix rod/drive" fix_harness
 echo
 echo "LAMMPS $version${update:+ ($update)}:"
-for n in 1 2 3 4 5 6; do [ -n "${result[$n]:-}" ] && echo "  step ${result[$n]}"; done
+for n in 1 2 3 4 5 6 7; do [ -n "${result[$n]:-}" ] && echo "  step ${result[$n]}"; done
 exit $failed
