@@ -6,7 +6,7 @@
 set(GRANPEN_FUZZ AUTO CACHE STRING "Fuzz tests of the readers with clang++/libFuzzer: AUTO (when clang++ is found), ON (required), OFF")
 set_property(CACHE GRANPEN_FUZZ PROPERTY STRINGS AUTO ON OFF)
 set(GRANPEN_FUZZ_SECONDS 30 CACHE STRING "Seconds each reader fuzz test runs")
-set(GRANPEN_FUZZ_CLI_RUNS 100000 CACHE STRING "Inputs the CLI option-parser fuzz test runs")
+set(GRANPEN_FUZZ_CLI_RUNS 50000 CACHE STRING "Inputs the CLI option-parser fuzz test runs")
 
 if(NOT GRANPEN_FUZZ STREQUAL "OFF")
   if(CMAKE_CXX_COMPILER_ID MATCHES "Clang")
