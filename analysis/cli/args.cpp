@@ -72,14 +72,14 @@ bool ParsedArgs::positive(std::initializer_list<const char *> names, std::string
 }
 
 bool parse_table(Command &cmd, const std::vector<OptionSpec> &spec, const char *positional, int argc, char **argv,
-                 ParsedArgs &out)
+                 ParsedArgs &out, std::string &help)
 {
   std::vector<CLI::Option *> added;
   for (const auto &o : spec)
     added.push_back(o.values == 0 ? cmd.app.add_flag(o.name, o.what)
                                   : cmd.app.add_option(o.name, o.what)->expected(o.values)->take_last()->type_name(o.type));
   cmd.app.add_option(positional, out.positional, positional);
-  if (!cmd.parse(argc, argv)) return false;
+  if (!cmd.parse(argc, argv, help)) return false;
   for (std::size_t k = 0; k < spec.size(); ++k) {
     if (added[k]->count() == 0) continue;
     const auto values = spec[k].values == 0 ? std::vector<std::string>() : added[k]->results();

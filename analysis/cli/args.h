@@ -52,9 +52,10 @@ struct OptionSpec {
   const char *what;
 };
 // The options of spec and the positional arguments (named positional) on cmd's parser,
-// parsed into out; false when --help was printed (Command::parse; usage errors throw).
+// parsed into out; false when --help was asked for, its text in help (Command::parse;
+// usage errors throw).
 bool parse_table(Command &cmd, const std::vector<OptionSpec> &spec, const char *positional, int argc, char **argv,
-                 ParsedArgs &out);
+                 ParsedArgs &out, std::string &help);
 
 }    // namespace cli
 }    // namespace granpen

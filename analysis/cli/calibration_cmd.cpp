@@ -2,7 +2,7 @@
 // phi_0 and k_z against mu (core/calibration.h, core/trace_fit.h, io/bed_info.h).
 #include "atomic_file.h"
 #include "calibration_sweep.h"
-#include "subcommand.h"
+#include "options.h"
 #include "plot_writer.h"
 #include "subcommands.h"
 #include "trace_reader.h"
@@ -16,42 +16,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
-const char *HELP =
-    "usage: granpen calibration SWEEP_DIR [--zmin Z] [--zmax Z] [--out DIR]\n"
-    "Summarises a friction-calibration sweep (the paper's Simulation Calibration: mu sets\n"
-    "the packing fraction phi_0 of the poured bed, and mu and phi_0 set k_z). SWEEP_DIR holds\n"
-    "  beds/NAME.info    written by inputs/in.pour (keys mu, seed, phi_0, z_s, ...)\n"
-    "  traces/*.csv      granpen-trace v1 pushes whose headers carry mu, seed, v0 and\n"
-    "                    bed = NAME (mu and seed default to the bed's)\n"
-    "For each mu (and v0): phi_0 mean and sd over its beds; k_z (slope of F on z over the\n"
-    "window, as granpen fit) and alpha = k_z / (mu rho_g g D^2) mean and sd over its pushes.\n"
-    "sd is the sample standard deviation (n - 1); with one value it is 0.\n"
-    "Exit status: 0 when every bed and trace was used, 1 when one was rejected or could not\n"
-    "be fitted (the tables are still written from the rest), 2 for a usage error.\n";
-
-
 }    // namespace
 
-int granpen::cli::calibration(int argc, char **argv)
+int granpen::cli::run_calibration(const CalibrationOptions &o)
 {
-  Command cmd("calibration", HELP);
-  double zmin = 1.0, zmax = 3.0;
-  std::string sweep, out;
-  cmd.app.add_option("sweep", sweep, "the sweep folder (beds/, traces/)")->required();
-  cmd.number("--zmin", zmin, "window start, cm (default 1.0)")->type_name("Z");
-  cmd.number("--zmax", zmax, "window end, cm (default 3.0). The defaults are the bench scenario's\n"
-                            "usable depths: its bed is about 5.7 cm deep and the push goes to\n"
-                            "4 cm, so the last centimetre feels the floor, and the first grows\n"
-                            "through the impact peak. The paper fits z >= 3 cm in a 13.5 cm bed:\n"
-                            "widen the window for deeper beds.")
-      ->type_name("Z");
-  cmd.app.add_option("--out", out, "where to write (default SWEEP_DIR): calibration.csv, calibration.json,\n"
-                                   "calibration.md, and with gnuplot calibration_phi0.png and\n"
-                                   "calibration_kz.png (from calibration.gp, written beside them)")
-      ->check(file_name())->type_name("DIR");
-  if (!cmd.parse(argc, argv)) return EXIT_OK;
-  if (!(zmin < zmax)) throw UsageError("--zmin must be below --zmax");
-  if (out.empty()) out = sweep;
+  const double zmin = o.zmin, zmax = o.zmax;
+  const std::string &sweep = o.sweep, &out = o.out;
   // nothing is created for a sweep that cannot be read
   std::error_code dir_ec;
   if (!fs::is_directory(sweep, dir_ec)) throw InputError(sweep + ": not a readable folder (a sweep folder holds beds/ and traces/)");

@@ -1,5 +1,5 @@
 // granpen check TRACE...: validate traces the way every granpen tool reads them.
-#include "subcommand.h"
+#include "options.h"
 #include "subcommands.h"
 #include "trace_files.h"
 #include "trace_reader.h"
@@ -8,23 +8,9 @@
 #include <cstdio>
 #include <cstring>
 
-namespace {
-
-const char *HELP =
-    "usage: granpen check TRACE-OR-FOLDER...\n"
-    "A folder stands for every *.csv in it (as for fit, collapse and gap).\n"
-    "Reads each trace as every granpen tool does, rejecting malformed input with the\n"
-    "file and line, and prints: units, v0, D, g, rows, depth range and largest F (cgs).\n"
-    "Exit status 0 when every file is valid, 1 otherwise, 2 for a usage error.\n";
-
-}    // namespace
-
-int granpen::cli::check(int argc, char **argv)
+int granpen::cli::run_check(const CheckOptions &o)
 {
-  Command cmd("check", HELP);
-  std::vector<std::string> inputs;
-  cmd.app.add_option("traces", inputs, "trace files, or folders of them")->required();
-  if (!cmd.parse(argc, argv)) return EXIT_OK;
+  const std::vector<std::string> &inputs = o.traces;
   std::vector<std::string> problems;
   const auto files = expand_trace_paths(inputs, problems);
   for (const auto &m : problems) std::fprintf(stderr, "granpen check: %s\n", m.c_str());

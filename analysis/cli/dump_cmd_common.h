@@ -15,13 +15,6 @@
 namespace granpen {
 namespace cli {
 
-// From the numeric options (ParsedArgs::read_numbers) --rod-type N, --axis X Y, --tip Z;
-// false with a message when N is not a positive integer.
-bool read_rod_options(const ParsedArgs &args, RodOptions &rod, std::string &message);
-
-// --periodic AXES: xy, x, y or none, as periodic x and y; false for anything else.
-bool periodic_axes(const std::string &axes, bool &x, bool &y);
-
 // Progress lines on stderr every 2 s while reading and once at the end
 // ("TOOL: N frames, X MB, Y MB/s").
 void report_progress(DumpReader &reader, const std::string &tool);

@@ -1,6 +1,6 @@
 // granpen fit TRACE...: the paper's observables of each force trace: the depth term
 // k_z and alpha, the transient peak, the fluctuation wavelength (core/trace_fit.h).
-#include "args.h"
+#include "options.h"
 #include "atomic_file.h"
 #include "subcommand.h"
 #include "json_text.h"
@@ -29,21 +29,6 @@ namespace fs = std::filesystem;
 using granpen::FitResult;
 using granpen::TraceFit;
 
-const char *HELP =
-    "usage: granpen fit TRACE... [--zmin Z | --tmin T] [--zmax Z] [--mu MU] [--rho RHO] [--json FILE] [--csv FILE]\n"
-    "Fits each force trace (granpen-trace v1; SI traces are converted to cgs). A folder\n"
-    "argument stands for every *.csv in it. Per trace:\n"
-    "  k_z    slope of F on z over the window (linear least squares), with its standard error\n"
-    "  alpha  k_z / (mu rho_g g D^2), the paper's depth-term prefactor (35 +- 5 at 40 cm/s)\n"
-    "  k_z0, alpha0  the same through the origin, F = k_z0 z (the paper's form F_z = k_z z;\n"
-    "         in --csv and --json): the depth term granpen collapse --alpha takes\n"
-    "  peak   largest F and its depth over 0 < z < 0.7 R (R = D/2), the transient yield peak\n"
-    "  wavelength  dominant wavelength of F about the fit in the window (resampled to the\n"
-    "         median dz, mean removed, Hann window, FFT; the lowest two bins excluded);\n"
-    "         the paper sees fluctuations of wavelength about d_g\n"
-    "Exit status: 0 when every trace was read, 1 when a trace (or an output file) failed,\n"
-    "2 for a usage error. Quantities that cannot be fitted (e.g. a window without data)\n"
-    "are reported as undefined and do not change the exit status.\n";
 
 std::string window_text(double zlo, double zhi)
 {
@@ -84,35 +69,12 @@ void print_result(const FitResult &r)
 
 }    // namespace
 
-int granpen::cli::fit(int argc, char **argv)
+int granpen::cli::run_fit(const FitOptions &o)
 {
-  Command cmd("fit", HELP);
-  double zmin = 3.0, zmax = std::numeric_limits<double>::infinity();
-  double mu_opt = 0.0, rho_opt = 0.0, tmin = -1.0;
-  std::string json_path, csv_path;
-  std::vector<std::string> inputs;
-  auto &app = cmd.app;
-  app.add_option("traces", inputs, "trace files, or folders of them")->required();
-  auto *zmin_opt = cmd.number("--zmin", zmin, "window start, cm (default 3, the paper's z >= 3 cm)")->type_name("Z");
-  auto *tmin_opt = app.add_option("--tmin", tmin, "window start by t~ = (z/v0) sqrt(g/D) instead: z >= T v0 sqrt(D/g)\n"
-                                                  "per trace (the deep regime is t~ > 1)")
-                       ->check(positive_number())->type_name("T");
-  cmd.number("--zmax", zmax, "window end, cm (default: the deepest depth of each trace)")->type_name("Z");
-  auto *mu = app.add_option("--mu", mu_opt, "grain friction for alpha (default: header key mu, else 0.3)")
-                 ->check(positive_number())->type_name("MU");
-  auto *rho = app.add_option("--rho", rho_opt, "grain density for alpha, g/cm^3 (default: header key rho_g,\n"
-                                               "else 3.0); d_g comes from header key d_g, else 0.4 cm;\n"
-                                               "the summary says which values were defaults")
-                  ->check(positive_number())->type_name("RHO");
-  app.add_option("--json", json_path, "write the results as JSON (units cgs; undefined values are 0\n"
-                                      "with a false *_ok flag; unreadable traces under \"errors\")")
-      ->check(file_name())->type_name("FILE");
-  app.add_option("--csv", csv_path, "write one CSV row per fitted trace")->check(file_name())->type_name("FILE");
-  if (!cmd.parse(argc, argv)) return EXIT_OK;
-  const bool have_mu = mu->count() > 0, have_rho = rho->count() > 0;
-  if (zmin_opt->count() > 0 && tmin_opt->count() > 0) throw UsageError("give --zmin or --tmin, not both");
-  if (!(tmin_opt->count() > 0) && !(zmin < zmax)) throw UsageError("--zmin must be below --zmax");
-
+  const FitWindow &w = o.window;
+  const double zmin = w.zmin, zmax = w.zmax, tmin = w.tmin;
+  const std::string &json_path = o.json, &csv_path = o.csv;
+  const std::vector<std::string> &inputs = o.traces;
   std::vector<FitResult> results;
   std::vector<FitFailure> failures;
 
@@ -127,9 +89,6 @@ int granpen::cli::fit(int argc, char **argv)
               tmin > 0 ? ("t~ >= " + json_number("%g", tmin) + (std::isfinite(zmax) ? ", z <= " + json_number("%g", zmax) + " cm" : std::string())).c_str()
                        : window_text(zmin, zmax).c_str(), files.size(),
               files.size() == 1 ? "" : "s");
-  FitWindow w;
-  w.zmin = zmin, w.zmax = zmax, w.tmin = tmin;
-  w.mu = have_mu ? mu_opt : 0.0, w.rho_g = have_rho ? rho_opt : 0.0;
   for (const auto &file : files) {
     try {
       results.push_back(fit_trace_file(file, w));

@@ -4,6 +4,7 @@
 // annulus r = 2-3 cm against t~ (core/flow_fields.h, core/voronoi_volumes.h).
 #include "atomic_file.h"
 #include "dump_cmd_common.h"
+#include "options.h"
 #include "flow_fields.h"
 #include "flow_study.h"
 #include "flow_tables.h"
@@ -30,116 +31,9 @@ using namespace granpen::cli;
 
 constexpr double PI = 3.14159265358979323846;
 
-const char *HELP =
-    "usage: granpen flow DUMP... [--trace TRACE] [--out DIR] [options]\n"
-    "The flow of the grains around the rod from LAMMPS text dumps (dump custom, plain or\n"
-    "gzip; columns id type x y z vx vy vz radius, optional mass, a Voronoi volume and a\n"
-    "per-atom stress), as compute flow/azimuthal defines it (docs/postprocess.md):\n"
-    "  fields   (r, z) bins about the rod axis, z from the rod tip (negative below it),\n"
-    "           pooled over the frames: count, phi (Voronoi), phi_centre, v_r, v_z, T,\n"
-    "           shear rate gammadot, pressure p, inertial number I = gammadot d_g / sqrt(p/rho_g)\n"
-    "  below    v_z and phi against z in the cylinder r < D/3 below the rod face, with the\n"
-    "           exponential fit v_z ~ A exp(z / lambda) (paper: lambda_vz = 0.98 D +- 0.15)\n"
-    "  edge     per frame with the tip in the bed, phi and I of the bins at the rod's bottom\n"
-    "           edge (r = R, z = 0), and the fit phi = phi_0 + b I (paper: phi = 0.57 - 0.35 I)\n"
-    "  strip    v_z against height above the bed surface, 0.5 to 1.5 cm from the shaft\n"
-    "  surface  per frame, v_z of the strip's top grain layer (one dz below the surface)\n"
-    "           against t~, and the t~ where it last turns from up to down (paper: 1)\n"
-    "  annulus  per frame, phi, v_z and T for r = 2 to 3 cm between 0.5 cm below the bed\n"
-    "           surface and the tip, against t~ = (z_tip / v0) sqrt(g / D)\n"
-    "The rod is found in each frame from its atoms: axis = mean x, y, tip = lowest z - radius.\n"
-    "Outputs in DIR (default .): flow.json (every fitted number with its error),\n"
-    "flow_fields.csv (r,z,count,phi,phi_centre,vr,vz,T,gammadot,p,I),\n"
-    "flow_profile_below.csv (z,vz,vz_se,phi), flow_edge_phi_I.csv (I,phi),\n"
-    "flow_strip.csv (z,vz), flow_annulus.csv (t_tilde,z_tip,phi,vz,T),\n"
-    "flow_surface.csv (t_tilde,z_tip,vz,grains).\n"
-    "Units are the dump's (cgs for granpen's decks). Progress goes to stderr.\n"
-    "Exit status: 0 on success, 1 for unreadable input (the message names file and line;\n"
-    "no output is written), 2 for a usage error.\n";
-
-// The command line, read and checked.
-struct FlowOptions {
-  ParsedArgs args;
-  RodOptions rod;
-  std::string out_dir, voronoi, stress, periodic;
-  bool px = true, py = true, rod_cells = false;
-  double strip1 = 0.5, strip2 = 1.5, ann1 = 2.0, ann2 = 3.0, ann_top = 0.5, zlo = -4.0, zhi = 6.0;
-  long long step_lo = std::numeric_limits<long long>::min(), step_hi = std::numeric_limits<long long>::max();
-  bool selected(long long step) const { return step >= step_lo && step <= step_hi; }
-};
 
 const char *const OUTPUTS[] = {"flow.json", "flow_fields.csv", "flow_profile_below.csv", "flow_edge_phi_I.csv",
                                "flow_strip.csv", "flow_annulus.csv", "flow_surface.csv"};
-
-// --steps FIRST[:LAST]
-void read_steps(const std::string &t, FlowOptions &o)
-{
-  const auto colon = t.find(':');
-  const std::string a = t.substr(0, colon), b = colon == std::string::npos ? a : t.substr(colon + 1);
-  if ((!a.empty() && !integer_arg(a, o.step_lo)) || (!b.empty() && !integer_arg(b, o.step_hi)) || (a.empty() && b.empty()))
-    throw UsageError("--steps '" + t + "' is not FIRST[:LAST] (timesteps)");
-  if (o.step_hi < o.step_lo) throw UsageError("--steps '" + t + "': LAST is before FIRST");
-}
-
-// false: --help was printed; usage errors throw UsageError
-bool parse_flow(int argc, char **argv, FlowOptions &o)
-{
-  Command cmd("flow", HELP);
-  static const std::vector<OptionSpec> spec = {
-      {"--trace", 1, "FILE", "the push's force trace: v0, D, g, d_g, rho_g and the bed surface\n(key surface) from its header"},
-      {"--out", 1, "DIR", "output folder (made if missing; default .)"},
-      {"--rod-type", 1, "N", "atom type of the rod (default 2); every other atom is a grain"},
-      {"--axis", 2, "X Y", "fixed rod axis instead of the rod atoms' mean x, y"},
-      {"--tip", 1, "Z", "fixed tip height instead of the rod atoms' lowest point"},
-      {"--D", 1, "D", "rod diameter (default: trace header, else measured from the rod\natoms as fix rod/drive does: 2 max(r_xy + radius))"},
-      {"--dg", 1, "D", "grain diameter for I and the default bins (default: trace header,\nelse the mean grain diameter of the first frame)"},
-      {"--rho", 1, "RHO", "grain density for I and for masses without a mass column\n(default: trace header rho_g, else 3.0)"},
-      {"--v0", 1, "V", "push speed for t~ (default: trace header)"},
-      {"--g", 1, "G", "gravity for t~ (default: trace header)"},
-      {"--zs", 1, "Z", "bed surface height (default: trace header key surface, else\nmeasured in the first frame as compute bed/surface does)"},
-      {"--dr", 1, "DR", "radial bin size (default d_g), rounded to whole bins as the compute does"},
-      {"--dz", 1, "DZ", "vertical bin size (default d_g), rounded likewise"},
-      {"--rmax", 1, "R", "outer radius of the bins (default half the smaller box width)"},
-      {"--zlo", 1, "Z", "bin range about the tip, lower end (default -4)"},
-      {"--zhi", 1, "Z", "bin range about the tip, upper end (default 6)"},
-      {"--voronoi", 1, "WHAT", "auto (default: column c_vor[1] if the dump has it, else voro++),\na column name, voro++ (tessellate each frame, as compute\nflow/azimuthal voronoi voro++ does) or none"},
-      {"--stress", 1, "WHAT", "auto (default: columns c_stress[1..3] if present), a compute ID\n(columns c_ID[1] c_ID[2] c_ID[3] of compute stress/atom), or none"},
-      {"--periodic", 1, "AXES", "periodic box directions among x, y: xy (default), x, y or none"},
-      {"--profile-radius", 1, "R", "cylinder radius of the profile below the rod (default D/3)"},
-      {"--strip", 2, "A B", "strip distances from the shaft surface (default 0.5 1.5)"},
-      {"--annulus", 2, "R1 R2", "annulus radii (default 2 3)"},
-      {"--annulus-top", 1, "H", "the annulus starts H below the bed surface (default 0.5)"},
-      {"--edge", 2, "WR WZ", "edge bins: centres within WR of r = R and WZ of z = 0 (default:\none bin size each)"},
-      {"--steps", 1, "A[:B]", "only the frames with timesteps A to B (either may be left out)"},
-      {"--rod-cells", 0, "", "with voro++: the rod's spheres take part in the tessellation, so\nthat the grains' cells end at the rod surface instead of reaching\ninto the rod (phi next to the rod; the compute does not do this)"}};
-  ParsedArgs &args = o.args;
-  if (!parse_table(cmd, spec, "dumps", argc, argv, args)) return false;
-  std::string msg;
-  if (args.positional.empty()) throw UsageError("no dump given");
-  if (!args.read_numbers({"--trace", "--out", "--voronoi", "--stress", "--periodic", "--steps"}, msg) ||
-      !args.positive({"--D", "--dg", "--rho", "--v0", "--g", "--dr", "--dz", "--rmax", "--profile-radius"}, msg) ||
-      !read_rod_options(args, o.rod, msg))
-    throw UsageError(msg);
-  const auto &num = args.numbers;
-  o.out_dir = args.value("--out", ".");
-  if (o.out_dir.empty()) throw UsageError("--out needs a folder");
-  o.voronoi = args.value("--voronoi", "auto");
-  o.rod_cells = args.has("--rod-cells");
-  o.stress = args.value("--stress", "auto");
-  o.periodic = args.value("--periodic", "xy");
-  if (!periodic_axes(o.periodic, o.px, o.py)) throw UsageError("--periodic must be xy, x, y or none");
-  if (num.count("--strip")) o.strip1 = num.at("--strip")[0], o.strip2 = num.at("--strip")[1];
-  if (num.count("--annulus")) o.ann1 = num.at("--annulus")[0], o.ann2 = num.at("--annulus")[1];
-  if (!(o.strip1 >= 0 && o.strip2 > o.strip1)) throw UsageError("--strip needs 0 <= A < B");
-  if (!(o.ann1 >= 0 && o.ann2 > o.ann1)) throw UsageError("--annulus needs 0 <= R1 < R2");
-  args.number("--annulus-top", o.ann_top);
-  args.number("--zlo", o.zlo);
-  args.number("--zhi", o.zhi);
-  if (!(o.zhi > o.zlo)) throw UsageError("--zhi must exceed --zlo");
-  if (!(o.zlo < 0.0)) throw UsageError("--zlo must be below 0 (the profile below the rod needs bins below the tip)");
-  if (args.has("--steps")) read_steps(args.value("--steps", ""), o);
-  return true;
-}
 
 // The columns to read, from the first frame: Voronoi volumes (or voro++) and stresses.
 struct Columns {
@@ -316,10 +210,8 @@ void print_summary(const FlowStudyParams &p, const FlowSummary &s, const std::ve
 
 }    // namespace
 
-int granpen::cli::flow(int argc, char **argv)
+int granpen::cli::run_flow(const FlowOptions &o)
 {
-  FlowOptions o;
-  if (!parse_flow(argc, argv, o)) return EXIT_OK;
   refuse_outputs_over_inputs(o.out_dir, std::vector<const char *>(std::begin(OUTPUTS), std::end(OUTPUTS)), o.args);
   FlowProvenance how;
   how.dumps = o.args.positional;

@@ -1,6 +1,7 @@
 // granpen-cli: the post-processor's command-line front end (./granpen SUBCOMMAND).
-// A thin layer: every subcommand parses its arguments (cli/command.h) and calls the analysis
-// library; run_subcommand is the one handler that turns what they throw into an exit status.
+// A thin layer: every subcommand parses its arguments (cli/options.h) and runs, calling the
+// analysis library (cli/subcommands.h); run_subcommand is the one handler that turns what
+// they throw into an exit status.
 #include "subcommand.h"
 #include "subcommands.h"
 

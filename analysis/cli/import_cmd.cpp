@@ -9,7 +9,7 @@
 #include "instrument_import.h"
 #include "instrument_reader.h"
 #include "staged_file.h"
-#include "subcommand.h"
+#include "options.h"
 #include "subcommands.h"
 #include "text_util.h"
 #include "trace_files.h"
@@ -27,22 +27,6 @@
 
 namespace {
 
-const char *HELP =
-    "usage: granpen import FILE-OR-FOLDER... --mapping MAP --out DIR --D D --g G\n"
-    "                      [--units cgs|si] [--v0 V] [--window W] [--run N] [--d_g DG]\n"
-    "                      [--rho_g RHO] [--mu MU] [--dry-run]\n"
-    "Reads instrument files (delimited text or key=value rows, as the mapping MAP says:\n"
-    "columns, units, signs, tare, contact threshold or surface, speed checks; see\n"
-    "docs/measurements.md) and writes one granpen-trace v1 file per input, DIR/NAME.csv:\n"
-    "  t = time since the file's first row, z = depth below the surface (negative before\n"
-    "  contact), F = force with the offset of the first tare_rows rows removed.\n"
-    "The end of the push is cut by one rule: rows after the rod's furthest advance\n"
-    "(standstill, retraction), and rows after the last block of speed_rows rows moving at\n"
-    "the mean speed within speed_tolerance (the deceleration and its force spike); without\n"
-    "a position, rows after the last at contact force. Each file's cut is reported.\n"
-    "A folder stands for every file in it. Runs are numbered from --run in the order given.\n"
-    "Nothing is written unless every file imports; --dry-run prints what would be written.\n"
-    "Exit status 0, 1 for bad input (named with file and line), 2 for usage.\n";
 
 std::string num(const char *f, double v) { return granpen::printf_number(f, v); }
 
@@ -225,35 +209,15 @@ void warn_speed(const Imported &r, const granpen::ImportRules &rules)
 
 }    // namespace
 
-int granpen::cli::import(int argc, char **argv)
+int granpen::cli::run_import(const ImportOptions &o)
 {
-  Command cmd("import", HELP);
-  std::vector<std::string> inputs;
-  std::string mapping_path, out_dir, units = "cgs";
+  const std::vector<std::string> &inputs = o.inputs;
+  const std::string &mapping_path = o.mapping, &out_dir = o.out_dir;
+  const double window = o.window;
+  const bool dry = o.dry_run;
   Header hd;
-  double window = 0.0;
-  int run0 = 1;
-  bool dry = false;
-  auto &app = cmd.app;
-  app.add_option("files", inputs, "instrument files, or folders of them")->required();
-  app.add_option("--mapping", mapping_path, "the mapping file (columns, units, signs, rules)")->required()->type_name("MAP");
-  app.add_option("--out", out_dir, "the folder the traces go to (made when missing)")->required()->type_name("DIR");
-  app.add_option("--units", units, "units of the traces and of --v0, --D, --g (default cgs)")
-      ->type_name("UNITS")->check(CLI::IsMember({"cgs", "si"}));
-  app.add_option("--v0", hd.v0, "nominal push speed, > 0 (default: the mapping's v0, else the measured mean)")
-      ->check(positive_number())->type_name("V");
-  app.add_option("--D", hd.D, "rod diameter, > 0")->check(positive_number())->required()->type_name("D");
-  app.add_option("--g", hd.g, "gravity, > 0")->check(positive_number())->required()->type_name("G");
-  app.add_option("--window", window, "average into windows of W seconds (default: the mapping's window, else none)")
-      ->check(positive_number())->type_name("W");
-  app.add_option("--run", run0, "the first run number (default 1)")->check(CLI::PositiveNumber)->type_name("N");
-  app.add_option("--d_g", hd.d_g, "optional header key d_g")->check(positive_number())->type_name("DG");
-  app.add_option("--rho_g", hd.rho_g, "optional header key rho_g")->check(positive_number())->type_name("RHO");
-  app.add_option("--mu", hd.mu, "optional header key mu")->check(positive_number())->type_name("MU");
-  app.add_flag("--dry-run", dry, "print what would be written; write nothing");
-  if (!cmd.parse(argc, argv)) return EXIT_OK;
-  hd.si = units == "si";
-
+  hd.si = o.si, hd.D = o.D, hd.g = o.g, hd.v0 = o.v0;
+  hd.d_g = o.d_g, hd.rho_g = o.rho_g, hd.mu = o.mu;
   ImportMapping m = read_import_mapping(mapping_path, hd.si);
   if (window > 0.0) m.rules.window = window;
   const auto files = input_files(inputs);
@@ -273,7 +237,7 @@ int granpen::cli::import(int argc, char **argv)
   const bool made_dir = !dry && !std::filesystem::exists(out_dir, ec);
   if (!dry) make_output_dir(out_dir);
   std::vector<Imported> done;
-  int run = run0;
+  int run = o.first_run;
   try {
     for (const auto &p : plan) done.push_back(import_file(p.first, p.second, m, hd, run++, dry));
   } catch (...) {

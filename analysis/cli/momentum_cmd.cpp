@@ -3,6 +3,7 @@
 // M_slow and M(v_z > v0/320) against t~ and depth, and the drag F of the trace against
 // mu g M(v_z > v0/320) (core/momentum_classes.h).
 #include "dump_cmd_common.h"
+#include "options.h"
 #include "atomic_file.h"
 #include "momentum_study.h"
 #include "momentum_tables.h"
@@ -21,79 +22,8 @@ namespace {
 using namespace granpen;
 using namespace granpen::cli;
 
-const char *HELP =
-    "usage: granpen momentum DUMP... --trace TRACE [--out DIR] [options]\n"
-    "Sorts the grains outside the rod (r > R = D/2) of each frame of LAMMPS text dumps\n"
-    "(dump custom, plain or gzip; columns id type x y z vx vy vz radius, optional mass) by\n"
-    "their upward velocity v_z relative to v0, as compute momentum/vbin does:\n"
-    "  fast          v_z >= v0/10\n"
-    "  intermediate  v0/80 <= v_z < v0/10\n"
-    "  slow          v0/320 < v_z < v0/80\n"
-    "  noise         v0/640 < v_z <= v0/320\n"
-    "and sums per class the count and the upward momentum sum m v_z; M_slow is the mass of\n"
-    "the slow class, M_move that of every grain with v_z > v0/320. Against the drag F of the\n"
-    "trace at the frame's time: F = k mu g M_move fitted through the origin (the paper's 1:1\n"
-    "line is k = 1) and the mean ratio F / (mu g M_move), over the frames with the rod in the\n"
-    "bed (z_tip > 0) and M_move > 0.\n"
-    "The rod is found in each frame from its atoms (axis = mean x, y; tip = lowest z - radius);\n"
-    "its depth is z_tip = z_s - tip with z_s the trace's surface key, and\n"
-    "t~ = (z_tip / v0) sqrt(g / D). F is the trace's at the frame's depth (the first time the\n"
-    "tip reached it; linear interpolation), or with --push-step at t = (timestep - N) dt.\n"
-    "Outputs in DIR (default .): momentum.json (per frame and the fit, with errors),\n"
-    "momentum_classes.csv (t_tilde,z_tip,class,count,p_up), momentum_drag.csv\n"
-    "(t_tilde,z_tip,F,mu_g_M).\n"
-    "Units are the dump's and the trace's (cgs for granpen's decks). Progress goes to stderr.\n"
-    "Exit status: 0 on success, 1 for unreadable input (the message names file and line;\n"
-    "no output is written), 2 for a usage error.\n";
-
-// The command line, read and checked.
-struct MomentumOptions {
-  ParsedArgs args;
-  RodOptions rod;
-  std::string out_dir, periodic;
-  bool px = true, py = true;
-};
 
 const char *const OUTPUTS[] = {"momentum.json", "momentum_classes.csv", "momentum_drag.csv"};
-
-// false: --help was printed; usage errors throw UsageError
-bool parse_momentum(int argc, char **argv, MomentumOptions &o)
-{
-  Command cmd("momentum", HELP);
-  static const std::vector<OptionSpec> spec = {
-      {"--trace", 1, "FILE", "force trace of the push (required): v0, D, g, mu, rho_g, surface, dt"},
-      {"--out", 1, "DIR", "output folder (made if missing; default .)"},
-      {"--thresholds", 4, "F1 F2 F3 F4", "class bounds as fractions of v0 (default 1/10 1/80 1/320\n1/640), > 0 and decreasing; M_move then counts v_z > F3 v0"},
-      {"--mthreshold", 1, "F", "M_move counts v_z > F v0 instead"},
-      {"--mu", 1, "MU", "friction for mu g M (default: trace header mu, else 0.3)"},
-      {"--rod-type", 1, "N", "atom type of the rod (default 2); every other atom is a grain"},
-      {"--axis", 2, "X Y", "fixed rod axis (dumps without rod atoms)"},
-      {"--tip", 1, "Z", "fixed tip height (dumps without rod atoms)"},
-      {"--D", 1, "D", "rod diameter (default: the trace's)"},
-      {"--rho", 1, "RHO", "grain density for masses without a mass column (default: trace\nheader rho_g, else 3.0)"},
-      {"--zs", 1, "Z", "bed surface (default: the trace's surface key, else measured in\nthe first frame as compute bed/surface does)"},
-      {"--push-step", 1, "N", "timestep at which the push began: match the trace by time"},
-      {"--dt", 1, "DT", "timestep size for --push-step (default: the trace's dt key)"},
-      {"--periodic", 1, "AXES", "periodic box directions among x, y: xy (default), x, y or none"}};
-  ParsedArgs &args = o.args;
-  if (!parse_table(cmd, spec, "dumps", argc, argv, args)) return false;
-  std::string msg;
-  if (args.positional.empty()) throw UsageError("no dump given");
-  if (!args.has("--trace")) throw UsageError("--trace TRACE is required (v0, D, g and the drag come from it)");
-  if (!args.read_numbers({"--trace", "--out", "--periodic", "--push-step"}, msg) ||
-      !args.positive({"--D", "--rho", "--dt", "--mthreshold"}, msg) || !read_rod_options(args, o.rod, msg))
-    throw UsageError(msg);
-  double mu = 0.0;
-  if (args.number("--mu", mu) && !(mu >= 0.0)) throw UsageError("--mu must be >= 0");
-  long long push_step = 0;
-  if (args.has("--push-step") && !integer_arg(args.value("--push-step", ""), push_step))
-    throw UsageError("--push-step '" + args.value("--push-step", "") + "' is not an integer");
-  o.out_dir = args.value("--out", ".");
-  if (o.out_dir.empty()) throw UsageError("--out needs a folder");
-  o.periodic = args.value("--periodic", "xy");
-  if (!periodic_axes(o.periodic, o.px, o.py)) throw UsageError("--periodic must be xy, x, y or none");
-  return true;
-}
 
 // The classes: the paper's, or --thresholds; --mthreshold moves M_move's bound
 MomentumClasses classes_of(const ParsedArgs &args, double v0, std::string &source)
@@ -187,10 +117,8 @@ void print_summary(const MomentumStudyParams &p, const std::vector<MomentumFrame
 
 }    // namespace
 
-int granpen::cli::momentum(int argc, char **argv)
+int granpen::cli::run_momentum(const MomentumOptions &o)
 {
-  MomentumOptions o;
-  if (!parse_momentum(argc, argv, o)) return EXIT_OK;
   refuse_outputs_over_inputs(o.out_dir, std::vector<const char *>(std::begin(OUTPUTS), std::end(OUTPUTS)), o.args);
   const PushTrace th = load_push_trace(o.args.value("--trace", ""));
   MomentumProvenance how;

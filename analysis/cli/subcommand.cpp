@@ -1,4 +1,4 @@
-// granpen subcommands: the option parser and the top-level handler (command.h).
+// granpen subcommands: the option parser and the top-level handler (subcommand.h).
 #include "subcommand.h"
 
 #include "args.h"
@@ -71,6 +71,17 @@ CLI::Validator non_negative_number()
       "");
 }
 
+CLI::Validator whole_number(long long lo, long long hi)
+{
+  return CLI::Validator(
+      [lo, hi](std::string &s) -> std::string {
+        long long v;
+        if (integer_arg(s, v) && v >= lo && v <= hi) return std::string();
+        return "must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) + ", got '" + s + "'";
+      },
+      "");
+}
+
 CLI::Validator file_name()
 {
   return CLI::Validator([](std::string &s) { return s.empty() ? std::string("needs a name") : std::string(); }, "");
@@ -90,18 +101,15 @@ CLI::Option *Command::number(const std::string &flag, double &v, const std::stri
   return app.add_option(flag, v, what)->check(finite_number(accept_underflow));
 }
 
-bool Command::parse(int argc, char **argv)
+bool Command::parse(int argc, char **argv, std::string &help)
 {
-  if (argc < 1) {
-    std::fputs(app.help().c_str(), stderr);
-    throw UsageError("");
-  }
+  if (argc < 1) throw UsageError("", app.help());
   std::vector<std::string> words(argv, argv + argc);
   std::vector<std::string> reversed(words.rbegin(), words.rend());
   try {
     app.parse(reversed);
   } catch (const CLI::CallForHelp &) {
-    std::fputs(app.help().c_str(), stdout);
+    help = app.help();
     return false;
   } catch (const CLI::ValidationError &e) {
     refuse_unknown_words();
@@ -146,6 +154,8 @@ int run_subcommand(const char *name, int (*fn)(int, char **), int argc, char **a
     if (*e.what()) {
       report(name, e.what());
       std::fprintf(stderr, "(granpen %s --help for usage)\n", name);
+    } else {
+      std::fputs(e.usage.c_str(), stderr);
     }
     return EXIT_USAGE;
   } catch (const CLI::Error &e) {

@@ -1,7 +1,8 @@
 // granpen subcommands: the one option parser (CLI11) and the one top-level error handler.
-// A subcommand builds a Command with its prose, adds its options (typed, with ranges),
-// parses, calls the library and writes; any exception it lets go is turned into
-// "granpen NAME: error: ..." and an exit status by run_subcommand.
+// A subcommand is a parse function (options.h: words -> a typed options struct, no I/O,
+// usage errors thrown as UsageError) and a run function (subcommands.h: calls the library
+// and writes); any exception either lets go is turned into "granpen NAME: error: ..." and
+// an exit status by run_subcommand.
 #ifndef GRANPEN_CLI_SUBCOMMAND_H
 #define GRANPEN_CLI_SUBCOMMAND_H
 
@@ -18,10 +19,12 @@ namespace cli {
 enum Exit { EXIT_OK = 0, EXIT_FAILED = 1, EXIT_USAGE = 2 };
 
 // A usage error (an option's value against its meaning, options that contradict each
-// other): exit 2. An empty message: already reported.
+// other): exit 2. An empty message with a usage text: no words at all, the usage (the
+// help) is printed on stderr instead of a message.
 class UsageError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit UsageError(const std::string &what, const std::string &usage = "") : std::runtime_error(what), usage(usage) {}
+  std::string usage;
 };
 
 // A value check for CLI11: a whole finite number (args.h's number_arg), else
@@ -30,6 +33,9 @@ CLI::Validator finite_number(bool accept_underflow = false);
 // a whole number > 0 / >= 0
 CLI::Validator positive_number();
 CLI::Validator non_negative_number();
+// a whole number from lo to hi (a count, a run number), else "must be a whole number
+// from LO to HI, got 'V'"
+CLI::Validator whole_number(long long lo, long long hi);
 // a file or folder name: not empty
 CLI::Validator file_name();
 
@@ -42,10 +48,10 @@ class Command {
 
   // A number option bound to v: checked as a finite number (with lo/hi bounds when given).
   CLI::Option *number(const std::string &flag, double &v, const std::string &what, bool accept_underflow = false);
-  // argv[0] is the first word after the subcommand. false: --help was printed on stdout
-  // (exit 0). No words at all: the help on stderr and UsageError(""). A parse error
-  // (unknown option, missing or bad value) throws UsageError naming the option.
-  bool parse(int argc, char **argv);
+  // argv[0] is the first word after the subcommand. false: --help was asked for, its text
+  // in help. No words at all: UsageError("", the help). A parse error (unknown option,
+  // missing or bad value) throws UsageError naming the option. Prints nothing.
+  bool parse(int argc, char **argv, std::string &help);
 
   const std::string &name() const { return name_; }
 

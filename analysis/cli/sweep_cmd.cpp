@@ -1,6 +1,6 @@
 // granpen sweep SPEC [options]: run a sweep of pours and pushes (see sweep/sweep_spec.h).
 #include "atomic_file.h"
-#include "subcommand.h"
+#include "options.h"
 #include "subcommands.h"
 #include "sweep_runner.h"
 #include "sweep_spec.h"
@@ -22,49 +22,14 @@ bool file_exists(const std::string &p) { return access(p.c_str(), R_OK) == 0; }
 bool preset_exists(const std::string &name) { return file_exists(g_inputs + "/presets/" + name + ".lmp"); }
 bool observe_exists(const std::string &name) { return file_exists(g_inputs + "/observe/" + name + ".lmp"); }
 
-const char *HELP =
-    "usage: granpen sweep SPEC [--jobs N] [--out DIR] [--checkpoint STEPS] [--mpirun PROG --ranks N]\n"
-    "                          [--only K] [--slurm FILE] [--plan] [--lmp PATH] [--inputs DIR]\n"
-    "Runs the pours and pushes a sweep file asks for: each distinct bed (preset, mu, seed) is\n"
-    "poured once, every push (v0, g, D) branches from its saved bed, up to N runs at once\n"
-    "(default: the number of cores). Output in DIR/NAME (default runs/NAME): beds/, traces/\n"
-    "(granpen-trace v1), logs/ and manifest.json (every parameter, seed, versions, wall time,\n"
-    "phi_0, z_s, status). Rerunning skips finished runs and resumes interrupted pushes from\n"
-    "their checkpoints (every STEPS steps, default 5000). --slurm writes a job-array script\n"
-    "for a cluster instead of running; --only K runs planned run K alone (what each array task\n"
-    "does); --plan lists the planned runs. Sweep file format: analysis/sweep/sweep_spec.h,\n"
-    "example: inputs/sweeps/v0_bench.sweep. lmp_granpen and inputs/ come from the environment\n"
-    "that ./granpen sets (GRANPEN_LMP, GRANPEN_INPUTS) unless given.\n";
 
 }    // namespace
 
-int granpen::cli::sweep(int argc, char **argv)
+int granpen::cli::run_sweep_command(const SweepOptions &o)
 {
-  Command cmd("sweep", HELP);
-  RunnerOptions opt;
-  const char *env;
-  opt.lmp = (env = std::getenv("GRANPEN_LMP")) ? env : "lmp_granpen";
-  opt.inputs = (env = std::getenv("GRANPEN_INPUTS")) ? env : "inputs";
-  opt.out_root = (env = std::getenv("GRANPEN_RUNS")) ? env : "runs";
-  opt.jobs = (int) std::max(1u, std::thread::hardware_concurrency());
-  std::string spec_path, slurm;
-  bool plan_only = false;
-  auto &app = cmd.app;
-  app.add_option("spec", spec_path, "the sweep file")->required();
-  app.add_option("--jobs", opt.jobs, "runs at once, 1 or more (default: the number of cores)")->check(CLI::Range(1, 1000000).description(""))->type_name("N");
-  app.add_option("--out", opt.out_root, "output root: DIR/NAME (default runs)")->check(file_name())->type_name("DIR");
-  app.add_option("--checkpoint", opt.checkpoint, "push checkpoint every STEPS steps (default 5000)")->check(CLI::Range(1, 1000000).description(""))
-      ->type_name("STEPS");
-  app.add_option("--mpirun", opt.mpirun, "run each simulation through this MPI launcher")->type_name("PROG");
-  app.add_option("--ranks", opt.ranks, "MPI ranks per run (with --mpirun)")->check(CLI::Range(1, 1000000).description(""))->type_name("N");
-  app.add_option("--only", opt.only_index, "run planned run K alone (what each SLURM array task does)")
-      ->check(CLI::Range(0, 1000000).description(""))->type_name("K");
-  app.add_option("--slurm", slurm, "write a SLURM job-array script instead of running")->check(file_name())
-      ->type_name("FILE");
-  app.add_option("--lmp", opt.lmp, "lmp_granpen (default $GRANPEN_LMP)")->type_name("PATH");
-  app.add_option("--inputs", opt.inputs, "the decks' folder (default $GRANPEN_INPUTS)")->type_name("DIR");
-  app.add_flag("--plan", plan_only, "list the planned runs");
-  if (!cmd.parse(argc, argv)) return EXIT_OK;
+  RunnerOptions opt = o.runner;    // --slurm makes its paths absolute
+  const std::string &spec_path = o.spec, &slurm = o.slurm;
+  const bool plan_only = o.plan_only;
   if (!slurm.empty()) refuse_overwriting_inputs(slurm, "--slurm", {spec_path});
   g_inputs = opt.inputs;
   try {
@@ -94,8 +59,8 @@ int granpen::cli::sweep(int argc, char **argv)
       return 0;
     }
     return run_sweep(spec, opt);
-  } catch (InputError &e) {
+  } catch (InputError &e) {    // bad input (the sweep file, lmp_granpen, inputs/): 1, as every subcommand
     std::fprintf(stderr, "granpen sweep: %s\n", e.what());
-    return 2;
+    return EXIT_FAILED;
   }
 }

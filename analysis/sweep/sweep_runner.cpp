@@ -1,7 +1,8 @@
 // granpen sweep: the runner (processes, progress, resume, manifest).
 #include "sweep_runner.h"
 
-#include "json_text.h"
+#include "atomic_file.h"
+#include "json_writer.h"
 #include "errors.h"
 
 #include <algorithm>
@@ -253,8 +254,8 @@ struct Sweep {
   std::string dir;
   std::string label;                       // "NAME/" before run ids when a pool has several sweeps
   std::vector<Job> jobs;
-  std::vector<std::string> other_runs;     // manifest lines of other sweep files of this name
-  std::map<std::string, std::string> held_lines;    // manifest lines of runs another process holds
+  std::vector<Json> other_runs;            // manifest records of other sweep files of this name
+  std::map<std::string, Json> held_runs;   // manifest records of runs another process holds
   std::string lammps_version;
   bool reported = false;                   // its closing line printed
 };
@@ -416,22 +417,43 @@ void inspect_job(Job &j, bool own)
   }
 }
 
+// The runs of DIR/manifest.json: its "runs", or, when the file is not valid JSON (written
+// by hand, or by a granpen older than the atomic write), every line that is one run's
+// record on its own (the writer puts each run on one line); a warning names the file.
+std::vector<Json> manifest_runs(const std::string &path)
+{
+  std::vector<Json> runs;
+  const std::string text = slurp(path);
+  try {
+    const Json m = Json::parse(text);
+    if (m.is_object() && m.contains("runs") && m["runs"].is_array())
+      for (const auto &r : m["runs"])
+        if (r.is_object() && r.contains("id") && r["id"].is_string()) runs.push_back(r);
+    return runs;
+  } catch (const Json::exception &e) {
+    std::fprintf(stderr, "granpen sweep: warning: %s is not valid JSON (%s); keeping the runs of its lines that are\n",
+                 path.c_str(), e.what());
+  }
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) {
+    while (!line.empty() && (line.back() == ',' || line.back() == ' ')) line.pop_back();
+    const Json r = Json::parse(line, nullptr, false);
+    if (r.is_object() && r.contains("id") && r["id"].is_string()) runs.push_back(r);
+  }
+  return runs;
+}
+
 // Runs of other sweep files with the same name (sharing its beds, e.g. a v0 and a g sweep)
-// stay in the manifest: each run is one line, keyed by its id.
+// stay in the manifest, keyed by their ids; so do the records of runs another process holds.
 void keep_other_runs(Sweep &sw)
 {
-  const std::string &dir = sw.dir;
-  if (!exists(dir + "/manifest.json")) return;
-  std::istringstream in(slurp(dir + "/manifest.json"));
-  const std::string key = "    {\"id\": ";
-  for (std::string line; std::getline(in, line);) {
-    if (line.compare(0, key.size(), key) != 0) continue;
-    if (!line.empty() && line.back() == ',') line.pop_back();
-    const auto planned = std::find_if(sw.jobs.begin(), sw.jobs.end(), [&](const Job &j) {
-      return line.compare(key.size(), json_string(j.run.id).size() + 1, json_string(j.run.id) + ",") == 0;
-    });
-    if (planned == sw.jobs.end()) sw.other_runs.push_back(line);
-    else if (planned->action == "refused") sw.held_lines[planned->run.id] = line;
+  const std::string path = sw.dir + "/manifest.json";
+  if (!exists(path)) return;
+  for (auto &run : manifest_runs(path)) {
+    const std::string id = run["id"].get<std::string>();
+    const auto planned = std::find_if(sw.jobs.begin(), sw.jobs.end(), [&](const Job &j) { return j.run.id == id; });
+    if (planned == sw.jobs.end()) sw.other_runs.push_back(std::move(run));
+    else if (planned->action == "refused") sw.held_runs[id] = std::move(run);
   }
 }
 
@@ -477,72 +499,76 @@ Sweep setup_sweep(const SweepTask &task, const RunnerOptions &opt)
   return sw;
 }
 
-// one run's line of the manifest (without its comma)
-std::string manifest_line(const Sweep &sw, const Job &j)
+// A number of a .info file as JSON: as written when it is a JSON number, else its value.
+Json info_number(const std::string &text)
 {
-  char *buf = nullptr;
-  size_t size = 0;
-  std::FILE *m = open_memstream(&buf, &size);
-  if (!m) throw std::bad_alloc();
+  const Json v = Json::parse(text, nullptr, false);
+  return v.is_number() ? v : Json(std::strtod(text.c_str(), nullptr));
+}
+
+// one run's record of the manifest
+Json manifest_run(const Sweep &sw, const Job &j)
+{
   const auto &r = j.run;
-  std::fprintf(m, "    {\"id\": %s, \"kind\": \"%s\", \"status\": %s, \"action\": %s, \"preset\": %s, "
-                  "\"mu\": %s, \"seed\": %s",
-               json_string(r.id).c_str(), r.kind == PlannedRun::POUR ? "pour" : "push",
-               json_string(j.status).c_str(), json_string(j.action).c_str(), json_string(r.preset).c_str(),
-               json_string(r.mu).c_str(), json_string(r.seed).c_str());
+  Json m;
+  m["id"] = r.id;
+  m["kind"] = r.kind == PlannedRun::POUR ? "pour" : "push";
+  m["status"] = j.status;
+  m["action"] = j.action;
+  m["preset"] = r.preset;
+  m["mu"] = r.mu;
+  m["seed"] = r.seed;
   if (r.kind == PlannedRun::POUR) {
     auto info = exists(j.info) ? read_info(j.info) : std::map<std::string, std::string>{};
     for (const char *k : {"z_s", "phi_0", "grains", "wall_seconds"})
-      if (info.count(k) && positive_number(info[k])) std::fprintf(m, ", \"%s\": %s", k, info[k].c_str());
-    std::fprintf(m, ", \"bed\": %s", json_string(sw.dir + "/beds/" + r.id + ".restart").c_str());
+      if (info.count(k) && positive_number(info[k])) m[k] = info_number(info[k]);
+    m["bed"] = sw.dir + "/beds/" + r.id + ".restart";
   } else {
-    std::fprintf(m, ", \"bed\": %s, \"v0\": %s, \"g\": %s, \"D\": %s, \"depth\": %s, \"mu_push\": %s, "
-                    "\"trace\": %s",
-                 json_string(r.bed).c_str(), json_string(r.v0).c_str(), json_string(r.g).c_str(),
-                 json_string(r.D).c_str(), json_string(r.depth).c_str(), json_string(r.mu_push).c_str(),
-                 json_string(j.trace).c_str());
+    m["bed"] = r.bed;
+    m["v0"] = r.v0;
+    m["g"] = r.g;
+    m["D"] = r.D;
+    m["depth"] = r.depth;
+    m["mu_push"] = r.mu_push;
+    m["trace"] = j.trace;
   }
-  std::fprintf(m, ", \"log\": %s, \"wall_seconds_run\": %.3f, \"exit_code\": %d, \"error\": %s}",
-               json_string(j.log).c_str(), j.wall, j.exit_code, json_string(j.error).c_str());
-  std::fclose(m);
-  std::string line(buf, size);
-  std::free(buf);
-  return line;
+  m["log"] = j.log;
+  m["wall_seconds_run"] = json_rounded("%.3f", j.wall);
+  m["exit_code"] = j.exit_code;
+  m["error"] = j.error;
+  return m;
 }
 
-// Writes DIR/manifest.json through a temporary file (per process: SLURM tasks of one sweep
-// write it too) renamed into place; every step checked. Returns "" or what failed.
-std::string write_manifest_file(const Sweep &sw)
+// DIR/manifest.json (docs/sweeps.md), every run one line; a run another process holds
+// keeps the record that process wrote.
+Json manifest_json(const Sweep &sw)
 {
-  const std::string path = sw.dir + "/manifest.json", tmp = path + ".tmp" + std::to_string(getpid());
-  std::FILE *f = std::fopen(tmp.c_str(), "w");
-  if (!f) return "cannot write " + tmp + ": " + std::strerror(errno);
-  const auto &jobs = sw.jobs;
-  std::fprintf(f, "{\n  \"sweep\": %s,\n  \"spec\": %s,\n  \"granpen\": %s,\n  \"lammps\": %s,\n  \"runs\": [\n",
-               json_string(sw.spec.name).c_str(), json_string(sw.spec.path).c_str(),
-               json_string(GRANPEN_VERSION).c_str(), json_string(sw.lammps_version).c_str());
-  // every run one line; a run another process holds keeps the line that process wrote
-  std::vector<std::string> lines = sw.other_runs;
-  for (const auto &j : jobs) {
+  Json m;
+  m["sweep"] = sw.spec.name;
+  m["spec"] = sw.spec.path;
+  m["granpen"] = GRANPEN_VERSION;
+  m["lammps"] = sw.lammps_version;
+  m["runs"] = Json::array();
+  for (const auto &r : sw.other_runs) m["runs"].push_back(r);
+  for (const auto &j : sw.jobs) {
     if (j.action == "refused") {
-      const auto held = sw.held_lines.find(j.run.id);
-      if (held != sw.held_lines.end()) lines.push_back(held->second);
+      const auto held = sw.held_runs.find(j.run.id);
+      if (held != sw.held_runs.end()) m["runs"].push_back(held->second);
       continue;
     }
-    lines.push_back(manifest_line(sw, j));
+    m["runs"].push_back(manifest_run(sw, j));
   }
-  for (size_t i = 0; i < lines.size(); ++i)
-    std::fprintf(f, "%s%s\n", lines[i].c_str(), i + 1 < lines.size() ? "," : "");
-  std::fprintf(f, "  ]\n}\n");
-  const bool written = !std::ferror(f) && std::fflush(f) == 0;
-  const int err = errno;
-  if (std::fclose(f) != 0 || !written) {
-    std::remove(tmp.c_str());
-    return "cannot write " + tmp + ": " + std::strerror(written ? errno : err);
-  }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    return "cannot rename " + tmp + " to " + path + ": " + std::strerror(errno);
+  return m;
+}
+
+// Writes DIR/manifest.json through io/atomic_file (a temporary of this process's own:
+// SLURM tasks of one sweep write it too; every step checked). Returns "" or what failed.
+std::string write_manifest_file(const Sweep &sw)
+{
+  try {
+    write_json(sw.dir + "/manifest.json", manifest_json(sw), 1);
+  } catch (const OutputError &e) {
+    return e.what();
   }
   return "";
 }
@@ -723,13 +749,13 @@ void Pool::reap(pid_t pid, int wstatus)
       if (ok && !j.pour_checkpoints.empty()) remove_pour_checkpoints(j.pour_checkpoints);
       std::string e;
       if (ok && j.run.kind == PlannedRun::PUSH) {
-        std::ofstream done(j.done);
+        std::ostringstream done;
         done << "wall_seconds = " << j.wall << "\n";
-        done.close();
-        if (!done) {
+        try {
+          write_file_atomic(j.done, done.str());
+        } catch (const OutputError &err) {
           ok = false;
-          e = "cannot write " + j.done + ": " + std::strerror(errno);
-          std::remove(j.done.c_str());
+          e = err.what();
         }
       }
       if (ok) {
@@ -885,8 +911,7 @@ void write_slurm_script(const SweepSpec &spec, const RunnerOptions &opt, const s
   for (const auto &r : plan)
     if (r.kind == PlannedRun::POUR) ++npour;
   const int nrun = (int) plan.size();
-  std::ofstream f(file);
-  if (!f) throw InputError("cannot write " + file);
+  std::ostringstream f;
   auto q = [](const std::string &s) { return "'" + s + "'"; };
   const std::string run_one = q(cli) + " sweep " + q(spec.path) + " --lmp " + q(opt.lmp) + " --inputs " +
                               q(opt.inputs) + " --out " + q(opt.out_root) + " --mpirun srun --ranks " +
@@ -904,6 +929,7 @@ void write_slurm_script(const SweepSpec &spec, const RunnerOptions &opt, const s
     << "sbatch $SBATCH_OPTS --job-name=" << spec.name << "-push --ntasks=" << opt.ranks
     << " --dependency=afterok:$pours --array=" << npour << "-" << nrun - 1 << " --wrap=\"" << run_one
     << " \\$SLURM_ARRAY_TASK_ID\"\n";
+  write_file_atomic(file, f.str());    // OutputError naming the file
 }
 
 }    // namespace granpen

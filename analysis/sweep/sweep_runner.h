@@ -44,7 +44,8 @@ struct SweepTask {
 int run_sweeps(const std::vector<SweepTask> &tasks, const RunnerOptions &opt);
 
 // Writes a script that submits the sweep to SLURM as two job arrays, the pours and
-// then (after them) the pushes, each task running `granpen-cli sweep SPEC --only K`.
+// then (after them) the pushes, each task running `granpen-cli sweep SPEC --only K`,
+// through io/atomic_file (OutputError naming the file when it cannot be written).
 void write_slurm_script(const SweepSpec &spec, const RunnerOptions &opt, const std::string &cli,
                         const std::string &file);
 

@@ -4,10 +4,13 @@
 #   a bad option, or a value against its meaning, exits 2 naming the option;
 #   an output that is one of the inputs is refused, the input byte-identical;
 #   an output into a missing folder or under a file is a named error, exit 1;
-#   an unreadable input creates nothing; no raw C++ exception text reaches the user.
+#   an unreadable input creates nothing; no raw C++ exception text reaches the user;
+#   bad values of every kind (negative counts, zero widths, empty ranges, empty names)
+#   and outputs where nothing can be created are named, with the right exit status.
 # usage: cli_contract.sh GRANPEN_CLI WORK_DIR TRACE AVE_TIME DUMP DUMP_TRACE
 set -u
 CLI=$1 W=$2 TRACE=$3 AVE=$4 DUMP=$5 DTRACE=$6
+INPUTS=$(cd "$(dirname "$0")/../../inputs" && pwd)    # the decks' presets, for granpen sweep
 rm -rf "$W" && mkdir -p "$W" || exit 1
 fails=0 cases=0
 fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
@@ -29,9 +32,16 @@ expect() {
 # same INPUT COPY: the input is byte-identical to its copy taken before
 same() { cmp -s "$1" "$2" || fail "$1 changed"; }
 
+# an instrument file (t, F, x at 100 cm/s) and its mapping, for granpen import
+awk 'BEGIN { print "t,F,x"; for (i = 1; i <= 400; i++) { t = i * 1e-4; x = -0.5 + 100 * t
+  printf "%.6f,%.10g,%.10g\n", t, (x > 0 ? 5000 * x : 0), x } }' > "$W/lab.csv"
+printf 'time = t\nforce = F\nforce_unit = dyne\ndisplacement = x\nposition_unit = cm\nsurface = 0\n' > "$W/lab.map"
+IMPORT=(import "$W/lab.csv" --mapping "$W/lab.map" --D 2 --g 981)
+
 # ---- --help from the parser: exit 0, the option list with one of each's options
 for sc in "convert --sign" "check --help" "fit --zmin" "calibration --zmin" "collapse --band" \
-          "sweep --jobs" "flow --voronoi" "momentum --thresholds" "plot --no-run" "gap --scenario"; do
+          "sweep --jobs" "flow --voronoi" "momentum --thresholds" "plot --no-run" "gap --scenario" \
+          "import --mapping"; do
   set -- $sc
   cases=$((cases + 1))
   "$CLI" "$1" --help > "$W/out" 2>&1 || fail "$1 --help exits $?"
@@ -39,7 +49,7 @@ for sc in "convert --sign" "check --help" "fit --zmin" "calibration --zmin" "col
 done
 
 # ---- usage errors: exit 2, the option named
-for sc in convert check fit calibration collapse sweep flow momentum plot gap; do
+for sc in convert check fit calibration collapse sweep flow momentum plot gap import; do
   expect 2 "unknown option '--no-such-option'" "$CLI" "$sc" x --no-such-option 1
 done
 expect 2 "--sign must be \+1 or -1, got '2'" "$CLI" convert "$AVE" --v0 100 --dt 2e-6 --D 2 --g 981 --out "$W/c.csv" --sign 2
@@ -57,6 +67,28 @@ expect 2 "--dr must be > 0" "$CLI" flow "$DUMP" --dr 0
 expect 2 "--axis needs 2 values" "$CLI" momentum "$DUMP" --trace "$DTRACE" --axis 1
 expect 2 "--tbin must be > 0" "$CLI" plot peak "$TRACE" --out "$W/p" --tbin 0
 expect 2 "usage: granpen check" "$CLI" check
+expect 2 "usage: granpen import" "$CLI" import
+# whole numbers (counts, run numbers) are named with their range, never CLI11's own text
+expect 2 "--run must be a whole number from 1 to 1000000000, got '-1'" "$CLI" "${IMPORT[@]}" --out "$W/imp" --run -1
+expect 2 "--jobs must be a whole number from 1 to 1000000, got '1.5'" "$CLI" sweep x.sweep --jobs 1.5
+expect 2 "--checkpoint must be a whole number from 1 to 1000000, got '-5'" "$CLI" sweep x.sweep --checkpoint -5
+expect 2 "--only must be a whole number from 0 to 1000000, got '-2'" "$CLI" sweep x.sweep --only -2
+expect 2 "--jobs must be a whole number from 1 to 1024, got '5000'" "$CLI" gap --scenario tiny --real x --out y --jobs 5000
+# zero widths, empty ranges, out-of-range values
+expect 2 "--edge needs WR > 0 and WZ > 0" "$CLI" flow "$DUMP" --edge 0 0.1
+expect 2 "--rod-type must be a positive integer" "$CLI" flow "$DUMP" --rod-type 1e300
+expect 2 "--steps '5:1': LAST is before FIRST" "$CLI" flow "$DUMP" --steps 5:1
+expect 2 "--thresholds: .*strictly decreasing" "$CLI" momentum "$DUMP" --trace "$DTRACE" --thresholds 0.1 0.2 0.01 0.001
+expect 2 "--kz-zmin must be below --kz-zmax" "$CLI" collapse "$TRACE" --kz-zmin 5 --kz-zmax 5
+expect 2 "--zmin must be below --zmax" "$CLI" calibration "$W" --zmin 3 --zmax 1
+expect 2 "--csv needs a name" "$CLI" collapse "$TRACE" --csv ""
+expect 2 "--out needs a name" "$CLI" convert "$AVE" --v0 100 --dt 2e-6 --D 2 --g 981 --out ""
+expect 2 "--D must be > 0, got '0'" "$CLI" "${IMPORT[@]}" --out "$W/imp" --D 0
+expect 2 "--run" "$CLI" "${IMPORT[@]}" --out "$W/imp" --run 0
+expect 2 "--units" "$CLI" "${IMPORT[@]}" --out "$W/imp" --units imperial
+expect 2 "--mapping is required" "$CLI" import "$W/lab.csv" --out "$W/imp" --D 2 --g 981
+expect 2 "--out is required" "$CLI" import "$W/lab.csv" --mapping "$W/lab.map" --D 2 --g 981
+[ -e "$W/imp" ] && fail "import created $W/imp on a usage error"
 
 # ---- an output that is an input: refused, the input untouched
 cp "$TRACE" "$W/t.csv" && cp "$TRACE" "$W/t.orig"
@@ -81,6 +113,13 @@ expect 1 "flow\.json is the input" "$CLI" plot flow "$W/pf" --out "$W/pf"; same 
 echo "name = x" > "$W/s.sweep" && cp "$W/s.sweep" "$W/s.orig"
 expect 1 "--slurm .*s\.sweep is the input" "$CLI" sweep "$W/s.sweep" --slurm "$W/s.sweep"; same "$W/s.sweep" "$W/s.orig"
 expect 2 "--out .* is the input --real" "$CLI" gap --scenario tiny --real "$W/sw" --out "$W/sw/"
+# import: a trace DIR/NAME.csv that is the instrument file itself, or the mapping
+mkdir -p "$W/im" && cp "$W/lab.csv" "$W/im/lab.csv" && cp "$W/lab.csv" "$W/im.orig"
+expect 1 "--out .*lab\.csv is the input" "$CLI" import "$W/im/lab.csv" --mapping "$W/lab.map" --D 2 --g 981 --out "$W/im"
+same "$W/im/lab.csv" "$W/im.orig"
+cp "$W/lab.map" "$W/im/m.csv" && cp "$W/lab.map" "$W/map.orig"
+expect 1 "--out .*m\.csv is the input" "$CLI" import "$W/lab.csv" "$W/im/m.csv" --mapping "$W/im/m.csv" --D 2 --g 981 --out "$W/im"
+same "$W/im/m.csv" "$W/map.orig"
 
 # ---- outputs that cannot be written: named, exit 1, nothing left behind
 expect 1 "cannot write $W/missing/c\.json: No such file or directory" "$CLI" collapse "$TRACE" --json "$W/missing/c.json"
@@ -88,8 +127,25 @@ expect 1 "cannot write $W/missing/c\.csv: No such file or directory" "$CLI" coll
 expect 1 "cannot write $W/t\.orig/f\.json: Not a directory" "$CLI" fit "$TRACE" --json "$W/t.orig/f.json"
 expect 1 "cannot write $W/missing/x\.csv" "$CLI" convert "$AVE" --v0 100 --dt 2e-6 --D 2 --g 981 --out "$W/missing/x.csv"
 expect 1 "cannot create $W/t\.orig/o" "$CLI" flow "$DUMP" --trace "$DTRACE" --voronoi none --out "$W/t.orig/o"
+expect 1 "cannot create $W/t\.orig/i" "$CLI" "${IMPORT[@]}" --out "$W/t.orig/i"
 [ -e "$W/missing" ] && fail "$W/missing was created"
 ls -a "$W" | grep -q '\.tmp' && fail "a temporary was left in $W"
+
+# ---- outputs where nothing can be created (a read-only folder; as root, which writes
+# through permissions, a folder under /proc): named with the path, exit 1
+RO="$W/ro"; mkdir -p "$RO"; chmod 555 "$RO"
+[ "$(id -u)" = 0 ] && RO=/proc/granpen_contract_ro
+expect 1 "cannot write $RO/f\.json: " "$CLI" fit "$TRACE" --json "$RO/f.json"
+expect 1 "cannot write $RO/c\.csv: " "$CLI" collapse "$TRACE" --csv "$RO/c.csv"
+expect 1 "cannot write $RO/c\.csv: " "$CLI" convert "$AVE" --v0 100 --dt 2e-6 --D 2 --g 981 --out "$RO/c.csv"
+expect 1 "cannot create $RO/i: " "$CLI" "${IMPORT[@]}" --out "$RO/i"
+expect 1 "cannot create $RO/f: " "$CLI" flow "$DUMP" --trace "$DTRACE" --voronoi none --out "$RO/f"
+expect 1 "cannot create $RO/m: " "$CLI" momentum "$DUMP" --trace "$DTRACE" --out "$RO/m"
+expect 1 "cannot create $RO/p: " "$CLI" plot peak "$TRACE" --out "$RO/p" --no-run
+printf 'name = ro\npreset = tiny\nseeds = 1\nv0 = 100\n' > "$W/ro.sweep"
+expect 1 "cannot write $RO/s\.sh: " "$CLI" sweep "$W/ro.sweep" --inputs "$INPUTS" --slurm "$RO/s.sh"
+expect 1 "cannot create folder $RO" "$CLI" sweep "$W/ro.sweep" --inputs "$INPUTS" --lmp /bin/true --out "$RO/runs"
+chmod 755 "$W/ro"
 
 # ---- an unreadable input creates nothing
 expect 1 "$W/nonexistent: not a readable folder" "$CLI" calibration "$W/nonexistent"
@@ -100,6 +156,18 @@ expect 1 "no-such\.dump" "$CLI" flow "$W/no-such.dump" --out "$W/flows"
 [ -e "$W/flows" ] && fail "flow created $W/flows"
 expect 1 "no-such\.txt" "$CLI" convert "$W/no-such.txt" --v0 100 --dt 2e-6 --D 2 --g 981 --out "$W/n.csv"
 [ -e "$W/n.csv" ] && fail "convert created $W/n.csv"
+expect 1 "no-such\.csv" "$CLI" import "$W/no-such.csv" --mapping "$W/lab.map" --D 2 --g 981 --out "$W/imports"
+[ -e "$W/imports" ] && fail "import created $W/imports"
+expect 1 "no-such\.map" "$CLI" import "$W/lab.csv" --mapping "$W/no-such.map" --D 2 --g 981 --out "$W/imports"
+[ -e "$W/imports" ] && fail "import created $W/imports"
+expect 1 "no-such\.sweep: cannot open sweep file" "$CLI" sweep "$W/no-such.sweep" --out "$W/runs"
+[ -e "$W/runs" ] && fail "sweep created $W/runs"
+expect 1 "no-such\.csv: cannot open trace file" "$CLI" momentum "$DUMP" --trace "$W/no-such.csv" --out "$W/moms"
+[ -e "$W/moms" ] && fail "momentum created $W/moms"
+# and a good import works (the contract's cases are not all refusals)
+cases=$((cases + 1))
+"$CLI" "${IMPORT[@]}" --out "$W/imported" > "$W/out" 2> "$W/err" || { fail "a good import exits $?"; cat "$W/err"; }
+[ -s "$W/imported/lab.csv" ] || fail "import wrote no $W/imported/lab.csv"
 
 # ---- a library exception becomes a named error (collapse on a header with v0 = 0)
 { printf '# granpen-trace v1\n# units = cgs\n# v0 = 0\n# D = 2\n# g = 981\nt,z,F\n'

@@ -8,6 +8,7 @@
 #define GRANPEN_FUZZ_BODIES_H
 
 #include "dump_reader.h"
+#include "fuzz_check.h"
 #include "trace_reader.h"
 
 #include <cmath>
@@ -17,14 +18,6 @@
 #include <vector>
 
 namespace granpen_fuzz {
-
-#define GRANPEN_FUZZ_CHECK(cond)                                                                    \
-  do {                                                                                              \
-    if (!(cond)) {                                                                                  \
-      std::fprintf(stderr, "fuzz invariant broken: %s (%s:%d)\n", #cond, __FILE__, __LINE__);       \
-      std::abort();                                                                                 \
-    }                                                                                               \
-  } while (0)
 
 // Reads the dump at path. The input's size picks the variant, so that corpus files
 // stay plain dump files: required columns none, {"x"} or the default set (size % 3),

@@ -1,11 +1,12 @@
-# Fuzz tests of the readers (ctest label `fuzz`): fuzz_build configures and builds
-# tests/fuzz with clang++ (-fsanitize=fuzzer,address,undefined) into build/fuzz; then
-# fuzz_dump_reader and fuzz_trace_reader each run GRANPEN_FUZZ_SECONDS from the
-# committed corpus. Without clang++ or libFuzzer they are skipped (ctest "Skipped",
+# Fuzz tests of the readers and the CLI's option parsers (ctest label `fuzz`): fuzz_build
+# configures and builds tests/fuzz with clang++ (-fsanitize=fuzzer,address,undefined) into
+# build/fuzz; then fuzz_dump_reader and fuzz_trace_reader each run GRANPEN_FUZZ_SECONDS
+# from the committed corpus, and fuzz_cli_options a fixed GRANPEN_FUZZ_CLI_RUNS inputs. Without clang++ or libFuzzer they are skipped (ctest "Skipped",
 # with the reason in the output), not failed. Included from tests/unit/dump.cmake.
 set(GRANPEN_FUZZ AUTO CACHE STRING "Fuzz tests of the readers with clang++/libFuzzer: AUTO (when clang++ is found), ON (required), OFF")
 set_property(CACHE GRANPEN_FUZZ PROPERTY STRINGS AUTO ON OFF)
-set(GRANPEN_FUZZ_SECONDS 30 CACHE STRING "Seconds each fuzz test runs")
+set(GRANPEN_FUZZ_SECONDS 30 CACHE STRING "Seconds each reader fuzz test runs")
+set(GRANPEN_FUZZ_CLI_RUNS 50000 CACHE STRING "Inputs the CLI option-parser fuzz test runs")
 
 if(NOT GRANPEN_FUZZ STREQUAL "OFF")
   if(CMAKE_CXX_COMPILER_ID MATCHES "Clang")
@@ -35,4 +36,8 @@ if(NOT GRANPEN_FUZZ STREQUAL "OFF")
     set_tests_properties(fuzz_${target} PROPERTIES LABELS fuzz FIXTURES_REQUIRED fuzz_binaries SKIP_RETURN_CODE 77
       TIMEOUT ${fuzz_timeout})
   endforeach()
+  add_test(NAME fuzz_cli_options COMMAND ${fuzz_src}/run_fuzz.sh run ${fuzz_src} ${fuzz_bin} cli_options
+    runs:${GRANPEN_FUZZ_CLI_RUNS})
+  set_tests_properties(fuzz_cli_options PROPERTIES LABELS fuzz FIXTURES_REQUIRED fuzz_binaries SKIP_RETURN_CODE 77
+    TIMEOUT 300)
 endif()

@@ -1,0 +1,78 @@
+// granpen gap: its command line (options.h).
+#include "options.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <thread>
+
+namespace {
+
+const char *HELP =
+    "usage: granpen gap --real DIR --scenario NAME --out DIR [--effects LIST] [--jobs N] [--cache DIR]\n"
+    "       granpen gap --prepare-only --scenario NAME --v0 \"50 100 200\" [--effects LIST] [--jobs N] [--cache DIR]\n"
+    "       granpen gap --slurm FILE --scenario paper --v0 \"40 80 160\" [--jobs N --ranks R] [--cache DIR]\n"
+    "Where do measured force traces (DIR: granpen-trace v1 files, one or more runs per speed,\n"
+    "cgs or SI) and the simulation of the same set-up (the preset NAME) differ, which\n"
+    "unmodelled effect causes it, and how far the gap shrinks once it is added.\n"
+    "  1. simulates (or takes from the cache) the baseline and every candidate effect at its\n"
+    "     reference magnitudes, at the measured speeds, two seeds each;\n"
+    "  2. aligns every run's depth origin by its force onset, bins F on a common grid and\n"
+    "     compares ensembles: observables per regime (peak, transient, linear) with z-scores,\n"
+    "     the gap curve with its noise band, the overall gap G (shared/formats/gap-metric.md);\n"
+    "  3. fits each effect's magnitude to the gap, scores how much it explains, checks it by\n"
+    "     leaving one speed out, and decides: none, explained (top effect) or unexplained;\n"
+    "  4. simulates the top effect at its fitted magnitude on fresh seeds and reports the gap\n"
+    "     before and after, overall, per regime and at the held-out speed.\n"
+    "Output (written to OUT.partial, then moved to OUT): diagnosis.json, report.md with\n"
+    "figures, baseline/ and corrected/ (the simulated traces used, trace CSV v1).\n"
+    "Exit status: 0 diagnosis written, 1 simulations failed or input unreadable, 2 usage.\n";
+
+}    // namespace
+
+granpen::cli::GapCommandOptions granpen::cli::parse_gap(int argc, char **argv)
+{
+  Command cmd("gap", HELP);
+  GapCommandOptions go;
+  GapOptions &opt = go.gap;
+  const char *env;
+  opt.runner.lmp = (env = std::getenv("GRANPEN_LMP")) ? env : "lmp_granpen";
+  opt.runner.inputs = (env = std::getenv("GRANPEN_INPUTS")) ? env : "inputs";
+  opt.cache = std::string((env = std::getenv("GRANPEN_RUNS")) ? env : "runs") + "/gap_cache";
+  opt.runner.jobs = (int) std::max(1u, std::thread::hardware_concurrency());
+  bool sweep_by_sweep = false;
+  auto &app = cmd.app;
+  app.add_option("--real", opt.real, "the measured traces' folder")->type_name("DIR");
+  app.add_option("--scenario", opt.scenario, "the preset of the set-up")->type_name("NAME");
+  app.add_option("--out", opt.out, "the diagnosis folder")->type_name("DIR");
+  app.add_option("--cache", opt.cache, "simulation cache (default $GRANPEN_RUNS/gap_cache); interrupted, a\n"
+                                     "diagnosis resumes from it; a finished one reruns without simulating")
+      ->check(file_name())->type_name("DIR");
+  app.add_option("--lmp", opt.runner.lmp, "lmp_granpen (default: as ./granpen sets it)")->check(file_name())->type_name("PATH");
+  app.add_option("--inputs", opt.runner.inputs, "the decks (default: as ./granpen sets them)")->check(file_name())->type_name("DIR");
+  app.add_flag("--prepare-only", opt.prepare_only, "only run the simulations the cache needs for --v0 speeds");
+  app.add_flag("--local", opt.local, "run here a diagnosis whose simulations would take more than 8\n"
+                                      "core-hours (the paper scenario), instead of asking for --slurm");
+  app.add_flag("--fit-only", opt.fit_only, "stop before step 4: the verdict is provisional (diagnosis.json:\n"
+                                            "\"confirmed\": false; nothing simulated on fresh seeds), G after = before");
+  app.add_flag("--sweep-by-sweep", sweep_by_sweep, "run the sweeps one after another, each with its own N (the\n"
+                                                     "runner's old way: for bench/pool_vs_sweeps.sh)");
+  app.add_option("--slurm", opt.slurm, "write a SLURM script preparing the cache on a cluster (--jobs runs\n"
+                                     "at once, R ranks each) and stop")
+      ->check(file_name())->type_name("FILE");
+  app.add_option("--mpirun", opt.runner.mpirun, "run each simulation through PROG (mpirun, srun, ...)")->type_name("PROG");
+  app.add_option("--ranks", opt.runner.ranks, "MPI ranks per simulation (with --mpirun)")->check(whole_number(1, 1000000))
+      ->type_name("R");
+  app.add_option("--v0", opt.v0, "speeds for --prepare-only and --slurm, e.g. \"50 100 200\"")->type_name("LIST");
+  app.add_option("--effects", opt.effects, "comma-separated candidates (default: all of them)")->type_name("LIST");
+  app.add_option("--jobs", opt.runner.jobs, "simulations at once, 1 to 1024 (default: the number of cores), every\n"
+                                                   "sweep's runs in one pool")
+      ->check(whole_number(1, 1024))->type_name("N");
+  app.add_flag("--list-effects", go.list_effects, "the candidate effects, their magnitudes and reference values");
+  if (!cmd.parse(argc, argv, go.help)) return go;
+  if (sweep_by_sweep) opt.runner.pool = false;
+  if (go.list_effects) return go;
+  if (opt.scenario.empty() || (!opt.prepare_only && opt.slurm.empty() && (opt.real.empty() || opt.out.empty())) ||
+      ((opt.prepare_only || !opt.slurm.empty()) && opt.v0.empty()))
+    throw UsageError("needs --scenario and either --real and --out, or --prepare-only (or --slurm) and --v0");
+  return go;
+}

@@ -1,0 +1,52 @@
+// granpen import: its command line (options.h).
+#include "options.h"
+
+namespace {
+
+const char *HELP =
+    "usage: granpen import FILE-OR-FOLDER... --mapping MAP --out DIR --D D --g G\n"
+    "                      [--units cgs|si] [--v0 V] [--window W] [--run N] [--d_g DG]\n"
+    "                      [--rho_g RHO] [--mu MU] [--dry-run]\n"
+    "Reads instrument files (delimited text or key=value rows, as the mapping MAP says:\n"
+    "columns, units, signs, tare, contact threshold or surface, speed checks; see\n"
+    "docs/measurements.md) and writes one granpen-trace v1 file per input, DIR/NAME.csv:\n"
+    "  t = time since the file's first row, z = depth below the surface (negative before\n"
+    "  contact), F = force with the offset of the first tare_rows rows removed.\n"
+    "The end of the push is cut by one rule: rows after the rod's furthest advance\n"
+    "(standstill, retraction), and rows after the last block of speed_rows rows moving at\n"
+    "the mean speed within speed_tolerance (the deceleration and its force spike); without\n"
+    "a position, rows after the last at contact force. Each file's cut is reported.\n"
+    "A folder stands for every file in it. Runs are numbered from --run in the order given.\n"
+    "Nothing is written unless every file imports; --dry-run prints what would be written.\n"
+    "Exit status 0, 1 for bad input (named with file and line), 2 for usage.\n";
+
+}    // namespace
+
+granpen::cli::ImportOptions granpen::cli::parse_import(int argc, char **argv)
+{
+  Command cmd("import", HELP);
+  ImportOptions o;
+  std::string units = "cgs";
+  auto &app = cmd.app;
+  app.add_option("files", o.inputs, "instrument files, or folders of them")->required();
+  app.add_option("--mapping", o.mapping, "the mapping file (columns, units, signs, rules)")->required()->check(file_name())
+      ->type_name("MAP");
+  app.add_option("--out", o.out_dir, "the folder the traces go to (made when missing)")->required()->check(file_name())
+      ->type_name("DIR");
+  app.add_option("--units", units, "units of the traces and of --v0, --D, --g (default cgs)")
+      ->type_name("UNITS")->check(CLI::IsMember({"cgs", "si"}));
+  app.add_option("--v0", o.v0, "nominal push speed, > 0 (default: the mapping's v0, else the measured mean)")
+      ->check(positive_number())->type_name("V");
+  app.add_option("--D", o.D, "rod diameter, > 0")->check(positive_number())->required()->type_name("D");
+  app.add_option("--g", o.g, "gravity, > 0")->check(positive_number())->required()->type_name("G");
+  app.add_option("--window", o.window, "average into windows of W seconds (default: the mapping's window, else none)")
+      ->check(positive_number())->type_name("W");
+  app.add_option("--run", o.first_run, "the first run number (default 1)")->check(whole_number(1, 1000000000))->type_name("N");
+  app.add_option("--d_g", o.d_g, "optional header key d_g")->check(positive_number())->type_name("DG");
+  app.add_option("--rho_g", o.rho_g, "optional header key rho_g")->check(positive_number())->type_name("RHO");
+  app.add_option("--mu", o.mu, "optional header key mu")->check(positive_number())->type_name("MU");
+  app.add_flag("--dry-run", o.dry_run, "print what would be written; write nothing");
+  if (!cmd.parse(argc, argv, o.help)) return o;
+  o.si = units == "si";
+  return o;
+}

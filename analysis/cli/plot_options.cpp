@@ -1,0 +1,84 @@
+// granpen plot: its command line (options.h).
+#include "options.h"
+
+#include <algorithm>
+#include <iterator>
+
+namespace {
+
+const char *HELP =
+    "usage: granpen plot KIND INPUTS... --out DIR [options]\n"
+    "Writes each figure as DIR/NAME.gp, a gnuplot script you can edit and rerun in DIR,\n"
+    "with its numbers in DIR/NAME.dat beside it, runs gnuplot to make DIR/NAME.png and\n"
+    "DIR/NAME.svg, and writes DIR/KIND.json (the figures and the numbers drawn). Units cgs.\n"
+    "kinds:\n"
+    "  force TRACE-OR-FOLDER...  F against z, one colour per v0: the mean of the runs at\n"
+    "                 each v0 with their range as a band (--each: every run, in shades of\n"
+    "                 its v0's colour); inset: the peak region z < 0.7 R.      -> force\n"
+    "  ratio TRACE-OR-FOLDER...  F/F_z against z and against t~ = (z/v0) sqrt(g/D): the\n"
+    "                 binned curves of granpen collapse (same k_z, bins and options), the\n"
+    "                 band 1 +- --band, the paper's crossover t~ = 1.           -> ratio\n"
+    "  peak TRACE-OR-FOLDER...   peak height (max F over 0 < z < 0.7 R) against v0 on\n"
+    "                 log-log axes, the fitted power law of granpen collapse with its 95%\n"
+    "                 interval, and a v0^2 guide through the data's centre.    -> peak\n"
+    "  kz TRACE-OR-FOLDER...     k_z against v0 with the standard errors of granpen fit's\n"
+    "                 linear fit over the k_z window, the mean +- sd over traces. -> kz\n"
+    "  flow DIR       the tables of granpen flow --out DIR: flow_fields.csv (heatmaps of\n"
+    "                 phi, v_z, gamma-dot and I in (r, z - z_tip) with the rod drawn),\n"
+    "                 flow_profile_below.csv (|v_z| below the face, log axis, with the\n"
+    "                 exponential fit of granpen flow, and phi), flow_edge_phi_I.csv (phi\n"
+    "                 against I with the paper's phi = 0.57 - 0.35 I), flow_strip.csv (v_z\n"
+    "                 of the near-shaft strip against depth), flow_annulus.csv (annulus\n"
+    "                 means against t~).  -> flow_heatmaps, flow_profile, flow_phi_I,\n"
+    "                 flow_strip, flow_annulus (a missing table is skipped with a note)\n"
+    "  momentum DIR   momentum_classes.csv (upward momentum and counts per speed class\n"
+    "                 against t~) and momentum_drag.csv (F against mu g M(v_z > v0/320)\n"
+    "                 with the 1:1 line).                -> momentum_classes, momentum_drag\n"
+    "gnuplot (gnuplot-nox; $GRANPEN_GNUPLOT overrides the program) needs the pngcairo\n"
+    "and svg terminals. Exit status: 0 when every figure was made, 1 when an input was\n"
+    "unusable or gnuplot is missing or failed (the scripts and data are still written),\n"
+    "2 for a usage error.\n";
+
+}    // namespace
+
+granpen::cli::PlotOptions granpen::cli::parse_plot(int argc, char **argv)
+{
+  Command cmd("plot", HELP);
+  PlotOptions po;
+  figures::Options &o = po.figures;
+  const std::string &kind = po.kind;
+  auto &app = cmd.app;
+  app.add_option("kind", po.kind, "force, ratio, peak, kz, flow or momentum")->required();
+  app.add_option("inputs", po.inputs, "traces or folders (flow, momentum: the tables' folder)");
+  app.add_option("--out", o.out, "output folder (required; created)")->check(file_name())->type_name("DIR");
+  bool no_run = false;
+  app.add_flag("--no-run", no_run, "write the scripts and data only, do not run gnuplot");
+  app.add_flag("--each", o.each, "force: draw every run rather than the mean and range per v0");
+  cmd.number("--kz-zmin", o.kz_zmin, "k_z window start, cm (default 3, as granpen fit and collapse)")->type_name("Z");
+  cmd.number("--kz-zmax", o.kz_zmax, "k_z window end, cm (default: the deepest point)")->type_name("Z");
+  app.add_option("--alpha", o.alpha, "ratio: F_z = alpha mu rho_g g D^2 z instead of the fit")
+      ->check(non_negative_number())->type_name("A");
+  app.add_option("--mu", o.mu, "ratio: friction for --alpha (default: header key mu)")->check(non_negative_number())
+      ->type_name("MU");
+  app.add_option("--rho", o.rho, "ratio: grain density for --alpha (default: header key rho_g)")
+      ->check(non_negative_number())->type_name("RHO");
+  app.add_option("--band", o.collapse.band, "ratio: as granpen collapse (default 0.2)")->check(positive_number())
+      ->type_name("B");
+  app.add_option("--tbin", o.collapse.tbin, "ratio: as granpen collapse (default 0.1)")->check(positive_number())
+      ->type_name("W");
+  cmd.number("--zmin", o.collapse.zmin, "ratio: as granpen collapse (default 0.2 cm)")->type_name("Z");
+  app.add_option("--D", o.D, "flow: rod diameter in cm when the tables' headers do not give it\n(default 2)")
+      ->check(non_negative_number())->type_name("D");
+  if (!cmd.parse(argc, argv, po.help)) return po;
+  static const char *kinds[] = {"force", "ratio", "peak", "kz", "flow", "momentum"};
+  if (std::find_if(std::begin(kinds), std::end(kinds), [&](const char *k) { return kind == k; }) == std::end(kinds))
+    throw UsageError("unknown kind '" + kind + "' (force, ratio, peak, kz, flow, momentum)");
+  if (o.out.empty()) throw UsageError("--out DIR is required");
+  if (po.inputs.empty())
+    throw UsageError(kind == "flow" || kind == "momentum" ? "give the folder of the tables" : "no trace given");
+  if ((kind == "flow" || kind == "momentum") && po.inputs.size() != 1)
+    throw UsageError(kind + " takes one folder, got " + std::to_string(po.inputs.size()) + " arguments");
+  if (!(o.kz_zmin < o.kz_zmax)) throw UsageError("--kz-zmin must be below --kz-zmax");
+  o.run = !no_run;
+  return po;
+}
