@@ -14,7 +14,9 @@
    the restart's pending history entries, in instance order, to the history
    fixes the current gran/hertz/history (sub-)styles will create, in the
    order they were defined; the first run then restores them as usual.
-   Without a pending restart entry it does nothing (a fresh system).
+   Without a pending restart entry it does nothing (a fresh system). The
+   fix's global restart entry stays under the old name ("unused" in the
+   log): it holds nothing (FixNeighHistory::write_restart writes size 0).
 ------------------------------------------------------------------------- */
 
 #include "restore_contact_history.h"
