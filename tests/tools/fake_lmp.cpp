@@ -11,7 +11,7 @@
 //   kn s*1e9: grain noise *= s^0.5, and it decorrelates faster
 //   ramp L: the peak moves deeper by (L - 0.5) / 2 once L > 0.5 (the rod is still slow)
 //   mount_k, mount_c, mount_m: the signal goes through the mount's spring-damper
-//   cohesion c: + 1e3 c (1 - exp(-z / 0.5)) (grains dragged along stick); phi_0 -= 0.002 c
+//   cohesion c: + 5e3 c exp(-z / 0.6) (a cohesive crust, at any speed); phi_0 -= 0.002 c
 //   dmu_rod m: P *= 1 + 1.5 m, k *= 1 + 0.5 m (the rod's own friction: the tip and the side)
 //   rho_g r: F *= r / 3 (an effect outside the library)
 #include "lmp_command_line.h"
@@ -79,7 +79,7 @@ int main(int argc, char **argv)
     if (z > 0) {
       double b = 1;
       for (int j = 0; j < 3; ++j) b += amp[j] * std::sin(6.283 * (j + 1) * z / 4.0 + ph[j]);
-      const double stick = 1e3 * coh * (1 - std::exp(-z / 0.5));
+      const double stick = 5e3 * coh * std::exp(-z / 0.6);
       const double mean = b * (k * z + P * std::exp(-std::pow((z - peak_z) / 0.15, 2)) + wall * z * z + stick) * scale;
       ar = corr * ar + std::sqrt(1 - corr * corr) * n01(grain_rng);
       F = mean * (1 + grain * ar);
