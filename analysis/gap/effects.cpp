@@ -42,6 +42,10 @@ DeckVars mount(double a)
           {"mount_m", deck_number(MOUNT_MASS)}};
 }
 DeckVars ramp(double a) { return {{"ramp", deck_number(a)}}; }
+// cohesion: the JKR surface energy of pair granular (inputs/model/contact.lmp), pour and push
+DeckVars cohesion(double a) { return {{"cohesion", deck_number(a)}}; }
+// rod_friction: the rod-grain friction's offset from the grains' own (contact.lmp dmu_rod)
+DeckVars rod_friction(double a) { return {{"dmu_rod", deck_number(a)}}; }
 std::string packing_mu(double a)
 {
   // the pour's friction sets phi_0 (docs/calibration.md: 0.594 -> 0.574 for mu 0.1 -> 0.5);
@@ -70,9 +74,10 @@ const std::vector<Effect> &effect_library()
       {"sidewalls", "a frictional container (walls at x, y = 0 and 8 cm) instead of periodic x, y",
        "wall friction coefficient", true, {0.6}, true, walls, none, "", nullptr},
       // mount and ramp: linear from the baseline to their first knot (a mount period under
-      // 0.7 ms is a few 1e-4 s windows; a ramp under 0.5 cm ends before contact)
+      // 0.7 ms is a few 1e-4 s windows; a ramp under 0.5 cm ends before contact). The mount
+      // reaches 10 ms: real load cells with the rod's mass ring at 100 Hz to several kHz
       {"measurement_chain", "force sensor on a spring-damper mount (100 g, damping ratio 0.2; fix rod/drive mount)",
-       "mount natural period, ms", false, {0.7, 1.4}, true, none, mount, "", nullptr},
+       "mount natural period, ms", false, {0.7, 1.4, 4, 10}, true, none, mount, "", nullptr},
       {"actuator_ramp", "actuator speed rising linearly from 0 to v0 over a travel (fix rod/drive ramp)",
        "ramp travel, cm (the rod starts 0.5 cm above the bed: shorter ramps end before contact)", false,
        {1.6, 3.2}, true, none, ramp, "", nullptr},
@@ -83,6 +88,15 @@ const std::vector<Effect> &effect_library()
        "friction coefficient minus 0.3", true, {0.15}, false, none, none, "", friction_mu, true},
       {"contact_stiffness", "contact stiffness kn = kt scaled (timestep scaled with the contact time)",
        "log10(k / 1e9 dyne/cm^2)", true, {-0.6, 0.6}, false, stiffness, none, "", nullptr},
+      // damp or fine grains: JKR pull-off 3 pi gamma R_eff; in bench a grain's weight is
+      // 98.6 dyne and R_eff 0.1 cm, so gamma = 10 and 50 are Bond numbers 0.1 and 0.5
+      // (a capillary bridge of water between two 4 mm beads: about 0.45)
+      {"cohesion", "damp or fine grains stick: pair granular's JKR cohesive normal law in the pour and the push",
+       "surface energy gamma, erg/cm^2 (pull-off 3 pi gamma R_eff)", true, {10, 50}, true, cohesion, none, "", nullptr},
+      // the rod's surface is not the grains' material: steel on glass about 0.1-0.2, a rough
+      // or coated rod up to 0.6; in the push only, so paired on the baseline's beds
+      {"rod_friction", "rod-grain sliding friction other than the grain-grain one (its own pair coefficients)",
+       "rod-grain friction minus grain-grain friction", false, {-0.2, 0.3}, false, none, rod_friction, "", nullptr},
   };
   return lib;
 }

@@ -11,6 +11,8 @@
 //   kn s*1e9: grain noise *= s^0.5, and it decorrelates faster
 //   ramp L: the peak moves deeper by (L - 0.5) / 2 once L > 0.5 (the rod is still slow)
 //   mount_k, mount_c, mount_m: the signal goes through the mount's spring-damper
+//   cohesion c: + 5e3 c exp(-z / 0.6) (a cohesive crust, at any speed); phi_0 -= 0.002 c
+//   dmu_rod m: P *= 1 + 1.5 m, k *= 1 + 0.5 m (the rod's own friction: the tip and the side)
 //   rho_g r: F *= r / 3 (an effect outside the library)
 #include "lmp_command_line.h"
 
@@ -34,7 +36,7 @@ int main(int argc, char **argv)
     const std::string out = var["out"];
     std::ofstream(out + ".restart") << "fake bed\n";
     std::ofstream(out + ".info") << "seed = " << var["seed"] << "\nmu = " << num("mu", 0.3)
-                                 << "\nz_s = 5.7\nphi_0 = " << 0.58 - 0.05 * (num("mu", 0.3) - 0.3)
+                                 << "\nz_s = 5.7\nphi_0 = " << 0.58 - 0.05 * (num("mu", 0.3) - 0.3) - 0.002 * num("cohesion", 0)
                                  << "\ngrains = 6300\nwall_seconds = 0\n";
     L << "granpen pour: bed " << out << ".restart\n";
     return 0;
@@ -51,7 +53,9 @@ int main(int argc, char **argv)
       if (line.rfind("mu = ", 0) == 0) mu_pour = std::atof(line.c_str() + 5);
   }
   const double v0 = num("v0", 100), depth = num("depth", 4.0), dt = 1e-4;
-  double k = 3e5 * (1 + 1.5 * num("mu_roll", 0)) * (1 + 2 * (num("mu_push", mu_pour) - 0.3)), P = 4e5 * std::pow(v0 / 100, 2) * (1 - 2 * num("poly", 0));
+  const double dmu_rod = num("dmu_rod", 0), coh = num("cohesion", 0);
+  double k = 3e5 * (1 + 1.5 * num("mu_roll", 0)) * (1 + 2 * (num("mu_push", mu_pour) - 0.3)) * (1 + 0.5 * dmu_rod),
+         P = 4e5 * std::pow(v0 / 100, 2) * (1 - 2 * num("poly", 0)) * (1 + 1.5 * dmu_rod);
   const double peak_z = 0.3 + std::max(0.0, num("ramp", 0) - 0.5) / 2;
   const double wall = num("walls", 0) > 0 ? 5e4 * num("mu_wall", 0.3) : 0.0;
   const double scale = (1 - 1.5 * (mu_pour - 0.3)) * num("rho_g", 3.0) / 3.0;
@@ -62,7 +66,7 @@ int main(int argc, char **argv)
   std::normal_distribution<double> n01(0.0, 1.0);
   double amp[3], ph[3];
   for (int j = 0; j < 3; ++j) amp[j] = 0.06 * n01(bed_rng), ph[j] = 6.283 * std::uniform_real_distribution<>(0, 1)(bed_rng);
-  std::mt19937 grain_rng(7919 * seed + (int) v0 + (int) (1e3 * num("mu_roll", 0)));
+  std::mt19937 grain_rng(7919 * seed + (int) v0 + (int) (1e3 * num("mu_roll", 0)) + (int) (7 * coh));
   const double mk = num("mount_k", 0), mc = num("mount_c", 0), mm = num("mount_m", 100);
   double x = 0, xv = 0, ar = 0;    // mount deflection and speed; AR(1) grain noise
   std::ofstream T(var["trace"]);
@@ -75,7 +79,8 @@ int main(int argc, char **argv)
     if (z > 0) {
       double b = 1;
       for (int j = 0; j < 3; ++j) b += amp[j] * std::sin(6.283 * (j + 1) * z / 4.0 + ph[j]);
-      const double mean = b * (k * z + P * std::exp(-std::pow((z - peak_z) / 0.15, 2)) + wall * z * z) * scale;
+      const double stick = 5e3 * coh * std::exp(-z / 0.6);
+      const double mean = b * (k * z + P * std::exp(-std::pow((z - peak_z) / 0.15, 2)) + wall * z * z + stick) * scale;
       ar = corr * ar + std::sqrt(1 - corr * corr) * n01(grain_rng);
       F = mean * (1 + grain * ar);
     }

@@ -23,7 +23,7 @@ gtest_discover_tests(test_gap_stages PROPERTIES LABELS unit)
 # (docs/gap-validation.md).
 set(GAP_SYNTH ${CMAKE_CURRENT_BINARY_DIR}/gap_synthetic)
 add_test(NAME gap_selftest_synthetic
-  COMMAND sh -c "rm -rf '${GAP_SYNTH}' && GRANPEN_LMP='$<TARGET_FILE:fake_lmp>' GRANPEN_CLI='$<TARGET_FILE:granpen-cli>' GRANPEN_INPUTS='${PROJECT_SOURCE_DIR}/inputs' GRANPEN_SELFTEST_WORK='${GAP_SYNTH}' bash '${PROJECT_SOURCE_DIR}/bench/gap_selftest.sh' --scenario tiny --jobs 2 --v0 '50 100 200' --cases none,rolling_resistance,polydispersity,sidewalls,packing")
+  COMMAND sh -c "rm -rf '${GAP_SYNTH}' && GRANPEN_LMP='$<TARGET_FILE:fake_lmp>' GRANPEN_CLI='$<TARGET_FILE:granpen-cli>' GRANPEN_INPUTS='${PROJECT_SOURCE_DIR}/inputs' GRANPEN_SELFTEST_WORK='${GAP_SYNTH}' bash '${PROJECT_SOURCE_DIR}/bench/gap_selftest.sh' --scenario tiny --jobs 2 --v0 '50 100 200' --cases none,rolling_resistance,polydispersity,sidewalls,packing,cohesion,rod_friction")
 set_tests_properties(gap_selftest_synthetic PROPERTIES LABELS unit TIMEOUT 600 RESOURCE_LOCK gap_synthetic
   FIXTURES_SETUP gap_synthetic)
 # one measured run per speed: a warning, the noise estimated from the simulations, still a

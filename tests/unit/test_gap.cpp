@@ -334,6 +334,15 @@ TEST(GapEffects, LibraryKnobsAreDeckVariables)
                         "packing", "contact_stiffness"})
     EXPECT_NE(find_effect(n), nullptr) << n;
   EXPECT_EQ(find_effect("magic"), nullptr);
+  // cohesion: pour and push get contact.lmp's surface energy; rod_friction: the push alone
+  // gets the rod-grain friction's offset, on the baseline's beds, on both sides of it
+  const Effect &coh = *find_effect("cohesion");
+  EXPECT_TRUE(coh.pour_level);
+  EXPECT_EQ(coh.set(10.0), (DeckVars{{"cohesion", "10"}}));
+  const Effect &rod = *find_effect("rod_friction");
+  EXPECT_FALSE(rod.pour_level);
+  EXPECT_FALSE(rod.one_sided);
+  EXPECT_EQ(rod.push_set(-0.2), (DeckVars{{"dmu_rod", "-0.2"}}));
   const Effect &m = *find_effect("measurement_chain");
   EXPECT_FALSE(m.pour_level);
   // a 1 ms mount period with 100 g: k = m (2 pi / T)^2

@@ -197,14 +197,14 @@ TEST(GapPlan, RequestsAndTheirCostFromWhatTheCacheLacks)
   TempDir cache("plan");
   const std::vector<const Effect *> mount{find_effect("measurement_chain")};
   const SimulationPlan p = plan_simulations(sc, {"50", "100"}, mount, cache.path.string(), false);
-  // the baseline (seeds 1 2), the reference beds (11-14), the mount's two knots on the baseline's beds
-  ASSERT_EQ(p.requests.size(), 4u);
+  // the baseline (seeds 1 2), the reference beds (11-14), the mount's four knots on the baseline's beds
+  ASSERT_EQ(p.requests.size(), 6u);
   EXPECT_EQ(p.requests[2].beds_from, "baseline");
   // by hand: grains on the lattice, 8 x 8 across ((4 - 2 x 0.25) / 0.5 + 1) and 5 high;
-  // 6 pours of 0.6 s (the knots reuse the baseline's beds), (2 + 4 + 2 + 2) beds pushed
+  // 6 pours of 0.6 s (the knots reuse the baseline's beds), (2 + 4 + 4 x 2) beds pushed
   // 2.5 cm at each speed; 1.1e7 atom-steps per core-second
   const double grains = 8 * 8 * 5;
-  const double steps = 6 * 0.6 / 5e-6 + 10 * (2.5 / 50 + 2.5 / 100) / 2e-6;
+  const double steps = 6 * 0.6 / 5e-6 + 14 * (2.5 / 50 + 2.5 / 100) / 2e-6;
   EXPECT_NEAR(p.core_hours, grains * steps / (1.1e7 * 3600), 1e-9 * p.core_hours);    // rounding only
   // a done push is not counted again
   const auto pending = pending_runs(p.requests[0], cache.path.string());
