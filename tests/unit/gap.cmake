@@ -2,12 +2,17 @@
 add_executable(test_gap test_gap.cpp)
 target_link_libraries(test_gap PRIVATE granpen_analysis GTest::gtest_main)
 gtest_discover_tests(test_gap PROPERTIES LABELS unit)
+# the overall gap, version 2 (core/gap_metric.h), on analytic cases
+add_executable(test_gap_metric test_gap_metric.cpp)
+target_link_libraries(test_gap_metric PRIVATE granpen_analysis GTest::gtest_main)
+gtest_discover_tests(test_gap_metric PROPERTIES LABELS unit)
 # the diagnosis's stages one by one (gap_diagnosis.h), on small fixtures
 add_executable(test_gap_stages test_gap_stages.cpp)
 target_link_libraries(test_gap_stages PRIVATE granpen_analysis GTest::gtest_main)
 # a whole diagnosis in the synthetic world: fake_lmp stands in for lmp_granpen
 target_compile_definitions(test_gap_stages PRIVATE GRANPEN_FAKE_LMP="$<TARGET_FILE:fake_lmp>"
-  GRANPEN_INPUTS_DIR="${PROJECT_SOURCE_DIR}/inputs")
+  GRANPEN_INPUTS_DIR="${PROJECT_SOURCE_DIR}/inputs"
+  GRANPEN_GAP_REPORT_FIXTURE="${CMAKE_CURRENT_SOURCE_DIR}/data/gap_report_before_nlohmann.json")
 add_dependencies(test_gap_stages fake_lmp)
 gtest_discover_tests(test_gap_stages PROPERTIES LABELS unit)
 

@@ -579,3 +579,109 @@ TEST(GapDiagnosis, StagesReportProgressInOrderThroughTheCallback)
   EXPECT_FALSE(fs::exists(dir.path / "cache2"));
 }
 #endif
+
+// ---- report: diagnosis.json's keys and values, as the hand-built writer wrote them
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+// A diagnosis with every field the report writes set to a value of its own (two speeds,
+// three candidates, a refinement), so that a key written from the wrong field shows.
+Diagnosis filled_diagnosis(const std::string &real_dir)
+{
+  Diagnosis d;
+  d.scenario = "hand";
+  d.real_dir = real_dir;
+  d.grid.zmax = 0.75;
+  d.peak_end = 0.7;
+  d.notes = {"first note", "a note with \"quotes\" and a tab\t"};
+  d.chi2_0 = 93.61, d.p_value = 2.5e-7, d.chi2_after = 54.8, d.confirmed_fraction = 0.71234;
+  d.nfeatures = 24, d.significant = true, d.targeted = false, d.n_null = 6, d.n_reference = 4;
+  d.proj_before = 5.7612, d.proj_after = -1.234567;
+  d.refined = true, d.refined_from = -0.078, d.gap_after_first = 0.1401, d.proj_refined = 0.05;
+  Finding w;
+  w.regime = "peak", w.observable = "peak_F", w.v0 = 50, w.real = 1234.5, w.sim = 1100.25, w.real_se = 20.5,
+  w.sim_se = 15.125, w.zscore = 5.2345, w.significant = true;
+  d.where.push_back(w);
+  w.regime = "linear", w.observable = "k_z", w.v0 = 100, w.real = 3.1e5, w.sim = 3.0e5, w.zscore = 0.8, w.significant = false;
+  d.where.push_back(w);
+  for (int i = 0; i < 3; ++i) {
+    EffectFit r;
+    r.name = i == 0 ? "packing" : i == 1 ? "rolling_resistance" : "sidewalls";
+    r.magnitude = -0.15 + 0.1 * i, r.chi2_0 = 93.61, r.chi2 = 40.0 + 10 * i, r.explained = 0.9 - 0.3 * i;
+    r.heldout_explained = 0.8 - 0.2 * i, r.score = 0.8 - 0.3 * i, r.at_edge = i == 2, r.lr = 50.5 - 20 * i;
+    r.lr_null_mean = 1.2 + i, r.lr_threshold = 18.2 + 15 * i, r.detected = i < 2;
+    d.ranking.push_back(r);
+  }
+  d.magnitude_note["packing"] = "pour friction 0.150: phi_0 0.5812 against the baseline's 0.5801";
+  d.verdict = "explained", d.top_effect = "packing", d.tested_effect = "packing";
+  d.magnitude = -0.150123, d.magnitude_unit = "pour friction minus 0.3";
+  for (double v : {50.0, 100.0}) {
+    SpeedCurves c;
+    c.v0 = v, c.n_real = 4, c.n_base = 4, c.n_corr = 4;
+    c.z = {0.125, 0.375, 0.625};
+    c.real = {100 + v, 200 + v, 300 + v}, c.real_se = {5, 6, 7};
+    c.base = {90 + v, 210 + v, 280 + v}, c.base_se = {4, 5, 6};
+    c.corr = {99 + v, 201 + v, 301 + v}, c.corr_se = {4, 5, 6};
+    c.gap = {10, -10, 20}, c.band = {12.8, 15.6, 18.4};
+    c.G_before = 0.1 + v / 1000, c.G_after = 0.02 + v / 10000, c.z_transient_end = 0.75;
+    d.speeds.push_back(c);
+  }
+  d.gap_before = 0.151234, d.gap_after = 0.030456;
+  d.gap_by_regime["peak"] = {0.2, 0.05};
+  d.gap_by_regime["linear"] = {0.1, 0.01};
+  d.heldout_v0 = 100, d.heldout_before = 0.193, d.heldout_after = 0.156, d.heldout_magnitude = -0.064;
+  d.n_real_min = 4, d.n_sim = 4;
+  return d;
+}
+
+nlohmann::json read_json_file(const std::string &path)
+{
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+}    // namespace
+
+// Every key and value the hand-built writer wrote (tests/unit/data/gap_report_before_nlohmann.json:
+// its output for filled_diagnosis, kept from before the move to nlohmann) is written again,
+// numbers to the printed precision; what the new writer adds is listed, nothing else.
+void expect_same_json(const nlohmann::json &before, const nlohmann::json &now, const std::string &at)
+{
+  if (before.is_number() && now.is_number()) {
+    // the old text rounded each number to its printf format; the new rounds it the same
+    // way, so the two read back equal up to the last printed digit's rounding
+    EXPECT_NEAR(before.get<double>(), now.get<double>(), 1e-12 * std::abs(before.get<double>()) + 1e-300) << at;
+    return;
+  }
+  ASSERT_EQ(before.type(), now.type()) << at;
+  if (before.is_object()) {
+    for (auto it = before.begin(); it != before.end(); ++it) {
+      ASSERT_TRUE(now.contains(it.key())) << at << "." << it.key() << " is gone";
+      expect_same_json(it.value(), now[it.key()], at + "." + it.key());
+    }
+  } else if (before.is_array()) {
+    ASSERT_EQ(before.size(), now.size()) << at;
+    for (std::size_t i = 0; i < before.size(); ++i) expect_same_json(before[i], now[i], at + "[" + std::to_string(i) + "]");
+  } else {
+    EXPECT_EQ(before, now) << at;
+  }
+}
+
+TEST(GapReport, DiagnosisJsonKeysAndValuesAsTheHandBuiltWriterWroteThem)
+{
+  TempDir dir("report_json");
+  write_gap_report(filled_diagnosis("real"), dir.path.string());
+  const nlohmann::json now = read_json_file(dir / "diagnosis.json");
+  const nlohmann::json before = read_json_file(GRANPEN_GAP_REPORT_FIXTURE);
+  expect_same_json(before, now, "diagnosis.json");
+  // the top-level keys added since
+  std::vector<std::string> added;
+  for (auto it = now.begin(); it != now.end(); ++it)
+    if (!before.contains(it.key())) added.push_back(it.key());
+  EXPECT_EQ(added, (std::vector<std::string>{}));
+  // written through the atomic writer: no temporary left beside it
+  for (const auto &e : fs::directory_iterator(dir.path))
+    EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+}
