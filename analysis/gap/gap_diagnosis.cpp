@@ -9,6 +9,7 @@
 #include "gap_features.h"
 #include "gap_inputs.h"
 #include "gap_plan.h"
+#include "gap_residual.h"
 #include "gap_report.h"
 #include "gap_sims.h"
 #include "gap_where.h"
@@ -171,15 +172,19 @@ int run_gap_diagnosis(const GapOptions &opt, const GapProgressFn &fn)
                                         : "confirming " + d.top_effect + " on fresh seeds",
                4, 4);
   after_is_before(sims.fresh, d);
-  confirm_top_effect(by_name, data, f, al, SimContext{sc.name, measured.v0s, runner}, opt.fit_only, d);
+  const RunsBySpeed after = confirm_top_effect(by_name, data, f, al, SimContext{sc.name, measured.v0s, runner}, opt.fit_only, d);
+  how_blind(effects, data, f, d);    // after the confirmation: the next measurement follows the final verdict
 
-  // report
+  // report: what the gap left over, G per regime, the output
+  residual_stage(f, measured.runs, sims.fresh, after, data, al.grid, d);
   gap_by_regime(al.grid, sc.D, d);
   write_gap_output(d, opt.out);
   progress.say(GapProgress::INFO, "report",
-               format_text("verdict %s%s; G %.3f -> %.3f (%d measured runs per speed at least, %d simulated); %s",
+               format_text("verdict %s%s; G_all %.3f -> %.3f (%d measured runs per speed at least, %d simulated); %s",
                       d.verdict.c_str(),
-                      d.top_effect.empty() ? "" : (" (" + d.top_effect + ", magnitude " + printf_number("%.4g", d.magnitude) + ")").c_str(),
+                      !d.tie.empty() ? (" (" + d.tie[0] + " or " + d.tie[1] + ")").c_str()
+                      : d.top_effect.empty() ? ""
+                                             : (" (" + d.top_effect + ", magnitude " + printf_number("%.4g", d.magnitude) + ")").c_str(),
                       d.gap_before, d.gap_after, d.n_real_min, d.n_sim, (opt.out + "/diagnosis.json").c_str()));
   return 0;
 }
