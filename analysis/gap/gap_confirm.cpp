@@ -33,7 +33,7 @@ void run_or_throw(const std::vector<SimRequest> &req, const SimContext &sim, con
 // beds no step has seen; those runs are then the "after", and decide when the first did
 // not confirm. Returns whether the effect stands.
 bool refine(const Effect &e, const EffectData &ed, const AfterRuns &first, bool confirmed, const Features &f,
-            const Alignment &al, const SimContext &sim, Diagnosis &d)
+            const Alignment &al, const SimContext &sim, Diagnosis &d, RunsBySpeed &after)
 {
   const double c = first.uu > 0 ? first.num / first.uu : 0.0;
   if (!(std::abs(d.proj_after) >= 3.0 && (confirmed || c > 0.0))) return confirmed;
@@ -45,13 +45,13 @@ bool refine(const Effect &e, const EffectData &ed, const AfterRuns &first, bool 
   const AfterRuns second = evaluate_after(runs2, a2, ed, f, al, d);
   d.refined = true;
   d.refined_from = d.magnitude;
-  d.gap_after_first = first.G;
+  d.gap_after_first = first.all();
   d.proj_refined = second.sigma();
   std::string how = "the confirming runs at " + fmt(d.magnitude) + " left " + fmt(d.proj_after, "%.2f") +
-                    " sigma along the signature (chi^2 " + fmt(d.chi2_after, "%.1f") + ", G " + fmt(first.G, "%.3f") +
+                    " sigma along the signature (chi^2 " + fmt(d.chi2_after, "%.1f") + ", G_all " + fmt(first.all(), "%.3f") +
                     (confirmed ? "" : ": not confirmed, the magnitude short") + "); linear response gives " + fmt(a2) +
                     ", simulated on " + std::to_string(REFINE_SEEDS.size()) + " more fresh beds: chi^2 " +
-                    fmt(second.chi2, "%.1f") + ", G " + fmt(second.G, "%.3f") + ", " + fmt(d.proj_refined, "%.2f") +
+                    fmt(second.chi2, "%.1f") + ", G_all " + fmt(second.all(), "%.3f") + ", " + fmt(d.proj_refined, "%.2f") +
                     " sigma; gap after and the corrected traces are these";
   if (!confirmed) {
     // the second runs decide, and their numbers are the confirmation's
@@ -63,7 +63,9 @@ bool refine(const Effect &e, const EffectData &ed, const AfterRuns &first, bool 
   }
   d.notes.push_back("magnitude refined: " + how);
   d.magnitude = a2;
-  d.gap_after = second.G;
+  d.gap_after = second.all();
+  d.parts_after = GapParts{second.G, second.G_spec, d.n_real_min, second.runs};
+  after = std::move(runs2);
   return confirmed;
 }
 
@@ -73,15 +75,17 @@ double AfterRuns::sigma() const { return uu > 0 ? num / std::sqrt(uu) : 0.0; }
 
 void after_is_before(const RunsBySpeed &fresh, Diagnosis &d)
 {
-  for (auto &c : d.speeds) c.corr = c.base, c.corr_se = c.base_se, c.G_after = c.G_before, c.n_corr = c.n_base;
+  for (auto &c : d.speeds)
+    c.corr = c.base, c.corr_se = c.base_se, c.G_after = c.G_before, c.Gs_after = c.Gs_before, c.n_corr = c.n_base;
   d.gap_after = d.gap_before;
+  d.parts_after = d.parts_before;
   for (const auto &r : fresh)
     for (const auto &x : r.second) d.baseline_files.push_back(x.path);
   std::size_t hs = 0;
   for (std::size_t s = 0; s < d.speeds.size(); ++s)
-    if (d.speeds[s].G_before > d.speeds[hs].G_before) hs = s;
+    if (d.speeds[s].all_before() > d.speeds[hs].all_before()) hs = s;
   d.heldout_v0 = d.speeds.empty() ? 0.0 : d.speeds[hs].v0;
-  d.heldout_before = d.heldout_after = d.speeds.empty() ? 0.0 : d.speeds[hs].G_before;
+  d.heldout_before = d.heldout_after = d.speeds.empty() ? 0.0 : d.speeds[hs].all_before();
 }
 
 AfterRuns evaluate_after(RunsBySpeed &runs, double a, const EffectData &ed, const Features &f, const Alignment &al,
@@ -90,6 +94,7 @@ AfterRuns evaluate_after(RunsBySpeed &runs, double a, const EffectData &ed, cons
   const GapGrid &grid = al.grid;
   const std::size_t ns = f.nspeeds(), nb = grid.nbins(), P = grid.nfeatures();
   AfterRuns r;
+  r.runs = 1 << 30;
   d.corrected_files.clear();
   for (std::size_t s = 0; s < ns; ++s) {
     const double v = f.speeds[s];
@@ -102,7 +107,9 @@ AfterRuns evaluate_after(RunsBySpeed &runs, double a, const EffectData &ed, cons
     c.n_corr = (int) eC.n();
     for (std::size_t b = 0; b < nb; ++b) c.corr[b] = eC.mean[b], c.corr_se[b] = std::sqrt(errC[b]);
     c.G_after = gap_metric(f.real[s], eC, 0, nb);
-    r.G += c.G_after / ns;
+    c.Gs_after = s < f.spec_real.size() ? debiased_gap(f.spec_real[s], spectrum_moments(runs[v], grid)) : 0.0;
+    r.G += c.G_after / ns, r.G_spec += c.Gs_after / ns;
+    r.runs = std::min(r.runs, (int) eC.n());
     std::vector<double> ma, va, m0, v0;
     effect_predict(ed, a, s, ma, va);
     effect_predict(ed, 0.0, s, m0, v0);
@@ -137,11 +144,11 @@ bool confirms(const Diagnosis &d, double chi2a, double proj_a)
                     : d.chi2_0 - chi2a > 3.0 * std::sqrt(2.0 * P) && excess_removed(d, chi2a) >= 0.25;
 }
 
-void confirm_top_effect(const std::map<std::string, const Effect *> &by_name,
-                        const std::map<std::string, EffectData> &data, const Features &f, const Alignment &al,
-                        const SimContext &sim, bool fit_only, Diagnosis &d)
+RunsBySpeed confirm_top_effect(const std::map<std::string, const Effect *> &by_name,
+                               const std::map<std::string, EffectData> &data, const Features &f, const Alignment &al,
+                               const SimContext &sim, bool fit_only, Diagnosis &d)
 {
-  if (d.verdict != "explained") return;
+  if (d.verdict != "explained") return {};
   const EffectFit &top = d.ranking[0];
   const Effect &e = *by_name.at(d.top_effect);
   d.magnitude = top.magnitude;
@@ -150,7 +157,7 @@ void confirm_top_effect(const std::map<std::string, const Effect *> &by_name,
     d.provisional = true;
     d.notes.push_back("verdict provisional (--fit-only): " + d.top_effect + " was not simulated on fresh seeds, "
                       "so the gap after is the gap before");
-    return;
+    return {};
   }
   const EffectData &ed = data.at(e.name);
   std::size_t hs = 0;
@@ -174,22 +181,25 @@ void confirm_top_effect(const std::map<std::string, const Effect *> &by_name,
   {
     const double v = f.speeds[hs];
     align_runs(held[v], al.onset.at(v));
-    d.heldout_after = gap_metric(f.real[hs], ensemble_of(held[v], al.grid, v), 0, al.grid.nbins());
+    d.heldout_after = gap_all(gap_metric(f.real[hs], ensemble_of(held[v], al.grid, v), 0, al.grid.nbins()),
+                              hs < f.spec_real.size() ? debiased_gap(f.spec_real[hs], spectrum_moments(held[v], al.grid)) : 0.0);
   }
-  d.gap_after = first.G;
+  d.gap_after = first.all();
+  d.parts_after = GapParts{first.G, first.G_spec, d.n_real_min, first.runs};
   d.chi2_after = first.chi2;
   d.confirmed_fraction = excess_removed(d, first.chi2);
   d.proj_after = first.sigma();
-  const bool confirmed = refine(e, ed, first, confirms(d, first.chi2, d.proj_after), f, al, sim, d);
+  const bool confirmed = refine(e, ed, first, confirms(d, first.chi2, d.proj_after), f, al, sim, d, corr);
   if (!confirmed) {
     d.notes.push_back("verdict: " + d.top_effect + " at magnitude " + fmt(d.magnitude) +
                       " did not shrink the gap on fresh seeds (chi^2 " + fmt(d.chi2_0, "%.1f") + " -> " +
                       fmt(d.chi2_after, "%.1f") + " over " + std::to_string(d.nfeatures) + " features; along its signature " +
-                      fmt(d.proj_before, "%.2f") + " -> " + fmt(d.proj_after, "%.2f") + " sigma; G " +
+                      fmt(d.proj_before, "%.2f") + " -> " + fmt(d.proj_after, "%.2f") + " sigma; G_all " +
                       fmt(d.gap_before, "%.3f") + " -> " + fmt(d.gap_after, "%.3f") + "): unexplained");
     d.verdict = "unexplained";
     d.top_effect.clear();
   }
+  return corr;
 }
 
 }    // namespace granpen

@@ -27,21 +27,24 @@ struct SimContext {
   RunnerOptions runner;
 };
 
-// The "after" set to the "before" (the corrected curves the baseline's, G after = G
-// before), the reference runs as the baseline files, and the held-out speed: the one with
-// the largest gap.
+// The "after" set to the "before" (the corrected curves the baseline's, G_all and its parts
+// after = before), the reference runs as the baseline files, and the held-out speed: the one
+// with the largest G_all.
 void after_is_before(const RunsBySpeed &fresh, Diagnosis &d);
 
-// Fresh runs at magnitude a against the measurement: G after, chi^2 over every feature,
-// and the gap along the effect's signature u = M(a) - M(0), num / sqrt(uu) standard
-// deviations (num / uu: the leftover's coefficient on u).
+// Fresh runs at magnitude a against the measurement: G and G_spec after (means over speeds;
+// runs: the fewest per speed), chi^2 over every feature, and the gap along the effect's
+// signature u = M(a) - M(0), num / sqrt(uu) standard deviations (num / uu: the leftover's
+// coefficient on u).
 struct AfterRuns {
-  double G = 0, chi2 = 0, num = 0, uu = 0;
+  double G = 0, G_spec = 0, chi2 = 0, num = 0, uu = 0;
+  int runs = 0;
   double sigma() const;
+  double all() const { return gap_all(G, G_spec); }
 };
 
-// Aligns the runs (at the measured speeds' onsets), sets the corrected curves, G after per
-// speed and d.corrected_files; throws InputError when a speed has no runs.
+// Aligns the runs (at the measured speeds' onsets), sets the corrected curves, G and G_spec
+// after per speed and d.corrected_files; throws InputError when a speed has no runs.
 AfterRuns evaluate_after(RunsBySpeed &runs, double a, const EffectData &ed, const Features &f, const Alignment &al,
                          Diagnosis &d);
 
@@ -57,7 +60,8 @@ bool confirms(const Diagnosis &d, double chi2a, double proj_a);
 // The stage: for an explained verdict, simulates (through the sweep layer) and judges the
 // top effect, refines its magnitude when the runs call for it, and turns the verdict into
 // unexplained when they do not confirm it; with fit_only, marks the verdict provisional.
-void confirm_top_effect(const std::map<std::string, const Effect *> &by_name,
+// Returns the runs that are the "after" (aligned; empty when nothing was simulated).
+RunsBySpeed confirm_top_effect(const std::map<std::string, const Effect *> &by_name,
                         const std::map<std::string, EffectData> &data, const Features &f, const Alignment &al,
                         const SimContext &sim, bool fit_only, Diagnosis &d);
 

@@ -1,16 +1,14 @@
 #include "gap_data.h"
 
 #include "collapse.h"
+#include "gap_metric.h"
 #include "linear_fit.h"
 #include "trace_fit.h"
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 #include <limits>
 #include <stdexcept>
-
-#include <unsupported/Eigen/FFT>
 
 namespace granpen {
 
@@ -73,43 +71,17 @@ RunFeatures run_features(const std::vector<double> &t, const std::vector<double>
     for (std::size_t b = k * per; b < (k + 1) * per; ++b) s += sd[b];
     r.x[nb + k] = s / per;
   }
-  // spectrum of F about its bin means (linear between bin centres) over the grid
+  // spectrum of F about its bin means (the line through the bin centres) over the grid: the
+  // metric's kernel (core/gap_metric.h) without the sawtooth of a rising F against its bins
   const std::size_t nbd = grid.nbands();
   if (nbd) {
-    std::vector<double> y, tt;
-    for (std::size_t i = 0; i < std::min({t.size(), z.size(), F.size()}); ++i) {
-      if (!(z[i] > 0.0) || z[i] > grid.zmax) continue;
-      const double u = std::clamp(z[i] / grid.w - 0.5, 0.0, (double) nb - 1.0);
-      const std::size_t b = std::min(nb - 1, (std::size_t) u);
-      const double f = u - b, m = b + 1 < nb ? (1 - f) * r.x[b] + f * r.x[b + 1] : r.x[b];
-      y.push_back(F[i] - m);
-      tt.push_back(t[i]);
-    }
-    const std::size_t n = y.size();
-    if (n < 8) {
+    const Periodogram p = fluctuation_periodogram(t, z, F, grid.w, grid.zmax, Detrend::BinCentreLine);
+    if (p.n < 8) {
       r.note = "fewer than 8 samples over the common depth: no spectrum";
       return r;
     }
-    const double dt = (tt.back() - tt.front()) / (n - 1);
-    double wsum = 0.0;
-    std::vector<double> yw(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      const double hann = 0.5 - 0.5 * std::cos(2.0 * M_PI * i / (n - 1));
-      yw[i] = y[i] * hann;
-      wsum += hann * hann;
-    }
-    Eigen::FFT<double> fft;
-    std::vector<std::complex<double>> X;
-    fft.fwd(X, yw);
-    // one-sided power per bin, normalised so that the bins sum to the mean square of y
-    for (std::size_t k = 0; k < nbd; ++k) {
-      double p = 0.0;
-      for (std::size_t j = 1; j <= n / 2; ++j) {
-        const double freq = j / (n * dt);
-        if (freq >= grid.bands[k] && freq < grid.bands[k + 1]) p += 2.0 * std::norm(X[j]) / (n * wsum);
-      }
-      r.x[nb + nw + k] = std::sqrt(p);
-    }
+    const auto a = band_rms(p, grid.bands);
+    std::copy(a.begin(), a.end(), r.x.begin() + nb + nw);
   }
   r.ok = true;
   return r;
@@ -164,16 +136,20 @@ std::vector<double> pooled_cv2(const std::vector<const Ensemble *> &ensembles, c
   return cv2;
 }
 
+EnsembleMoments moments_of(const Ensemble &e)
+{
+  EnsembleMoments m;
+  m.runs = e.n();
+  m.mean = e.mean;
+  m.sq_se.assign(e.mean.size(), 0.0);
+  if (e.n() > 1)
+    for (std::size_t k = 0; k < e.var.size() && k < m.sq_se.size(); ++k) m.sq_se[k] = e.var[k] / e.n();
+  return m;
+}
+
 double gap_metric(const Ensemble &real, const Ensemble &sim, std::size_t b0, std::size_t b1)
 {
-  double num = 0.0, den = 0.0;
-  for (std::size_t b = b0; b < b1 && b < real.mean.size() && b < sim.mean.size(); ++b) {
-    const double eR = real.n() > 1 ? real.var[b] / real.n() : 0.0;
-    const double eS = sim.n() > 1 ? sim.var[b] / sim.n() : 0.0;
-    num += std::pow(real.mean[b] - sim.mean[b], 2) - eR - eS;
-    den += real.mean[b] * real.mean[b];
-  }
-  return den > 0.0 ? std::sqrt(std::max(0.0, num) / den) : 0.0;
+  return debiased_gap(moments_of(real), moments_of(sim), b0, b1);
 }
 
 RunObservables run_observables(const std::vector<double> &z, const std::vector<double> &F, double v0, double D,

@@ -6,6 +6,8 @@
 #ifndef GRANPEN_GAP_DATA_H
 #define GRANPEN_GAP_DATA_H
 
+#include "gap_metric.h"
+
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -59,6 +61,10 @@ Ensemble make_ensemble(double v0, const std::vector<std::vector<double>> &runs);
 // freedom it rests on.
 std::vector<double> pooled_cv2(const std::vector<const Ensemble *> &ensembles, const GapGrid &grid,
                                double min_cv2, int *dof = nullptr);
+
+// The ensemble's means and squared standard errors (var / n, 0 for one run), as the metric
+// kernels take them (core/gap_metric.h).
+EnsembleMoments moments_of(const Ensemble &e);
 
 // G(v0) of shared/formats/gap-metric.md over bins [b0, b1) of two ensembles' bin means.
 double gap_metric(const Ensemble &real, const Ensemble &sim, std::size_t b0, std::size_t b1);

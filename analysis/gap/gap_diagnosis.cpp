@@ -9,6 +9,7 @@
 #include "gap_features.h"
 #include "gap_inputs.h"
 #include "gap_plan.h"
+#include "gap_residual.h"
 #include "gap_report.h"
 #include "gap_sims.h"
 #include "gap_where.h"
@@ -19,7 +20,6 @@
 #include "text_util.h"
 
 #include <cmath>
-#include <cstdarg>
 #include <cstdio>
 #include <filesystem>
 #include <map>
@@ -32,19 +32,6 @@ namespace granpen {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string format(const char *f, ...)
-{
-  va_list ap, again;
-  va_start(ap, f);
-  va_copy(again, ap);
-  const int n = std::vsnprintf(nullptr, 0, f, ap);
-  va_end(ap);
-  std::string out(n > 0 ? (std::size_t) n : 0, '\0');
-  if (n > 0) std::vsnprintf(out.data(), out.size() + 1, f, again);
-  va_end(again);
-  return out;
-}
 
 // the progress callback with the stage it is in
 struct Progress {
@@ -89,7 +76,7 @@ int write_cluster_script(const GapOptions &opt, const Scenario &sc, const std::v
                 (opt.effects ? " --effects " + *opt.effects : "");
   write_slurm_allocation(job, opt.slurm);
   progress.say(GapProgress::INFO, "plan",
-               format("wrote %s: the %zu sweeps of the %s cache, about %.0f core-hours; when it has run, "
+               format_text("wrote %s: the %zu sweeps of the %s cache, about %.0f core-hours; when it has run, "
                       "rerun this diagnosis with --cache %s",
                       opt.slurm.c_str(), req.size(), opt.scenario.c_str(), h, abs_cache.c_str()));
   return 0;
@@ -112,7 +99,7 @@ int run_gap(const GapOptions &opt, const GapProgressFn &fn)
   const auto req = signature_requests(opt.scenario, v0, effects);
   if (!opt.slurm.empty()) return write_cluster_script(opt, sc, req, runner, progress);
   progress.say(GapProgress::INFO, "simulate",
-               format("preparing the %s cache in %s: %zu sweeps", opt.scenario.c_str(), runner.out_root.c_str(), req.size()));
+               format_text("preparing the %s cache in %s: %zu sweeps", opt.scenario.c_str(), runner.out_root.c_str(), req.size()));
   return run_requests(req, runner) == 0 ? 0 : 1;
 }
 
@@ -126,17 +113,17 @@ int run_gap_diagnosis(const GapOptions &opt, const GapProgressFn &fn)
   check_output_path(opt.out, opt.real, opt.cache);
   for (const auto &n : measured.notes) progress.say(GapProgress::WARNING, "validate", n);
   progress.say(GapProgress::INFO, "validate",
-               format("%zu measured runs at %zu speeds (%s cm/s) against scenario %s", measured.files.size(),
+               format_text("%zu measured runs at %zu speeds (%s cm/s) against scenario %s", measured.files.size(),
                       measured.runs.size(), joined(measured.v0s).c_str(), sc.name.c_str()));
 
   // plan and simulate: the baseline and every effect knot (cached)
   const RunnerOptions runner = cache_runner(opt);
   const std::string &cache = runner.out_root;
   progress.say(GapProgress::STEP, "simulate",
-               format("simulations of the baseline and %zu candidate effects (cache %s)", effects.size(), cache.c_str()), 1, 4);
+               format_text("simulations of the baseline and %zu candidate effects (cache %s)", effects.size(), cache.c_str()), 1, 4);
   const SimulationPlan plan = plan_simulations(sc, measured.v0s, effects, cache, opt.local);
   if (plan.core_hours > 0.0)
-    progress.say(GapProgress::INFO, "plan", format("about %.1f core-hours of simulation to run", plan.core_hours));
+    progress.say(GapProgress::INFO, "plan", format_text("about %.1f core-hours of simulation to run", plan.core_hours));
   fs::create_directories(cache);
   if (run_requests(plan.requests, runner) != 0)
     throw InputError("some simulations failed: see the manifests under " + cache + " (rerun to retry them)");
@@ -165,14 +152,14 @@ int run_gap_diagnosis(const GapOptions &opt, const GapProgressFn &fn)
   gap_significance(f, al.grid, d);
 
   // which: every effect's magnitude, explained fraction, leave-one-speed-out; the verdict
-  progress.say(GapProgress::STEP, "which", format("fitting %zu candidate effects", effects.size()), 3, 4);
+  progress.say(GapProgress::STEP, "which", format_text("fitting %zu candidate effects", effects.size()), 3, 4);
   std::map<std::string, const Effect *> by_name;
   for (const Effect *e : effects) by_name[e->name] = e;
   const auto data = fit_candidates(effects, f, [&](const std::string &sweep) { return mean_phi0(cache, sweep); }, d);
   for (std::size_t i = 0; i < d.ranking.size(); ++i) {
     const EffectFit &r = d.ranking[i];
     progress.say(GapProgress::DETAIL, "which",
-                 format("%-20s magnitude %-10s explained %5.2f  held-out %5.2f  chi2 %.1f -> %.1f  lr %.1f (threshold %.1f)",
+                 format_text("%-20s magnitude %-10s explained %5.2f  held-out %5.2f  chi2 %.1f -> %.1f  lr %.1f (threshold %.1f)",
                         r.name.c_str(), printf_number("%.4g", r.magnitude).c_str(), r.explained, r.heldout_explained, r.chi2_0,
                         r.chi2, r.lr, r.lr_threshold),
                  (int) i + 1, (int) d.ranking.size());
@@ -185,15 +172,19 @@ int run_gap_diagnosis(const GapOptions &opt, const GapProgressFn &fn)
                                         : "confirming " + d.top_effect + " on fresh seeds",
                4, 4);
   after_is_before(sims.fresh, d);
-  confirm_top_effect(by_name, data, f, al, SimContext{sc.name, measured.v0s, runner}, opt.fit_only, d);
+  const RunsBySpeed after = confirm_top_effect(by_name, data, f, al, SimContext{sc.name, measured.v0s, runner}, opt.fit_only, d);
+  how_blind(effects, data, f, d);    // after the confirmation: the next measurement follows the final verdict
 
-  // report
+  // report: what the gap left over, G per regime, the output
+  residual_stage(f, measured.runs, sims.fresh, after, data, al.grid, d);
   gap_by_regime(al.grid, sc.D, d);
   write_gap_output(d, opt.out);
   progress.say(GapProgress::INFO, "report",
-               format("verdict %s%s; G %.3f -> %.3f (%d measured runs per speed at least, %d simulated); %s",
+               format_text("verdict %s%s; G_all %.3f -> %.3f (%d measured runs per speed at least, %d simulated); %s",
                       d.verdict.c_str(),
-                      d.top_effect.empty() ? "" : (" (" + d.top_effect + ", magnitude " + printf_number("%.4g", d.magnitude) + ")").c_str(),
+                      !d.tie.empty() ? (" (" + d.tie[0] + " or " + d.tie[1] + ")").c_str()
+                      : d.top_effect.empty() ? ""
+                                             : (" (" + d.top_effect + ", magnitude " + printf_number("%.4g", d.magnitude) + ")").c_str(),
                       d.gap_before, d.gap_after, d.n_real_min, d.n_sim, (opt.out + "/diagnosis.json").c_str()));
   return 0;
 }

@@ -21,6 +21,13 @@ Ensemble ensemble_of(const std::vector<TraceRun> &runs, const GapGrid &grid, dou
   return make_ensemble(v0, x);
 }
 
+EnsembleMoments spectrum_moments(const std::vector<TraceRun> &runs, const GapGrid &grid)
+{
+  std::vector<std::vector<double>> a;
+  for (const auto &r : runs) a.push_back(fluctuation_bands(r.t, r.z, r.F, grid.w, grid.zmax));
+  return ensemble_moments(a);
+}
+
 std::vector<double> model_err(const Ensemble &e, const std::vector<double> &cv2, double scale)
 {
   std::vector<double> v(e.mean.size());
@@ -88,6 +95,7 @@ void speed_ensembles(Features &f, std::size_t s, const RunsBySpeed &real, const 
 {
   const double v = f.speeds[s];
   f.real[s] = ensemble_of(real.at(v), grid, v);
+  f.spec_real[s] = spectrum_moments(real.at(v), grid);
   f.base[s] = ensemble_of(sims.base.at(v), grid, v);
   // the noise model pools ensembles on beds of their own: a push-only effect's runs
   // repeat the baseline's beds, and would count the same bed-to-bed difference again
@@ -120,6 +128,7 @@ Features build_features(const RunsBySpeed &real, const SimulatedRuns &sims, cons
   for (const auto &[v, _] : real) f.speeds.push_back(v);
   const std::size_t ns = f.nspeeds();
   f.real.resize(ns), f.base.resize(ns), f.fresh.resize(ns), f.cv2.resize(ns), f.fresh_err.resize(ns);
+  f.spec_real.resize(ns), f.spec_fresh.resize(ns);
   f.dof_min = 1 << 30;
   for (std::size_t s = 0; s < ns; ++s) speed_ensembles(f, s, real, sims, effects, grid);
   // The fits see the gap against the baseline on the reference beds (seeds 11 to 14), not
@@ -131,6 +140,7 @@ Features build_features(const RunsBySpeed &real, const SimulatedRuns &sims, cons
   for (std::size_t s = 0; s < ns; ++s) {
     f.fresh[s] = ensemble_of(sims.fresh.at(f.speeds[s]), grid, f.speeds[s]);
     f.fresh_err[s] = model_err(f.fresh[s], f.cv2[s]);
+    f.spec_fresh[s] = spectrum_moments(sims.fresh.at(f.speeds[s]), grid);
   }
   // null replicates: the reference beds split in two, one part taken as a measurement
   // without any effect (as many runs as the measurement has, leaving at least two), the rest

@@ -28,6 +28,7 @@ struct Features {
   Target target;                                         // the measured means and their variances
   std::vector<double> target_scale;                      // per speed: measured noise / the model's
   std::vector<Target> nulls;                             // null replicates
+  std::vector<EnsembleMoments> spec_real, spec_fresh;    // per speed: the metric's band amplitudes (G_spec)
   int dof_min = 0;                                       // degrees of freedom of the noise model (fewest)
   int n_reference = 0;                                   // reference runs per speed (fewest)
   std::vector<std::string> notes;                        // said in the report
@@ -37,6 +38,10 @@ struct Features {
 // The ensemble of run features of runs at speed v0; throws InputError naming a run whose
 // features cannot be formed (too short for the grid).
 Ensemble ensemble_of(const std::vector<TraceRun> &runs, const GapGrid &grid, double v0);
+
+// The metric's band amplitudes (core/gap_metric.h: the fluctuation about each run's bin means
+// over the grid) of every run, as an ensemble: for G_spec.
+EnsembleMoments spectrum_moments(const std::vector<TraceRun> &runs, const GapGrid &grid);
 
 // Variance of the mean per feature from the pooled relative noise model, times scale.
 std::vector<double> model_err(const Ensemble &e, const std::vector<double> &cv2, double scale = 1.0);

@@ -56,6 +56,21 @@ void effect_predict(const EffectData &e, double a, std::size_t s, std::vector<do
     for (std::size_t k = 0; k < p; ++k) var[k] += (1.0 - w[j0]) * (1.0 - w[j0]) * e.ref_err[0][s][k];
 }
 
+void effect_signature(const EffectData &e, double a, std::size_t s, std::vector<double> &u, std::vector<double> &var)
+{
+  std::vector<double> m0, v0;
+  effect_predict(e, a, s, u, var);
+  effect_predict(e, 0.0, s, m0, v0);
+  const std::size_t j0 = zero_knot(e);
+  const double w0 = weights(e.knots, a)[j0];
+  for (std::size_t k = 0; k < u.size(); ++k) {
+    u[k] -= m0[k];
+    // effect_predict's variance less the reference's part: once for a paired effect, with
+    // weight w0^2 for an unpaired one
+    var[k] = std::max(0.0, var[k] - (e.paired ? 1.0 : w0 * w0) * e.err[j0][s][k]);
+  }
+}
+
 double effect_chi2(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds)
 {
   // against the model with its own variance (reported; the fit uses fixed weights)

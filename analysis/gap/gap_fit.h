@@ -48,6 +48,12 @@ double effect_chi2(const Target &t, const EffectData &e, double a, const std::ve
 // Model prediction and its variance at magnitude a, speed s.
 void effect_predict(const EffectData &e, double a, std::size_t s, std::vector<double> &mean, std::vector<double> &var);
 
+// The effect's signature at magnitude a, speed s: u = M(a) - M(0) per feature, and the
+// variance u carries from the knots' ensembles (the reference's, common to M(a) and M(0),
+// cancels): for a paired effect the paired differences', else the knots' and the signature
+// baseline's with their interpolation weights.
+void effect_signature(const EffectData &e, double a, std::size_t s, std::vector<double> &u, std::vector<double> &var);
+
 struct EffectFit {
   std::string name;
   double magnitude = 0.0;           // best fit over all speeds
@@ -66,6 +72,7 @@ struct EffectFit {
   // direction), and the threshold lr must pass
   double lr = 0.0, lr_null_mean = 0.0, lr_threshold = 0.0;
   bool detected = false;
+  std::vector<double> lr_nulls;     // the statistic on each null replicate (their mean is lr_null_mean)
 };
 
 EffectFit fit_effect(const Target &t, const EffectData &e);
@@ -93,6 +100,9 @@ double lr_threshold(double lr_null_mean);
 // excess over the nominal 1 subtracted): a signature that rests on few, noisy beds fits
 // part of any noise, and this is the evidence two candidates are compared by.
 inline double lr_evidence(const EffectFit &f) { return f.lr - (f.lr_null_mean > 1.0 ? f.lr_null_mean - 1.0 : 0.0); }
+
+// Two candidates are told apart by an evidence margin of 6 (a likelihood ratio of e^3 = 20).
+constexpr double EVIDENCE_MARGIN = 6.0;
 
 // Per speed, the mean over null replicates (measurements without any effect) of the
 // weighted squared residual at magnitude 0: for EffectData::noise_r2.

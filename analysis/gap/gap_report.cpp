@@ -3,7 +3,8 @@
 #include "gap_report.h"
 
 #include "gap_plan.h"
-#include "json_text.h"
+#include "atomic_file.h"
+#include "json_writer.h"
 #include "plot_writer.h"
 #include "sweep_cache.h"
 #include "text_util.h"
@@ -22,100 +23,204 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string num(double v, const char *f = "%.6g") { return json_number(f, v); }
+Json num(double v, const char *f = "%.6g") { return json_rounded(f, v); }
+
+Json str_or_null(const std::string &s) { return s.empty() ? Json() : Json(s); }
 
 std::string f3(double v, const char *f = "%.3f") { return printf_number(f, v); }
 
-void write_json(const Diagnosis &d, const std::string &path)
+Json confirmation_json(const Diagnosis &d)
 {
-  FILE *f = std::fopen(path.c_str(), "w");
-  if (!f) throw InputError(path + ": cannot write");
-  auto str_or_null = [](const std::string &s) { return s.empty() ? std::string("null") : json_string(s); };
-  std::fprintf(f, "{\n  \"verdict\": %s,\n  \"top_effect\": %s,\n  \"magnitude\": %s,\n  \"magnitude_unit\": %s,\n",
-               json_string(d.verdict).c_str(), str_or_null(d.top_effect).c_str(),
-               d.top_effect.empty() ? "null" : num(d.magnitude).c_str(), str_or_null(d.magnitude_unit).c_str());
-  std::fprintf(f, "  \"tested_effect\": %s,\n  \"scenario\": %s,\n  \"real\": %s,\n",
-               str_or_null(d.tested_effect).c_str(), json_string(d.scenario).c_str(), json_string(d.real_dir).c_str());
-  std::fprintf(f, "  \"gap_before\": %s,\n  \"gap_after\": %s,\n  \"gap_metric\": \"shared/formats/gap-metric.md v1\",\n",
-               num(d.gap_before).c_str(), num(d.gap_after).c_str());
-  std::fprintf(f, "  \"runs\": {\"real_min_per_speed\": %d, \"sim_per_speed\": %d},\n", d.n_real_min, d.n_sim);
-  std::fprintf(f, "  \"grid\": {\"w\": %s, \"zmax\": %s, \"window\": %s},\n", num(d.grid.w).c_str(),
-               num(d.grid.zmax).c_str(), num(d.grid.window).c_str());
-  std::fprintf(f, "  \"significance\": {\"chi2\": %s, \"features\": %zu, \"p_value\": %s, \"significant\": %s, "
-                  "\"route\": %s, \"null_replicates\": %d},\n",
-               num(d.chi2_0).c_str(), d.nfeatures, num(d.p_value, "%.3g").c_str(), d.significant ? "true" : "false",
-               !d.significant ? "null" : d.targeted ? "\"targeted\"" : "\"omnibus\"", d.n_null);
-  std::fprintf(f, "  \"confirmed\": %s,\n", d.verdict != "explained" ? "null" : d.provisional ? "false" : "true");
-  std::fprintf(f, "  \"confirmation\": {\"chi2_after\": %s, \"explained_fraction\": %s, \"signature_sigma_before\": %s, "
-                  "\"signature_sigma_after\": %s},\n",
-               d.tested_effect.empty() ? "null" : num(d.chi2_after).c_str(),
-               d.tested_effect.empty() ? "null" : num(d.confirmed_fraction, "%.4f").c_str(),
-               d.tested_effect.empty() ? "null" : num(d.proj_before, "%.4f").c_str(),
-               d.tested_effect.empty() ? "null" : num(d.proj_after, "%.4f").c_str());
-  if (d.refined)
-    std::fprintf(f, "  \"refinement\": {\"from\": %s, \"gap_after_first\": %s, \"signature_sigma_after\": %s},\n",
-                 num(d.refined_from).c_str(), num(d.gap_after_first).c_str(), num(d.proj_refined, "%.4f").c_str());
-  else
-    std::fprintf(f, "  \"refinement\": null,\n");
-  std::fprintf(f, "  \"gap_by_regime\": {");
-  bool first = true;
-  for (const auto &[reg, ba] : d.gap_by_regime) {
-    std::fprintf(f, "%s\n    %s: {\"before\": %s, \"after\": %s}", first ? "" : ",", json_string(reg).c_str(),
-                 num(ba.first).c_str(), num(ba.second).c_str());
-    first = false;
+  const bool tested = !d.tested_effect.empty();
+  return Json{{"chi2_after", tested ? num(d.chi2_after) : Json()},
+              {"explained_fraction", tested ? num(d.confirmed_fraction, "%.4f") : Json()},
+              {"signature_sigma_before", tested ? num(d.proj_before, "%.4f") : Json()},
+              {"signature_sigma_after", tested ? num(d.proj_after, "%.4f") : Json()}};
+}
+
+Json ranking_json(const Diagnosis &d)
+{
+  Json rows = Json::array();
+  for (const auto &r : d.ranking) {
+    Json row{{"effect", r.name},
+             {"explained_fraction", num(r.explained, "%.4f")},
+             {"score", num(r.score, "%.4f")},
+             {"magnitude", num(r.magnitude)},
+             {"heldout_explained", num(r.heldout_explained, "%.4f")},
+             {"chi2", num(r.chi2, "%.2f")},
+             {"chi2_baseline", num(r.chi2_0, "%.2f")},
+             {"at_edge", r.at_edge},
+             {"likelihood_ratio", num(r.lr, "%.2f")},
+             {"lr_null_mean", num(r.lr_null_mean, "%.3f")},
+             {"lr_threshold", num(r.lr_threshold, "%.2f")},
+             {"detected", r.detected},
+             {"evidence", num(lr_evidence(r), "%.2f")}};
+    const auto it = d.magnitude_note.find(r.name);
+    if (it != d.magnitude_note.end()) row["note"] = it->second;
+    rows.push_back(row);
   }
-  std::fprintf(f, "\n  },\n  \"heldout\": {\"v0\": %s, \"gap_before\": %s, \"gap_after\": %s, \"magnitude\": %s},\n",
-               num(d.heldout_v0).c_str(), num(d.heldout_before).c_str(), num(d.heldout_after).c_str(),
-               d.tested_effect.empty() ? "null" : num(d.heldout_magnitude).c_str());
-  std::fprintf(f, "  \"per_speed\": [");
-  for (std::size_t s = 0; s < d.speeds.size(); ++s) {
-    const auto &c = d.speeds[s];
-    std::fprintf(f, "%s\n    {\"v0\": %s, \"gap_before\": %s, \"gap_after\": %s, \"n_real\": %d, \"n_sim\": %d, "
-                    "\"z_transient_end\": %s}",
-                 s ? "," : "", num(c.v0).c_str(), num(c.G_before).c_str(), num(c.G_after).c_str(), c.n_real, c.n_base,
-                 num(c.z_transient_end).c_str());
+  return rows;
+}
+
+Json where_json(const Diagnosis &d)
+{
+  Json rows = Json::array();
+  for (const auto &w : d.where)
+    rows.push_back(Json{{"regime", w.regime}, {"observable", w.observable}, {"v0", num(w.v0)}, {"real", num(w.real)},
+                        {"sim", num(w.sim)}, {"zscore", num(w.zscore, "%.3f")}, {"real_se", num(w.real_se)},
+                        {"sim_se", num(w.sim_se)}, {"significant", w.significant}});
+  return rows;
+}
+
+Json numbers(const std::vector<double> &v)
+{
+  Json a = Json::array();
+  for (double x : v) a.push_back(num(x));
+  return a;
+}
+
+// per speed: the gap before and after, and the gap curve
+void speeds_json(const Diagnosis &d, Json &per_speed, Json &curve)
+{
+  per_speed = Json::array(), curve = Json::array();
+  for (const auto &c : d.speeds) {
+    per_speed.push_back(Json{{"v0", num(c.v0)},
+                             {"gap_before", num(c.all_before())},
+                             {"gap_after", num(c.all_after())},
+                             {"n_real", c.n_real},
+                             {"n_sim", c.n_base},
+                             {"z_transient_end", num(c.z_transient_end)},
+                             {"G_before", num(c.G_before)},
+                             {"G_spec_before", num(c.Gs_before)},
+                             {"G_after", num(c.G_after)},
+                             {"G_spec_after", num(c.Gs_after)},
+                             {"n_after", c.n_corr}});
+    curve.push_back(Json{{"v0", num(c.v0)}, {"z", numbers(c.z)}, {"gap", numbers(c.gap)}, {"band", numbers(c.band)}});
   }
-  std::fprintf(f, "\n  ],\n  \"ranking\": [");
-  for (std::size_t i = 0; i < d.ranking.size(); ++i) {
-    const auto &r = d.ranking[i];
-    std::fprintf(f, "%s\n    {\"effect\": %s, \"explained_fraction\": %s, \"score\": %s, \"magnitude\": %s, "
-                    "\"heldout_explained\": %s, \"chi2\": %s, \"chi2_baseline\": %s, \"at_edge\": %s, "
-                    "\"likelihood_ratio\": %s, \"lr_null_mean\": %s, \"lr_threshold\": %s, \"detected\": %s, "
-                    "\"evidence\": %s",
-                 i ? "," : "", json_string(r.name).c_str(), num(r.explained, "%.4f").c_str(), num(r.score, "%.4f").c_str(),
-                 num(r.magnitude).c_str(), num(r.heldout_explained, "%.4f").c_str(), num(r.chi2, "%.2f").c_str(),
-                 num(r.chi2_0, "%.2f").c_str(), r.at_edge ? "true" : "false", num(r.lr, "%.2f").c_str(),
-                 num(r.lr_null_mean, "%.3f").c_str(), num(r.lr_threshold, "%.2f").c_str(), r.detected ? "true" : "false",
-                 num(lr_evidence(r), "%.2f").c_str());
-    auto it = d.magnitude_note.find(r.name);
-    if (it != d.magnitude_note.end()) std::fprintf(f, ", \"note\": %s", json_string(it->second).c_str());
-    std::fprintf(f, "}");
-  }
-  std::fprintf(f, "\n  ],\n  \"where\": [");
-  for (std::size_t i = 0; i < d.where.size(); ++i) {
-    const auto &w = d.where[i];
-    std::fprintf(f, "%s\n    {\"regime\": %s, \"observable\": %s, \"v0\": %s, \"real\": %s, \"sim\": %s, \"zscore\": %s, "
-                    "\"real_se\": %s, \"sim_se\": %s, \"significant\": %s}",
-                 i ? "," : "", json_string(w.regime).c_str(), json_string(w.observable).c_str(), num(w.v0).c_str(),
-                 num(w.real).c_str(), num(w.sim).c_str(), num(w.zscore, "%.3f").c_str(), num(w.real_se).c_str(),
-                 num(w.sim_se).c_str(), w.significant ? "true" : "false");
-  }
-  std::fprintf(f, "\n  ],\n  \"gap_curve\": [");
-  for (std::size_t s = 0; s < d.speeds.size(); ++s) {
-    const auto &c = d.speeds[s];
-    std::fprintf(f, "%s\n    {\"v0\": %s, \"z\": [", s ? "," : "", num(c.v0).c_str());
-    for (std::size_t b = 0; b < c.z.size(); ++b) std::fprintf(f, "%s%s", b ? ", " : "", num(c.z[b]).c_str());
-    std::fprintf(f, "], \"gap\": [");
-    for (std::size_t b = 0; b < c.z.size(); ++b) std::fprintf(f, "%s%s", b ? ", " : "", num(c.gap[b]).c_str());
-    std::fprintf(f, "], \"band\": [");
-    for (std::size_t b = 0; b < c.z.size(); ++b) std::fprintf(f, "%s%s", b ? ", " : "", num(c.band[b]).c_str());
-    std::fprintf(f, "]}");
-  }
-  std::fprintf(f, "\n  ],\n  \"notes\": [");
-  for (std::size_t i = 0; i < d.notes.size(); ++i)
-    std::fprintf(f, "%s\n    %s", i ? "," : "", json_string(d.notes[i]).c_str());
-  std::fprintf(f, "\n  ]\n}\n");
-  if (std::fclose(f) != 0) throw InputError(path + ": write failed");
+}
+
+Json parts_json(const GapParts &p)
+{
+  return Json{{"G", num(p.G)}, {"G_spec", num(p.G_spec)}, {"G_all", num(p.all())}, {"runs_real", p.runs_real},
+              {"runs_sim", p.runs_sim}};
+}
+
+Json optional_number(const std::optional<double> &v) { return v ? num(*v) : Json(); }
+
+Json limits_json(const Diagnosis &d)
+{
+  Json rows = Json::array();
+  for (const auto &L : d.limits)
+    rows.push_back(Json{{"effect", L.effect},
+                        {"limit", optional_number(L.limit)},
+                        {"runs_needed", L.runs_needed ? Json(*L.runs_needed) : Json()},
+                        {"reference", num(L.reference)},
+                        {"limit_other_side", optional_number(L.limit_other_side)},
+                        {"lr_threshold", num(L.threshold, "%.2f")},
+                        {"unit", L.unit}});
+  return rows;
+}
+
+Json false_alarms_json(const FalseAlarms &fa)
+{
+  Json verdicts = Json::object();
+  for (const auto &[v, n] : fa.verdicts) verdicts[v] = n;
+  return Json{{"null_replicates", fa.replicates}, {"not_none", fa.not_none}, {"rate", num(fa.rate(), "%.4f")},
+              {"verdicts", verdicts}};
+}
+
+Json look_alikes_json(const Diagnosis &d)
+{
+  Json rows = Json::array();
+  for (const auto &l : d.look_alikes)
+    rows.push_back(Json{{"a", l.a}, {"b", l.b}, {"angle_deg", num(l.angle_deg, "%.1f")},
+                        {"separation", num(l.separation, "%.3g")}, {"look_alike", l.look_alike},
+                        {"fit_separation", num(l.fit_separation, "%.3g")}});
+  return rows;
+}
+
+Json next_json(const std::optional<NextMeasurement> &m)
+{
+  if (!m) return Json();
+  return Json{{"goal", m->goal},          {"effects", m->effects},         {"v0", num(m->v0)},
+              {"runs", m->runs},          {"expected_gain", num(m->gain(), "%.3g")}, {"now", num(m->now, "%.3g")},
+              {"after", num(m->after, "%.3g")}, {"target", num(m->target, "%.3g")}, {"reaches", m->reaches}};
+}
+
+Json residual_json(const std::optional<Residual> &r)
+{
+  if (!r) return Json();
+  Json lines = Json::array();
+  for (const auto &l : r->lines)
+    lines.push_back(Json{{"v0", num(l.v0)}, {"freq", num(l.freq, "%.4g")}, {"ratio", num(l.ratio, "%.3g")},
+                         {"sigma", num(l.sigma, "%.3g")}});
+  const bool where = !r->regimes.empty();
+  return Json{{"against", r->against},
+              {"regimes", r->regimes},
+              {"z_from", where ? num(r->z_from) : Json()},
+              {"z_to", where ? num(r->z_to) : Json()},
+              {"bins_beyond_2sigma", r->bins_beyond},
+              {"moves", r->moves},
+              {"bin_means", Json{{"chi2", num(r->chi2_means, "%.2f")}, {"dof", r->dof_means}, {"p_value", num(r->p_means, "%.3g")}}},
+              {"fluctuations", Json{{"chi2", num(r->chi2_fluct, "%.2f")}, {"dof", r->dof_fluct}, {"p_value", num(r->p_fluct, "%.3g")}}},
+              {"band", r->band.empty() ? Json() : Json(r->band)},
+              {"band_ratio", r->band.empty() ? Json() : num(r->band_ratio, "%.3g")},
+              {"lines", lines},
+              {"line_scaling", r->line_scaling.empty() ? Json() : Json(r->line_scaling)},
+              {"nearest", r->nearest.empty() ? Json() : Json(r->nearest)},
+              {"why_rejected", r->why_rejected.empty() ? Json() : Json(r->why_rejected)}};
+}
+
+// diagnosis.json: the keys in the order other tools have read them since version 1
+Json diagnosis_json(const Diagnosis &d)
+{
+  Json j;
+  j["verdict"] = d.verdict;
+  j["top_effect"] = str_or_null(d.top_effect);
+  j["magnitude"] = d.top_effect.empty() ? Json() : num(d.magnitude);
+  j["magnitude_unit"] = str_or_null(d.magnitude_unit);
+  j["tested_effect"] = str_or_null(d.tested_effect);
+  j["scenario"] = d.scenario;
+  j["real"] = d.real_dir;
+  j["gap_before"] = num(d.gap_before);
+  j["gap_after"] = num(d.gap_after);
+  j["gap_metric"] = "shared/formats/gap-metric.md v2";
+  j["gap_parts"] = Json{{"before", parts_json(d.parts_before)}, {"after", parts_json(d.parts_after)}};
+  j["tie"] = d.tie.empty() ? Json() : Json(d.tie);
+  j["runs"] = Json{{"real_min_per_speed", d.n_real_min}, {"sim_per_speed", d.n_sim}};
+  j["grid"] = Json{{"w", num(d.grid.w)}, {"zmax", num(d.grid.zmax)}, {"window", num(d.grid.window)}};
+  j["significance"] = Json{{"chi2", num(d.chi2_0)},
+                           {"features", d.nfeatures},
+                           {"p_value", num(d.p_value, "%.3g")},
+                           {"significant", d.significant},
+                           {"route", !d.significant ? Json() : Json(d.targeted ? "targeted" : "omnibus")},
+                           {"null_replicates", d.n_null}};
+  j["confirmed"] = d.verdict != "explained" ? Json() : Json(!d.provisional);
+  j["confirmation"] = confirmation_json(d);
+  j["refinement"] = !d.refined ? Json()
+                               : Json{{"from", num(d.refined_from)},
+                                      {"gap_after_first", num(d.gap_after_first)},
+                                      {"signature_sigma_after", num(d.proj_refined, "%.4f")}};
+  Json regimes = Json::object();
+  for (const auto &[reg, ba] : d.gap_by_regime) regimes[reg] = Json{{"before", num(ba.first)}, {"after", num(ba.second)}};
+  j["gap_by_regime"] = regimes;
+  j["heldout"] = Json{{"v0", num(d.heldout_v0)},
+                      {"gap_before", num(d.heldout_before)},
+                      {"gap_after", num(d.heldout_after)},
+                      {"magnitude", d.tested_effect.empty() ? Json() : num(d.heldout_magnitude)}};
+  Json per_speed, curve;
+  speeds_json(d, per_speed, curve);
+  j["per_speed"] = per_speed;
+  j["ranking"] = ranking_json(d);
+  j["where"] = where_json(d);
+  j["gap_curve"] = curve;
+  j["detection_limits"] = limits_json(d);
+  j["false_alarms"] = false_alarms_json(d.false_alarms);
+  j["look_alikes"] = look_alikes_json(d);
+  j["next_measurement"] = next_json(d.next);
+  j["residual"] = residual_json(d.residual);
+  j["notes"] = d.notes;
+  return j;
 }
 
 std::vector<double> add(const std::vector<double> &a, const std::vector<double> &b, double s)
@@ -147,6 +252,53 @@ PlotSeries mean_with_band(const std::string &title, const std::vector<double> &z
   s.band_hi = add(mean, se, 2);
   s.colour = colour;
   return s;
+}
+
+// The residual: per speed its bin means against depth with the 2-sigma band, and below the
+// ratio of the measured to the model's mean periodogram, the bands' edges and any line marked.
+SeriesFigure residual_figure(const Residual &r, const GapGrid &grid)
+{
+  bool spectra = false;
+  for (const auto &c : r.curves) spectra = spectra || !c.freq.empty();
+  SeriesFigure fig = per_speed_figure("residual", "the residual (measured minus " + r.against +
+                                                      "): bin means, and the fluctuation spectrum's ratio",
+                                      r.curves.size(), spectra ? 820 : 460);
+  for (const auto &c : r.curves) {
+    SeriesPanel p;
+    p.title = "v_0 = " + f3(c.v0, "%g") + " cm/s";
+    p.xlabel = "depth z (cm)";
+    p.ylabel = "F_{real} - F_{model} (dyne)";
+    p.key = fig.panels.empty() ? "column" : "off";
+    PlotSeries g{"residual of the bin means", c.z, c.resid};
+    g.band_lo = add(std::vector<double>(c.z.size(), 0.0), c.band, -1), g.band_hi = c.band;
+    g.band_title = "noise band (2 sigma)";
+    g.colour = "#000000";
+    g.style = "linespoints";
+    p.series = {g};
+    p.guides = {PlotGuide{"0", ""}};
+    fig.panels.push_back(p);
+  }
+  for (std::size_t s = 0; spectra && s < r.curves.size(); ++s) {
+    const auto &c = r.curves[s];
+    SeriesPanel p;
+    p.title = "v_0 = " + f3(c.v0, "%g") + " cm/s: spectrum";
+    p.xlabel = "frequency (Hz)";
+    p.ylabel = "power, measured / model";
+    p.logx = p.logy = true;
+    p.xmin = 40, p.xmax = 5000;
+    p.key = "off";
+    PlotSeries q{"mean periodogram ratio", c.freq, c.ratio};
+    q.colour = "#1f77b4";
+    q.line_width = 1.2;
+    p.series = {q};
+    p.guides = {PlotGuide{"1", ""}};
+    for (double e : grid.bands) p.vlines.push_back(PlotVLine{e, f3(e, "%g")});
+    for (const auto &l : r.lines)
+      if (l.v0 == c.v0) p.vlines.push_back(PlotVLine{l.freq, "line " + f3(l.freq, "%.0f") + " Hz", "#d62728", 1});
+    if (c.freq.empty()) p.title += " (no runs)";
+    fig.panels.push_back(p);
+  }
+  return fig;
 }
 
 // The figures into dir/figures: the names drawn, and why any was not (said in the report).
@@ -215,57 +367,79 @@ void draw_figures(const Diagnosis &d, const std::string &dir, std::vector<std::s
   }
   bc.guides = {PlotGuide{"0.5", "0.5: needed for explained"}};
   if (!bc.labels.empty()) draw(bar_chart(bc));
+  if (d.residual && !d.residual->curves.empty()) draw(series_figure(residual_figure(*d.residual, d.grid)));
 }
 
-void write_markdown(const Diagnosis &d, const std::string &path, const std::vector<std::string> &figures,
-                    const std::vector<std::string> &failures)
+// report.md's top: the verdict and the gap before and after
+std::string md_summary(const Diagnosis &d)
 {
-  FILE *f = std::fopen(path.c_str(), "w");
-  if (!f) throw InputError(path + ": cannot write");
-  std::fprintf(f, "# granpen gap: %s\n\n", d.real_dir.c_str());
-  std::fprintf(f, "Scenario `%s`; grid 0 < z <= %.2f cm in %.2f cm bins; at least %d measured run(s) per speed; the "
+  std::string md;
+  md += format_text("# granpen gap: %s\n\n", d.real_dir.c_str());
+  md += format_text("Scenario `%s`; grid 0 < z <= %.2f cm in %.2f cm bins; at least %d measured run(s) per speed; the "
                   "baseline on %d reference beds (before), each effect's signature on %zu beds per magnitude, the "
                   "confirmation on %zu fresh beds (after).\n\n",
                d.scenario.c_str(), d.grid.zmax, d.grid.w, d.n_real_min, d.n_sim, SIGNATURE_SEEDS.size(),
                CONFIRM_SEEDS.size());
-  std::fprintf(f, "**Verdict: %s%s**%s.  \n", d.verdict.c_str(), d.provisional ? " (provisional: not confirmed, --fit-only)" : "",
-               d.top_effect.empty() ? "" : (" — " + d.top_effect + " at magnitude " + f3(d.magnitude, "%.4g") + " (" + d.magnitude_unit + ")").c_str());
-  std::fprintf(f, "Overall gap G (shared/formats/gap-metric.md): %.3f before, %.3f after%s.  \n", d.gap_before,
-               d.gap_after, d.tested_effect.empty() ? " (nothing added)" : (" adding " + d.tested_effect + " on fresh seeds").c_str());
-  std::fprintf(f, "Held-out speed %.4g cm/s: %.3f before, %.3f after.  \n", d.heldout_v0, d.heldout_before, d.heldout_after);
-  std::fprintf(f, "Gap significance: chi^2 = %.1f over %zu features, p = %.3g%s.", d.chi2_0, d.nfeatures, d.p_value,
+  const std::string named = !d.tie.empty() ? " — " + d.tie[0] + " or " + d.tie[1] + ": they cannot be told apart here"
+                            : d.top_effect.empty()
+                                ? ""
+                                : " — " + d.top_effect + " at magnitude " + f3(d.magnitude, "%.4g") + " (" + d.magnitude_unit + ")";
+  md += format_text("**Verdict: %s%s**%s.  \n", d.verdict.c_str(), d.provisional ? " (provisional: not confirmed, --fit-only)" : "",
+                    named.c_str());
+  const GapParts &b = d.parts_before, &a = d.parts_after;
+  md += format_text("Overall gap G_all (shared/formats/gap-metric.md v2): %.3f before, %.3f after%s; its parts: G (bin "
+                    "means) %.3f -> %.3f, G_spec (fluctuation spectrum) %.3f -> %.3f (%d measured runs per speed against "
+                    "%d simulated before, %d after).  \n",
+                    d.gap_before, d.gap_after,
+                    d.tested_effect.empty() ? " (nothing added)" : (" adding " + d.tested_effect + " on fresh seeds").c_str(),
+                    b.G, a.G, b.G_spec, a.G_spec, b.runs_real, b.runs_sim, a.runs_sim);
+  md += format_text("Held-out speed %.4g cm/s: %.3f before, %.3f after.  \n", d.heldout_v0, d.heldout_before, d.heldout_after);
+  md += format_text("Gap significance: chi^2 = %.1f over %zu features, p = %.3g%s.", d.chi2_0, d.nfeatures, d.p_value,
                d.targeted ? " (not significant over all features; found along one candidate's signature, see Which)" : "");
   if (!d.tested_effect.empty())
-    std::fprintf(f, " With %s on fresh seeds: chi^2 = %.1f (%.0f%% of the excess removed); the gap along its signature "
+    md += format_text(" With %s on fresh seeds: chi^2 = %.1f (%.0f%% of the excess removed); the gap along its signature "
                     "%.2f -> %.2f standard deviations.",
                  d.tested_effect.c_str(), d.chi2_after, 100.0 * d.confirmed_fraction, d.proj_before, d.proj_after);
   if (d.refined)
-    std::fprintf(f, " That left the gap significant along the signature, so the magnitude was refined from %.4g to %.4g "
-                    "by linear response and simulated on %zu more fresh beds (G %.3f -> %.3f; %.2f standard deviations "
+    md += format_text(" That left the gap significant along the signature, so the magnitude was refined from %.4g to %.4g "
+                    "by linear response and simulated on %zu more fresh beds (G_all %.3f -> %.3f; %.2f standard deviations "
                     "left along the signature): the gap after and the corrected curves are these runs'.",
                  d.refined_from, d.magnitude, REFINE_SEEDS.size(), d.gap_after_first, d.gap_after, d.proj_refined);
-  std::fprintf(f, "\n\n");
-  std::fprintf(f, "## Where\n\n| regime | observable | v0 (cm/s) | measured | simulated | z-score |\n|---|---|---|---|---|---|\n");
+  md += format_text("\n\n");
+  return md;
+}
+// report.md's Where: the observables per regime and G per regime
+std::string md_where(const Diagnosis &d)
+{
+  std::string md;
+  md += format_text("## Where\n\n| regime | observable | v0 (cm/s) | measured | simulated | z-score |\n|---|---|---|---|---|---|\n");
   for (const auto &w : d.where)
-    std::fprintf(f, "| %s | %s | %.4g | %.4g +- %.2g | %.4g +- %.2g | %s%.2f%s |\n", w.regime.c_str(), w.observable.c_str(),
+    md += format_text("| %s | %s | %.4g | %.4g +- %.2g | %.4g +- %.2g | %s%.2f%s |\n", w.regime.c_str(), w.observable.c_str(),
                  w.v0, w.real, w.real_se, w.sim, w.sim_se, w.significant ? "**" : "", w.zscore, w.significant ? "**" : "");
-  std::fprintf(f, "\nA finding is significant (bold) when |z| > 3, z = (measured - simulated) / sqrt(se_m^2 + se_s^2), "
+  md += format_text("\nA finding is significant (bold) when |z| > 3, z = (measured - simulated) / sqrt(se_m^2 + se_s^2), "
                   "standard errors from the run-to-run variance pooled over every simulated ensemble of the speed "
                   "(the measured side's scaled by how much more its runs scatter); peak: z <= 0.35 D, transient: up "
                   "to the baseline's crossover depth, linear: beyond.\n\n");
-  std::fprintf(f, "| regime | G before | G after |\n|---|---|---|\n");
-  for (const auto &[reg, ba] : d.gap_by_regime) std::fprintf(f, "| %s | %.3f | %.3f |\n", reg.c_str(), ba.first, ba.second);
-  std::fprintf(f, "\n## Which\n\n| effect | magnitude | explained | held-out explained | chi^2 (reference %.1f) | "
+  md += format_text("| regime | G before | G after |\n|---|---|---|\n");
+  for (const auto &[reg, ba] : d.gap_by_regime) md += format_text("| %s | %.3f | %.3f |\n", reg.c_str(), ba.first, ba.second);
+  return md;
+}
+
+// report.md's Which: every candidate's fit and test
+std::string md_which(const Diagnosis &d)
+{
+  std::string md;
+  md += format_text("\n## Which\n\n| effect | magnitude | explained | held-out explained | chi^2 (reference %.1f) | "
                   "likelihood ratio | its threshold | evidence |\n|---|---|---|---|---|---|---|---|\n",
                d.ranking.empty() ? 0.0 : d.ranking[0].chi2_0);
   for (const auto &r : d.ranking) {
     auto it = d.magnitude_note.find(r.name);
-    std::fprintf(f, "| %s | %.4g%s%s | %.2f | %.2f | %.1f | %s%.1f%s | %.1f | %.1f |\n", r.name.c_str(), r.magnitude,
+    md += format_text("| %s | %.4g%s%s | %.2f | %.2f | %.1f | %s%.1f%s | %.1f | %.1f |\n", r.name.c_str(), r.magnitude,
                  r.at_edge ? " (edge)" : "", it == d.magnitude_note.end() ? "" : (" (" + it->second + ")").c_str(),
                  r.explained, r.heldout_explained, r.chi2, r.detected ? "**" : "", r.lr, r.detected ? "**" : "",
                  r.lr_threshold, lr_evidence(r));
   }
-  std::fprintf(f, "\nThe fits measure the gap against the baseline on %d reference beds of their own (not the "
+  md += format_text("\nThe fits measure the gap against the baseline on %d reference beds of their own (not the "
                   "signature beds). Explained: the part of the noise-weighted squared gap the fit removes, as a "
                   "fraction of its excess over what noise alone leaves. Likelihood ratio: -2 log of the likelihood "
                   "at magnitude 0 over that at the fitted magnitude (a chi^2 with one degree of freedom without the "
@@ -275,23 +449,117 @@ void write_markdown(const Diagnosis &d, const std::string &path, const std::vect
                   "a noisy signature fits of any noise); candidates are ranked by it and told apart by a margin of "
                   "6.\n",
                d.n_reference, LR_CHI2_1_P1E4, d.n_null);
-  std::fprintf(f, "\n## Notes\n\n");
-  for (const auto &n : d.notes) std::fprintf(f, "- %s\n", n.c_str());
-  std::fprintf(f, "\n## Figures\n\n");
-  for (const auto &n : figures) std::fprintf(f, "![%s](figures/%s.png)\n\n", n.c_str(), n.c_str());
-  for (const auto &e : failures) std::fprintf(f, "- figure not drawn: %s\n", e.c_str());
-  std::fprintf(f, "Simulated traces: `baseline/` (before) and `corrected/` (after; the baseline's when nothing was added).\n");
-  if (std::fclose(f) != 0) throw InputError(path + ": write failed");
+  return md;
+}
+
+// report.md's How blind: detection limits, false alarms, look-alikes, the next measurement
+std::string md_blind(const Diagnosis &d)
+{
+  auto opt = [](const std::optional<double> &v) { return v ? f3(*v, "%.3g") : std::string("beyond the knots"); };
+  std::string md = "\n## How blind\n\n| effect | first reference value | detection limit | other side | measured runs "
+                   "per speed for the limit to reach the reference | threshold |\n|---|---|---|---|---|---|\n";
+  for (const auto &L : d.limits)
+    md += format_text("| %s | %.3g (%s) | %s | %s | %s | %.1f |\n", L.effect.c_str(), L.reference, L.unit.c_str(),
+                      opt(L.limit).c_str(), L.limit_other_side ? opt(L.limit_other_side).c_str() : "-",
+                      L.runs_needed ? std::to_string(*L.runs_needed).c_str() : "more than 64", L.threshold);
+  md += format_text("\nDetection limit: the smallest magnitude whose simulated signature (the knots, interpolated, "
+                    "less what their own noise adds) reaches the effect's likelihood-ratio threshold at this data's "
+                    "noise: the test then detects it half the time. A `none` for an effect below its limit is a right "
+                    "answer. Runs needed: measured runs per speed (their standard errors scale as 1/sqrt(n), the "
+                    "%d reference beds' stay) that bring the limit down to the first reference value.\n\n",
+                    d.n_reference);
+  const FalseAlarms &fa = d.false_alarms;
+  md += format_text("False alarms on the %d null replicates (reference beds taken as a measurement without any effect, "
+                    "each tested with thresholds calibrated on the others): %d verdict(s) other than none (rate %.2f).\n",
+                    fa.replicates, fa.not_none, fa.rate());
+  if (!d.look_alikes.empty()) {
+    md += "\n| candidates | angle between signatures (deg) | separation at the reference values (sigma) | look alike "
+          "| separation of the fits (sigma) |\n|---|---|---|---|---|\n";
+    const std::string top = d.ranking.empty() ? "" : d.ranking[0].name;
+    const std::string second = d.ranking.size() > 1 ? d.ranking[1].name : "";
+    for (const auto &l : d.look_alikes)
+      if (l.look_alike || l.a == top || l.b == top || l.a == second || l.b == second)
+        md += format_text("| %s, %s | %.0f | %.2f | %s | %.2f |\n", l.a.c_str(), l.b.c_str(), l.angle_deg, l.separation,
+                          l.look_alike ? "**yes**" : "no", l.fit_separation);
+    md += format_text("\nThe pairs with one of the top two candidates, and every look-alike (all pairs: diagnosis.json). "
+                      "Angle: between the two signatures at their first reference values, in features whitened by this "
+                      "data's noise (0: the same shape, 180: opposite). Separation: how many standard deviations the one "
+                      "at its reference value stands off the other's best multiple, the smaller way round; below "
+                      "sqrt(%g) the evidence cannot tell them apart (a look-alike). Separation of the fits: between the "
+                      "two fitted predictions.\n",
+                      EVIDENCE_MARGIN);
+  }
+  if (d.next && d.next->goal == "separate" && !(d.next->after > 0)) {
+    md += format_text("\n**Next measurement**: no number of measured runs separates %s from %s: their fitted "
+                      "predictions differ by less than the noise of their signatures' knots (more beds per knot, or "
+                      "an observable that tells them apart, would).\n",
+                      d.next->effects[0].c_str(), d.next->effects[1].c_str());
+  } else if (d.next) {
+    const NextMeasurement &m = *d.next;
+    const std::string what = m.goal == "separate" ? "separate " + m.effects[0] + " from " + m.effects[1]
+                                                  : "detect " + m.effects[0] + " (at the magnitude its likelihood ratio says)";
+    md += format_text("\n**Next measurement**: %d more run(s) at v0 = %g cm/s would %s%s%s: %s %.2f -> %.2f (gain "
+                      "%.2f; %s %.2f).\n",
+                      m.runs, m.v0, m.reaches ? "" : "go furthest to ", what.c_str(),
+                      m.reaches ? "" : " (it is not reached within 64 runs)",
+                      m.goal == "separate" ? "squared separation" : "expected likelihood ratio", m.now, m.after, m.gain(),
+                      m.goal == "separate" ? "the evidence margin" : "its threshold", m.target);
+  }
+  return md;
+}
+
+// report.md's Residual: what the gap left over
+std::string md_residual(const Diagnosis &d)
+{
+  if (!d.residual) return "";
+  const Residual &r = *d.residual;
+  const char *against = r.against == "corrected" ? "the confirming runs" : r.against == "fitted" ? "the fitted model"
+                                                                                                   : "the baseline";
+  std::string md = format_text("\n## Residual\n\nAgainst %s: ", against);
+  std::string regimes;
+  for (const auto &g : r.regimes) regimes += (regimes.empty() ? "" : ", ") + g;
+  md += r.regimes.empty() ? std::string("no bin mean differs by more than 2 standard errors")
+                          : format_text("%d of %d bin means differ by more than 2 standard errors (noise alone: about "
+                                        "%.1f), at %.2f < z <= %.2f cm (%s)",
+                                        r.bins_beyond, r.dof_means, 0.0455 * r.dof_means, r.z_from, r.z_to, regimes.c_str());
+  md += format_text(". It moves %s (chi^2 %.1f over %d bin means, p = %.2g; %.1f over %d fluctuation features, p = %.2g)",
+                    r.moves == "neither" ? "neither the bin means nor the spectrum beyond the noise" : r.moves.c_str(),
+                    r.chi2_means, r.dof_means, r.p_means, r.chi2_fluct, r.dof_fluct, r.p_fluct);
+  if (!r.band.empty()) md += format_text("; the spectrum carries it most in %s (measured / model amplitude %.2f)", r.band.c_str(), r.band_ratio);
+  md += ".";
+  for (const auto &l : r.lines)
+    md += format_text(" A narrow line at %.0f Hz at v0 = %g cm/s (%.1f times the model's power, %.1f sigma).", l.freq,
+                      l.v0, l.ratio, l.sigma);
+  if (!r.line_scaling.empty())
+    md += r.line_scaling == "scales with v0" ? " Its frequency scales with v0: a wavelength of the bed or the grains."
+                                             : " Its frequency stays put across speeds: a property of the set-up (a resonance).";
+  if (!r.nearest.empty())
+    md += format_text(" Nearest candidate: %s%s%s.", r.nearest.c_str(), r.why_rejected.empty() ? "" : ", rejected because ",
+                      r.why_rejected.c_str());
+  return md + " (figure `residual`)\n";
+}
+
+std::string report_markdown(const Diagnosis &d, const std::vector<std::string> &figures,
+                            const std::vector<std::string> &failures)
+{
+  std::string md = md_summary(d) + md_where(d) + md_which(d) + md_blind(d) + md_residual(d);
+  md += format_text("\n## Notes\n\n");
+  for (const auto &n : d.notes) md += format_text("- %s\n", n.c_str());
+  md += format_text("\n## Figures\n\n");
+  for (const auto &n : figures) md += format_text("![%s](figures/%s.png)\n\n", n.c_str(), n.c_str());
+  for (const auto &e : failures) md += format_text("- figure not drawn: %s\n", e.c_str());
+  md += format_text("Simulated traces: `baseline/` (before) and `corrected/` (after; the baseline's when nothing was added).\n");
+  return md;
 }
 
 }    // namespace
 
 void write_gap_report(const Diagnosis &d, const std::string &dir)
 {
-  write_json(d, dir + "/diagnosis.json");
+  write_json(dir + "/diagnosis.json", diagnosis_json(d), 1);
   std::vector<std::string> figures, failures;
   draw_figures(d, dir, figures, failures);
-  write_markdown(d, dir + "/report.md", figures, failures);
+  write_file_atomic(dir + "/report.md", report_markdown(d, figures, failures));
 }
 
 void gap_by_regime(const GapGrid &grid, double D, Diagnosis &d)
@@ -343,6 +611,9 @@ void write_gap_output(const Diagnosis &d, const std::string &out_dir)
   } catch (const fs::filesystem_error &e) {
     fs::remove_all(part, ec);
     throw InputError(part.string() + ": cannot write the output: " + e.code().message());
+  } catch (const OutputError &e) {
+    fs::remove_all(part, ec);
+    throw InputError(e.what());
   } catch (const InputError &) {
     fs::remove_all(part, ec);
     throw;

@@ -4,8 +4,11 @@
 
 #include "gap_data.h"
 #include "gap_fit.h"
+#include "gap_limits.h"
+#include "gap_residual.h"
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,8 +24,26 @@ struct SpeedCurves {           // per speed, on the grid's bin centres
   double v0 = 0;
   int n_real = 0, n_base = 0, n_corr = 0;
   std::vector<double> z, real, real_se, base, base_se, corr, corr_se, gap, band;
-  double G_before = 0, G_after = 0;
+  double G_before = 0, G_after = 0;      // G: the bin means (gap-metric v1)
+  double Gs_before = 0, Gs_after = 0;    // G_spec: the fluctuation spectrum's bands (v2)
+  double all_before() const { return gap_all(G_before, Gs_before); }
+  double all_after() const { return gap_all(G_after, Gs_after); }
   double z_transient_end = 0;  // peak: z <= 0.35 D; transient: up to this; linear: beyond
+};
+
+// The overall gap's two parts (means over speeds) and the runs per speed behind them (fewest).
+struct GapParts {
+  double G = 0, G_spec = 0;
+  int runs_real = 0, runs_sim = 0;
+  double all() const { return gap_all(G, G_spec); }
+};
+
+// Verdicts of the null replicates (the reference beds split into a no-effect measurement and
+// its reference), each put through the verdict with thresholds calibrated on the others.
+struct FalseAlarms {
+  int replicates = 0, not_none = 0;
+  std::map<std::string, int> verdicts;
+  double rate() const { return replicates ? (double) not_none / replicates : 0.0; }
 };
 
 struct Diagnosis {
@@ -43,19 +64,28 @@ struct Diagnosis {
   // refinement: the confirming runs left >= 3 sigma along the signature, so the magnitude was
   // corrected from them (refined_from -> magnitude) and simulated on further fresh beds
   bool refined = false;
-  double refined_from = 0, gap_after_first = 0, proj_refined = 0;
+  double refined_from = 0, gap_after_first = 0, proj_refined = 0;    // gap_after_first: G_all
   std::vector<Finding> where;
   std::vector<EffectFit> ranking;           // best first
   std::map<std::string, std::string> magnitude_note;    // effect -> e.g. "phi_0 shift -0.012"
-  std::string verdict = "none", top_effect;  // top_effect "" = null
+  std::string verdict = "none", top_effect;  // top_effect "" = null; verdict "tie": see tie
+  std::vector<std::string> tie;              // "tie": the two candidates that cannot be told apart
   std::string tested_effect;                 // simulated for confirmation (even when downgraded)
   double magnitude = 0;
   std::string magnitude_unit;
   std::vector<SpeedCurves> speeds;
-  double gap_before = 0, gap_after = 0;
+  double gap_before = 0, gap_after = 0;      // G_all (gap-metric v2), mean over speeds
+  GapParts parts_before, parts_after;
   std::map<std::string, std::pair<double, double>> gap_by_regime;    // before, after
-  double heldout_v0 = 0, heldout_before = 0, heldout_after = 0, heldout_magnitude = 0;
+  double heldout_v0 = 0, heldout_before = 0, heldout_after = 0, heldout_magnitude = 0;    // G_all there
   int n_real_min = 0, n_sim = 0;
+  // how blind: per candidate the detection limit, per pair how alike, the next measurement,
+  // and the verdicts of the null replicates
+  std::vector<DetectionLimit> limits;
+  std::vector<LookAlike> look_alikes;
+  std::optional<NextMeasurement> next;
+  FalseAlarms false_alarms;
+  std::optional<Residual> residual;          // what the gap left over (none for a `none`)
 };
 
 }    // namespace granpen

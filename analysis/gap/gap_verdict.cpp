@@ -9,7 +9,26 @@
 namespace granpen {
 
 namespace {
+
 std::string fmt(double v, const char *f = "%.4g") { return printf_number(f, v); }
+
+// a candidate that would be the answer on its own: explains at least half of the gap,
+// predicts the speeds left out, and fits inside its simulated range
+bool explains(const EffectFit &f) { return f.explained >= 0.5 && f.heldout_explained >= 0.3 && !f.at_edge; }
+
+// the top two both explain the gap and are not told apart: the answer names both
+void tie(const EffectFit &top, const EffectFit &second, Diagnosis &d)
+{
+  d.verdict = "tie";
+  d.tie = {top.name, second.name};
+  d.notes.push_back("verdict: a tie between " + top.name + " and " + second.name + ": each explains the gap (" +
+                    fmt(top.explained, "%.2f") + " and " + fmt(second.explained, "%.2f") + ", held out " +
+                    fmt(top.heldout_explained, "%.2f") + " and " + fmt(second.heldout_explained, "%.2f") +
+                    ") and their evidence differs by " + fmt(lr_evidence(top) - lr_evidence(second), "%.1f") +
+                    ", less than the margin of " + fmt(EVIDENCE_MARGIN, "%g") +
+                    ": at this noise they look alike (next_measurement says what would separate them)");
+}
+
 }    // namespace
 
 void decide_verdict(Diagnosis &d)
@@ -25,8 +44,7 @@ void decide_verdict(Diagnosis &d)
   // any noise, an additive share)
   std::sort(d.ranking.begin(), d.ranking.end(),
             [&](const EffectFit &a, const EffectFit &b) { return lr_evidence(a) > lr_evidence(b); });
-  // two candidates are told apart by a likelihood-ratio margin of 6 (a factor e^3 = 20)
-  const double margin = 6.0;
+  const double margin = EVIDENCE_MARGIN;
   const EffectFit *top = d.ranking.empty() ? nullptr : &d.ranking[0];
   const EffectFit *second = d.ranking.size() > 1 ? &d.ranking[1] : nullptr;
   std::string why;
@@ -42,6 +60,8 @@ void decide_verdict(Diagnosis &d)
                         std::to_string(d.nfeatures) + ", p = " + fmt(d.p_value, "%.2g") + ") but lies along " +
                         top->name + "'s signature: likelihood ratio " + fmt(top->lr, "%.1f") + " against a threshold of " +
                         fmt(top->lr_threshold, "%.1f") + " (" + std::to_string(d.n_null) + " null replicates on the reference beds)");
+    } else if (!alone && explains(*top) && explains(*second)) {
+      tie(*top, *second, d);
     } else if (alone) {
       d.verdict = "unexplained";
       why = "a gap along " + top->name + "'s signature (likelihood ratio " + fmt(top->lr, "%.1f") + " against " +
@@ -61,6 +81,8 @@ void decide_verdict(Diagnosis &d)
              (!second || lr_evidence(*top) - lr_evidence(*second) >= margin) && !top->at_edge) {
     d.verdict = "explained";
     d.top_effect = top->name;
+  } else if (top && second && explains(*top) && explains(*second) && lr_evidence(*top) - lr_evidence(*second) < margin) {
+    tie(*top, *second, d);
   } else {
     d.verdict = "unexplained";
     if (!top) why = "no candidate effects";

@@ -40,7 +40,7 @@ void gap_curves(const Features &f, const GapGrid &grid, Diagnosis &d)
 {
   const std::size_t ns = f.nspeeds(), nb = grid.nbins();
   d.n_real_min = 1 << 30;
-  double gb = 0;
+  GapParts parts;
   for (std::size_t s = 0; s < ns; ++s) {
     SpeedCurves c;
     c.v0 = f.speeds[s];
@@ -58,11 +58,14 @@ void gap_curves(const Features &f, const GapGrid &grid, Diagnosis &d)
       c.band.push_back(2.0 * std::sqrt(f.target.err[s][b] + errB[b]));
     }
     c.G_before = gap_metric(f.real[s], f.fresh[s], 0, nb);
-    gb += c.G_before / ns;
+    c.Gs_before = s < f.spec_real.size() && s < f.spec_fresh.size() ? debiased_gap(f.spec_real[s], f.spec_fresh[s]) : 0.0;
+    parts.G += c.G_before / ns, parts.G_spec += c.Gs_before / ns;
     d.speeds.push_back(c);
   }
-  d.gap_before = gb;
   d.n_sim = f.n_reference;    // the baseline the gap is measured against: the reference beds
+  parts.runs_real = d.n_real_min, parts.runs_sim = d.n_sim;
+  d.parts_before = parts;
+  d.gap_before = parts.all();
 }
 
 void regimes(const Features &f, const RunsBySpeed &fresh, const Scenario &sc, const GapGrid &grid, Diagnosis &d)
@@ -124,7 +127,7 @@ void observable_findings(const Features &f, const RunsBySpeed &real, const Simul
             [](const Finding &a, const Finding &b) { return std::abs(a.zscore) > std::abs(b.zscore); });
 }
 
-void gap_significance(const Features &f, const GapGrid &grid, Diagnosis &d)
+double omnibus_chi2(const Target &t, const Features &f)
 {
   const std::size_t ns = f.nspeeds();
   std::vector<std::size_t> all(ns);
@@ -137,8 +140,13 @@ void gap_significance(const Features &f, const GapGrid &grid, Diagnosis &d)
     null.mean[0].push_back(f.fresh[s].mean);
     null.err[0].push_back(f.fresh_err[s]);
   }
-  d.chi2_0 = effect_chi2(f.target, null, 0.0, all);
-  d.nfeatures = ns * grid.nfeatures();
+  return effect_chi2(t, null, 0.0, all);
+}
+
+void gap_significance(const Features &f, const GapGrid &grid, Diagnosis &d)
+{
+  d.chi2_0 = omnibus_chi2(f.target, f);
+  d.nfeatures = f.nspeeds() * grid.nfeatures();
   d.p_value = chi2_sf(d.chi2_0, (double) d.nfeatures);
   d.significant = d.p_value < 1e-3;
 }

@@ -14,7 +14,8 @@
 
 namespace granpen {
 
-// d.speeds (the curves before; z_transient_end unset), d.gap_before, d.n_real_min, d.n_sim.
+// d.speeds (the curves before, G and G_spec per speed; z_transient_end unset), d.parts_before,
+// d.gap_before (G_all), d.n_real_min, d.n_sim.
 void gap_curves(const Features &f, const GapGrid &grid, Diagnosis &d);
 
 // d.speeds[s].z_transient_end: the reference runs' mean crossover depth t~* v0 sqrt(D/g)
@@ -25,6 +26,9 @@ void regimes(const Features &f, const RunsBySpeed &fresh, const Scenario &sc, co
 // run-to-run variance pooled over every simulated ensemble, |z| first.
 void observable_findings(const Features &f, const RunsBySpeed &real, const SimulatedRuns &sims, const Scenario &sc,
                          const GapGrid &grid, Diagnosis &d);
+
+// chi^2 of a measurement's means against the reference beds' over every feature.
+double omnibus_chi2(const Target &t, const Features &f);
 
 // d.chi2_0, d.nfeatures, d.p_value, d.significant (p < 0.001).
 void gap_significance(const Features &f, const GapGrid &grid, Diagnosis &d);

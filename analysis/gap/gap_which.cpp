@@ -2,6 +2,7 @@
 #include "gap_which.h"
 
 #include "gap_verdict.h"
+#include "gap_where.h"
 #include "text_util.h"
 
 #include <algorithm>
@@ -84,12 +85,56 @@ EffectData effect_data(const Effect &e, const Features &f)
 EffectFit fit_candidate(const EffectData &ed, const Features &f)
 {
   EffectFit fit = fit_effect(f.target, ed);
-  double lsum = 0;
-  for (const auto &t : f.nulls) lsum += effect_lr(t, ed);
-  fit.lr_null_mean = f.nulls.empty() ? 0.0 : lsum / f.nulls.size();
+  for (const auto &t : f.nulls) fit.lr_nulls.push_back(effect_lr(t, ed));
+  fit.lr_null_mean = f.nulls.empty() ? 0.0 : mean_of(fit.lr_nulls);
   fit.lr_threshold = lr_threshold(fit.lr_null_mean);
   fit.detected = fit.lr > fit.lr_threshold && !fit.at_edge;
   return fit;
+}
+
+FalseAlarms null_false_alarms(const std::vector<const Effect *> &effects, const std::map<std::string, EffectData> &data,
+                              const std::vector<EffectFit> &fits, const Features &f)
+{
+  FalseAlarms fa;
+  const std::size_t P = f.nspeeds() && !f.real.empty() ? f.real[0].mean.size() : 0;
+  for (std::size_t i = 0; i < f.nulls.size(); ++i) {
+    Diagnosis n;
+    n.chi2_0 = omnibus_chi2(f.nulls[i], f);
+    n.nfeatures = f.nspeeds() * P;
+    n.p_value = chi2_sf(n.chi2_0, (double) n.nfeatures);
+    n.significant = n.p_value < 1e-3;
+    n.n_null = (int) f.nulls.size() - 1;
+    for (const Effect *e : effects) {
+      const EffectData &ed = data.at(e->name);
+      EffectFit fit = fit_effect(f.nulls[i], ed);
+      // the threshold from the other replicates: replicate i must not calibrate its own test
+      const auto it = std::find_if(fits.begin(), fits.end(), [&](const EffectFit &x) { return x.name == e->name; });
+      std::vector<double> others;
+      for (std::size_t j = 0; it != fits.end() && j < it->lr_nulls.size(); ++j)
+        if (j != i) others.push_back(it->lr_nulls[j]);
+      fit.lr_null_mean = others.empty() ? 0.0 : mean_of(others);
+      fit.lr_threshold = lr_threshold(fit.lr_null_mean);
+      fit.detected = fit.lr > fit.lr_threshold && !fit.at_edge;
+      n.ranking.push_back(fit);
+    }
+    decide_verdict(n);
+    ++fa.replicates, ++fa.verdicts[n.verdict];
+    fa.not_none += n.verdict != "none";
+  }
+  return fa;
+}
+
+void how_blind(const std::vector<const Effect *> &effects, const std::map<std::string, EffectData> &data,
+               const Features &f, Diagnosis &d)
+{
+  std::map<std::string, const Effect *> by_name;
+  for (const Effect *e : effects) {
+    by_name[e->name] = e;
+    const auto it = std::find_if(d.ranking.begin(), d.ranking.end(), [&](const EffectFit &x) { return x.name == e->name; });
+    if (it != d.ranking.end()) d.limits.push_back(detection_limit(*e, data.at(e->name), *it, f));
+  }
+  d.look_alikes = look_alikes(d.ranking, data, by_name, f);
+  d.next = next_measurement(d.ranking, data, f, d.verdict);
 }
 
 std::string packing_note(const EffectData &ed, double a, const std::vector<double> &phi, double phi_baseline)
@@ -119,6 +164,7 @@ std::map<std::string, EffectData> fit_candidates(const std::vector<const Effect 
   }
   d.n_null = (int) f.nulls.size();
   decide_verdict(d);
+  d.false_alarms = null_false_alarms(effects, data, d.ranking, f);
   return data;
 }
 

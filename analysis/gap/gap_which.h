@@ -26,6 +26,18 @@ EffectData effect_data(const Effect &e, const Features &f);
 // The fit of e to the target, its likelihood ratio's null mean and threshold, detected.
 EffectFit fit_candidate(const EffectData &ed, const Features &f);
 
+// The false-alarm rate on data without any effect: each null replicate taken as the
+// measurement, every effect fitted to it (data: the effects' model data, in the order of
+// effects) with its threshold calibrated on the other replicates, the omnibus test against
+// the reference beds, and the verdict (decide_verdict); counted by verdict.
+FalseAlarms null_false_alarms(const std::vector<const Effect *> &effects, const std::map<std::string, EffectData> &data,
+                              const std::vector<EffectFit> &fits, const Features &f);
+
+// How blind the diagnosis was (gap_limits.h): d.limits (every effect, in library order),
+// d.look_alikes (every pair of the ranking) and d.next, from the model data and the fits.
+void how_blind(const std::vector<const Effect *> &effects, const std::map<std::string, EffectData> &data,
+               const Features &f, Diagnosis &d);
+
 // Packing's note for the report: the phi_0 its fitted pour friction (0.3 + magnitude)
 // makes, interpolated between the knots' beds (phi0: each knot's mean, knot 0 first),
 // against the baseline's.

@@ -2,6 +2,7 @@
 #include "text_util.h"
 #include "errors.h"
 
+#include <cstdarg>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -44,6 +45,19 @@ bool read_text_file(const std::string &path, std::string &text)
   ss << f.rdbuf();
   text = ss.str();
   return true;
+}
+
+std::string format_text(const char *f, ...)
+{
+  va_list ap, again;
+  va_start(ap, f);
+  va_copy(again, ap);
+  const int n = std::vsnprintf(nullptr, 0, f, ap);
+  va_end(ap);
+  std::string out(n > 0 ? (std::size_t) n : 0, '\0');
+  if (n > 0) std::vsnprintf(out.data(), out.size() + 1, f, again);
+  va_end(again);
+  return out;
 }
 
 std::string printf_number(const char *f, double v)

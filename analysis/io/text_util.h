@@ -30,6 +30,9 @@ bool read_text_file(const std::string &path, std::string &text);
 // writes them (json_text.h's json_number is the JSON-safe variant).
 std::string printf_number(const char *f, double v);
 
+// printf's format f with its arguments, as a string.
+std::string format_text(const char *f, ...) __attribute__((format(printf, 1, 2)));
+
 // "FILE:LINE"
 std::string file_line(const std::string &file, long line);
 

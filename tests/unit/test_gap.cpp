@@ -286,11 +286,18 @@ TEST(GapVerdict, TheTwoRoutesAndTheirConditions)
   EXPECT_FALSE(d.targeted);
   d = significance(true, {candidate("a", 0.7, 0.6, 80, 120, 15), candidate("b", 0.65, 0.6, 83, 116, 15)});
   decide_verdict(d);
-  EXPECT_EQ(d.verdict, "unexplained");    // a and b too close
+  EXPECT_EQ(d.verdict, "tie");    // a and b both explain the gap, too close to tell apart
+  EXPECT_EQ(d.tie, (std::vector<std::string>{"a", "b"}));
+  EXPECT_TRUE(d.top_effect.empty());
+  // as close, but b explains less than half of the gap: no tie, and no pick either
+  d = significance(true, {candidate("a", 0.7, 0.6, 80, 120, 15), candidate("b", 0.45, 0.6, 83, 116, 15)});
+  decide_verdict(d);
+  EXPECT_EQ(d.verdict, "unexplained");
+  EXPECT_TRUE(d.tie.empty());
   // a noisier signature (null mean 3.7) fits more of the noise: 125 - 2.7 against 120 is a tie
   d = significance(true, {candidate("b", 1.0, 0.9, 25, 125, 3.7 * LR_CHI2_1_P1E4), candidate("a", 0.97, 0.95, 34, 120, 15.137)});
   decide_verdict(d);
-  EXPECT_EQ(d.verdict, "unexplained");
+  EXPECT_EQ(d.verdict, "tie");
   d = significance(true, {candidate("b", 1.0, 0.9, 25, 125, 1.0), candidate("a", 0.97, 0.95, 34, 118, 15.137)});
   decide_verdict(d);
   EXPECT_EQ(d.verdict, "explained");    // without the null's excess, 125 against 118 decides
@@ -307,10 +314,12 @@ TEST(GapVerdict, TheTwoRoutesAndTheirConditions)
   decide_verdict(d);
   EXPECT_EQ(d.verdict, "unexplained");
   EXPECT_TRUE(d.top_effect.empty());
-  // two detected with about the same evidence (LR beyond the null's excess): unexplained
+  // two detected with about the same evidence (LR beyond the null's excess), both explaining
+  // the gap: a tie
   d = significance(false, {candidate("a", 0.6, 0.6, 40, 40, 20), candidate("b", 0.6, 0.6, 40, 44, 30)});
   decide_verdict(d);
-  EXPECT_EQ(d.verdict, "unexplained");
+  EXPECT_EQ(d.verdict, "tie");
+  EXPECT_EQ(d.tie, (std::vector<std::string>{"b", "a"}));
   ASSERT_EQ(d.ranking.size(), 2u);
   EXPECT_EQ(d.ranking[0].name, "b");    // 44 - 0.98 before 40 - 0.32
   // the same with a margin of 6: the first is named although its LR / threshold is smaller

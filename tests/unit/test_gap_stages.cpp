@@ -21,6 +21,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <unistd.h>
 
@@ -306,27 +307,30 @@ namespace {
 
 // Two speeds, six features at 100 (relative run-to-run variance 1e-4), the baseline on its
 // signature beds equal to the reference beds; effect "a" adds +10 to features 0-2 per unit
-// magnitude, effect "b" +10 to features 3-5 (one knot each, at 1); the measurement is the
+// magnitude, effect "b" +10 to features 3-5, effect "c" +20 to features 0-2 (a's look-alike;
+// one knot each, at 1); the measurement is the
 // baseline plus `a` units of effect a's signature. Null replicates: the reference moved by
 // +-0.5 on alternate features (noise the size of one standard error).
 struct HandMade {
-  Effect ea, eb;
+  Effect ea, eb, ec;    // ec: a's look-alike, +20 on features 0-2 per unit
   Features f;
   HandMade(double a)
   {
     ea.name = "a", ea.unit = "u", ea.knots = {1.0};
     eb.name = "b", eb.unit = "u", eb.knots = {1.0};
+    ec.name = "c", ec.unit = "u", ec.knots = {1.0};
     const std::size_t P = 6;
     auto ens = [&](double v0, std::vector<double> mean) { return make_ensemble(v0, {mean, mean}); };
     for (double v : {50.0, 100.0}) {
-      std::vector<double> base(P, 100.0), ka = base, kb = base, meas = base;
-      for (std::size_t k = 0; k < 3; ++k) ka[k] += 10.0, kb[k + 3] += 10.0, meas[k] += 10.0 * a;
+      std::vector<double> base(P, 100.0), ka = base, kb = base, kc = base, meas = base;
+      for (std::size_t k = 0; k < 3; ++k) ka[k] += 10.0, kb[k + 3] += 10.0, kc[k] += 20.0, meas[k] += 10.0 * a;
       f.speeds.push_back(v);
       f.real.push_back(ens(v, meas));
       f.base.push_back(ens(v, base));
       f.fresh.push_back(ens(v, base));
       f.knots["a_1"].push_back(ens(v, ka));
       f.knots["b_1"].push_back(ens(v, kb));
+      f.knots["c_1"].push_back(ens(v, kc));
       f.cv2.push_back(std::vector<double>(P, 1e-4));
       f.fresh_err.push_back(model_err(f.fresh.back(), f.cv2.back()));
       f.target.mean.push_back(meas);
@@ -432,6 +436,309 @@ TEST(GapConfirm, TheGapAlongTheSignatureAndTheConfirmationTest)
   EXPECT_TRUE(confirms(d, 150.0, 2.0));     // 16 -> 4
   EXPECT_FALSE(confirms(d, 150.0, 3.0));    // 16 -> 9: 7 only
   EXPECT_FALSE(confirms(d, 170.0, 0.0));    // chi^2 up by 20 > 14.7
+}
+
+// ---- how blind: detection limits, look-alikes, the next measurement, false alarms
+
+#include "gap_limits.h"
+#include "gap_verdict.h"
+
+namespace {
+
+// The expected likelihood ratio of effect a at magnitude m in HandMade, by hand, the
+// measured variances times factor[s]: at 0 < m <= 1 the interpolation weights are 1 - m
+// (knot 0) and m (the knot at 1), so u = 10 m on features 0-2 and 0 on 3-5, with the
+// variance m^2 (knot's + signature baseline's) the knots' noise puts in it; weights W =
+// measured variance x factor + the reference's.
+double hand_strength(const HandMade &h, double m, const std::vector<double> &factor)
+{
+  double lam = 0;
+  for (std::size_t s = 0; s < 2; ++s)
+    for (std::size_t k = 0; k < 6; ++k) {
+      const double knot = 1e-4 * std::pow(k < 3 ? 110.0 : 100.0, 2) / 2, sig_base = 1e-4 * 100 * 100 / 2;
+      const double u = k < 3 ? 10 * m : 0.0, var = m * m * (knot + sig_base);
+      lam += (u * u - var) / (h.f.target.err[s][k] * factor[s] + h.f.fresh_err[s][k]);
+    }
+  return std::max(0.0, lam);
+}
+
+// every measured variance times x (a noisier measurement, the same means)
+void noisier(HandMade &h, double x)
+{
+  for (auto &row : h.f.target.err)
+    for (auto &e : row) e *= x;
+}
+
+}    // namespace
+
+TEST(GapLimits, TheLimitAndTheRunsNeededOnAHandMadeSignature)
+{
+  // 50 x the measured variance (7 standard errors): lambda(1) = 20.9 (by hand_strength), so
+  // the limit lies inside the knot; lambda is c m^2, the limit sqrt(T / c)
+  HandMade h(0.5);
+  noisier(h, 50);
+  const std::vector<double> now(2, 1.0);
+  const EffectData ed = effect_data(h.ea, h.f);
+  const EffectFit fit = fit_candidate(ed, h.f);
+  for (double m : {0.2, 0.7, 1.0})
+    EXPECT_NEAR(signature_strength(ed, h.f.target, m, now), hand_strength(h, m, now), 1e-9 * hand_strength(h, 1, now)) << m;
+  const double c = hand_strength(h, 1.0, now);
+  ASSERT_GT(c, fit.lr_threshold);
+  const DetectionLimit L = detection_limit(h.ea, ed, fit, h.f);
+  EXPECT_EQ(L.effect, "a");
+  EXPECT_EQ(L.reference, 1.0);
+  ASSERT_TRUE(L.limit.has_value());
+  // the bisection's tolerance: 40 halvings of a 1/200 step
+  EXPECT_NEAR(*L.limit, std::sqrt(fit.lr_threshold / c), 1e-9);
+  EXPECT_FALSE(L.limit_other_side.has_value());    // one-sided
+  // runs needed: the fewest n per speed with lambda(1; measured variance x 2 / n) >= T
+  auto runs_for_reference = [&](const HandMade &hh, double T) {
+    int n = 1;
+    while (hand_strength(hh, 1.0, std::vector<double>(2, 2.0 / n)) < T) ++n;
+    return n;
+  };
+  ASSERT_TRUE(L.runs_needed.has_value());
+  EXPECT_EQ(*L.runs_needed, runs_for_reference(h, fit.lr_threshold));
+  // twice noisier: the knot itself is no longer detected (no limit), and more runs are needed
+  noisier(h, 2);
+  const EffectData ed2 = effect_data(h.ea, h.f);
+  const EffectFit fit2 = fit_candidate(ed2, h.f);
+  ASSERT_LT(hand_strength(h, 1.0, now), fit2.lr_threshold);
+  const DetectionLimit L2 = detection_limit(h.ea, ed2, fit2, h.f);
+  EXPECT_FALSE(L2.limit.has_value());
+  ASSERT_TRUE(L2.runs_needed.has_value());
+  EXPECT_EQ(*L2.runs_needed, runs_for_reference(h, fit2.lr_threshold));
+  EXPECT_GT(*L2.runs_needed, 2);
+}
+
+TEST(GapLimits, LookAlikesAreATieWithTheRunsThatCannotSeparateThem)
+{
+  // a and c have the same signature's shape (c twice as strong), b an orthogonal one: a and c
+  // both explain the gap with the same evidence, so the answer is a tie naming both
+  HandMade h(0.5);
+  Diagnosis d;
+  d.significant = true;
+  d.nfeatures = 12;
+  const auto data = fit_candidates({&h.ea, &h.eb, &h.ec}, h.f, [](const std::string &) { return NAN; }, d);
+  EXPECT_EQ(d.verdict, "tie");
+  EXPECT_TRUE(d.top_effect.empty());
+  ASSERT_EQ(d.tie.size(), 2u);
+  EXPECT_EQ(std::set<std::string>(d.tie.begin(), d.tie.end()), (std::set<std::string>{"a", "c"}));
+  const std::map<std::string, const Effect *> by_name{{"a", &h.ea}, {"b", &h.eb}, {"c", &h.ec}};
+  const auto pairs = look_alikes(d.ranking, data, by_name, h.f);
+  ASSERT_EQ(pairs.size(), 3u);
+  for (const auto &p : pairs) {
+    const std::set<std::string> ab{p.a, p.b};
+    if (ab == std::set<std::string>{"a", "c"}) {
+      // parallel signatures, the same fitted prediction (+5 on features 0-2)
+      EXPECT_NEAR(p.angle_deg, 0.0, 1e-5);
+      EXPECT_NEAR(p.separation, 0.0, 1e-3);
+      EXPECT_TRUE(p.look_alike);
+      EXPECT_NEAR(p.fit_separation, 0.0, 1e-6);
+    } else {
+      // b is orthogonal to both: each stands its whole length off the other, the shorter
+      // counts. With a: a's, +10 on features 0-2 at 2 speeds, weights 1e-4 x 105^2 / 2 + 0.5
+      // (the measured mean's and the reference's variances): 600 / 1.05. With c (+20 there):
+      // b's own, +10 on features 3-5, weights 0.5 + 0.5: 600
+      EXPECT_NEAR(p.angle_deg, 90.0, 1e-9);
+      const double W = ab.count("a") ? 1e-4 * 105 * 105 / 2 + 0.5 : 1.0;
+      EXPECT_NEAR(p.separation, std::sqrt(600.0 / W), 1e-9);
+      EXPECT_FALSE(p.look_alike);
+      // their fits: b's is 0, a's (or c's) prediction +5 on the same features: 6 x 25 / W
+      // less the knots' noise in it
+      EXPECT_GT(p.fit_separation, 11.0);
+    }
+  }
+  // what would separate them: nothing the measurement can do (they predict the same)
+  const auto next = next_measurement(d.ranking, data, h.f, d.verdict);
+  ASSERT_TRUE(next.has_value());
+  EXPECT_EQ(next->goal, "separate");
+  EXPECT_EQ(std::set<std::string>(next->effects.begin(), next->effects.end()), (std::set<std::string>{"a", "c"}));
+  EXPECT_FALSE(next->reaches);
+  EXPECT_NEAR(next->gain(), 0.0, 1e-9);
+}
+
+TEST(GapLimits, TheNextMeasurementDetectsTheUndetectedCandidate)
+{
+  // 100 x the measured variance: the gap (a at 0.5) is not detected; more runs at one speed
+  // shrink that speed's measured variance by n / (n + r), and the fewest r that bring a's
+  // expected likelihood ratio to its threshold is the answer (both speeds are alike here: the
+  // first is named), at the magnitude whose expected ratio is the measured one: lambda is
+  // c m^2, so sqrt(lr / c) (a little above 0.5: the measured ratio has no knot noise taken off)
+  HandMade h(0.5);
+  noisier(h, 100);
+  Diagnosis d;
+  d.nfeatures = 12;
+  const auto data = fit_candidates({&h.ea, &h.eb}, h.f, [](const std::string &) { return NAN; }, d);
+  EXPECT_EQ(d.verdict, "none");
+  const EffectFit &a = d.ranking[0].name == "a" ? d.ranking[0] : d.ranking[1];
+  ASSERT_FALSE(a.detected);
+  EXPECT_NEAR(a.magnitude, 0.5, 1e-3);
+  const auto next = next_measurement(d.ranking, data, h.f, d.verdict);
+  ASSERT_TRUE(next.has_value());
+  EXPECT_EQ(next->goal, "detect");
+  EXPECT_EQ(next->effects, (std::vector<std::string>{"a"}));
+  EXPECT_EQ(next->v0, 50.0);
+  const double m = std::sqrt(a.lr / hand_strength(h, 1.0, {1.0, 1.0}));
+  EXPECT_NEAR(m, 0.5, 0.01);
+  int r = 1;
+  while (hand_strength(h, m, {2.0 / (2.0 + r), 1.0}) < a.lr_threshold) ++r;
+  ASSERT_LE(r, MAX_RUNS_PER_SPEED);
+  EXPECT_TRUE(next->reaches);
+  EXPECT_EQ(next->runs, r);
+  // the bisection's tolerance on m, squared into lambda
+  EXPECT_NEAR(next->now, a.lr, 1e-6 * next->target);
+  // an explained verdict asks for nothing more
+  EXPECT_FALSE(next_measurement(d.ranking, data, h.f, "explained").has_value());
+  EXPECT_GE(next->after, next->target);
+  EXPECT_GT(next->gain(), 0.0);
+}
+
+TEST(GapWhich, FalseAlarmsOnTheNullReplicates)
+{
+  // the two null replicates are noise the size of one standard error: both `none`
+  HandMade h(0.5);
+  const EffectData ea = effect_data(h.ea, h.f), eb = effect_data(h.eb, h.f);
+  const std::map<std::string, EffectData> data{{"a", ea}, {"b", eb}};
+  const std::vector<EffectFit> fits{fit_candidate(ea, h.f), fit_candidate(eb, h.f)};
+  const FalseAlarms fa = null_false_alarms({&h.ea, &h.eb}, data, fits, h.f);
+  EXPECT_EQ(fa.replicates, 2);
+  EXPECT_EQ(fa.not_none, 0);
+  EXPECT_EQ(fa.verdicts.at("none"), 2);
+  // one replicate that is the measurement itself (effect a at 0.5): that one is a false alarm,
+  // found with a threshold calibrated on the other replicate alone
+  HandMade g(0.5);
+  g.f.nulls[0] = g.f.target;
+  const EffectData ga = effect_data(g.ea, g.f), gb = effect_data(g.eb, g.f);
+  const FalseAlarms fg = null_false_alarms({&g.ea, &g.eb}, {{"a", ga}, {"b", gb}},
+                                           {fit_candidate(ga, g.f), fit_candidate(gb, g.f)}, g.f);
+  EXPECT_EQ(fg.not_none, 1);
+  EXPECT_EQ(fg.verdicts.at("explained"), 1);
+  EXPECT_DOUBLE_EQ(fg.rate(), 0.5);
+}
+
+// ---- the residual (gap_residual.h)
+
+#include "gap_residual.h"
+
+#include <random>
+
+namespace {
+
+// runs of a constant mean with AR(1) noise (15%, c 0.6), 10 kHz, z from -0.5 to 4.2 cm, plus
+// a sine of amplitude A at frequency line(v0) (none when A = 0)
+std::vector<TraceRun> noisy_runs(double v0, unsigned seed0, int n, double A, double (*line)(double))
+{
+  std::vector<TraceRun> runs;
+  for (int r = 0; r < n; ++r) {
+    std::mt19937 rng(seed0 + r);
+    std::normal_distribution<double> n01;
+    TraceRun run;
+    run.v0 = v0;
+    double x = 0;
+    for (int i = 0;; ++i) {
+      const double t = i * 1e-4, z = std::round(v0 * t * 1e6) / 1e6 - 0.5;
+      if (z > 4.2) break;
+      x = 0.6 * x + 0.8 * n01(rng);
+      run.t.push_back(t), run.z.push_back(z);
+      run.F.push_back(z > 0 ? 1e5 * (1 + 0.15 * x) + (A > 0 ? A * std::sin(2 * M_PI * line(v0) * t) : 0.0) : 0.0);
+    }
+    runs.push_back(run);
+  }
+  return runs;
+}
+
+std::vector<const TraceRun *> ptrs(const std::vector<TraceRun> &runs)
+{
+  std::vector<const TraceRun *> p;
+  for (const auto &r : runs) p.push_back(&r);
+  return p;
+}
+
+double wavelength_line(double v0) { return v0 / 0.2; }    // a 0.2 cm wavelength
+double fixed_line(double) { return 700.0; }                // a resonance
+
+}    // namespace
+
+TEST(GapResidual, ANarrowLineItsFrequencyAndWhetherItScalesWithV0)
+{
+  // 8 runs a side: the log ratio's standard deviation is sqrt(2 trigamma(8)) = 0.52; a sine of
+  // 2e4 dyne (2e8 dyne^2 in one or two bins) on noise of 1.5e4 RMS spread over 80 to 320 bins
+  // stands 6 to 10 of them above its neighbours (half that amplitude: 5 to 7, too near the
+  // threshold of 5 for a test)
+  const GapGrid grid;
+  for (auto line : {wavelength_line, fixed_line}) {
+    std::vector<SpectralLine> lines;
+    for (double v0 : {50.0, 100.0, 200.0}) {
+      const auto model = noisy_runs(v0, 100, 8, 0, line), real = noisy_runs(v0, 200, 8, 2e4, line);
+      SpectralLine l;
+      l.v0 = v0;
+      std::vector<double> freq, ratio;
+      ASSERT_TRUE(find_line(ptrs(real), ptrs(model), grid, l, freq, ratio)) << v0;
+      // within a frequency bin: 1 / (the span's duration, 4 cm / v0)
+      EXPECT_NEAR(l.freq, line(v0), v0 / 4.0) << v0;
+      EXPECT_GT(l.sigma, 5.0);
+      EXPECT_EQ(freq.size(), ratio.size());
+      lines.push_back(l);
+      // no line without the sine: the same noise on both sides
+      const auto plain = noisy_runs(v0, 300, 8, 0, line);
+      EXPECT_FALSE(find_line(ptrs(plain), ptrs(model), grid, l, freq, ratio)) << v0;
+    }
+    EXPECT_EQ(line_scaling(lines), line == wavelength_line ? "scales with v0" : "fixed");
+  }
+  EXPECT_EQ(line_scaling({}), "");
+}
+
+TEST(GapResidual, WhereItLiesWhatItMovesAndTheNearestCandidate)
+{
+  // a grid of 8 bins (0 < z <= 2), 2 fluctuation windows, 4 bands: 14 features; two speeds;
+  // both sides' variances 1 (the difference's 2); the measured bin means 10 above the model's
+  // at bins 2 and 3 (0.5 < z <= 1.0) at the first speed
+  GapGrid grid;
+  grid.zmax = 2.0;
+  ASSERT_EQ(grid.nfeatures(), 14u);
+  ResidualSide R, M;
+  for (int s = 0; s < 2; ++s) {
+    M.mean.push_back(std::vector<double>(14, 100.0)), M.err.push_back(std::vector<double>(14, 1.0));
+    R.mean.push_back(M.mean.back()), R.err.push_back(M.err.back());
+  }
+  R.mean[0][2] += 10, R.mean[0][3] += 10;
+  ResidualContext ctx;
+  ctx.speeds = {50, 100};
+  ctx.z_transient_end = {1.5, 1.5};
+  ctx.peak_end = 0.7;    // bin 2 (centre 0.625) is in the peak regime, bin 3 (0.875) in the transient
+  ctx.verdict = "unexplained";
+  EffectFit near, far;
+  near.name = "near", near.explained = 0.3, near.heldout_explained = 0.4, near.detected = true, near.lr = 40, near.lr_threshold = 15.1;
+  far.name = "far", far.explained = 0.1, far.heldout_explained = 0.1, far.lr = 3, far.lr_threshold = 15.1;
+  ctx.ranking = {near, far};
+  Residual r = describe_residual(R, M, grid, ctx);
+  EXPECT_EQ(r.regimes, (std::vector<std::string>{"peak", "transient"}));
+  EXPECT_DOUBLE_EQ(r.z_from, 0.5);
+  EXPECT_DOUBLE_EQ(r.z_to, 1.0);
+  // chi^2 = 2 x 10^2 / 2 over 16 bin means; nothing in the 12 fluctuation features
+  EXPECT_DOUBLE_EQ(r.chi2_means, 100.0);
+  EXPECT_EQ(r.dof_means, 16);
+  EXPECT_EQ(r.dof_fluct, 12);
+  EXPECT_EQ(r.moves, "bin means");
+  EXPECT_TRUE(r.band.empty());
+  ASSERT_EQ(r.curves.size(), 2u);
+  EXPECT_EQ(r.curves[0].resid[2], 10.0);
+  EXPECT_NEAR(r.curves[0].band[2], 2 * std::sqrt(2.0), 1e-12);
+  EXPECT_EQ(r.nearest, "near");
+  EXPECT_EQ(r.why_rejected, "it explains 0.30 of the gap (0.5 needed)");
+  // the spectrum too: band 450-1350 Hz (feature 8 + 2 + 2 = 12) 20% up at both speeds
+  R.mean[0][12] = R.mean[1][12] = 120;
+  r = describe_residual(R, M, grid, ctx);
+  EXPECT_EQ(r.moves, "both");
+  EXPECT_EQ(r.band, "450-1350 Hz");
+  EXPECT_DOUBLE_EQ(r.band_ratio, 1.2);
+  // only the spectrum, and within the noise: neither
+  R.mean[0][2] = R.mean[0][3] = 100;
+  EXPECT_EQ(describe_residual(R, M, grid, ctx).moves, "spectrum");
+  R.mean[0][12] = R.mean[1][12] = 101;
+  EXPECT_EQ(describe_residual(R, M, grid, ctx).moves, "neither");
+  EXPECT_TRUE(r.lines.empty());    // no runs: no periodogram
 }
 
 // ---- the sweep layer's side: what a sweep folder holds, the cluster script
@@ -579,3 +886,114 @@ TEST(GapDiagnosis, StagesReportProgressInOrderThroughTheCallback)
   EXPECT_FALSE(fs::exists(dir.path / "cache2"));
 }
 #endif
+
+// ---- report: diagnosis.json's keys and values, as the hand-built writer wrote them
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+// A diagnosis with every field the report writes set to a value of its own (two speeds,
+// three candidates, a refinement), so that a key written from the wrong field shows.
+Diagnosis filled_diagnosis(const std::string &real_dir)
+{
+  Diagnosis d;
+  d.scenario = "hand";
+  d.real_dir = real_dir;
+  d.grid.zmax = 0.75;
+  d.peak_end = 0.7;
+  d.notes = {"first note", "a note with \"quotes\" and a tab\t"};
+  d.chi2_0 = 93.61, d.p_value = 2.5e-7, d.chi2_after = 54.8, d.confirmed_fraction = 0.71234;
+  d.nfeatures = 24, d.significant = true, d.targeted = false, d.n_null = 6, d.n_reference = 4;
+  d.proj_before = 5.7612, d.proj_after = -1.234567;
+  d.refined = true, d.refined_from = -0.078, d.gap_after_first = 0.1401, d.proj_refined = 0.05;
+  Finding w;
+  w.regime = "peak", w.observable = "peak_F", w.v0 = 50, w.real = 1234.5, w.sim = 1100.25, w.real_se = 20.5,
+  w.sim_se = 15.125, w.zscore = 5.2345, w.significant = true;
+  d.where.push_back(w);
+  w.regime = "linear", w.observable = "k_z", w.v0 = 100, w.real = 3.1e5, w.sim = 3.0e5, w.zscore = 0.8, w.significant = false;
+  d.where.push_back(w);
+  for (int i = 0; i < 3; ++i) {
+    EffectFit r;
+    r.name = i == 0 ? "packing" : i == 1 ? "rolling_resistance" : "sidewalls";
+    r.magnitude = -0.15 + 0.1 * i, r.chi2_0 = 93.61, r.chi2 = 40.0 + 10 * i, r.explained = 0.9 - 0.3 * i;
+    r.heldout_explained = 0.8 - 0.2 * i, r.score = 0.8 - 0.3 * i, r.at_edge = i == 2, r.lr = 50.5 - 20 * i;
+    r.lr_null_mean = 1.2 + i, r.lr_threshold = 18.2 + 15 * i, r.detected = i < 2;
+    d.ranking.push_back(r);
+  }
+  d.magnitude_note["packing"] = "pour friction 0.150: phi_0 0.5812 against the baseline's 0.5801";
+  d.verdict = "explained", d.top_effect = "packing", d.tested_effect = "packing";
+  d.magnitude = -0.150123, d.magnitude_unit = "pour friction minus 0.3";
+  for (double v : {50.0, 100.0}) {
+    SpeedCurves c;
+    c.v0 = v, c.n_real = 4, c.n_base = 4, c.n_corr = 4;
+    c.z = {0.125, 0.375, 0.625};
+    c.real = {100 + v, 200 + v, 300 + v}, c.real_se = {5, 6, 7};
+    c.base = {90 + v, 210 + v, 280 + v}, c.base_se = {4, 5, 6};
+    c.corr = {99 + v, 201 + v, 301 + v}, c.corr_se = {4, 5, 6};
+    c.gap = {10, -10, 20}, c.band = {12.8, 15.6, 18.4};
+    c.G_before = 0.1 + v / 1000, c.G_after = 0.02 + v / 10000, c.z_transient_end = 0.75;
+    d.speeds.push_back(c);
+  }
+  d.gap_before = 0.151234, d.gap_after = 0.030456;
+  d.gap_by_regime["peak"] = {0.2, 0.05};
+  d.gap_by_regime["linear"] = {0.1, 0.01};
+  d.heldout_v0 = 100, d.heldout_before = 0.193, d.heldout_after = 0.156, d.heldout_magnitude = -0.064;
+  d.n_real_min = 4, d.n_sim = 4;
+  return d;
+}
+
+nlohmann::json read_json_file(const std::string &path)
+{
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+}    // namespace
+
+// Every key and value the hand-built writer wrote (tests/unit/data/gap_report_before_nlohmann.json:
+// its output for filled_diagnosis, kept from before the move to nlohmann) is written again,
+// numbers to the printed precision; what the new writer adds is listed, nothing else.
+void expect_same_json(const nlohmann::json &before, const nlohmann::json &now, const std::string &at)
+{
+  if (before.is_number() && now.is_number()) {
+    // the old text rounded each number to its printf format; the new rounds it the same
+    // way, so the two read back equal up to the last printed digit's rounding
+    EXPECT_NEAR(before.get<double>(), now.get<double>(), 1e-12 * std::abs(before.get<double>()) + 1e-300) << at;
+    return;
+  }
+  ASSERT_EQ(before.type(), now.type()) << at;
+  if (before.is_object()) {
+    for (auto it = before.begin(); it != before.end(); ++it) {
+      ASSERT_TRUE(now.contains(it.key())) << at << "." << it.key() << " is gone";
+      expect_same_json(it.value(), now[it.key()], at + "." + it.key());
+    }
+  } else if (before.is_array()) {
+    ASSERT_EQ(before.size(), now.size()) << at;
+    for (std::size_t i = 0; i < before.size(); ++i) expect_same_json(before[i], now[i], at + "[" + std::to_string(i) + "]");
+  } else {
+    EXPECT_EQ(before, now) << at;
+  }
+}
+
+TEST(GapReport, DiagnosisJsonKeysAndValuesAsTheHandBuiltWriterWroteThem)
+{
+  TempDir dir("report_json");
+  write_gap_report(filled_diagnosis("real"), dir.path.string());
+  const nlohmann::json now = read_json_file(dir / "diagnosis.json");
+  nlohmann::json before = read_json_file(GRANPEN_GAP_REPORT_FIXTURE);
+  // the one value changed since, on purpose: gap_before, gap_after and the held-out figures
+  // are G_all now (filled_diagnosis sets them as numbers, so they compare equal)
+  EXPECT_EQ(before["gap_metric"], "shared/formats/gap-metric.md v1");
+  before["gap_metric"] = "shared/formats/gap-metric.md v2";
+  expect_same_json(before, now, "diagnosis.json");
+  // the top-level keys added since (issue 21; nlohmann::json orders them by name)
+  std::vector<std::string> added;
+  for (auto it = now.begin(); it != now.end(); ++it)
+    if (!before.contains(it.key())) added.push_back(it.key());
+  EXPECT_EQ(added, (std::vector<std::string>{"detection_limits", "false_alarms", "gap_parts", "look_alikes",
+                                             "next_measurement", "residual", "tie"}));
+  // written through the atomic writer: no temporary left beside it
+  for (const auto &e : fs::directory_iterator(dir.path))
+    EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+}

@@ -1,0 +1,224 @@
+// granpen gap, stage 7b (limits): see gap_limits.h.
+#include "gap_limits.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace granpen {
+
+namespace {
+
+std::size_t zero_knot(const EffectData &e)
+{
+  const auto it = std::find(e.knots.begin(), e.knots.end(), 0.0);
+  return it == e.knots.end() ? 0 : (std::size_t) (it - e.knots.begin());
+}
+
+// the fit's weight of feature k at speed s: the measured mean's variance (times its factor)
+// plus the reference's
+double weight(const EffectData &e, const Target &t, const NoiseFactors &fac, std::size_t s, std::size_t k)
+{
+  return t.err[s][k] * (s < fac.size() ? fac[s] : 1.0) + e.err[zero_knot(e)][s][k];
+}
+
+NoiseFactors ones(const Target &t) { return NoiseFactors(t.mean.size(), 1.0); }
+
+// The farthest simulated magnitude on the side of sign: the outermost knot there, or for a
+// two-sided effect simulated on the other side only, the mirror of its farthest knot (the
+// fit's linear response through the baseline); 0 when the effect has no such side.
+double side_end(const Effect &e, const EffectData &ed, double sign)
+{
+  double end = 0.0;
+  for (double k : ed.knots)
+    if (k * sign > end * sign) end = k;
+  if (end == 0.0 && !e.one_sided)
+    for (double k : ed.knots)
+      if (-k * sign > end * sign) end = -k;
+  return end;
+}
+
+// The smallest |a| on 0 -> end at which the signature reaches the threshold: a scan of 200
+// steps, then bisection inside the first step that reaches it.
+std::optional<double> first_detected(const EffectData &ed, const Target &t, double threshold, double end,
+                                     const NoiseFactors &fac)
+{
+  if (end == 0.0) return std::nullopt;
+  const int n = 200;
+  for (int i = 1; i <= n; ++i) {
+    const double a = end * i / n;
+    if (signature_strength(ed, t, a, fac) < threshold) continue;
+    double lo = end * (i - 1) / n, hi = a;
+    for (int it = 0; it < 40; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      (signature_strength(ed, t, mid, fac) >= threshold ? hi : lo) = mid;
+    }
+    return hi;
+  }
+  return std::nullopt;
+}
+
+// The noise factors of n measured runs per speed instead of today's.
+NoiseFactors factors_for(const Features &f, double n)
+{
+  NoiseFactors fac;
+  for (const auto &e : f.real) fac.push_back((double) std::max<std::size_t>(1, e.n()) / n);
+  return fac;
+}
+
+}    // namespace
+
+double signature_strength(const EffectData &ed, const Target &t, double a, const NoiseFactors &factors)
+{
+  double lam = 0.0;
+  std::vector<double> u, var;
+  for (std::size_t s = 0; s < t.mean.size(); ++s) {
+    effect_signature(ed, a, s, u, var);
+    for (std::size_t k = 0; k < u.size(); ++k) lam += (u[k] * u[k] - var[k]) / weight(ed, t, factors, s, k);
+  }
+  return std::max(0.0, lam);
+}
+
+DetectionLimit detection_limit(const Effect &e, const EffectData &ed, const EffectFit &fit, const Features &f)
+{
+  DetectionLimit L;
+  L.effect = e.name;
+  L.unit = e.unit;
+  L.reference = e.knots.empty() ? 0.0 : e.knots[0];
+  L.threshold = fit.lr_threshold;
+  const double sign = L.reference < 0 ? -1.0 : 1.0;
+  const NoiseFactors now = ones(f.target);
+  L.limit = first_detected(ed, f.target, L.threshold, side_end(e, ed, sign), now);
+  if (!e.one_sided) L.limit_other_side = first_detected(ed, f.target, L.threshold, side_end(e, ed, -sign), now);
+  for (int n = 1; n <= MAX_RUNS_PER_SPEED; ++n)
+    if (signature_strength(ed, f.target, L.reference, factors_for(f, n)) >= L.threshold) {
+      L.runs_needed = n;
+      break;
+    }
+  return L;
+}
+
+double prediction_separation2(const EffectData &a, double ma, const EffectData &b, double mb, const Target &t,
+                              const NoiseFactors &factors)
+{
+  // both models are the reference at magnitude 0, so M_a(ma) - M_b(mb) = u_a(ma) - u_b(mb)
+  double d2 = 0.0;
+  std::vector<double> ua, va, ub, vb;
+  for (std::size_t s = 0; s < t.mean.size(); ++s) {
+    effect_signature(a, ma, s, ua, va);
+    effect_signature(b, mb, s, ub, vb);
+    for (std::size_t k = 0; k < ua.size(); ++k)
+      d2 += (std::pow(ua[k] - ub[k], 2) - va[k] - vb[k]) / weight(a, t, factors, s, k);
+  }
+  return std::max(0.0, d2);
+}
+
+std::vector<LookAlike> look_alikes(const std::vector<EffectFit> &ranking, const std::map<std::string, EffectData> &data,
+                                   const std::map<std::string, const Effect *> &effects, const Features &f)
+{
+  std::vector<LookAlike> out;
+  const NoiseFactors now = ones(f.target);
+  for (std::size_t i = 0; i < ranking.size(); ++i)
+    for (std::size_t j = i + 1; j < ranking.size(); ++j) {
+      const EffectData &A = data.at(ranking[i].name), &B = data.at(ranking[j].name);
+      const double ra = effects.at(A.name)->knots.at(0), rb = effects.at(B.name)->knots.at(0);
+      double ab = 0, aa = 0, bb = 0;
+      std::vector<double> ua, va, ub, vb;
+      for (std::size_t s = 0; s < f.nspeeds(); ++s) {
+        effect_signature(A, ra, s, ua, va);
+        effect_signature(B, rb, s, ub, vb);
+        for (std::size_t k = 0; k < ua.size(); ++k) {
+          const double w = weight(A, f.target, now, s, k);
+          ab += ua[k] * ub[k] / w, aa += ua[k] * ua[k] / w, bb += ub[k] * ub[k] / w;
+        }
+      }
+      LookAlike l;
+      l.a = A.name, l.b = B.name;
+      if (aa > 0 && bb > 0) {
+        const double c = std::clamp(ab / std::sqrt(aa * bb), -1.0, 1.0);
+        l.angle_deg = std::acos(c) * 180.0 / M_PI;
+        // the one at its reference stands |u| sin(angle) off the other's best multiple
+        l.separation = std::sqrt(std::min(aa, bb) * (1.0 - c * c));
+      }
+      l.look_alike = l.separation * l.separation < EVIDENCE_MARGIN;
+      l.fit_separation = std::sqrt(prediction_separation2(A, ranking[i].magnitude, B, ranking[j].magnitude, f.target, now));
+      out.push_back(l);
+    }
+  return out;
+}
+
+namespace {
+
+// The speed and fewest further runs there (up to MAX_RUNS_PER_SPEED) at which value(factors)
+// reaches target; unreached: the speed where MAX_RUNS_PER_SPEED runs gain the most.
+template <class Value>
+NextMeasurement best_runs(const Features &f, double target, Value value)
+{
+  NextMeasurement m;
+  m.target = target;
+  m.now = value(ones(f.target));
+  int best_runs = MAX_RUNS_PER_SPEED + 1;
+  double best_after = -1.0;
+  for (std::size_t s = 0; s < f.nspeeds(); ++s) {
+    NoiseFactors fac = ones(f.target);
+    const double n = (double) std::max<std::size_t>(1, f.real[s].n());
+    int runs = MAX_RUNS_PER_SPEED;
+    double after = 0.0;
+    for (int r = 1; r <= MAX_RUNS_PER_SPEED; ++r) {
+      fac[s] = n / (n + r);
+      after = value(fac);
+      if (after >= target) {
+        runs = r;
+        break;
+      }
+    }
+    const bool reaches = after >= target;
+    const int key = reaches ? runs : MAX_RUNS_PER_SPEED + 1;
+    // fewer runs first; among equals, a clearly larger result (else the slower speed stays)
+    if (key < best_runs || (key == best_runs && after > best_after * (1 + 1e-9) + 1e-12)) {
+      best_runs = key, best_after = after;
+      m.v0 = f.speeds[s], m.runs = runs, m.after = after, m.reaches = reaches;
+    }
+  }
+  return m;
+}
+
+}    // namespace
+
+std::optional<NextMeasurement> next_measurement(const std::vector<EffectFit> &ranking,
+                                                const std::map<std::string, EffectData> &data, const Features &f,
+                                                const std::string &verdict)
+{
+  if (ranking.empty() || f.nspeeds() == 0 || verdict == "explained") return std::nullopt;
+  const EffectFit &top = ranking[0];
+  if (ranking.size() > 1) {
+    const EffectFit &second = ranking[1];
+    const EffectData &A = data.at(top.name), &B = data.at(second.name);
+    const bool contest = verdict == "tie" || top.detected || second.detected;
+    auto sep = [&](const NoiseFactors &fac) {
+      return prediction_separation2(A, top.magnitude, B, second.magnitude, f.target, fac);
+    };
+    if (contest && sep(ones(f.target)) < EVIDENCE_MARGIN) {
+      NextMeasurement m = best_runs(f, EVIDENCE_MARGIN, sep);
+      m.goal = "separate";
+      m.effects = {top.name, second.name};
+      return m;
+    }
+  }
+  // the undetected candidate nearest its threshold
+  const EffectFit *near = nullptr;
+  for (const auto &r : ranking)
+    if (!r.detected && r.lr_threshold > 0 && (!near || r.lr / r.lr_threshold > near->lr / near->lr_threshold)) near = &r;
+  if (!near) return std::nullopt;
+  // the magnitude whose signature's expected likelihood ratio is the measured one, on the side
+  // of the fit: the fitted magnitude itself may be where a compromise with another gap sits
+  const EffectData &E = data.at(near->name);
+  const auto [lo, hi] = magnitude_range(E);
+  const double end = near->magnitude < 0 ? lo : hi;
+  const double a = near->lr > 0 ? first_detected(E, f.target, near->lr, end, ones(f.target)).value_or(end) : 0.0;
+  NextMeasurement m = best_runs(f, near->lr_threshold, [&](const NoiseFactors &fac) { return signature_strength(E, f.target, a, fac); });
+  m.goal = "detect";
+  m.effects = {near->name};
+  return m;
+}
+
+}    // namespace granpen

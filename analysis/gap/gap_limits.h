@@ -1,0 +1,96 @@
+// granpen gap, stage 7b (limits): how blind the diagnosis was, and what would see more.
+// From the signatures already simulated (the knots) and the measured data's noise, no new
+// simulation:
+// - detection limits: per candidate, the smallest magnitude whose signature the targeted
+//   test (gap_fit.h: the likelihood ratio against the effect's own threshold) would call
+//   detected at this data's noise; and the measured runs per speed that would bring it down
+//   to the effect's first reference value (the measured standard errors scale as 1/sqrt(n),
+//   the reference beds' stay);
+// - look-alikes: per pair of candidates, the angle between their signatures in whitened
+//   feature space and how far apart their fitted predictions lie at the data's noise;
+// - the next measurement: the speed and number of further runs that would best separate
+//   the top two candidates, or detect the most likely undetected one.
+// docs/gap.md, "How blind" and "Look-alikes".
+#ifndef GRANPEN_GAP_LIMITS_H
+#define GRANPEN_GAP_LIMITS_H
+
+#include "effects.h"
+#include "gap_features.h"
+#include "gap_fit.h"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace granpen {
+
+// Per speed, the factor on the measured side's variance of the mean: n_now / n_then.
+using NoiseFactors = std::vector<double>;
+
+// The expected likelihood ratio of an effect present at magnitude a: the squared norm of its
+// signature (less what the knots' own noise adds to it) in the fit's weights, the measured
+// variances times factors. The targeted test detects the effect half the time when this
+// equals its threshold.
+double signature_strength(const EffectData &ed, const Target &t, double a, const NoiseFactors &factors);
+
+struct DetectionLimit {
+  std::string effect, unit;
+  double reference = 0;                    // the effect's first reference value (library order)
+  double threshold = 0;                    // its likelihood ratio's threshold in this diagnosis
+  std::optional<double> limit;             // on the reference's side of 0; none: not within the knots
+  std::optional<double> limit_other_side;  // two-sided effects: the same on the other side
+  std::optional<int> runs_needed;          // measured runs per speed that bring the limit to `reference`
+};
+
+// Up to this many measured runs per speed are considered for runs_needed and the next
+// measurement (beyond, the reference beds' noise dominates in the bench scenario).
+constexpr int MAX_RUNS_PER_SPEED = 64;
+
+// The limit of one effect (ed its model data, fit its fit with the threshold).
+DetectionLimit detection_limit(const Effect &e, const EffectData &ed, const EffectFit &fit, const Features &f);
+
+struct LookAlike {
+  std::string a, b;
+  double angle_deg = 90;       // between the signatures at the first reference values, whitened
+  // sigmas by which the one at its first reference value stands off the other's best
+  // multiple (|u| sin(angle)), the smaller of the two ways round (knot noise not subtracted):
+  // what the data can tell them apart by at this noise
+  double separation = 0;
+  bool look_alike = false;     // separation^2 below the evidence margin: not told apart here
+  double fit_separation = 0;   // sigmas between their fitted predictions (knot noise subtracted)
+};
+
+// The two fitted predictions' squared distance in the fit's weights (measured variances
+// times factors), less the knots' noise in it: the evidence the data would give between them.
+double prediction_separation2(const EffectData &a, double ma, const EffectData &b, double mb, const Target &t,
+                              const NoiseFactors &factors);
+
+// Every pair of the ranking's candidates (in ranking order).
+std::vector<LookAlike> look_alikes(const std::vector<EffectFit> &ranking, const std::map<std::string, EffectData> &data,
+                                   const std::map<std::string, const Effect *> &effects, const Features &f);
+
+struct NextMeasurement {
+  std::string goal;                // "separate" (the top two) or "detect" (one undetected)
+  std::vector<std::string> effects;
+  double v0 = 0;
+  int runs = 0;                    // further measured runs at v0
+  double now = 0, after = 0;       // the squared separation, or expected likelihood ratio, now and after
+  double target = 0;               // what it must reach: the evidence margin, or the threshold
+  bool reaches = false;            // within MAX_RUNS_PER_SPEED runs at that speed
+  double gain() const { return after - now; }
+};
+
+// The next measurement after a verdict: nothing after `explained`; after a `tie`, or an
+// `unexplained` whose top two contend (either detected), the runs that bring their fitted
+// predictions EVIDENCE_MARGIN apart; else (`none`, or no contest) for the undetected
+// candidate nearest its threshold (the largest lr / threshold) the runs that would detect
+// it at the magnitude its likelihood ratio now says (the signature whose expected ratio is
+// the measured one). None when there is no such candidate.
+std::optional<NextMeasurement> next_measurement(const std::vector<EffectFit> &ranking,
+                                                const std::map<std::string, EffectData> &data, const Features &f,
+                                                const std::string &verdict);
+
+}    // namespace granpen
+
+#endif
