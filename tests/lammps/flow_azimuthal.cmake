@@ -44,6 +44,6 @@ foreach(np 1 2)
 endforeach()
 # the flow files of 1 and 2 ranks agree (same push, round-off): compare the last block
 add_test(NAME example_push_flow_ranks_agree
-  COMMAND awk -f ${CMAKE_CURRENT_SOURCE_DIR}/compare_ave_time.awk ${DECKRUN}/flow_np1.csv.flow.txt
+  COMMAND awk -f ${PROJECT_SOURCE_DIR}/tests/support/compare_ave_time.awk ${DECKRUN}/flow_np1.csv.flow.txt
     ${DECKRUN}/flow_np2.csv.flow.txt)
 set_tests_properties(example_push_flow_ranks_agree PROPERTIES LABELS lammps FIXTURES_REQUIRED "flow_np1;flow_np2")

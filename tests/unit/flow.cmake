@@ -5,7 +5,6 @@
 add_executable(test_flow test_flow.cpp)
 target_link_libraries(test_flow PRIVATE granpen_analysis GTest::gtest_main)
 gtest_discover_tests(test_flow PROPERTIES LABELS unit)
-add_executable(lammps_agree lammps_agree.cpp)
 
 set(FLOW_DIR ${CMAKE_CURRENT_BINARY_DIR}/flow_cli)
 # flow_cli_test(NAME -D...) runs flow_cli_run.cmake with those settings (-P goes last:
