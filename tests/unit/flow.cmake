@@ -119,7 +119,7 @@ if(GRANPEN_HAVE_LMP)
   file(MAKE_DIRECTORY ${CMP})
   add_test(NAME flow_compare_deck
     COMMAND $<TARGET_FILE:lmp_granpen> -in ${PROJECT_SOURCE_DIR}/inputs/in.push -var inputs ${PROJECT_SOURCE_DIR}/inputs
-      -var preset tiny -var bed ${CMAKE_BINARY_DIR}/tests/lammps/beds/bed_tiny.restart -var v0 100 -var depth 1.0
+      -var preset tiny -var bed ${BEDS}/bed_tiny.restart -var v0 100 -var depth 1.0
       -var trace ${CMP}/cmp.csv -var observe ${CMAKE_CURRENT_SOURCE_DIR}/observe_flow_compare.lmp -log ${CMP}/cmp.log)
   set_tests_properties(flow_compare_deck PROPERTIES LABELS lammps FIXTURES_REQUIRED tiny_bed FIXTURES_SETUP flow_compare
     TIMEOUT 300 ENVIRONMENT "OMPI_ALLOW_RUN_AS_ROOT=1;OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1;OMP_NUM_THREADS=1"

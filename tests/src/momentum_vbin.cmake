@@ -1,5 +1,5 @@
-# compute momentum/vbin: the in-process test, bad input (decks on 1 and 2 ranks) and the
-# example deck. Included at the end of tests/lammps/CMakeLists.txt (after error_tests.cmake,
+# compute momentum/vbin: the in-process test and bad input (decks on 1 and 2 ranks); its
+# example deck: tests/inputs. Included from tests/src/CMakeLists.txt (after error_tests.cmake,
 # which defines granpen_error_test).
 add_executable(test_momentum_vbin test_momentum_vbin.cpp)
 target_link_libraries(test_momentum_vbin PRIVATE granpen_styles granpen_analysis granpen_test_main GTest::gtest)
@@ -57,20 +57,3 @@ granpen_error_test(mvbin_needs_g "Compute momentum/vbin needs g: define fix grav
   "${MVBIN} 100 axis 4 4 rmin 1" "run 0")
 granpen_error_test(mvbin_drive_needs_g "Compute momentum/vbin needs g: define fix gravity or give the g keyword"
   "fix push rod rod/drive 100 surface 2.0" "${MVBIN} 100 drive push" "thermo_style custom step c_m" "run 0")
-
-# ---- the example deck: a push into the tiny bed with the momentum tallies, on 1 and 2 ranks;
-# the last line of TRACE.mug_m.txt must hold t, depth 1.0, F and a positive mu g M
-foreach(np 1 2)
-  add_test(NAME example_push_momentum_np${np}
-    COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${np} $<TARGET_FILE:lmp_granpen>
-      -in ${PROJECT_SOURCE_DIR}/inputs/examples/in.push_momentum -var inputs ${PROJECT_SOURCE_DIR}/inputs
-      -var bed ${BEDS}/bed_tiny.restart -var depth 1.0 -var trace ${DECKRUN}/momentum_np${np}.csv
-      -log ${DECKRUN}/momentum_np${np}.log)
-  set_tests_properties(example_push_momentum_np${np} PROPERTIES ENVIRONMENT "${GRANPEN_TEST_ENV}" LABELS lammps
-    PROCESSORS ${np} FIXTURES_REQUIRED tiny_bed FIXTURES_SETUP momentum_np${np}
-    PASS_REGULAR_EXPRESSION "granpen push: done, depth 1.000 cm")
-  add_test(NAME example_push_momentum_output_np${np}
-    COMMAND awk "END { if (!($3 > 0.99 && $4 > 0 && $5 > 0)) { print \"bad last row: \" $0; exit 1 } print \"last row: \" $0 }"
-      ${DECKRUN}/momentum_np${np}.csv.mug_m.txt)
-  set_tests_properties(example_push_momentum_output_np${np} PROPERTIES LABELS lammps FIXTURES_REQUIRED momentum_np${np})
-endforeach()

@@ -31,19 +31,3 @@ granpen_error_test(flow_axis_not_drive "Compute flow/azimuthal axis fix grav is 
   "thermo_style custom step c_f[1][3]" "run 0")
 granpen_error_test(flow_unknown_keyword "Unknown compute flow/azimuthal keyword: theta"
   "compute f grains flow/azimuthal axis 4 4 rbin 0.5 zbin 0.5 theta 4")
-
-# the example push that writes the flow observables, on 1 and 2 ranks
-foreach(np 1 2)
-  add_test(NAME example_push_flow_np${np}
-    COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${np} $<TARGET_FILE:lmp_granpen>
-      -in ${PROJECT_SOURCE_DIR}/inputs/examples/in.push_flow -var inputs ${PROJECT_SOURCE_DIR}/inputs
-      -var bed ${BEDS}/bed_tiny.restart -var trace ${DECKRUN}/flow_np${np}.csv -log ${DECKRUN}/flow_np${np}.log)
-  set_tests_properties(example_push_flow_np${np} PROPERTIES ENVIRONMENT "${GRANPEN_TEST_ENV}" LABELS lammps
-    PROCESSORS ${np} FIXTURES_REQUIRED tiny_bed FIXTURES_SETUP flow_np${np}
-    PASS_REGULAR_EXPRESSION "granpen push: done, depth 2.000 cm")
-endforeach()
-# the flow files of 1 and 2 ranks agree (same push, round-off): compare the last block
-add_test(NAME example_push_flow_ranks_agree
-  COMMAND awk -f ${PROJECT_SOURCE_DIR}/tests/support/compare_ave_time.awk ${DECKRUN}/flow_np1.csv.flow.txt
-    ${DECKRUN}/flow_np2.csv.flow.txt)
-set_tests_properties(example_push_flow_ranks_agree PROPERTIES LABELS lammps FIXTURES_REQUIRED "flow_np1;flow_np2")
