@@ -1,12 +1,5 @@
-# granpen fit and granpen calibration: kernels (unit tests) and the CLI end to end
-# on synthetic inputs written at configure time. Included from CMakeLists.txt.
-add_executable(test_fit test_fit.cpp)
-target_link_libraries(test_fit PRIVATE granpen_analysis GTest::gtest_main)
-gtest_discover_tests(test_fit PROPERTIES LABELS unit)
-
-add_executable(test_calibration test_calibration.cpp)
-target_link_libraries(test_calibration PRIVATE granpen_analysis GTest::gtest_main)
-gtest_discover_tests(test_calibration PROPERTIES LABELS unit)
+# granpen fit, calibration, collapse and convert end to end on synthetic inputs written at
+# configure time (their kernels: tests/analysis/core). Included from CMakeLists.txt.
 
 # A synthetic cgs trace: z = -0.5 .. 5 cm at 0.01 cm (t = 1e-4 s steps, v0 = 100 cm/s),
 # F = K z plus a zero-mean pattern orthogonal to z over the window, so the fitted
@@ -58,9 +51,6 @@ add_test(NAME cli_calibration_synthetic COMMAND granpen-cli calibration ${GRANPE
 set_tests_properties(cli_calibration_synthetic PROPERTIES LABELS "unit;cli"
   PASS_REGULAR_EXPRESSION "\\| 0\\.3 \\| 2 \\| 0\\.5900 \\+- 0\\.0141 \\| 2 \\| 100 \\| 2\\.1e\\+04 \\+- 1\\.4e\\+03 \\| 5\\.95 \\+- 0\\.4 \\|")
 
-add_executable(test_collapse test_collapse.cpp)
-target_link_libraries(test_collapse PRIVATE granpen_analysis GTest::gtest_main)
-gtest_discover_tests(test_collapse PROPERTIES LABELS unit)
 # the collapse front end on the committed bench v0 sweep (6 traces, 3 speeds)
 add_test(NAME cli_collapse_bench_sweep COMMAND granpen-cli collapse ${PROJECT_SOURCE_DIR}/data/sims/v0_bench
   --alpha 18.6 --json ${CMAKE_CURRENT_BINARY_DIR}/collapse.json)

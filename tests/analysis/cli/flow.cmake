@@ -1,10 +1,7 @@
-# granpen flow and granpen momentum: the kernels on synthetic frames (unit tests), the
-# CLI end to end on a synthetic dump (written at configure time) and bad input, and, with
-# lmp_granpen, agreement with compute flow/azimuthal and compute momentum/vbin on the
-# frames of a tiny push. Included from tests/unit/CMakeLists.txt.
-add_executable(test_flow test_flow.cpp)
-target_link_libraries(test_flow PRIVATE granpen_analysis GTest::gtest_main)
-gtest_discover_tests(test_flow PROPERTIES LABELS unit)
+# granpen flow and granpen momentum end to end on a synthetic dump (written at configure
+# time) and bad input, and, with lmp_granpen, agreement with compute flow/azimuthal and
+# compute momentum/vbin on the frames of a tiny push (lammps_agree: tests/support; the
+# kernels on synthetic frames: tests/analysis/core). Included from CMakeLists.txt.
 
 set(FLOW_DIR ${CMAKE_CURRENT_BINARY_DIR}/flow_cli)
 # flow_cli_test(NAME -D...) runs flow_cli_run.cmake with those settings (-P goes last:

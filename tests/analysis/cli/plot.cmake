@@ -1,6 +1,6 @@
 # granpen plot and the figure library (io/plot_writer.h): unit tests on synthetic
 # traces and tables, the command run in-process (its sources compiled in). Included
-# from tests/unit/CMakeLists.txt.
+# from CMakeLists.txt.
 add_executable(test_plot test_plot.cpp ${PROJECT_SOURCE_DIR}/analysis/cli/plot_cmd.cpp
   ${PROJECT_SOURCE_DIR}/analysis/cli/args.cpp
   ${PROJECT_SOURCE_DIR}/analysis/cli/subcommand.cpp)
