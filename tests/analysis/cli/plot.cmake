@@ -1,10 +1,10 @@
-# granpen plot and the figure library (io/plot_writer.h): unit tests on synthetic
-# traces and tables, the command run in-process (its sources compiled in). Included
-# from CMakeLists.txt.
+# granpen plot: unit tests on synthetic traces and tables, the command run in-process (its
+# sources compiled in; the figure library's own tests: tests/analysis/io). Included from
+# CMakeLists.txt.
 add_executable(test_plot test_plot.cpp ${PROJECT_SOURCE_DIR}/analysis/cli/plot_cmd.cpp
   ${PROJECT_SOURCE_DIR}/analysis/cli/args.cpp
   ${PROJECT_SOURCE_DIR}/analysis/cli/subcommand.cpp)
-target_include_directories(test_plot PRIVATE ${PROJECT_SOURCE_DIR}/analysis/cli)
+target_include_directories(test_plot PRIVATE ${PROJECT_SOURCE_DIR}/analysis/cli ${PROJECT_SOURCE_DIR}/tests/support)
 target_link_libraries(test_plot PRIVATE granpen_analysis CLI11::CLI11 GTest::gtest_main)
 target_compile_definitions(test_plot PRIVATE GRANPEN_PLOT_TEST_DIR="${CMAKE_CURRENT_BINARY_DIR}/plot_test"
   GRANPEN_BENCH_TRACES="${PROJECT_SOURCE_DIR}/data/sims/v0_bench")
