@@ -1,7 +1,7 @@
 // Pushes into the poured tiny bed (made by the pour_tiny ctest fixture; its
 // path comes in GRANPEN_TINY_BED): the drag against independent routes, the
 // force before contact and with depth. (Restart and decomposition consistency
-// are deck-level tests across processes: see CMakeLists.txt.)
+// are deck-level tests across processes: see tests/inputs/CMakeLists.txt.)
 #include "lmp_session.h"
 #include "trace_reader.h"
 

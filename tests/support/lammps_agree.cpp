@@ -1,5 +1,5 @@
 // lammps_agree: granpen flow / granpen momentum outputs against the in-LAMMPS computes on
-// the same frames (tests/unit/flow.cmake). Both sides call the same kernels of src/
+// the same frames (tests/analysis/cli/flow.cmake). Both sides call the same kernels of src/
 // (flow_bins, voronoi_cells, momentum_class_limits), so this checks the two data paths:
 // the atoms as the compute sees them in the run against the atoms read back from the dump
 // (positions, velocities, stress, the rod's axis and tip, the frame, the bed surface).

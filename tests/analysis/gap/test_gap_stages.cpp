@@ -517,7 +517,7 @@ TEST(GapReport, OutputReplacesAnOlderOneOnlyWhenComplete)
   EXPECT_FALSE(fs::exists(out + ".old"));
 }
 
-// ---- the stages in order: a whole diagnosis in the synthetic world (tests/tools/fake_lmp)
+// ---- the stages in order: a whole diagnosis in the synthetic world (tests/support/fake_lmp)
 
 #if defined(GRANPEN_FAKE_LMP) && defined(GRANPEN_INPUTS_DIR)
 #include "gap_diagnosis.h"

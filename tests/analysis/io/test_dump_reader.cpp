@@ -660,7 +660,7 @@ std::size_t index_of_id(const DumpFrame &f, double id)
 
 }    // namespace
 
-// tests/unit/dump_small.lmp, run by lmp_granpen (ctest fixture dump_lammps), wrote the
+// tests/analysis/io/dump_small.lmp, run by lmp_granpen (ctest fixture dump_lammps), wrote the
 // same 3 frames of 384 grains as dump custom (%.17g), dump custom/gz (shuffled
 // columns, scaled coordinates, %.17g) and dump custom at LAMMPS's default %g with
 // unwrapped coordinates; and, by fix ave/time, the sums of x y z vx vy vz radius and

@@ -2,11 +2,11 @@
 # The sweep runner under faults with the real lmp_granpen (tiny preset): kill -9 of the
 # runner during the pour and again during the push (at random points drawn from SEED),
 # then a rerun. No LAMMPS outlives its runner; the bed poured again equals, byte for byte,
-# the tiny bed of the same seed poured uninterrupted (tests/lammps fixture); the push,
+# the tiny bed of the same seed poured uninterrupted (tests/inputs fixture); the push,
 # resumed from its checkpoint, has exactly the rows of an uninterrupted push of that bed
 # (t column identical: none lost, none repeated) and agrees with it to 1e-3 of max F: a
 # resumed LAMMPS run re-evaluates the damping forces at setup and the difference grows with
-# the steps after the resume point (6e-5 after 3500 steps in tests/lammps restart_agrees,
+# the steps after the resume point (6e-5 after 3500 steps in tests/inputs restart_agrees,
 # here 9e-6 and 1.5e-4 measured in two runs resuming at steps near 3500 of 7500: chaotic
 # growth of round-off); another bed or push differs by O(1).
 #   fault_lammps.sh CLI TRACE_AGREE INPUTS BED OUT SEED    (BED: the fixture's bed_tiny, no extension)
