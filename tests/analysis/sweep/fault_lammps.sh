@@ -27,6 +27,20 @@ wait_gone() {
 }
 # alive and not a zombie (an exited runner stays one until waited for)
 running() { ps -o stat= -p "$1" 2>/dev/null | grep -q '^[^Z]'; }
+# kill_when DIR OUTPUT WHAT FILE PATTERN N: starts the runner on DIR, kills it with -9 once
+# FILE holds N lines matching PATTERN (no time limit of its own: a loaded machine can make
+# the pour minutes long), and checks that its lmp_granpen is gone; WHAT names the stage
+kill_when() {
+  run_bg "$1" "$2"
+  local runner=$!
+  until [ "$(cat "$4" 2>/dev/null | grep -c "$5" || true)" -ge "$6" ]; do
+    running "$runner" || fail "the runner ended before the $3 was killed"
+    sleep 0.05
+  done
+  kill -9 "$runner" || fail "the runner ended before the $3 was killed"
+  wait "$runner" 2>/dev/null || true
+  wait_gone "$1" "$3"
+}
 RANDOM=$SEED
 
 # the reference: an uninterrupted push from the fixture's bed
@@ -39,33 +53,15 @@ ref=$OUT/ref/lfault/traces/$id.csv
 # killed during the pour, after a random one of its first 8 progress lines (the tiny pour
 # prints 7 chunks and 3 relaxations: it is still running after the 8th)
 d=$OUT/killed
-run_bg "$d" "$OUT/pour_killed.txt"
-runner=$!
 chunk=$((1 + RANDOM % 8))
-log=$d/lfault/logs/$bed.log
-# (waits without a time limit of its own: a loaded machine can make the pour minutes long)
-until [ "$(cat "$log" 2>/dev/null | grep -c '^granpen pour: \(chunk\|relaxation\)' || true)" -ge "$chunk" ]; do
-  running "$runner" || fail "the runner ended before the pour was killed"
-  sleep 0.05
-done
-kill -9 "$runner" || fail "the runner ended before the pour was killed"
-wait "$runner" 2>/dev/null || true
-wait_gone "$d" "pour"
+kill_when "$d" "$OUT/pour_killed.txt" pour "$d/lfault/logs/$bed.log" '^granpen pour: \(chunk\|relaxation\)' "$chunk"
 [ ! -e "$d/lfault/beds/$bed.info" ] || fail "the pour had finished when it was killed"
 # killed during the push, at a random row between a fifth and four fifths of the trace
 # (the first checkpoint, 500 of about 7500 steps, is written by then)
 rows=$(grep -c '^[0-9-]' "$ref")
 target=$((rows / 5 + RANDOM % (rows * 3 / 5)))
-run_bg "$d" "$OUT/push_killed.txt"
-runner=$!
 trace=$d/lfault/traces/$id.csv
-until [ "$(cat "$trace" 2>/dev/null | grep -c '^[0-9-]' || true)" -ge "$target" ]; do
-  running "$runner" || fail "the runner ended before the push was killed"
-  sleep 0.05
-done
-kill -9 "$runner" || fail "the runner ended before the push was killed"
-wait "$runner" 2>/dev/null || true
-wait_gone "$d" "push"
+kill_when "$d" "$OUT/push_killed.txt" push "$trace" '^[0-9-]' "$target"
 [ ! -e "$trace.done" ] || fail "the push had finished when it was killed"
 "$CLI" $(args "$d") > "$OUT/rerun.txt" 2>&1 || { cat "$OUT/rerun.txt"; fail "the rerun failed"; }
 grep -q "start $id (resumed from $id.csv.[ab].restart" "$OUT/rerun.txt" ||
