@@ -2,6 +2,7 @@
 #include "dump_cmd_common.h"
 
 #include "atomic_file.h"
+#include "rod_frame.h"
 
 #include <cmath>
 #include <cstdio>
@@ -12,27 +13,23 @@ namespace cli {
 
 namespace fs = std::filesystem;
 
-bool read_rod_options(const ParsedArgs &args, RodOptions &ro, std::string &message)
+void read_dump_options(DumpOptions &o)
 {
+  const ParsedArgs &args = o.args;
   double v;
   if (args.number("--rod-type", v)) {
-    if (v != std::floor(v) || v < 1) {
-      message = "--rod-type must be a positive integer";
-      return false;
-    }
-    ro.rod_type = (int) v;
+    if (v != std::floor(v) || v < 1) throw UsageError("--rod-type must be a positive integer");
+    o.rod.rod_type = (int) v;
   }
   const auto axis = args.numbers.find("--axis");
-  if (axis != args.numbers.end()) ro.have_axis = true, ro.axis_x = axis->second[0], ro.axis_y = axis->second[1];
-  if (args.number("--tip", ro.tip)) ro.have_tip = true;
-  return true;
-}
-
-bool periodic_axes(const std::string &axes, bool &x, bool &y)
-{
-  if (axes != "xy" && axes != "x" && axes != "y" && axes != "none") return false;
-  x = axes == "xy" || axes == "x", y = axes == "xy" || axes == "y";
-  return true;
+  if (axis != args.numbers.end()) o.rod.have_axis = true, o.rod.axis_x = axis->second[0], o.rod.axis_y = axis->second[1];
+  if (args.number("--tip", o.rod.tip)) o.rod.have_tip = true;
+  o.out_dir = args.value("--out", ".");
+  if (o.out_dir.empty()) throw UsageError("--out needs a folder");
+  o.periodic = args.value("--periodic", "xy");
+  const std::string &a = o.periodic;
+  if (a != "xy" && a != "x" && a != "y" && a != "none") throw UsageError("--periodic must be xy, x, y or none");
+  o.px = a == "xy" || a == "x", o.py = a == "xy" || a == "y";
 }
 
 namespace {
@@ -48,6 +45,20 @@ void progress_line(const DumpProgress &p, const std::string &tool)
 void report_progress(DumpReader &reader, const std::string &tool)
 {
   reader.on_progress([tool](const DumpProgress &p) { progress_line(p, tool); }, 2.0);
+}
+
+void first_frame(DumpReader &reader, const std::vector<std::string> &dumps, DumpFrame &frame, const std::string &tool)
+{
+  report_progress(reader, tool);
+  if (!reader.next(frame)) throw InputError(dumps[0] + ": no frames");
+}
+
+double frame_bed_surface(const DumpFrame &frame, const GrainFrame &g)
+{
+  const std::vector<double> &X = frame.col("x"), &Y = frame.col("y"), &Z = frame.col("z"), &R = frame.col("radius");
+  int nempty = 0;
+  return bed_surface(X.data(), Y.data(), Z.data(), R.data(), g.is_rod.data(), X.size(), frame.lo[0], frame.hi[0],
+                     frame.lo[1], frame.hi[1], 4, nempty);
 }
 
 bool write_outputs(const std::string &dir, const std::vector<std::pair<std::string, std::string>> &files,

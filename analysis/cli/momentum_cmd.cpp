@@ -47,12 +47,7 @@ const char *HELP =
     "no output is written), 2 for a usage error.\n";
 
 // The command line, read and checked.
-struct MomentumOptions {
-  ParsedArgs args;
-  RodOptions rod;
-  std::string out_dir, periodic;
-  bool px = true, py = true;
-};
+struct MomentumOptions : DumpOptions {};
 
 const char *const OUTPUTS[] = {"momentum.json", "momentum_classes.csv", "momentum_drag.csv"};
 
@@ -81,17 +76,14 @@ bool parse_momentum(int argc, char **argv, MomentumOptions &o)
   if (args.positional.empty()) throw UsageError("no dump given");
   if (!args.has("--trace")) throw UsageError("--trace TRACE is required (v0, D, g and the drag come from it)");
   if (!args.read_numbers({"--trace", "--out", "--periodic", "--push-step"}, msg) ||
-      !args.positive({"--D", "--rho", "--dt", "--mthreshold"}, msg) || !read_rod_options(args, o.rod, msg))
+      !args.positive({"--D", "--rho", "--dt", "--mthreshold"}, msg))
     throw UsageError(msg);
+  read_dump_options(o);
   double mu = 0.0;
   if (args.number("--mu", mu) && !(mu >= 0.0)) throw UsageError("--mu must be >= 0");
   long long push_step = 0;
   if (args.has("--push-step") && !integer_arg(args.value("--push-step", ""), push_step))
     throw UsageError("--push-step '" + args.value("--push-step", "") + "' is not an integer");
-  o.out_dir = args.value("--out", ".");
-  if (o.out_dir.empty()) throw UsageError("--out needs a folder");
-  o.periodic = args.value("--periodic", "xy");
-  if (!periodic_axes(o.periodic, o.px, o.py)) throw UsageError("--periodic must be xy, x, y or none");
   return true;
 }
 
@@ -152,12 +144,9 @@ double bed_surface_of(const MomentumOptions &o, const PushTrace &th, const DumpF
   if (o.args.number("--zs", zs)) return zs;
   how.z_s_source = "trace";
   if (th.have_surface) return th.surface;
-  const auto &X = frame.col("x"), &Y = frame.col("y"), &Z = frame.col("z"), &Rr = frame.col("radius");
-  int nempty = 0;
   how.z_s_source = "first frame";
   how.notes.push_back("bed surface measured in the first frame: the trace has no surface key");
-  return bed_surface(X.data(), Y.data(), Z.data(), Rr.data(), g.is_rod.data(), X.size(), frame.lo[0], frame.hi[0],
-                     frame.lo[1], frame.hi[1], 4, nempty);
+  return frame_bed_surface(frame, g);
 }
 
 void print_summary(const MomentumStudyParams &p, const std::vector<MomentumFrameRecord> &records,
@@ -191,19 +180,15 @@ int granpen::cli::momentum(int argc, char **argv)
 {
   MomentumOptions o;
   if (!parse_momentum(argc, argv, o)) return EXIT_OK;
-  refuse_outputs_over_inputs(o.out_dir, std::vector<const char *>(std::begin(OUTPUTS), std::end(OUTPUTS)), o.args);
-  const PushTrace th = load_push_trace(o.args.value("--trace", ""));
   MomentumProvenance how;
-  how.dumps = o.args.positional;
+  begin_dump_command(o, std::vector<const char *>(std::begin(OUTPUTS), std::end(OUTPUTS)), how);
+  const PushTrace th = load_push_trace(o.args.value("--trace", ""));
   how.trace = th.trace.path;
-  how.rod_type = o.rod.rod_type;
-  how.periodic = o.periodic;
   MomentumStudyParams p = resolve_parameters(o, th, how);
 
   DumpReader reader(o.args.positional);
-  report_progress(reader, "granpen momentum");
   DumpFrame frame;
-  if (!reader.next(frame)) throw InputError(o.args.positional[0] + ": no frames");
+  first_frame(reader, o.args.positional, frame, "granpen momentum");
   ColumnChoice cols;
   cols.mass = how.mass_column = frame.has("mass");
   if (!cols.mass && how.rho_g_source == "default")
