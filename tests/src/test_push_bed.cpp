@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <numeric>
 #include <string>
 
@@ -36,6 +37,15 @@ void setup_push(LmpSession &s, const std::string &bed, double v0, const std::str
           "fix push rod rod/drive " + std::to_string(v0) + " surface " + std::to_string(zs) +
               " grains grains " + fix_extra,
           "timestep 2e-6"});
+}
+
+// with GRANPEN_TEST_VERBOSE set, rank 0 prints the measured numbers the tolerances below
+// were chosen from
+bool verbose()
+{
+  int rank = 0;
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  return rank == 0 && std::getenv("GRANPEN_TEST_VERBOSE");
 }
 
 class PushBed : public ::testing::Test {
@@ -99,8 +109,12 @@ TEST_F(PushBed, ThirdLawWithFriction)
   EXPECT_NEAR(s.compute_vector("f_grains", 2), -fz, 1e-9 * scale);
   EXPECT_NEAR(s.compute_vector("f_grains", 0), -s.compute_vector("drag", 1), 1e-9 * scale);
   EXPECT_NEAR(s.compute_vector("f_grains", 1), -s.compute_vector("drag", 2), 1e-9 * scale);
-  // the central-force route differs by the friction; report its size on failure only
-  EXPECT_NEAR(gg, fz_step, 0.25 * std::fabs(fz_step)) << "group/group with friction";
+  if (verbose()) std::printf("third law: group/group %.6g, drag %.6g, ratio %.4f\n", gg, fz_step, gg / fz_step);
+  // The central-force route misses the vertical part of the friction forces. At most mu =
+  // 0.3 of the drag (every tangential force vertical); at a flat face pushed down they are
+  // mostly horizontal: measured |gg / drag - 1| = 0.022, 0.005, 0.009, 0.019, 0.004 on the
+  // tiny beds of seeds 4242 (the fixture's), 11, 12, 13, 14. 0.06: about three times the largest.
+  EXPECT_NEAR(gg, fz_step, 0.06 * std::fabs(fz_step)) << "group/group with friction";
 }
 
 TEST_F(PushBed, ZeroBeforeContactAndGrowsWithDepthWhenSlow)
@@ -133,8 +147,19 @@ TEST_F(PushBed, ZeroBeforeContactAndGrowsWithDepthWhenSlow)
     if (z > 1.1) deep += f, ++nd;
   }
   const double slope = (n * szf - sz * sf) / (n * szz - sz * sz);
-  EXPECT_GT(slope, 0.0);
-  EXPECT_GT(deep / nd, shallow / ns);
+  // the slope as the depth law's alpha = slope / (mu rho_g g D^2), mu 0.3, rho_g 3, D 2
+  const double alpha = slope / (0.3 * 3.0 * 981.0 * 2.0 * 2.0);
+  if (verbose())
+    std::printf("slow push: slope %.6g dyne/cm (alpha %.3g), mean F deep %.6g, shallow %.6g, ratio %.4f\n", slope,
+                alpha, deep / nd, shallow / ns, (deep / nd) / (shallow / ns));
+  // Measured alpha 15.4, 14.6, 37.0, 25.3, 34.6 and deep/shallow 1.45, 1.25, 2.59, 1.64, 2.55
+  // on the tiny beds of seeds 4242 (the fixture's), 11, 12, 13, 14: a 3.2 cm bed with the
+  // floor 1.7 cm under the final tip, so alpha spreads around and below the paper's 35 +- 5 of
+  // deep beds. The bounds: half the lowest and twice the highest alpha (a drag off by a
+  // factor 2 fails), and the deep third at least 10% above the shallow one (lowest 25%).
+  EXPECT_GT(alpha, 7.0);
+  EXPECT_LT(alpha, 75.0);
+  EXPECT_GT(deep / nd, 1.1 * shallow / ns);
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank == 0) std::remove(trace.c_str());
@@ -168,13 +193,35 @@ TEST_F(PushBed, MountSensorBalancesRodMomentum)
     impulse += (tr.F[i] - fg[i]) * dt;
     scale += std::fabs(tr.F[i]) * dt;
   }
-  // velocity Verlet: exact up to half-step boundary terms, a tiny fraction of the impulse scale
-  EXPECT_NEAR(m * (v.back() - v.front()), impulse, 1e-3 * scale);
-  // sensor and grain force agree on average over the deep part
-  double sf = 0.0, sg = 0.0;
-  for (size_t i = 0; i < tr.t.size(); ++i)
-    if (tr.z[i] > 0.5) sf += tr.F[i], sg += fg[i];
-  EXPECT_NEAR(sf, sg, 0.1 * std::fabs(sg));
+  // Velocity Verlet: exact up to half-step boundary terms, each about |F - F_grain| dt (dt =
+  // 2e-6 s; F - F_grain is small at the push's ends) against the scale's sum over T = 0.02 s:
+  // of order dt / T = 1e-4 at most. Measured 3e-7 to 2.8e-5 of the scale in two runs on each
+  // of the tiny beds of seeds 4242 (the fixture's), 11, 12, 13, 14.
+  if (verbose())
+    std::printf("mount: momentum residual %.4g of the impulse scale\n", (m * (v.back() - v.front()) - impulse) / scale);
+  EXPECT_NEAR(m * (v.back() - v.front()), impulse, 1e-4 * scale);
+  // The sensor carries the drag over the deep part (z > 0.5) up to the rod's change of
+  // momentum there: the sum over its windows of (F - F_grain) dt is m (v(b) - v(a)), v(a)
+  // the speed before its first window. The halt at depth 1.5 slows the rod, so the sensor
+  // reads less than the grains push: F / F_grain over the part 0.86 to 0.98 on the five beds
+  // above (a bound of 10% on that ratio failed on seed 13). The identity holds up to the
+  // half-step terms at its two ends, now in the middle of the push where the lightly damped
+  // mount rings and |F - F_grain| is of the order of F: about 2 dt / T_part = 4e-4 of the
+  // part's impulse scale (T_part = 0.01 s); measured 1.3e-4 to 3.7e-4. Bound 1e-3.
+  double sf = 0.0, sg = 0.0, deep_impulse = 0.0, deep_scale = 0.0;
+  size_t first = 0;
+  for (size_t i = 1; i < tr.t.size(); ++i)
+    if (tr.z[i] > 0.5) {
+      if (!first) first = i;
+      const double dt = tr.t[i] - tr.t[i - 1];
+      sf += tr.F[i], sg += fg[i], deep_impulse += (tr.F[i] - fg[i]) * dt, deep_scale += std::fabs(tr.F[i]) * dt;
+    }
+  ASSERT_GT(first, 0u);
+  if (verbose())
+    std::printf("mount: over z > 0.5 sensor / grain force %.4f, residual %.4g of its impulse scale\n", sf / sg,
+                (m * (v.back() - v[first - 1]) - deep_impulse) / deep_scale);
+  EXPECT_NEAR(m * (v.back() - v[first - 1]), deep_impulse, 1e-3 * deep_scale);
+  EXPECT_GT(sf, 0.5 * sg) << "the sensor does not carry the drag";
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   if (rank == 0) std::remove(trace.c_str());
@@ -203,11 +250,22 @@ TEST_F(PushBed, HydrostaticColumnCarriesTheWeightAbove)
     for (int k = iz + 1; k < nz; ++k) above += a[k][3];
     const double weight = g * above / area;
     if (weight < 0.3 * g * a[2][3] / area) continue;    // too near the surface to average
-    EXPECT_NEAR(a[iz][13], weight, 0.25 * weight) << "z = " << a[iz][1];
-    if (std::getenv("GRANPEN_TEST_VERBOSE") && s.rank() == 0)
-      std::printf("z = %.2f: sigma_zz = %.4g, weight above = %.4g, p = %.4g\n", a[iz][1], a[iz][13], weight, a[iz][10]);
-    // the pressure is compressive and of the same order
-    EXPECT_GT(a[iz][10], 0.2 * weight);
+    if (verbose())
+      std::printf("hydrostatic: z = %.2f: sigma_zz / weight above = %.4f, p / weight above = %.4f\n", a[iz][1],
+                  a[iz][13] / weight, a[iz][10] / weight);
+    // Over the whole periodic cross-section the balance is exact; the cylinder (79% of it)
+    // trades load with its surroundings through shear on its side, and the bins are one
+    // grain high. Measured sigma_zz / weight on the tiny beds of seeds 4242 (the fixture's),
+    // 11, 12, 13, 14: 0.94 to 1.02 from z = 1.4 up, 1.05 to 1.14 in the bin at z = 1.0, 2 to
+    // 3 grains above the floor, whose layering stiffens the packing there. Bounds: 0.12 (twice
+    // the largest deviation, 6%) and 0.25 near the floor (1.7 times its 14%).
+    const double tol = a[iz][1] < 1.2 ? 0.25 : 0.12;
+    EXPECT_NEAR(a[iz][13], weight, tol * weight) << "z = " << a[iz][1];
+    // p = sigma_zz (1 + 2 K) / 3 with the lateral stress ratio K: Jaky's 1 - sin(atan 0.3) =
+    // 0.71 for the grains' friction, more in a poured bed; measured p / weight 0.83 to 1.01.
+    // K between 0.25 and 1.3 gives 0.5 to 1.2 of the weight.
+    EXPECT_GT(a[iz][10], 0.5 * weight) << "z = " << a[iz][1];
+    EXPECT_LT(a[iz][10], 1.2 * weight) << "z = " << a[iz][1];
     ++checked;
   }
   EXPECT_GE(checked, 3);
