@@ -13,7 +13,7 @@ MB=${3:-500}
 LMP=unused    # common.sh's bench bed is not needed here
 . "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 cmake --build "$BUILD" --target dump_read_bench >/dev/null
-BENCH="$BUILD/tests/unit/dump_read_bench"    # target of tests/unit/dump.cmake
+BENCH="$BUILD/tests/analysis/io/dump_read_bench"    # target of tests/analysis/io/CMakeLists.txt
 DIR="$WORK/dump"
 mkdir -p "$DIR"
 TXT="$DIR/big_${MB}MB.dump" GZ="$DIR/big_${MB}MB.dump.gz"

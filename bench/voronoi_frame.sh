@@ -25,7 +25,7 @@ LMP=$BUILD/lmp_granpen
 . "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 [ -x "$LMP" ] || { echo "no $LMP: ./granpen build first" >&2; exit 1; }
 cmake --build "$BUILD" -j1 --target voronoi_frame_bench >/dev/null
-BENCH="$BUILD/tests/unit/voronoi_frame_bench"    # target of tests/unit/dump.cmake
+BENCH="$BUILD/tests/analysis/io/voronoi_frame_bench"    # target of tests/analysis/io/CMakeLists.txt
 DECK="$HERE/in.voronoi_frame"
 DIR="$WORK/voronoi"
 mkdir -p "$DIR"

@@ -2,6 +2,7 @@
 #include "dump_cmd_common.h"
 
 #include "atomic_file.h"
+#include "rod_frame.h"
 
 #include <cmath>
 #include <cstdio>
@@ -25,6 +26,20 @@ void progress_line(const DumpProgress &p, const std::string &tool)
 void report_progress(DumpReader &reader, const std::string &tool)
 {
   reader.on_progress([tool](const DumpProgress &p) { progress_line(p, tool); }, 2.0);
+}
+
+void first_frame(DumpReader &reader, const std::vector<std::string> &dumps, DumpFrame &frame, const std::string &tool)
+{
+  report_progress(reader, tool);
+  if (!reader.next(frame)) throw InputError(dumps[0] + ": no frames");
+}
+
+double frame_bed_surface(const DumpFrame &frame, const GrainFrame &g)
+{
+  const std::vector<double> &X = frame.col("x"), &Y = frame.col("y"), &Z = frame.col("z"), &R = frame.col("radius");
+  int nempty = 0;
+  return bed_surface(X.data(), Y.data(), Z.data(), R.data(), g.is_rod.data(), X.size(), frame.lo[0], frame.hi[0],
+                     frame.lo[1], frame.hi[1], 4, nempty);
 }
 
 bool write_outputs(const std::string &dir, const std::vector<std::pair<std::string, std::string>> &files,

@@ -74,78 +74,57 @@ Columns choose_columns(const DumpFrame &frame, const FlowOptions &o, FlowProvena
   return c;
 }
 
-// rho_g: option, trace, the first frame's masses, or 3
-double grain_density(const FlowOptions &o, const PushTrace &th, FlowProvenance &how)
+// an option's value, NaN when not given
+double option_value(const ParsedArgs &args, const char *name)
 {
-  double rho = 3.0;
-  how.rho_g_source = "default";
-  if (o.args.number("--rho", rho)) how.rho_g_source = "option";
-  else if (th.have_rho) rho = th.rho_g, how.rho_g_source = "trace";
-  return rho;
+  double v = std::numeric_limits<double>::quiet_NaN();
+  args.number(name, v);
+  return v;
 }
 
-// The study's parameters: options, else the trace header, else the first frame (g).
-FlowStudyParams resolve_parameters(const DumpFrame &frame, const GrainFrame &g, const PushTrace &th,
-                                   const FlowOptions &o, double rho, FlowProvenance &how)
+// Where the study's parameters may come from: the options, the trace header, the first frame.
+FlowParamSources parameter_sources(const DumpFrame &frame, const GrainFrame &g, const PushTrace &th,
+                                   const FlowOptions &o, bool mass_column)
 {
   const ParsedArgs &args = o.args;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  FlowParamSources s;
+  s.D = {option_value(args, "--D"), th.present ? th.trace.D : nan};
+  s.d_g = {option_value(args, "--dg"), th.have_dg ? th.d_g : nan};
+  s.rho_g = {option_value(args, "--rho"), th.have_rho ? th.rho_g : nan};
+  s.v0 = {option_value(args, "--v0"), th.present ? th.trace.v0 : nan};
+  s.g = {option_value(args, "--g"), th.present ? th.trace.g : nan};
+  s.z_s = {option_value(args, "--zs"), th.have_surface ? th.surface : nan};
+  s.radius = g.radius.data(), s.mass = mass_column ? g.mass.data() : nullptr, s.grains = g.grains();
+  if (g.rod.found) s.rod_D = g.rod.diameter;
+  for (int d = 0; d < 3; ++d) s.lo[d] = frame.lo[d], s.hi[d] = frame.hi[d];
+  s.timestep = frame.timestep;
+  s.measure_z_s = [&frame, &g] { return frame_bed_surface(frame, g); };
+  s.dr = option_value(args, "--dr"), s.dz = option_value(args, "--dz"), s.rmax = option_value(args, "--rmax");
+  s.profile_radius = option_value(args, "--profile-radius");
+  if (args.numbers.count("--edge")) s.edge_wr = args.numbers.at("--edge")[0], s.edge_wz = args.numbers.at("--edge")[1];
+  s.zlo = o.zlo, s.zhi = o.zhi;
+  s.strip1 = o.strip1, s.strip2 = o.strip2, s.ann1 = o.ann1, s.ann2 = o.ann2, s.ann_top = o.ann_top;
+  return s;
+}
+
+// The study's parameters (core/flow_study.h's flow_study_params), their origins in how.
+FlowStudyParams resolve_parameters(const DumpFrame &frame, const GrainFrame &g, const PushTrace &th,
+                                   const FlowOptions &o, FlowProvenance &how)
+{
+  const FlowParamSources s = parameter_sources(frame, g, th, o, how.mass_column);
+  if (!std::isfinite(s.D.option) && !std::isfinite(s.D.trace) && !g.rod.found)
+    throw InputError(g.where + ": no rod atoms to measure D from: give --D or --trace");
+  FlowParamOrigins from;
   FlowStudyParams p;
-  p.rho_g = rho;
-  if (how.mass_column && how.rho_g_source == "default") {
-    double m = 0, vol = 0;
-    for (std::size_t i = 0; i < g.grains(); ++i) m += g.mass[i], vol += 4.0 / 3.0 * PI * std::pow(g.radius[i], 3);
-    p.rho_g = m / vol, how.rho_g_source = "first frame";
-  }
-  how.d_g_source = "option";
-  if (!args.number("--dg", p.d_g)) {
-    if (th.have_dg) p.d_g = th.d_g, how.d_g_source = "trace";
-    else {
-      double s = 0;
-      for (double r : g.radius) s += 2.0 * r;
-      p.d_g = s / (double) g.grains(), how.d_g_source = "first frame";
-    }
-  }
-  how.D_source = "option";
-  if (!args.number("--D", p.D)) {
-    if (th.present) p.D = th.trace.D, how.D_source = "trace";
-    else if (g.rod.found) p.D = g.rod.diameter, how.D_source = "rod atoms";
-    else throw InputError(g.where + ": no rod atoms to measure D from: give --D or --trace");
-  }
-  p.v0 = p.g = std::numeric_limits<double>::quiet_NaN();
-  how.v0_source = how.g_source = "none";
-  if (args.number("--v0", p.v0)) how.v0_source = "option";
-  else if (th.present) p.v0 = th.trace.v0, how.v0_source = "trace";
-  if (args.number("--g", p.g)) how.g_source = "option";
-  else if (th.present) p.g = th.trace.g, how.g_source = "trace";
-  if (!std::isfinite(p.v0) || !std::isfinite(p.g)) how.notes.push_back("t~ undefined: no v0 or g (give --trace, or --v0 and --g)");
-  how.z_s_source = "option";
-  if (!args.number("--zs", p.z_s)) {
-    if (th.have_surface) p.z_s = th.surface, how.z_s_source = "trace";
-    else {
-      const std::vector<double> &X = frame.col("x"), &Y = frame.col("y"), &Z = frame.col("z"), &Rr = frame.col("radius");
-      int nempty = 0;
-      p.z_s = bed_surface(X.data(), Y.data(), Z.data(), Rr.data(), g.is_rod.data(), X.size(), frame.lo[0], frame.hi[0],
-                          frame.lo[1], frame.hi[1], 4, nempty);
-      how.z_s_source = "first frame";
-      how.notes.push_back("bed surface z_s measured in the first frame (timestep " + std::to_string(frame.timestep) +
-                          "): give --zs or a trace with the surface key when the rod is already in the bed");
-    }
-  }
-  double dr = p.d_g, dz = p.d_g, rmax = 0.5 * std::min(frame.hi[0] - frame.lo[0], frame.hi[1] - frame.lo[1]);
-  args.number("--dr", dr);
-  args.number("--dz", dz);
-  args.number("--rmax", rmax);
   try {
-    p.grid = make_flow_grid(0.0, rmax, dr, o.zlo, o.zhi, dz);
+    p = flow_study_params(s, from);
   } catch (std::invalid_argument &e) {
     throw UsageError(e.what());
   }
-  p.edge_wr = p.grid.dr, p.edge_wz = p.grid.dz;
-  if (args.numbers.count("--edge")) p.edge_wr = args.numbers.at("--edge")[0], p.edge_wz = args.numbers.at("--edge")[1];
-  p.profile_radius = p.D / 3.0;
-  args.number("--profile-radius", p.profile_radius);
-  p.strip1 = o.strip1, p.strip2 = o.strip2, p.ann1 = o.ann1, p.ann2 = o.ann2, p.ann_top = o.ann_top;
-  p.box_zlo = frame.lo[2], p.box_zhi = frame.hi[2];
+  how.D_source = from.D, how.d_g_source = from.d_g, how.rho_g_source = from.rho_g;
+  how.v0_source = from.v0, how.g_source = from.g, how.z_s_source = from.z_s;
+  how.notes.insert(how.notes.end(), from.notes.begin(), from.notes.end());
   return p;
 }
 
@@ -212,25 +191,22 @@ void print_summary(const FlowStudyParams &p, const FlowSummary &s, const std::ve
 
 int granpen::cli::run_flow(const FlowOptions &o)
 {
-  refuse_outputs_over_inputs(o.out_dir, std::vector<const char *>(std::begin(OUTPUTS), std::end(OUTPUTS)), o.args);
   FlowProvenance how;
-  how.dumps = o.args.positional;
-  how.rod_type = o.rod.rod_type;
-  how.periodic = o.periodic;
+  begin_dump_command(o, std::vector<const char *>(std::begin(OUTPUTS), std::end(OUTPUTS)), how);
   PushTrace th;
   if (o.args.has("--trace")) th = load_push_trace(o.args.value("--trace", "")), how.trace = th.trace.path;
 
   DumpReader reader(o.args.positional);
-  report_progress(reader, "granpen flow");
   DumpFrame frame;
-  if (!reader.next(frame)) throw InputError(o.args.positional[0] + ": no frames");
+  first_frame(reader, o.args.positional, frame, "granpen flow");
   const Columns cols = choose_columns(frame, o, how);
   how.mass_column = cols.choice.mass;
-  const double rho = grain_density(o, th, how);
+  std::string rho_source;
+  const double rho = flow_grain_density({option_value(o.args, "--rho"), th.have_rho ? th.rho_g : NAN}, rho_source);
   GrainFrame g;
   extract_frame(frame, o.rod, cols.choice, rho, o.px, o.py, g);
   if (g.grains() == 0) throw InputError(g.where + ": frame has no grains (atoms not of the rod type)");
-  const FlowStudyParams params = resolve_parameters(frame, g, th, o, rho, how);
+  const FlowStudyParams params = resolve_parameters(frame, g, th, o, how);
 
   FlowStudy study(params);
   std::size_t voro_missing = 0;

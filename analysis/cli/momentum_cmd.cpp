@@ -82,12 +82,9 @@ double bed_surface_of(const MomentumOptions &o, const PushTrace &th, const DumpF
   if (o.args.number("--zs", zs)) return zs;
   how.z_s_source = "trace";
   if (th.have_surface) return th.surface;
-  const auto &X = frame.col("x"), &Y = frame.col("y"), &Z = frame.col("z"), &Rr = frame.col("radius");
-  int nempty = 0;
   how.z_s_source = "first frame";
   how.notes.push_back("bed surface measured in the first frame: the trace has no surface key");
-  return bed_surface(X.data(), Y.data(), Z.data(), Rr.data(), g.is_rod.data(), X.size(), frame.lo[0], frame.hi[0],
-                     frame.lo[1], frame.hi[1], 4, nempty);
+  return frame_bed_surface(frame, g);
 }
 
 void print_summary(const MomentumStudyParams &p, const std::vector<MomentumFrameRecord> &records,
@@ -119,19 +116,15 @@ void print_summary(const MomentumStudyParams &p, const std::vector<MomentumFrame
 
 int granpen::cli::run_momentum(const MomentumOptions &o)
 {
-  refuse_outputs_over_inputs(o.out_dir, std::vector<const char *>(std::begin(OUTPUTS), std::end(OUTPUTS)), o.args);
-  const PushTrace th = load_push_trace(o.args.value("--trace", ""));
   MomentumProvenance how;
-  how.dumps = o.args.positional;
+  begin_dump_command(o, std::vector<const char *>(std::begin(OUTPUTS), std::end(OUTPUTS)), how);
+  const PushTrace th = load_push_trace(o.args.value("--trace", ""));
   how.trace = th.trace.path;
-  how.rod_type = o.rod.rod_type;
-  how.periodic = o.periodic;
   MomentumStudyParams p = resolve_parameters(o, th, how);
 
   DumpReader reader(o.args.positional);
-  report_progress(reader, "granpen momentum");
   DumpFrame frame;
-  if (!reader.next(frame)) throw InputError(o.args.positional[0] + ": no frames");
+  first_frame(reader, o.args.positional, frame, "granpen momentum");
   ColumnChoice cols;
   cols.mass = how.mass_column = frame.has("mass");
   if (!cols.mass && how.rho_g_source == "default")

@@ -36,7 +36,57 @@ ExpFit gammadot_length(const FlowFields &F, double radius)
   return fit_exponential(gz, gg);
 }
 
+// the first of option and trace that is given (its origin named), else `otherwise`
+double pick(const FlowParamChoice &c, double otherwise, const char *otherwise_origin, std::string &origin)
+{
+  if (std::isfinite(c.option)) return origin = "option", c.option;
+  if (std::isfinite(c.trace)) return origin = "trace", c.trace;
+  origin = otherwise_origin;
+  return otherwise;
+}
+
+double given_or(double v, double otherwise) { return std::isfinite(v) ? v : otherwise; }
+
 }    // namespace
+
+double flow_grain_density(const FlowParamChoice &rho_g, std::string &origin)
+{
+  return pick(rho_g, 3.0, "default", origin);
+}
+
+FlowStudyParams flow_study_params(const FlowParamSources &s, FlowParamOrigins &from)
+{
+  constexpr double PI = 3.14159265358979323846;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  FlowStudyParams p;
+  p.rho_g = flow_grain_density(s.rho_g, from.rho_g);
+  if (s.mass && from.rho_g == "default") {
+    double m = 0, vol = 0;
+    for (std::size_t i = 0; i < s.grains; ++i) m += s.mass[i], vol += 4.0 / 3.0 * PI * std::pow(s.radius[i], 3);
+    p.rho_g = m / vol, from.rho_g = "first frame";
+  }
+  double diameters = 0;
+  for (std::size_t i = 0; i < s.grains; ++i) diameters += 2.0 * s.radius[i];
+  p.d_g = pick(s.d_g, diameters / (double) s.grains, "first frame", from.d_g);
+  p.D = pick(s.D, s.rod_D, "rod atoms", from.D);
+  if (!std::isfinite(p.D)) throw std::invalid_argument("no rod atoms to measure D from: give --D or --trace");
+  p.v0 = pick(s.v0, nan, "none", from.v0);
+  p.g = pick(s.g, nan, "none", from.g);
+  if (!std::isfinite(p.v0) || !std::isfinite(p.g)) from.notes.push_back("t~ undefined: no v0 or g (give --trace, or --v0 and --g)");
+  p.z_s = pick(s.z_s, nan, "first frame", from.z_s);
+  if (from.z_s == "first frame") {
+    p.z_s = s.measure_z_s();
+    from.notes.push_back("bed surface z_s measured in the first frame (timestep " + std::to_string(s.timestep) +
+                         "): give --zs or a trace with the surface key when the rod is already in the bed");
+  }
+  const double rmax = given_or(s.rmax, 0.5 * std::min(s.hi[0] - s.lo[0], s.hi[1] - s.lo[1]));
+  p.grid = make_flow_grid(0.0, rmax, given_or(s.dr, p.d_g), s.zlo, s.zhi, given_or(s.dz, p.d_g));
+  p.edge_wr = given_or(s.edge_wr, p.grid.dr), p.edge_wz = given_or(s.edge_wz, p.grid.dz);
+  p.profile_radius = given_or(s.profile_radius, p.D / 3.0);
+  p.strip1 = s.strip1, p.strip2 = s.strip2, p.ann1 = s.ann1, p.ann2 = s.ann2, p.ann_top = s.ann_top;
+  p.box_zlo = s.lo[2], p.box_zhi = s.hi[2];
+  return p;
+}
 
 FlowStudy::FlowStudy(const FlowStudyParams &p)
     : p_(p), total_(p.grid), below_(SliceSpec{0.0, p.profile_radius, p.grid.zlo, 0.0, p.grid.dz}),

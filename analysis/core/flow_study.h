@@ -9,6 +9,8 @@
 #include "flow_fields.h"
 #include "linear_fit.h"
 
+#include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -27,6 +29,47 @@ struct FlowStudyParams {
   double edge_wr = 0.0, edge_wz = 0.0;    // edge bins: within these of r = R, z = 0
   double box_zlo = 0.0, box_zhi = 0.0;    // the box in z: the strip's extent
 };
+
+// The study's parameters, each from the first source that gives it: an option, the push's
+// trace header, else the first frame or a default (NaN: that source does not give it).
+struct FlowParamChoice {
+  double option = std::numeric_limits<double>::quiet_NaN();
+  double trace = std::numeric_limits<double>::quiet_NaN();
+};
+struct FlowParamSources {
+  FlowParamChoice D, d_g, rho_g, v0, g, z_s;
+  // the first frame: its grains' radii and masses (mass null without a mass column), the
+  // rod diameter from its atoms (NaN: no rod atoms), the box, its timestep, and the bed
+  // surface measured on demand (as compute bed/surface does)
+  const double *radius = nullptr, *mass = nullptr;
+  std::size_t grains = 0;
+  double rod_D = std::numeric_limits<double>::quiet_NaN();
+  double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+  long long timestep = 0;
+  std::function<double()> measure_z_s;
+  // the bins and regions (NaN: the default named in FlowStudyParams)
+  double dr = std::numeric_limits<double>::quiet_NaN(), dz = dr, rmax = dr, profile_radius = dr;
+  double edge_wr = dr, edge_wz = dr;
+  double zlo = -4.0, zhi = 6.0;
+  double strip1 = 0.5, strip2 = 1.5, ann1 = 2.0, ann2 = 3.0, ann_top = 0.5;
+};
+// Which source each parameter came from ("option", "trace", "first frame", "rod atoms",
+// "default", "none") and notes on what is undefined or measured.
+struct FlowParamOrigins {
+  std::string D, d_g, rho_g, v0, g, z_s;
+  std::vector<std::string> notes;
+};
+
+// The grain density for masses when a frame has no mass column: option, trace, else 3.
+double flow_grain_density(const FlowParamChoice &rho_g, std::string &origin);
+
+// The parameters from their sources: rho_g as flow_grain_density, but from the first
+// frame's masses over its grains' volumes when it has a mass column and neither option nor
+// trace gives it; d_g the first frame's mean grain diameter; D the rod atoms'; z_s measured;
+// v0 and g undefined (NaN, with a note) without option or trace; bins of d_g over half the
+// smaller box width; edge bins one bin size each; the profile radius D/3. Throws
+// std::invalid_argument without a D from any source and for bins make_flow_grid refuses.
+FlowStudyParams flow_study_params(const FlowParamSources &s, FlowParamOrigins &from);
 
 // One frame's numbers.
 struct FlowFrameRecord {

@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace granpen {
@@ -34,6 +35,16 @@ struct Run {
   std::vector<std::string> problems, notes;
   Json numbers = Json::object();
   void make(const PlotFiles &f) { figures.push_back(write_plot(opt.out, f, opt.run)); }
+  // a series figure: its name, title, the about text of its script, size in pixels, the
+  // panels, and the screen fraction of their grid (the rest: the key column)
+  void make_series(const std::string &name, const std::string &title, const std::string &about, int width, int height,
+                   std::vector<SeriesPanel> panels, double grid_width = 1.0)
+  {
+    SeriesFigure f;
+    f.name = name, f.title = title, f.about = about, f.width = width, f.height = height;
+    f.panels = std::move(panels), f.grid_width = grid_width;
+    make(series_figure(f));
+  }
 };
 
 void plot_force(const std::vector<std::string> &inputs, Run &run);

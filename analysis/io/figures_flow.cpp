@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -44,6 +45,21 @@ bool open_table(const std::string &dir, const std::string &name, const std::vect
       run.problems.push_back(p.string() + ": no rows");
       return false;
     }
+    return true;
+  } catch (InputError &e) {
+    run.problems.push_back(e.what());
+    return false;
+  }
+}
+
+// open_table, then `columns` takes its columns out of t; false (the error a problem of the
+// run) when a column does not read
+bool read_table(const std::string &dir, const std::string &name, const std::vector<std::string> &required, Run &run,
+                CsvTable &t, const std::function<void()> &columns)
+{
+  if (!open_table(dir, name, required, run, t)) return false;
+  try {
+    columns();
     return true;
   } catch (InputError &e) {
     run.problems.push_back(e.what());
@@ -143,15 +159,12 @@ const char *MAGMA = "set palette defined (0 \"#000004\", 0.25 \"#51127c\", 0.5 \
 void flow_heatmaps(const std::string &dir, Run &run)
 {
   CsvTable t;
-  if (!open_table(dir, "flow_fields.csv", {"r", "z", "count", "phi", "vz", "gammadot", "I"}, run, t)) return;
   std::vector<double> r, z, count, phi, vz, gd, I;
-  try {
+  const auto columns = [&] {
     r = t.numbers("r", false), z = t.numbers("z", false), count = t.numbers("count");
     phi = t.numbers("phi"), vz = t.numbers("vz"), gd = t.numbers("gammadot"), I = t.numbers("I");
-  } catch (InputError &e) {
-    run.problems.push_back(e.what());
-    return;
-  }
+  };
+  if (!read_table(dir, "flow_fields.csv", {"r", "z", "count", "phi", "vz", "gammadot", "I"}, run, t, columns)) return;
   const double D = rod_diameter(dir, t, run), R = 0.5 * D;
   const auto rs = distinct(r), zs = distinct(z);
   const std::size_t nr = rs.size(), nz = zs.size();
@@ -245,14 +258,9 @@ void flow_heatmaps(const std::string &dir, Run &run)
 void flow_profile(const std::string &dir, Run &run)
 {
   CsvTable t;
-  if (!open_table(dir, "flow_profile_below.csv", {"z", "vz", "vz_se", "phi"}, run, t)) return;
   std::vector<double> z, vz, se, phi;
-  try {
-    z = t.numbers("z", false), vz = t.numbers("vz"), se = t.numbers("vz_se"), phi = t.numbers("phi");
-  } catch (InputError &e) {
-    run.problems.push_back(e.what());
-    return;
-  }
+  const auto columns = [&] { z = t.numbers("z", false), vz = t.numbers("vz"), se = t.numbers("vz_se"), phi = t.numbers("phi"); };
+  if (!read_table(dir, "flow_profile_below.csv", {"z", "vz", "vz_se", "phi"}, run, t, columns)) return;
   const double D = rod_diameter(dir, t, run);
   for (double &s : se)
     if (!std::isfinite(s)) s = 0.0;
@@ -299,14 +307,11 @@ void flow_profile(const std::string &dir, Run &run)
     run.notes.push_back(t.path + ": no exponential fit: " + fit.note);
     title += " (no exponential fit: " + fit.note + ")";
   }
-  SeriesFigure fig;
-  fig.name = "flow_profile";
-  fig.title = title;
-  fig.about = "granpen plot flow: v_z and phi below the rod face (" + t.path +
-              "), |v_z| on a log axis with the weighted\nexponential fit of the library (fit_exponential, as granpen flow).";
-  fig.width = 1300, fig.height = 560;
-  fig.panels = {a, b};
-  run.make(series_figure(fig));
+  run.make_series("flow_profile",
+                  title,
+                  "granpen plot flow: v_z and phi below the rod face (" + t.path +
+                  "), |v_z| on a log axis with the weighted\nexponential fit of the library (fit_exponential, as granpen flow).",
+                  1300, 560, {a, b});
   run.numbers["profile"] = profile;
 }
 
@@ -315,14 +320,9 @@ void flow_profile(const std::string &dir, Run &run)
 void flow_phi_I(const std::string &dir, Run &run)
 {
   CsvTable t;
-  if (!open_table(dir, "flow_edge_phi_I.csv", {"I", "phi"}, run, t)) return;
   std::vector<double> I, phi;
-  try {
-    I = t.numbers("I"), phi = t.numbers("phi");
-  } catch (InputError &e) {
-    run.problems.push_back(e.what());
-    return;
-  }
+  const auto columns = [&] { I = t.numbers("I"), phi = t.numbers("phi"); };
+  if (!read_table(dir, "flow_edge_phi_I.csv", {"I", "phi"}, run, t, columns)) return;
   SeriesPanel p;
   p.xlabel = "inertial number I";
   p.ylabel = "packing fraction φ at the rod edge (r = R)";
@@ -357,14 +357,11 @@ void flow_phi_I(const std::string &dir, Run &run)
   } else {
     edge["fit_ok"] = false;
   }
-  SeriesFigure fig;
-  fig.name = "flow_phi_I";
-  fig.title = title;
-  fig.about = "granpen plot flow: phi against I at the rod's bottom edge (" + t.path +
-              "), the paper's line phi = 0.57 - 0.35 I and a least-squares line.";
-  fig.width = 1100, fig.height = 620;
-  fig.panels = {p};
-  run.make(series_figure(fig));
+  run.make_series("flow_phi_I",
+                  title,
+                  "granpen plot flow: phi against I at the rod's bottom edge (" + t.path +
+                  "), the paper's line phi = 0.57 - 0.35 I and a least-squares line.",
+                  1100, 620, {p});
   run.numbers["edge"] = edge;
 }
 
@@ -373,14 +370,9 @@ void flow_phi_I(const std::string &dir, Run &run)
 void flow_strip(const std::string &dir, Run &run)
 {
   CsvTable t;
-  if (!open_table(dir, "flow_strip.csv", {"z", "vz"}, run, t)) return;
   std::vector<double> z, vz;
-  try {
-    z = t.numbers("z", false), vz = t.numbers("vz");
-  } catch (InputError &e) {
-    run.problems.push_back(e.what());
-    return;
-  }
+  const auto columns = [&] { z = t.numbers("z", false), vz = t.numbers("vz"); };
+  if (!read_table(dir, "flow_strip.csv", {"z", "vz"}, run, t, columns)) return;
   SeriesPanel p;
   p.xlabel = "v_z of the strip (cm/s; > 0 up)";
   p.ylabel = "z − z_s (cm; height above the bed surface)";
@@ -392,13 +384,10 @@ void flow_strip(const std::string &dir, Run &run)
   s.style = "linespoints", s.colour = plot_colour(0), s.point_size = 0.9;
   for (std::size_t i = 0; i < z.size(); ++i) s.x.push_back(vz[i]), s.y.push_back(z[i]);
   p.series.push_back(s);
-  SeriesFigure fig;
-  fig.name = "flow_strip";
-  fig.title = "Vertical velocity of the near-shaft strip against depth";
-  fig.about = "granpen plot flow: v_z of the grains 0.5-1.5 cm from the rod shaft (" + t.path + ") against depth.";
-  fig.width = 800, fig.height = 700;
-  fig.panels = {p};
-  run.make(series_figure(fig));
+  run.make_series("flow_strip",
+                  "Vertical velocity of the near-shaft strip against depth",
+                  "granpen plot flow: v_z of the grains 0.5-1.5 cm from the rod shaft (" + t.path + ") against depth.",
+                  800, 700, {p});
 }
 
 // ---------------------------------------------------------------- surface flux against t~
@@ -406,14 +395,9 @@ void flow_strip(const std::string &dir, Run &run)
 void flow_surface(const std::string &dir, Run &run)
 {
   CsvTable t;
-  if (!open_table(dir, "flow_surface.csv", {"t_tilde", "vz"}, run, t)) return;
   std::vector<double> tt, vz;
-  try {
-    tt = t.numbers("t_tilde"), vz = t.numbers("vz");
-  } catch (InputError &e) {
-    run.problems.push_back(e.what());
-    return;
-  }
+  const auto columns = [&] { tt = t.numbers("t_tilde"), vz = t.numbers("vz"); };
+  if (!read_table(dir, "flow_surface.csv", {"t_tilde", "vz"}, run, t, columns)) return;
   const double cross = last_down_crossing(tt, vz);
   SeriesPanel p;
   p.xlabel = "t̃ = (z/v_0) √(g/D)";
@@ -437,15 +421,12 @@ void flow_surface(const std::string &dir, Run &run)
   s.style = "linespoints", s.colour = plot_colour(0), s.point_size = 0.9, s.title = "top grain layer, 0.5–1.5 cm from the shaft";
   s.x = tt, s.y = vz;
   p.series.push_back(s);
-  SeriesFigure fig;
-  fig.name = "flow_surface";
-  fig.title = "Surface flux next to the rod: " +
-              (std::isfinite(cross) ? "turns from up to down at t̃ = " + fmt("%.2f", cross) : std::string("no sign change"));
-  fig.about = "granpen plot flow: v_z of the near-shaft strip's top grain layer per frame (" + t.path +
-              ") against t~ = (z/v0) sqrt(g/D); the paper sees it cross 0 at t~ = 1.";
-  fig.width = 900, fig.height = 620;
-  fig.panels = {p};
-  run.make(series_figure(fig));
+  run.make_series("flow_surface",
+                  "Surface flux next to the rod: " +
+                  (std::isfinite(cross) ? "turns from up to down at t̃ = " + fmt("%.2f", cross) : std::string("no sign change")),
+                  "granpen plot flow: v_z of the near-shaft strip's top grain layer per frame (" + t.path +
+                  ") against t~ = (z/v0) sqrt(g/D); the paper sees it cross 0 at t~ = 1.",
+                  900, 620, {p});
   run.numbers["surface_crossing_t_tilde"] = std::isfinite(cross) ? num("%.6g", cross) : Json();
 }
 
@@ -454,17 +435,14 @@ void flow_surface(const std::string &dir, Run &run)
 void flow_annulus(const std::string &dir, Run &run)
 {
   CsvTable t;
-  if (!open_table(dir, "flow_annulus.csv", {"t_tilde", "phi", "vz", "T"}, run, t)) return;
   std::vector<double> tt, phi, vz, T;
   std::string xlabel;
   bool tilde = true;
-  try {
+  const auto columns = [&] {
     tilde = time_axis(t, tt, xlabel, run);
     phi = t.numbers("phi"), vz = t.numbers("vz"), T = t.numbers("T");
-  } catch (InputError &e) {
-    run.problems.push_back(e.what());
-    return;
-  }
+  };
+  if (!read_table(dir, "flow_annulus.csv", {"t_tilde", "phi", "vz", "T"}, run, t, columns)) return;
   const char *titles[] = {"(a) packing fraction φ", "(b) vertical velocity v_z", "(c) granular temperature T"};
   const char *labels[] = {"φ", "v_z (cm/s; > 0 up)", "T (cm^2/s^2)"};
   const std::vector<double> *cols[] = {&phi, &vz, &T};
@@ -524,18 +502,15 @@ std::vector<ClassInfo> class_order(const std::vector<std::string> &names)
 void momentum_classes_figure(const std::string &dir, Run &run)
 {
   CsvTable t;
-  if (!open_table(dir, "momentum_classes.csv", {"t_tilde", "class", "count", "p_up"}, run, t)) return;
   std::vector<double> tt, count, p;
   std::vector<std::string> cls;
   std::string xlabel;
   bool tilde = true;
-  try {
+  const auto columns = [&] {
     tilde = time_axis(t, tt, xlabel, run);
     count = t.numbers("count"), p = t.numbers("p_up"), cls = t.text("class");
-  } catch (InputError &e) {
-    run.problems.push_back(e.what());
-    return;
-  }
+  };
+  if (!read_table(dir, "momentum_classes.csv", {"t_tilde", "class", "count", "p_up"}, run, t, columns)) return;
   const auto order = class_order(cls);
   SeriesPanel a, b;
   a.title = "(a) upward momentum of each class";
@@ -572,28 +547,19 @@ void momentum_classes_figure(const std::string &dir, Run &run)
   b.logy = cmax > 0 && cmax / cmin > 100;
   if (a.logy) a.extra = "set format y \"10^{%T}\"\n";
   if (b.logy) b.extra = "set format y \"10^{%T}\"\n";
-  SeriesFigure fig;
-  fig.name = "momentum_classes";
-  fig.title = "Grains moving up, by vertical-speed class (r > R)";
-  fig.about = "granpen plot momentum: the classes of " + t.path + " against t~; log axes when a quantity spans more "
-              "than two decades\n(then zero values are not drawn).";
-  fig.width = 1500, fig.height = 600;
-  fig.grid_width = 0.74;
-  fig.panels = {a, b};
-  run.make(series_figure(fig));
+  run.make_series("momentum_classes",
+                  "Grains moving up, by vertical-speed class (r > R)",
+                  "granpen plot momentum: the classes of " + t.path + " against t~; log axes when a quantity spans more "
+                  "than two decades\n(then zero values are not drawn).",
+                  1500, 600, {a, b}, 0.74);
 }
 
 void momentum_drag_figure(const std::string &dir, Run &run)
 {
   CsvTable t;
-  if (!open_table(dir, "momentum_drag.csv", {"t_tilde", "F", "mu_g_M"}, run, t)) return;
   std::vector<double> tt, F, M;
-  try {
-    tt = t.numbers("t_tilde"), F = t.numbers("F"), M = t.numbers("mu_g_M");
-  } catch (InputError &e) {
-    run.problems.push_back(e.what());
-    return;
-  }
+  const auto columns = [&] { tt = t.numbers("t_tilde"), F = t.numbers("F"), M = t.numbers("mu_g_M"); };
+  if (!read_table(dir, "momentum_drag.csv", {"t_tilde", "F", "mu_g_M"}, run, t, columns)) return;
   const DragComparison cmp = compare_drag(M, F);
   // one unit for both axes (the 1:1 line is then the diagonal of equal numbers); each
   // axis over its own data, so that points far from 1:1 stay readable
@@ -641,14 +607,11 @@ void momentum_drag_figure(const std::string &dir, Run &run)
   } else {
     run.notes.push_back(t.path + ": no drag comparison: " + cmp.note);
   }
-  SeriesFigure fig;
-  fig.name = "momentum_drag";
-  fig.title = title;
-  fig.about = "granpen plot momentum: F against mu g M(v_z > v0/320) (" + t.path +
-              "), the 1:1 line and the fit through the origin\n(compare_drag, as granpen momentum).";
-  fig.width = 980, fig.height = 680;
-  fig.panels = {p};
-  run.make(series_figure(fig));
+  run.make_series("momentum_drag",
+                  title,
+                  "granpen plot momentum: F against mu g M(v_z > v0/320) (" + t.path +
+                  "), the 1:1 line and the fit through the origin\n(compare_drag, as granpen momentum).",
+                  980, 680, {p});
   run.numbers["drag"] = drag;
 }
 

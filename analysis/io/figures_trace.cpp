@@ -166,6 +166,19 @@ bool depth_term(const TraceIn &t, const Options &o, double &k_z, std::string &wh
   return true;
 }
 
+// granpen collapse's curves and peak law with the run's options; false, the reason a
+// problem of the run, when collapse refuses the inputs
+bool collapse_or_note(const std::vector<CollapseInput> &in, Run &run, CollapseResult &r)
+{
+  try {
+    r = collapse(in, run.opt.collapse);
+    return true;
+  } catch (std::invalid_argument &e) {
+    run.problems.push_back(e.what());
+    return false;
+  }
+}
+
 }    // namespace
 
 // ---------------------------------------------------------------- force
@@ -314,12 +327,7 @@ void plot_ratio(const std::vector<std::string> &inputs, Run &run)
     return;
   }
   CollapseResult r;
-  try {
-    r = collapse(in, run.opt.collapse);
-  } catch (std::invalid_argument &e) {
-    run.problems.push_back(e.what());
-    return;
-  }
+  if (!collapse_or_note(in, run, r)) return;
   // colours: by v0, shades for the runs of one v0
   std::map<double, std::vector<int>> speed;
   for (std::size_t i = 0; i < r.curves.size(); ++i) speed[r.curves[i].v0].push_back((int) i);
@@ -443,12 +451,7 @@ void plot_peak(const std::vector<std::string> &inputs, Run &run)
     in.push_back(c);
   }
   CollapseResult r;
-  try {
-    r = collapse(in, run.opt.collapse);
-  } catch (std::invalid_argument &e) {
-    run.problems.push_back(e.what());
-    return;
-  }
+  if (!collapse_or_note(in, run, r)) return;
   std::vector<double> v0s;
   double pmax = 0;
   for (const auto &c : r.curves) {

@@ -1,6 +1,6 @@
 // The bodies of the reader fuzz targets, shared by the libFuzzer drivers
 // (fuzz_dump_reader.cpp, fuzz_trace_reader.cpp) and the unit test that replays the
-// committed corpus and crash regressions (tests/unit/test_dump_reader.cpp), so a
+// committed corpus and crash regressions (tests/analysis/io/test_dump_reader.cpp), so a
 // regression input is replayed exactly as the fuzzer ran it. A reader may accept an
 // input or reject it with InputError; anything else, or a broken invariant of what
 // it returned, aborts.

@@ -1,5 +1,5 @@
 // The body of the CLI option-parser fuzz target, shared by the libFuzzer driver
-// (fuzz_cli_options.cpp) and the gtest driver CI runs without clang (tests/cli/
+// (fuzz_cli_options.cpp) and the gtest driver CI runs without clang (tests/analysis/cli/
 // test_cli_options.cpp: the committed corpus and regressions, then a fixed number of
 // seeded random mutations), so that an input is replayed exactly as the fuzzer ran it.
 //

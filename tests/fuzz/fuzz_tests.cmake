@@ -2,7 +2,7 @@
 # configures and builds tests/fuzz with clang++ (-fsanitize=fuzzer,address,undefined) into
 # build/fuzz; then fuzz_dump_reader and fuzz_trace_reader each run GRANPEN_FUZZ_SECONDS
 # from the committed corpus, and fuzz_cli_options a fixed GRANPEN_FUZZ_CLI_RUNS inputs. Without clang++ or libFuzzer they are skipped (ctest "Skipped",
-# with the reason in the output), not failed. Included from tests/unit/dump.cmake.
+# with the reason in the output), not failed. Included from tests/CMakeLists.txt.
 set(GRANPEN_FUZZ AUTO CACHE STRING "Fuzz tests of the readers with clang++/libFuzzer: AUTO (when clang++ is found), ON (required), OFF")
 set_property(CACHE GRANPEN_FUZZ PROPERTY STRINGS AUTO ON OFF)
 set(GRANPEN_FUZZ_SECONDS 30 CACHE STRING "Seconds each reader fuzz test runs")

@@ -1,0 +1,465 @@
+// granpen plot: the data files hold the library's numbers (peak law, F/F_z curves, k_z
+// and its error, the flow fits), gnuplot makes non-empty PNG and SVG (skipped without
+// gnuplot), and bad inputs, a failing or a missing gnuplot give clear errors naming the
+// file or the script. The command runs in-process (granpen::cli::plot, compiled into
+// this test). The figure library itself: tests/analysis/io/test_plot_writer.cpp.
+#include "collapse.h"
+#include "flow_fields.h"
+#include "json_text.h"
+#include "linear_fit.h"
+#include "momentum_classes.h"
+#include "plot_test_files.h"
+#include "plot_writer.h"
+#include "subcommand.h"
+#include "subcommands.h"
+#include "trace_fit.h"
+#include "trace_reader.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace granpen;
+using namespace plot_test;
+namespace fs = std::filesystem;
+
+namespace {
+
+const fs::path ROOT = GRANPEN_PLOT_TEST_DIR;
+
+fs::path fresh(const std::string &name) { return fresh_folder(ROOT, name); }
+
+// the index of the block whose title line holds `text`, -1 when none
+int block_with(const fs::path &dat, const std::string &text)
+{
+  std::istringstream in(slurp(dat));
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind("# index ", 0) == 0 && line.find(text) != std::string::npos) return std::atoi(line.c_str() + 8);
+  return -1;
+}
+
+// a JSON number member "key": value, the first after `after` in the text
+double json_value(const std::string &json, const std::string &key, const std::string &after = "")
+{
+  std::size_t from = after.empty() ? 0 : json.find(after);
+  if (from == std::string::npos) return NAN;
+  const auto k = json.find("\"" + key + "\": ", from);
+  if (k == std::string::npos) return NAN;
+  return std::strtod(json.c_str() + k + key.size() + 4, nullptr);
+}
+
+struct Outcome {
+  int status = 0;
+  std::string out, err;
+};
+
+Outcome run_plot(std::vector<std::string> args)
+{
+  std::vector<char *> argv;
+  for (auto &a : args) argv.push_back(&a[0]);
+  testing::internal::CaptureStdout();
+  testing::internal::CaptureStderr();
+  Outcome o;
+  o.status = granpen::cli::run_subcommand("plot", granpen::cli::plot, (int) argv.size(), argv.data());
+  o.out = testing::internal::GetCapturedStdout();
+  o.err = testing::internal::GetCapturedStderr();
+  return o;
+}
+
+// A cgs trace: z = -0.5 .. 5 cm at 0.01 cm; F = k z (z > 0) plus a transient peak
+// c v0^2 (1 + e) exp(-((z - 0.3) / 0.05)^2) at z = 0.3 cm < 0.7 R.
+std::string trace_text(double v0, double k, double c, double e, int seed)
+{
+  std::ostringstream o;
+  o << "# granpen-trace v1\n# units = cgs\n# v0 = " << v0 << "\n# D = 2\n# g = 981\n# d_g = 0.4\n# rho_g = 3\n# mu = 0.3\n"
+    << "# seed = " << seed << "\nt,z,F\n";
+  o.precision(12);
+  for (int i = 0; i <= 550; ++i) {
+    const double z = -0.5 + 0.01 * i;
+    const double F = z > 0 ? k * z + c * v0 * v0 * (1 + e) * std::exp(-std::pow((z - 0.3) / 0.05, 2)) : 0.0;
+    o << (z + 0.5) / v0 << "," << z << "," << F << "\n";
+  }
+  return o.str();
+}
+
+// 3 speeds x 2 seeds with a known v0^2 peak law and k_z = 25300 dyne/cm
+fs::path synthetic_traces(const std::string &name)
+{
+  const fs::path d = fresh(name);
+  for (double v0 : {50.0, 100.0, 200.0})
+    for (int s : {1, 2})
+      write(d / ("v" + std::to_string((int) v0) + "_s" + std::to_string(s) + ".csv"),
+            trace_text(v0, 25300.0, 200.0, s == 1 ? 0.04 : -0.04, s));
+  return d;
+}
+
+std::vector<std::string> files_in(const fs::path &d)
+{
+  std::vector<std::string> f;
+  for (const auto &e : fs::directory_iterator(d)) f.push_back(e.path().string());
+  std::sort(f.begin(), f.end());
+  return f;
+}
+
+// curve indices in the order granpen plot draws them: by v0, then input order
+std::vector<std::size_t> by_v0(const CollapseResult &r)
+{
+  std::vector<std::size_t> o(r.curves.size());
+  for (std::size_t i = 0; i < o.size(); ++i) o[i] = i;
+  std::stable_sort(o.begin(), o.end(), [&](std::size_t a, std::size_t b) { return r.curves[a].v0 < r.curves[b].v0; });
+  return o;
+}
+
+}    // namespace
+
+// ---------------------------------------------------------------- granpen plot: numbers
+
+TEST(PlotCli, PeakExponentIsTheLibrarys)
+{
+  const fs::path in = synthetic_traces("peak_in"), out = fresh("peak_out");
+  const Outcome o = run_plot({"peak", in.string(), "--out", out.string(), "--no-run"});
+  ASSERT_EQ(o.status, 0) << o.err;
+  // the library on the same traces
+  std::vector<CollapseInput> ci;
+  for (const auto &f : files_in(in)) {
+    const Trace t = read_trace(f);
+    CollapseInput c;
+    c.name = f, c.z = t.z, c.F = t.F, c.v0 = t.v0, c.D = t.D, c.g = t.g, c.k_z = 1.0;
+    ci.push_back(c);
+  }
+  const CollapseResult r = collapse(ci, CollapseParams{});
+  ASSERT_TRUE(r.peak_ok);
+  EXPECT_NEAR(r.peak_exponent, 2.0, 0.05);    // the v0^2 law put in
+  const std::string json = slurp(out / "peak.json");
+  EXPECT_NEAR(json_value(json, "exponent"), r.peak_exponent, 1e-9);
+  EXPECT_NEAR(json_value(json, "exponent_ci95"), r.peak_exponent_ci95, 1e-9);
+  const int fb = block_with(out / "peak.dat", "peak law");
+  ASSERT_GE(fb, 0);
+  const auto fit = block(out / "peak.dat", fb);
+  ASSERT_EQ(fit.size(), 1u);
+  EXPECT_NEAR(fit[0][0], r.peak_exponent, 1e-9);
+  // the prefactor is the same least squares' intercept; the line is in the script
+  std::vector<double> lv, lp;
+  for (const auto &c : r.curves) lv.push_back(std::log(c.v0)), lp.push_back(std::log(c.peak));
+  const LinearFit lf = linear_fit(lv, lp);
+  EXPECT_NEAR(fit[0][3], std::exp(lf.a), 1e-8 * std::exp(lf.a));
+  EXPECT_NE(slurp(out / "peak.gp").find("*x**" + gp_number(r.peak_exponent)), std::string::npos);
+  // every peak is drawn
+  const int pb = block_with(out / "peak.dat", "peaks:");
+  const auto pts = block(out / "peak.dat", pb);
+  const auto order = by_v0(r);
+  ASSERT_EQ(pts.size(), 6u);
+  for (std::size_t j = 0; j < pts.size(); ++j) {
+    EXPECT_EQ(pts[j][0], r.curves[order[j]].v0);
+    EXPECT_NEAR(pts[j][1], r.curves[order[j]].peak, 1e-9 * r.curves[order[j]].peak);
+  }
+}
+
+TEST(PlotCli, RatioCurvesAreCollapses)
+{
+  const fs::path in = synthetic_traces("ratio_in"), out = fresh("ratio_out");
+  const Outcome o = run_plot({"ratio", in.string(), "--out", out.string(), "--no-run", "--kz-zmin", "1"});
+  ASSERT_EQ(o.status, 0) << o.err;
+  std::vector<CollapseInput> ci;
+  for (const auto &f : files_in(in)) {
+    const Trace t = read_trace(f);
+    TraceFitParams fp;
+    fp.zlo = 1.0, fp.D = t.D;
+    CollapseInput c;
+    c.name = f, c.z = t.z, c.F = t.F, c.v0 = t.v0, c.D = t.D, c.g = t.g, c.k_z = fit_trace(t.z, t.F, fp).k_z;
+    ci.push_back(c);
+  }
+  const CollapseResult r = collapse(ci, CollapseParams{});
+  // blocks: panel (a) curves, then panel (b) curves, in order of v0 then file
+  const std::size_t n = r.curves.size();
+  const auto order = by_v0(r);
+  for (std::size_t j = 0; j < n; ++j) {
+    const auto &c = r.curves[order[j]];
+    const auto a = block(out / "ratio.dat", (int) j), b = block(out / "ratio.dat", (int) (n + j));
+    ASSERT_EQ(b.size(), c.t.size());
+    const double scale = std::sqrt(c.g / c.D) / c.v0;
+    for (std::size_t k = 0; k < c.t.size(); ++k) {
+      EXPECT_NEAR(b[k][0], c.t[k], 1e-9);
+      EXPECT_NEAR(b[k][1], c.ratio[k], 1e-9 * std::fabs(c.ratio[k]));
+      EXPECT_NEAR(a[k][0], c.t[k] / scale, 1e-9);
+    }
+  }
+  const std::string json = slurp(out / "ratio.json");
+  EXPECT_NEAR(json_value(json, "spread_t"), r.spread_t, 1e-6 * r.spread_t);
+  EXPECT_NE(slurp(out / "ratio.gp").find("first 0.8 to graph 1, first 1.2"), std::string::npos);    // the band
+}
+
+TEST(PlotCli, KzWithTheFitsErrors)
+{
+  const fs::path in = synthetic_traces("kz_in"), out = fresh("kz_out");
+  const Outcome o = run_plot({"kz", in.string(), "--out", out.string(), "--no-run", "--kz-zmin", "1", "--kz-zmax", "4"});
+  ASSERT_EQ(o.status, 0) << o.err;
+  const auto files = files_in(in);
+  std::map<std::string, TraceFit> fits;
+  for (const auto &f : files) {
+    const Trace t = read_trace(f);
+    TraceFitParams fp;
+    fp.zlo = 1.0, fp.zhi = 4.0, fp.D = t.D;
+    fits[f] = fit_trace(t.z, t.F, fp);
+  }
+  const std::string json = slurp(out / "kz.json");
+  for (const auto &f : files) {
+    EXPECT_NEAR(json_value(json, "k_z", json_string(f)), fits[f].k_z, 1e-6 * fits[f].k_z) << f;
+    EXPECT_NEAR(json_value(json, "k_z_se", json_string(f)), fits[f].k_z_se, 1e-6 * fits[f].k_z_se + 1e-12) << f;
+  }
+  // block 0 = v0 50 (the two seeds): k_z and its error bar in 10^4 dyne/cm
+  const auto b = block(out / "kz.dat", 0);
+  const TraceFit &f50 = fits[(in / "v50_s1.csv").string()];
+  ASSERT_EQ(b.size(), 2u);
+  EXPECT_NEAR(b[0][1] * 1e4, f50.k_z, 1e-6 * f50.k_z);
+  EXPECT_NEAR(b[0][2] * 1e4, f50.k_z_se, 1e-6 * f50.k_z_se + 1e-9);
+  EXPECT_NE(slurp(out / "kz.gp").find("10^{4} dyne/cm"), std::string::npos);
+}
+
+TEST(PlotCli, ForceMeanAndRangeOfTheRuns)
+{
+  const fs::path in = fresh("force_in"), out = fresh("force_out");
+  write(in / "a.csv", trace_text(100, 20000, 0, 0, 1));
+  write(in / "b.csv", trace_text(100, 40000, 0, 0, 2));
+  const Outcome o = run_plot({"force", in.string(), "--out", out.string(), "--no-run"});
+  ASSERT_EQ(o.status, 0) << o.err;
+  const auto b = block(out / "force.dat", 0);    // x, mean, lo, hi in 10^5 dyne
+  ASSERT_EQ(b.size(), 551u);
+  for (const auto &row : b)
+    if (row[0] > 0.5) {
+      EXPECT_NEAR(row[1], 0.3 * row[0], 1e-9);
+      EXPECT_NEAR(row[2], 0.2 * row[0], 1e-9);
+      EXPECT_NEAR(row[3], 0.4 * row[0], 1e-9);
+    }
+  EXPECT_NE(slurp(out / "force.gp").find("10^{5} dyne"), std::string::npos);
+  // --each: every run, its own block
+  const Outcome e = run_plot({"force", in.string(), "--out", out.string(), "--no-run", "--each"});
+  ASSERT_EQ(e.status, 0) << e.err;
+  EXPECT_NEAR(block(out / "force.dat", 1).back()[1], 40000 * 5.0 / 1e5, 1e-9);
+}
+
+// ---------------------------------------------------------------- gnuplot end to end
+
+TEST(PlotCli, TraceKindsMakeImages)
+{
+  if (!have_gnuplot()) GTEST_SKIP() << "gnuplot with pngcairo and svg not available";
+  const fs::path in = synthetic_traces("images_in"), out = fresh("images_out");
+  for (const char *kind : {"force", "ratio", "peak", "kz"}) {
+    const Outcome o = run_plot({kind, in.string(), "--out", out.string(), "--kz-zmin", "1"});
+    EXPECT_EQ(o.status, 0) << kind << ": " << o.err;
+    for (const char *ext : {".png", ".svg", ".gp", ".dat"})
+      EXPECT_TRUE(non_empty((out / (std::string(kind) + ext)).string())) << kind << ext;
+    EXPECT_TRUE(is_png((out / (std::string(kind) + ".png")).string()));
+    EXPECT_TRUE(is_svg((out / (std::string(kind) + ".svg")).string()));
+    EXPECT_NE(slurp(out / (std::string(kind) + ".json")).find("\"made\": true"), std::string::npos);
+  }
+}
+
+TEST(PlotCli, BenchSweepMakesImages)
+{
+  if (!have_gnuplot()) GTEST_SKIP() << "gnuplot with pngcairo and svg not available";
+  const fs::path out = fresh("bench_out");
+  for (const char *kind : {"force", "peak"}) {
+    const Outcome o = run_plot({kind, GRANPEN_BENCH_TRACES, "--out", out.string()});
+    EXPECT_EQ(o.status, 0) << kind << ": " << o.err;
+    EXPECT_TRUE(is_png((out / (std::string(kind) + ".png")).string()));
+  }
+}
+
+// ---------------------------------------------------------------- flow and momentum tables
+
+namespace {
+
+fs::path synthetic_flow(const std::string &name)
+{
+  const fs::path d = fresh(name);
+  std::ostringstream f;
+  f << "# D = 2\nr,z,count,phi,phi_centre,vr,vz,T,gammadot,p,I\n";
+  for (int iz = 0; iz < 12; ++iz)
+    for (int ir = 0; ir < 8; ++ir) {
+      const double r = 0.25 + 0.5 * ir, z = -4.75 + 0.5 * iz;
+      if (r < 1 && z > 0) {
+        f << r << "," << z << ",0,0,0,0,0,0,0,0,0\n";
+        continue;
+      }
+      const double gd = 100 * std::exp(z / 1.5 - r), p = 1e4 * (2 - z);
+      f << r << "," << z << ",10," << 0.58 - 0.02 * std::exp(z - r) << ",0.58,0," << -50 * std::exp(z / 2 - r) << ",1," << gd
+        << "," << p << "," << gd * 0.4 / std::sqrt(p / 3) << "\n";
+    }
+  write(d / "flow_fields.csv", f.str());
+  std::ostringstream pr;
+  pr << "z,vz,vz_se,phi\n";
+  for (int k = 0; k < 15; ++k) {
+    const double z = -0.1 - 0.2 * k;
+    pr << z << "," << -80 * std::exp(z / 1.9) * (1 + 0.03 * std::sin(5.0 * k)) << "," << 1 + 0.5 * k << "," << 0.57 << "\n";
+  }
+  write(d / "flow_profile_below.csv", pr.str());
+  std::ostringstream e;
+  e << "I,phi\n";
+  for (int k = 0; k < 10; ++k) e << 0.02 * k << "," << 0.57 - 0.35 * 0.02 * k + 0.002 * ((k % 3) - 1) << "\n";
+  write(d / "flow_edge_phi_I.csv", e.str());
+  write(d / "flow_strip.csv", "z,vz\n-0.5,3\n-1,1\n-1.5,0\n-2,-0.5\n");
+  write(d / "flow_annulus.csv", "t_tilde,z_tip,phi,vz,T\n0.2,0.5,0.57,2,1\n0.6,1.5,0.56,1,0.5\n1.2,3,0.575,-0.2,0.1\n");
+  std::ostringstream m;
+  m << "t_tilde,z_tip,class,count,p_up\n";
+  for (int k = 0; k < 10; ++k)
+    for (const char *c : {"fast", "intermediate", "slow", "noise"}) m << 0.2 * k << "," << 0.4 * k << "," << c << "," << 10 + k << "," << 100.0 / (k + 1) << "\n";
+  write(d / "momentum_classes.csv", m.str());
+  std::ostringstream dr;
+  dr << "t_tilde,z_tip,F,mu_g_M\n";
+  for (int k = 1; k <= 10; ++k) dr << 0.2 * k << "," << 0.4 * k << "," << 1e5 * k * (1 + 0.02 * (k % 2)) << "," << 1e5 * k << "\n";
+  write(d / "momentum_drag.csv", dr.str());
+  return d;
+}
+
+}    // namespace
+
+TEST(PlotCli, FlowAndMomentumFitsAreTheLibrarys)
+{
+  const fs::path in = synthetic_flow("flow_in"), out = fresh("flow_out");
+  const bool images = have_gnuplot();
+  std::vector<std::string> args = {"flow", in.string(), "--out", out.string()};
+  if (!images) args.push_back("--no-run");
+  const Outcome o = run_plot(args);
+  ASSERT_EQ(o.status, 0) << o.err;
+  for (const char *name : {"flow_heatmaps", "flow_profile", "flow_phi_I", "flow_strip", "flow_annulus"}) {
+    EXPECT_TRUE(non_empty((out / (std::string(name) + ".gp")).string())) << name;
+    if (images) {
+      EXPECT_TRUE(is_png((out / (std::string(name) + ".png")).string())) << name;
+      EXPECT_TRUE(is_svg((out / (std::string(name) + ".svg")).string())) << name;
+    }
+  }
+  const std::string json = slurp(out / "flow.json");
+  // lambda: fit_exponential on the table's columns
+  std::vector<double> z, v, se;
+  for (int k = 0; k < 15; ++k) {
+    const double zz = -0.1 - 0.2 * k;
+    z.push_back(zz), v.push_back(-80 * std::exp(zz / 1.9) * (1 + 0.03 * std::sin(5.0 * k))), se.push_back(1 + 0.5 * k);
+  }
+  // the table holds the numbers as printed: compare with a tolerance of their precision
+  const ExpFit ef = fit_exponential(z, v, se);
+  ASSERT_TRUE(ef.ok);
+  EXPECT_NEAR(json_value(json, "lambda"), ef.lambda, 1e-4 * ef.lambda);
+  EXPECT_NEAR(json_value(json, "lambda"), 1.9, 0.1);
+  std::vector<double> I, phi;
+  for (int k = 0; k < 10; ++k) I.push_back(0.02 * k), phi.push_back(0.57 - 0.35 * 0.02 * k + 0.002 * ((k % 3) - 1));
+  const LinearFit edge = linear_fit(I, phi);
+  EXPECT_NEAR(json_value(json, "slope"), edge.b, 1e-5);
+  EXPECT_NEAR(json_value(json, "intercept"), edge.a, 1e-5);
+  EXPECT_NEAR(json_value(json, "slope"), -0.35, 0.02);
+  // the heatmap grid: 8 x 12 bins, the rod's bins empty (NaN)
+  const auto b = block(out / "flow_heatmaps.dat", 0);
+  ASSERT_EQ(b.size(), 96u);
+  EXPECT_TRUE(std::isnan(b[80][2]));     // r = 0.25, z = 0.25: inside the rod, empty
+  EXPECT_NEAR(b[95][2], 0.58 - 0.02 * std::exp(0.75 - 3.75), 1e-6);    // r = 3.75, z = 0.75
+
+  args[0] = "momentum";
+  const Outcome m = run_plot(args);
+  ASSERT_EQ(m.status, 0) << m.err;
+  std::vector<double> F, M;
+  for (int k = 1; k <= 10; ++k) F.push_back(1e5 * k * (1 + 0.02 * (k % 2))), M.push_back(1e5 * k);
+  const DragComparison dc = compare_drag(M, F);
+  ASSERT_TRUE(dc.ok);
+  const std::string mj = slurp(out / "momentum.json");
+  EXPECT_NEAR(json_value(mj, "k"), dc.fit.b, 1e-5);
+  EXPECT_NEAR(json_value(mj, "ratio_mean"), dc.ratio_mean, 1e-5);
+  EXPECT_NE(slurp(out / "momentum_drag.gp").find("x with lines"), std::string::npos);    // the 1:1 line
+  for (const char *name : {"momentum_classes", "momentum_drag"})
+    if (images) EXPECT_TRUE(is_png((out / (std::string(name) + ".png")).string())) << name;
+  // four classes, each its own series, in the paper's order
+  const std::string cls = slurp(out / "momentum_classes.dat");
+  EXPECT_LT(cls.find("fast: "), cls.find("intermediate: "));
+  EXPECT_LT(cls.find("intermediate: "), cls.find("slow: "));
+}
+
+// ---------------------------------------------------------------- bad inputs
+
+TEST(PlotCli, UsageErrors)
+{
+  Outcome o = run_plot({"--help"});
+  EXPECT_EQ(o.status, 0);
+  EXPECT_NE(o.out.find("usage: granpen plot KIND"), std::string::npos);
+  o = run_plot({"pie", "x.csv", "--out", "o"});
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.err.find("unknown kind 'pie'"), std::string::npos) << o.err;
+  o = run_plot({"peak", "x.csv"});
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.err.find("--out DIR is required"), std::string::npos) << o.err;
+  o = run_plot({"peak", "--out", "o"});
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.err.find("no trace given"), std::string::npos) << o.err;
+  o = run_plot({"ratio", "x.csv", "--out", "o", "--band", "wide"});
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.err.find("--band needs a number, got 'wide'"), std::string::npos) << o.err;
+  o = run_plot({"kz", "x.csv", "--out", "o", "--colour", "red"});
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.err.find("unknown option '--colour'"), std::string::npos) << o.err;
+  o = run_plot({"flow", "a", "b", "--out", "o"});
+  EXPECT_EQ(o.status, 2);
+  EXPECT_NE(o.err.find("flow takes one folder"), std::string::npos) << o.err;
+}
+
+TEST(PlotCli, BadTracesAreNamed)
+{
+  const fs::path in = synthetic_traces("bad_in"), out = fresh("bad_out");
+  write(in / "broken.csv", "# granpen-trace v1\n# units = cgs\n# v0 = 100\n# D = 2\n# g = 981\nt,z,F\n0,0,0\n0.0001,0.01\n");
+  const Outcome o = run_plot({"peak", in.string(), (in / "missing.csv").string(), "--out", out.string(), "--no-run"});
+  EXPECT_EQ(o.status, 1);
+  EXPECT_NE(o.err.find("broken.csv:8: row has 2 fields, expected 3"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("missing.csv"), std::string::npos) << o.err;
+  EXPECT_TRUE(fs::exists(out / "peak.gp"));    // the good traces are still drawn
+  EXPECT_NE(slurp(out / "peak.json").find("broken.csv:8"), std::string::npos);
+}
+
+TEST(PlotCli, BadTablesAreNamed)
+{
+  const fs::path in = fresh("badflow_in"), out = fresh("badflow_out");
+  Outcome o = run_plot({"flow", in.string(), "--out", out.string(), "--no-run"});
+  EXPECT_EQ(o.status, 1);
+  EXPECT_NE(o.err.find("none of flow_fields.csv"), std::string::npos) << o.err;
+  write(in / "flow_fields.csv", "r,z,count,phi\n0.5,-1,3,0.58\n");
+  write(in / "flow_strip.csv", "z,vz\n-0.5,3\n-1,fast\n");
+  write(in / "flow_edge_phi_I.csv", "I,phi\n0.1,0.5,7\n");
+  o = run_plot({"flow", in.string(), "--out", out.string(), "--no-run"});
+  EXPECT_EQ(o.status, 1);
+  EXPECT_NE(o.err.find("flow_fields.csv: missing columns vz, gammadot, I"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("flow_strip.csv:3: column vz value 'fast' is not a finite number"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("flow_edge_phi_I.csv:2: row has 3 fields, expected 2"), std::string::npos) << o.err;
+  EXPECT_NE(o.out.find("flow_annulus.csv not found"), std::string::npos) << o.out;
+  o = run_plot({"momentum", (in / "nowhere").string(), "--out", out.string()});
+  EXPECT_EQ(o.status, 1);
+  EXPECT_NE(o.err.find("nowhere: not a folder"), std::string::npos) << o.err;
+}
+
+TEST(PlotCli, MissingGnuplotNamesTheScriptAndExitsOne)
+{
+  const fs::path in = synthetic_traces("nognuplot_in"), out = fresh("nognuplot_out");
+  setenv("GRANPEN_GNUPLOT", "/nonexistent/gnuplot", 1);
+  const Outcome o = run_plot({"peak", in.string(), "--out", out.string()});
+  unsetenv("GRANPEN_GNUPLOT");
+  EXPECT_EQ(o.status, 1);
+  EXPECT_NE(o.err.find((out / "peak.gp").string() + " not run"), std::string::npos) << o.err;
+  EXPECT_NE(o.err.find("not found"), std::string::npos) << o.err;
+  EXPECT_TRUE(fs::exists(out / "peak.gp") && fs::exists(out / "peak.dat"));
+}
+
+TEST(PlotCli, UndefinedTimeFallsBackToDepth)
+{
+  const fs::path in = fresh("nan_time_in"), out = fresh("nan_time_out");
+  write(in / "flow_annulus.csv", "t_tilde,z_tip,phi,vz,T\nnan,0.5,0.57,2,1\nnan,1.5,0.56,1,0.5\nnan,3,0.575,-0.2,0.1\n");
+  const Outcome o = run_plot({"flow", in.string(), "--out", out.string(), "--no-run"});
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.out.find("t_tilde undefined (nan): drawn against z_tip"), std::string::npos) << o.out;
+  EXPECT_NE(slurp(out / "flow_annulus.gp").find("rod tip depth z_{tip} (cm)"), std::string::npos);
+  EXPECT_EQ(block(out / "flow_annulus.dat", 0)[2][0], 3.0);
+}

@@ -1,0 +1,999 @@
+// granpen gap: the diagnosis's stages (gap_diagnosis.h) one by one, on small fixtures of
+// known answer: validate (the inputs refused), plan (requests and their cost), align and
+// bin (a known offset), features (the null replicates), which (the verdict on a hand-made
+// feature set), confirm (the signature test), and the sweep layer's side of the cache
+// and of the cluster script.
+#include "effects.h"
+#include "gap_align.h"
+#include "gap_confirm.h"
+#include "gap_errors.h"
+#include "gap_features.h"
+#include "gap_inputs.h"
+#include "gap_plan.h"
+#include "gap_where.h"
+#include "gap_which.h"
+#include "slurm_script.h"
+#include "sweep_cache.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <unistd.h>
+
+using namespace granpen;
+namespace fs = std::filesystem;
+
+namespace {
+
+// a folder of its own per test, removed at the end
+struct TempDir {
+  fs::path path;
+  explicit TempDir(const std::string &name)
+      : path(fs::temp_directory_path() / ("granpen_gap_stages_" + std::to_string(getpid()) + "_" + name))
+  {
+    fs::remove_all(path);
+    fs::create_directories(path);
+  }
+  ~TempDir() { fs::remove_all(path); }
+  std::string operator/(const std::string &f) const { return (path / f).string(); }
+};
+
+void write_file(const std::string &path, const std::string &text)
+{
+  std::ofstream(path) << text;
+}
+
+// a trace file: header keys as given, 41 rows of a constant force
+std::string trace_text(const std::string &units, const std::string &keys, double F = 5.0)
+{
+  std::ostringstream s;
+  s << "# granpen-trace v1\n# units = " << units << "\n" << keys << "t,z,F\n";
+  for (int i = 0; i <= 40; ++i) s << i << "e-4," << (i * 10 - 50) << "e-3," << F << "\n";
+  return s.str();
+}
+
+const std::string CGS_100 = "# v0 = 100\n# D = 2.0\n# g = 981\n";
+
+// the set-up of the tiny preset, by hand (no preset file: the stage reads only these)
+Scenario hand_scenario()
+{
+  Scenario sc;
+  sc.name = "hand";
+  sc.path = "(test)";
+  sc.D = 2.0, sc.d_g = 0.4, sc.g = 981.0, sc.rho_g = 3.0, sc.mu = 0.3, sc.depth = 2.0, sc.gap = 0.5;
+  sc.vars = {{"dt_push", "2e-6"}, {"dt_pour", "5e-6"}, {"lat", "0.5"},       {"box", "4.0"},
+             {"fill_lo", "0.25"}, {"zfill_lo", "0.5"}, {"zfill_hi", "2.5"}};
+  return sc;
+}
+
+// expects f() to throw GapRefused whose message matches the pattern
+template <class F>
+void expect_refused(F f, const std::string &pattern)
+{
+  try {
+    f();
+    ADD_FAILURE() << "not refused; expected: " << pattern;
+  } catch (const GapRefused &e) {
+    EXPECT_TRUE(std::regex_search(e.what(), std::regex(pattern))) << e.what() << "\n  does not match " << pattern;
+  }
+}
+
+// F = 0 above z0, then rising with slope 1000 dyne/cm for 0.5 cm, then flat: its onset
+// (20% of the largest F in the first cm) is z0 + 0.1. Samples 0.01 cm apart down to zend.
+TraceRun ramp_run(const std::string &name, double v0, double z0, double zend)
+{
+  TraceRun r;
+  r.path = name;
+  r.v0 = v0;
+  for (int i = 0; -0.5 + 0.01 * i <= zend + 1e-9; ++i) {
+    const double z = -0.5 + 0.01 * i;
+    r.t.push_back((z + 0.5) / v0);
+    r.z.push_back(z);
+    r.F.push_back(z < z0 ? 0.0 : 1000.0 * std::min(z - z0, 0.5));
+  }
+  r.onset = force_onset(r.z, r.F);
+  return r;
+}
+
+}    // namespace
+
+// ---- validate
+
+TEST(GapValidate, EffectsNamedGivenOrAll)
+{
+  EXPECT_EQ(choose_effects(std::nullopt).size(), effect_library().size());
+  const auto two = choose_effects(std::string("packing,rolling_resistance"));
+  ASSERT_EQ(two.size(), 2u);
+  EXPECT_EQ(two[0]->name, "packing");
+  EXPECT_EQ(two[1]->name, "rolling_resistance");
+  // given but empty is not "all": a script that lost its list must not run the whole library
+  expect_refused([] { choose_effects(std::string("")); }, "^--effects: empty list");
+  expect_refused([] { choose_effects(std::string("packing,magic")); }, "unknown effect 'magic'");
+}
+
+TEST(GapValidate, MeasuredFolderReadAndGrouped)
+{
+  TempDir dir("good");
+  write_file(dir / "a.csv", trace_text("cgs", CGS_100));
+  write_file(dir / "b.csv", trace_text("cgs", "# v0 = 50\n# D = 2.0\n# g = 981\n"));
+  const MeasuredData m = read_measured(dir.path.string(), hand_scenario());
+  ASSERT_EQ(m.files.size(), 2u);
+  EXPECT_EQ(m.v0s, (std::vector<std::string>{"50", "100"}));
+  ASSERT_EQ(m.runs.size(), 2u);
+  EXPECT_EQ(m.runs.at(100.0).size(), 1u);
+  // one run at each speed: both said, as warnings for the report
+  ASSERT_EQ(m.notes.size(), 2u);
+  EXPECT_NE(m.notes[0].find("v0 = 50 cm/s has one measured run"), std::string::npos);
+}
+
+TEST(GapValidate, InputsRefusedBeforeAnythingStarts)
+{
+  const Scenario sc = hand_scenario();
+  TempDir dir("refused");
+  fs::create_directories(dir.path / "single");
+  write_file(dir / "single/a.csv", trace_text("cgs", CGS_100));
+  expect_refused([&] { read_measured(dir / "single/a.csv", sc); }, "--real .*/single/a.csv: a file, not a folder");
+  expect_refused([&] { read_measured(dir / "nowhere", sc); }, "--real .*/nowhere: no such folder");
+  expect_refused([&] { read_measured(dir / "single", sc); }, "--real .*/single: a single trace in all");
+  fs::create_directories(dir.path / "empty");
+  expect_refused([&] { read_measured(dir / "empty", sc); }, "empty: folder holds no \\*\\.csv file");
+
+  fs::create_directories(dir.path / "mixed");
+  write_file(dir / "mixed/a.csv", trace_text("cgs", CGS_100));
+  write_file(dir / "mixed/b.csv", trace_text("si", "# v0 = 1.0\n# D = 0.02\n# g = 9.81\n", 5e-5));
+  expect_refused([&] { read_measured(dir / "mixed", sc); }, "mixed/b.csv: units = si, but .*mixed/a.csv has units = cgs");
+
+  // the scenario pushes at most 0.01 d_g per 2e-6 s step (2000 cm/s) and 1e6 steps over 2.5 cm (1.25 cm/s)
+  EXPECT_NEAR(runnable_speeds(sc).first, 1.25, 1e-12);
+  EXPECT_NEAR(runnable_speeds(sc).second, 2000.0, 1e-9);
+  fs::create_directories(dir.path / "fast");
+  write_file(dir / "fast/a.csv", trace_text("cgs", "# v0 = 2100\n# D = 2.0\n# g = 981\n"));
+  write_file(dir / "fast/b.csv", trace_text("cgs", CGS_100));
+  expect_refused([&] { read_measured(dir / "fast", sc); }, "fast/a.csv: v0 = 2100 cm/s is outside what scenario 'hand' can run");
+
+  // headers that contradict the scenario, each beyond its 1%; 0.5% passes
+  const char *contradicting[] = {"# v0 = 100\n# D = 2.1\n# g = 981\n", "# v0 = 100\n# D = 2.0\n# g = 960\n",
+                                 "# v0 = 100\n# D = 2.0\n# g = 981\n# d_g = 0.3\n"};
+  const char *named[] = {"header D = 2.1", "header g = 960", "header d_g = 0.3"};
+  for (int i = 0; i < 3; ++i) {
+    const std::string sub = "contra" + std::to_string(i);
+    fs::create_directories(dir.path / sub);
+    write_file(dir / (sub + "/a.csv"), trace_text("cgs", contradicting[i]));
+    write_file(dir / (sub + "/b.csv"), trace_text("cgs", CGS_100));
+    expect_refused([&] { read_measured(dir / sub, sc); }, sub + "/a.csv: " + named[i] + ".*scenario 'hand'");
+  }
+  fs::create_directories(dir.path / "close");
+  write_file(dir / "close/a.csv", trace_text("cgs", "# v0 = 100\n# D = 2.01\n# g = 981\n"));
+  write_file(dir / "close/b.csv", trace_text("cgs", CGS_100));
+  EXPECT_NO_THROW(read_measured(dir / "close", sc));
+}
+
+TEST(GapValidate, AnOutputThatWouldReplaceAnInputIsRefused)
+{
+  TempDir dir("out");
+  fs::create_directories(dir.path / "real");
+  fs::create_directories(dir.path / "cache");
+  const std::string real = dir / "real", cache = dir / "cache";
+  expect_refused([&] { check_output_path(real, real, cache); }, "would replace the measured traces");
+  expect_refused([&] { check_output_path(real + "/", real, cache); }, "would replace the measured traces");
+  expect_refused([&] { check_output_path(dir / "real/../real", real, cache); }, "would replace the measured traces");
+  expect_refused([&] { check_output_path(dir.path.string(), real, cache); }, "would replace the measured traces");
+  expect_refused([&] { check_output_path(cache, real, dir / "cache/x"); }, "would replace the simulation cache");
+  // beside them, or inside the measured folder: nothing of the inputs is replaced
+  EXPECT_NO_THROW(check_output_path(dir / "out", real, cache));
+  EXPECT_NO_THROW(check_output_path(dir / "real_out", real, cache));
+  EXPECT_NO_THROW(check_output_path(dir / "real/out", real, cache));
+}
+
+// ---- plan
+
+TEST(GapPlan, RequestsAndTheirCostFromWhatTheCacheLacks)
+{
+  const Scenario sc = hand_scenario();
+  TempDir cache("plan");
+  const std::vector<const Effect *> mount{find_effect("measurement_chain")};
+  const SimulationPlan p = plan_simulations(sc, {"50", "100"}, mount, cache.path.string(), false);
+  // the baseline (seeds 1 2), the reference beds (11-14), the mount's four knots on the baseline's beds
+  ASSERT_EQ(p.requests.size(), 6u);
+  EXPECT_EQ(p.requests[2].beds_from, "baseline");
+  // by hand: grains on the lattice, 8 x 8 across ((4 - 2 x 0.25) / 0.5 + 1) and 5 high;
+  // 6 pours of 0.6 s (the knots reuse the baseline's beds), (2 + 4 + 4 x 2) beds pushed
+  // 2.5 cm at each speed; 1.1e7 atom-steps per core-second
+  const double grains = 8 * 8 * 5;
+  const double steps = 6 * 0.6 / 5e-6 + 14 * (2.5 / 50 + 2.5 / 100) / 2e-6;
+  EXPECT_NEAR(p.core_hours, grains * steps / (1.1e7 * 3600), 1e-9 * p.core_hours);    // rounding only
+  // a done push is not counted again
+  const auto pending = pending_runs(p.requests[0], cache.path.string());
+  ASSERT_EQ(pending.size(), 6u);    // 2 pours, 4 pushes
+  fs::create_directories(cache.path / "baseline" / "traces");
+  write_file(cache / ("baseline/traces/" + pending[2].id + ".csv.done"), "");
+  EXPECT_EQ(pending_runs(p.requests[0], cache.path.string()).size(), 5u);
+  // beyond what a workstation runs: refused with the way out named, unless --local
+  Scenario big = sc;
+  big.vars["dt_push"] = "2e-10";
+  EXPECT_THROW(
+      {
+        try {
+          plan_simulations(big, {"50"}, mount, cache.path.string(), false);
+        } catch (const InputError &e) {
+          EXPECT_NE(std::string(e.what()).find("--slurm FILE --v0 \"50\""), std::string::npos) << e.what();
+          EXPECT_NE(std::string(e.what()).find("--local"), std::string::npos);
+          throw;
+        }
+      },
+      InputError);
+  EXPECT_GT(plan_simulations(big, {"50"}, mount, cache.path.string(), true).core_hours, LOCAL_CORE_HOURS);
+}
+
+// ---- align and bin
+
+TEST(GapAlign, TwoMeasuredRunsWithAKnownOffset)
+{
+  // measured onsets 0.2 and 0.4 cm (origins off by -0.1 and +0.1), the baseline's 0.3 cm
+  RunsBySpeed real;
+  real[100] = {ramp_run("m1", 100, 0.1, 3.0), ramp_run("m2", 100, 0.3, 3.0)};
+  SimulatedRuns sims;
+  sims.base[100] = {ramp_run("b1", 100, 0.2, 3.0), ramp_run("b2", 100, 0.2, 3.0)};
+  sims.fresh[100] = {ramp_run("f1", 100, 0.2, 3.0), ramp_run("f2", 100, 0.2, 3.0), ramp_run("f3", 100, 0.2, 3.0)};
+  sims.knots["k_1"][100] = {ramp_run("k1", 100, 0.2, 3.2), ramp_run("k2", 100, 0.2, 3.2)};
+  const double z_m1 = real[100][0].z.back();
+  const Alignment al = align_and_bin(real, sims, 5.0);
+  EXPECT_NEAR(al.onset.at(100), 0.3, 1e-9);
+  for (const auto &r : real[100]) EXPECT_NEAR(r.onset, 0.3, 1e-12);
+  EXPECT_NEAR(real[100][0].z.back() - z_m1, 0.1, 1e-9);    // moved down by its offset
+  // after the move the two measured force curves coincide sample by sample
+  EXPECT_NEAR(force_onset(real[100][0].z, real[100][0].F), force_onset(real[100][1].z, real[100][1].F), 1e-9);
+  // the deepest common depth is the run moved up: 3.0 - 0.1 = 2.9, on the 0.25 cm grid 2.75
+  EXPECT_NEAR(al.grid.zmax, 2.75, 1e-12);
+  ASSERT_EQ(al.notes.size(), 1u);
+  EXPECT_NE(al.notes[0].find("moved by up to 0.100 cm"), std::string::npos) << al.notes[0];
+  // and no deeper than the scenario's push
+  RunsBySpeed real2;
+  real2[100] = {ramp_run("m1", 100, 0.2, 3.0), ramp_run("m2", 100, 0.2, 3.0)};
+  SimulatedRuns sims2 = sims;
+  EXPECT_NEAR(align_and_bin(real2, sims2, 1.6).grid.zmax, 1.5, 1e-12);
+  // an ensemble of one run cannot be compared
+  sims2.knots["k_1"][100].pop_back();
+  EXPECT_THROW(align_and_bin(real2, sims2, 5.0), InputError);
+}
+
+// ---- features: the null replicates
+
+TEST(GapFeatures, NullReplicatesSplitTheReferenceBeds)
+{
+  EXPECT_EQ(subsets(4, 2).size(), 6u);
+  EXPECT_EQ(subsets(4, 2)[5], (std::vector<std::size_t>{2, 3}));
+  EXPECT_TRUE(subsets(2, 3).empty());
+  // four reference runs, each scaled by its own factor (run-to-run scatter)
+  GapGrid grid;
+  grid.zmax = 2.0;
+  RunsBySpeed real;
+  real[100] = {ramp_run("m1", 100, 0.2, 2.5), ramp_run("m2", 100, 0.2, 2.5)};
+  SimulatedRuns sims;
+  sims.base[100] = {ramp_run("b1", 100, 0.2, 2.5), ramp_run("b2", 100, 0.2, 2.5)};
+  for (int i = 0; i < 4; ++i) {
+    TraceRun r = ramp_run("f" + std::to_string(i), 100, 0.2, 2.5);
+    for (auto &F : r.F) F *= 1.0 + 0.01 * i;
+    sims.fresh[100].push_back(r);
+  }
+  // two measured runs per speed: subsets of 2 of the 4 reference beds (leaving 2), C(4, 2)
+  const Features f = build_features(real, sims, {}, grid, 2);
+  EXPECT_EQ(f.n_reference, 4);
+  EXPECT_EQ(f.nulls.size(), 6u);
+  // one measured run: the 4 single beds, each against the other three. Replicate i's mean is
+  // run_i - mean(rest_i) + mean(all); over i the rests average to mean(all), so the
+  // replicates' mean is the reference mean itself, feature by feature (a linear identity)
+  const Features f1 = build_features(real, sims, {}, grid, 1);
+  ASSERT_EQ(f1.nulls.size(), 4u);
+  std::vector<double> mean(f1.fresh[0].mean.size(), 0.0);
+  for (const auto &t : f1.nulls)
+    for (std::size_t k = 0; k < mean.size(); ++k) mean[k] += t.mean[0][k] / f1.nulls.size();
+  // rounding only: sums of four numbers
+  for (std::size_t k = 0; k < mean.size(); ++k)
+    EXPECT_NEAR(mean[k], f1.fresh[0].mean[k], 1e-12 * std::abs(f1.fresh[0].mean[k]) + 1e-12);
+  // fewer than 3 reference runs: no null replicate possible
+  sims.fresh[100].resize(2);
+  EXPECT_THROW(build_features(real, sims, {}, grid, 2), InputError);
+}
+
+// ---- which and confirm on a hand-made feature set
+
+namespace {
+
+// Two speeds, six features at 100 (relative run-to-run variance 1e-4), the baseline on its
+// signature beds equal to the reference beds; effect "a" adds +10 to features 0-2 per unit
+// magnitude, effect "b" +10 to features 3-5, effect "c" +20 to features 0-2 (a's look-alike;
+// one knot each, at 1); the measurement is the
+// baseline plus `a` units of effect a's signature. Null replicates: the reference moved by
+// +-0.5 on alternate features (noise the size of one standard error).
+struct HandMade {
+  Effect ea, eb, ec;    // ec: a's look-alike, +20 on features 0-2 per unit
+  Features f;
+  HandMade(double a)
+  {
+    ea.name = "a", ea.unit = "u", ea.knots = {1.0};
+    eb.name = "b", eb.unit = "u", eb.knots = {1.0};
+    ec.name = "c", ec.unit = "u", ec.knots = {1.0};
+    const std::size_t P = 6;
+    auto ens = [&](double v0, std::vector<double> mean) { return make_ensemble(v0, {mean, mean}); };
+    for (double v : {50.0, 100.0}) {
+      std::vector<double> base(P, 100.0), ka = base, kb = base, kc = base, meas = base;
+      for (std::size_t k = 0; k < 3; ++k) ka[k] += 10.0, kb[k + 3] += 10.0, kc[k] += 20.0, meas[k] += 10.0 * a;
+      f.speeds.push_back(v);
+      f.real.push_back(ens(v, meas));
+      f.base.push_back(ens(v, base));
+      f.fresh.push_back(ens(v, base));
+      f.knots["a_1"].push_back(ens(v, ka));
+      f.knots["b_1"].push_back(ens(v, kb));
+      f.knots["c_1"].push_back(ens(v, kc));
+      f.cv2.push_back(std::vector<double>(P, 1e-4));
+      f.fresh_err.push_back(model_err(f.fresh.back(), f.cv2.back()));
+      f.target.mean.push_back(meas);
+      f.target.err.push_back(model_err(f.real.back(), f.cv2.back()));
+      f.target_scale.push_back(1.0);
+    }
+    for (double sign : {1.0, -1.0}) {
+      Target t;
+      for (std::size_t s = 0; s < 2; ++s) {
+        std::vector<double> m(P, 100.0);
+        for (std::size_t k = 0; k < P; ++k) m[k] += (k % 2 ? sign : -sign) * 0.5;
+        t.mean.push_back(m);
+        t.err.push_back(f.target.err[s]);
+      }
+      f.nulls.push_back(t);
+    }
+    f.n_reference = 4;
+  }
+};
+
+}    // namespace
+
+TEST(GapWhere, CurvesAndSignificanceOnAHandMadeFeatureSet)
+{
+  HandMade h(0.5);
+  // a grid whose features are the hand-made six: 2 bins of 0.25 cm, no fluctuation window
+  // (1 cm is deeper than 0.5), the 4 spectral bands
+  GapGrid grid;
+  grid.zmax = 0.5;
+  ASSERT_EQ(grid.nfeatures(), 6u);
+  Diagnosis d;
+  gap_curves(h.f, grid, d);
+  ASSERT_EQ(d.speeds.size(), 2u);
+  // both bins 5 above a reference of 100, no scatter in either ensemble (two equal runs):
+  // G = sqrt(2 x 5^2 / (2 x 105^2)) = 5 / 105 at each speed; rounding only
+  EXPECT_NEAR(d.speeds[0].G_before, 5.0 / 105.0, 1e-12);
+  EXPECT_NEAR(d.gap_before, 5.0 / 105.0, 1e-12);
+  EXPECT_EQ(d.speeds[1].gap, (std::vector<double>{5.0, 5.0}));
+  EXPECT_NEAR(d.speeds[0].band[0], 2.0 * std::sqrt(1e-4 * 105 * 105 / 2 + 0.5), 1e-12);
+  EXPECT_EQ(d.n_real_min, 2);
+  EXPECT_EQ(d.n_sim, 4);
+  gap_significance(h.f, grid, d);
+  // chi^2 = 2 speeds x 3 features x 5^2 / (1e-4 x 105^2 / 2 + 0.5)
+  EXPECT_NEAR(d.chi2_0, 150.0 / (1e-4 * 105 * 105 / 2 + 0.5), 1e-9);
+  EXPECT_EQ(d.nfeatures, 12u);
+  EXPECT_LT(d.p_value, 1e-20);
+  EXPECT_TRUE(d.significant);
+  Diagnosis d0;
+  gap_significance(HandMade(0.0).f, grid, d0);
+  EXPECT_EQ(d0.chi2_0, 0.0);
+  EXPECT_FALSE(d0.significant);
+}
+
+TEST(GapWhich, TheVerdictOnAHandMadeFeatureSet)
+{
+  HandMade h(0.5);
+  Diagnosis d;
+  d.significant = true;    // the omnibus route: chi^2 about 150 over 12 features (by hand)
+  d.nfeatures = 12;
+  const auto data = fit_candidates({&h.ea, &h.eb}, h.f, [](const std::string &) { return NAN; }, d);
+  ASSERT_EQ(d.ranking.size(), 2u);
+  EXPECT_EQ(d.verdict, "explained");
+  EXPECT_EQ(d.top_effect, "a");
+  // the model is linear between the knots 0 and 1 and the data noise-free: exact
+  EXPECT_NEAR(d.ranking[0].magnitude, 0.5, 1e-3);
+  EXPECT_GT(d.ranking[0].explained, 0.99);
+  EXPECT_TRUE(d.ranking[0].detected);
+  // b's signature is orthogonal to the gap: it explains nothing
+  EXPECT_EQ(d.ranking[1].name, "b");
+  EXPECT_LT(d.ranking[1].explained, 0.01);
+  EXPECT_EQ(d.n_null, 2);
+  EXPECT_EQ(data.count("a"), 1u);
+  EXPECT_EQ(data.count("b"), 1u);
+
+  // no gap at all, and the omnibus test finds none: none
+  HandMade z(0.0);
+  Diagnosis dz;
+  fit_candidates({&z.ea, &z.eb}, z.f, [](const std::string &) { return NAN; }, dz);
+  EXPECT_EQ(dz.verdict, "none");
+  EXPECT_TRUE(dz.top_effect.empty());
+}
+
+TEST(GapConfirm, TheGapAlongTheSignatureAndTheConfirmationTest)
+{
+  HandMade h(0.5);
+  const EffectData ed = effect_data(h.ea, h.f);
+  // by hand: u = 5 on 3 features at 2 speeds, the gap 5 there, the variance w = 0.5 (the
+  // reference's mean) + 1e-4 x 105^2 / 2 (the measured mean's): sum u g / w over
+  // sqrt(sum u^2 / w) = sqrt(150 / w); rounding only
+  const double w = 0.5 + 1e-4 * 105.0 * 105.0 / 2.0;
+  EXPECT_NEAR(signature_sigma(ed, 0.5, h.f), std::sqrt(150.0 / w), 1e-9);
+  HandMade z(0.0);
+  EXPECT_NEAR(signature_sigma(effect_data(z.ea, z.f), 0.5, z.f), 0.0, 1e-12);
+  // omnibus route: chi^2 150 over 12 features, noise 3 sqrt(24) = 14.7
+  Diagnosis d;
+  d.chi2_0 = 150, d.nfeatures = 12;
+  EXPECT_TRUE(confirms(d, 20.0, 0.0));      // excess 138 -> 8: 94% removed
+  EXPECT_FALSE(confirms(d, 140.0, 0.0));    // within the noise of chi^2
+  EXPECT_FALSE(confirms(d, 120.0, 0.0));    // beyond the noise, but 22% of the excess removed (< 25%)
+  // targeted route: the squared projection must drop by 9 without chi^2 growing beyond its noise
+  d.targeted = true;
+  d.proj_before = 4.0;
+  EXPECT_TRUE(confirms(d, 150.0, 2.0));     // 16 -> 4
+  EXPECT_FALSE(confirms(d, 150.0, 3.0));    // 16 -> 9: 7 only
+  EXPECT_FALSE(confirms(d, 170.0, 0.0));    // chi^2 up by 20 > 14.7
+}
+
+// ---- how blind: detection limits, look-alikes, the next measurement, false alarms
+
+#include "gap_limits.h"
+#include "gap_verdict.h"
+
+namespace {
+
+// The expected likelihood ratio of effect a at magnitude m in HandMade, by hand, the
+// measured variances times factor[s]: at 0 < m <= 1 the interpolation weights are 1 - m
+// (knot 0) and m (the knot at 1), so u = 10 m on features 0-2 and 0 on 3-5, with the
+// variance m^2 (knot's + signature baseline's) the knots' noise puts in it; weights W =
+// measured variance x factor + the reference's.
+double hand_strength(const HandMade &h, double m, const std::vector<double> &factor)
+{
+  double lam = 0;
+  for (std::size_t s = 0; s < 2; ++s)
+    for (std::size_t k = 0; k < 6; ++k) {
+      const double knot = 1e-4 * std::pow(k < 3 ? 110.0 : 100.0, 2) / 2, sig_base = 1e-4 * 100 * 100 / 2;
+      const double u = k < 3 ? 10 * m : 0.0, var = m * m * (knot + sig_base);
+      lam += (u * u - var) / (h.f.target.err[s][k] * factor[s] + h.f.fresh_err[s][k]);
+    }
+  return std::max(0.0, lam);
+}
+
+// every measured variance times x (a noisier measurement, the same means)
+void noisier(HandMade &h, double x)
+{
+  for (auto &row : h.f.target.err)
+    for (auto &e : row) e *= x;
+}
+
+}    // namespace
+
+TEST(GapLimits, TheLimitAndTheRunsNeededOnAHandMadeSignature)
+{
+  // 50 x the measured variance (7 standard errors): lambda(1) = 20.9 (by hand_strength), so
+  // the limit lies inside the knot; lambda is c m^2, the limit sqrt(T / c)
+  HandMade h(0.5);
+  noisier(h, 50);
+  const std::vector<double> now(2, 1.0);
+  const EffectData ed = effect_data(h.ea, h.f);
+  const EffectFit fit = fit_candidate(ed, h.f);
+  for (double m : {0.2, 0.7, 1.0})
+    EXPECT_NEAR(signature_strength(ed, h.f.target, m, now), hand_strength(h, m, now), 1e-9 * hand_strength(h, 1, now)) << m;
+  const double c = hand_strength(h, 1.0, now);
+  ASSERT_GT(c, fit.lr_threshold);
+  const DetectionLimit L = detection_limit(h.ea, ed, fit, h.f);
+  EXPECT_EQ(L.effect, "a");
+  EXPECT_EQ(L.reference, 1.0);
+  ASSERT_TRUE(L.limit.has_value());
+  // the bisection's tolerance: 40 halvings of a 1/200 step
+  EXPECT_NEAR(*L.limit, std::sqrt(fit.lr_threshold / c), 1e-9);
+  EXPECT_FALSE(L.limit_other_side.has_value());    // one-sided
+  // runs needed: the fewest n per speed with lambda(1; measured variance x 2 / n) >= T
+  auto runs_for_reference = [&](const HandMade &hh, double T) {
+    int n = 1;
+    while (hand_strength(hh, 1.0, std::vector<double>(2, 2.0 / n)) < T) ++n;
+    return n;
+  };
+  ASSERT_TRUE(L.runs_needed.has_value());
+  EXPECT_EQ(*L.runs_needed, runs_for_reference(h, fit.lr_threshold));
+  // twice noisier: the knot itself is no longer detected (no limit), and more runs are needed
+  noisier(h, 2);
+  const EffectData ed2 = effect_data(h.ea, h.f);
+  const EffectFit fit2 = fit_candidate(ed2, h.f);
+  ASSERT_LT(hand_strength(h, 1.0, now), fit2.lr_threshold);
+  const DetectionLimit L2 = detection_limit(h.ea, ed2, fit2, h.f);
+  EXPECT_FALSE(L2.limit.has_value());
+  ASSERT_TRUE(L2.runs_needed.has_value());
+  EXPECT_EQ(*L2.runs_needed, runs_for_reference(h, fit2.lr_threshold));
+  EXPECT_GT(*L2.runs_needed, 2);
+}
+
+TEST(GapLimits, LookAlikesAreATieWithTheRunsThatCannotSeparateThem)
+{
+  // a and c have the same signature's shape (c twice as strong), b an orthogonal one: a and c
+  // both explain the gap with the same evidence, so the answer is a tie naming both
+  HandMade h(0.5);
+  Diagnosis d;
+  d.significant = true;
+  d.nfeatures = 12;
+  const auto data = fit_candidates({&h.ea, &h.eb, &h.ec}, h.f, [](const std::string &) { return NAN; }, d);
+  EXPECT_EQ(d.verdict, "tie");
+  EXPECT_TRUE(d.top_effect.empty());
+  ASSERT_EQ(d.tie.size(), 2u);
+  EXPECT_EQ(std::set<std::string>(d.tie.begin(), d.tie.end()), (std::set<std::string>{"a", "c"}));
+  const std::map<std::string, const Effect *> by_name{{"a", &h.ea}, {"b", &h.eb}, {"c", &h.ec}};
+  const auto pairs = look_alikes(d.ranking, data, by_name, h.f);
+  ASSERT_EQ(pairs.size(), 3u);
+  for (const auto &p : pairs) {
+    const std::set<std::string> ab{p.a, p.b};
+    if (ab == std::set<std::string>{"a", "c"}) {
+      // parallel signatures, the same fitted prediction (+5 on features 0-2)
+      EXPECT_NEAR(p.angle_deg, 0.0, 1e-5);
+      EXPECT_NEAR(p.separation, 0.0, 1e-3);
+      EXPECT_TRUE(p.look_alike);
+      EXPECT_NEAR(p.fit_separation, 0.0, 1e-6);
+    } else {
+      // b is orthogonal to both: each stands its whole length off the other, the shorter
+      // counts. With a: a's, +10 on features 0-2 at 2 speeds, weights 1e-4 x 105^2 / 2 + 0.5
+      // (the measured mean's and the reference's variances): 600 / 1.05. With c (+20 there):
+      // b's own, +10 on features 3-5, weights 0.5 + 0.5: 600
+      EXPECT_NEAR(p.angle_deg, 90.0, 1e-9);
+      const double W = ab.count("a") ? 1e-4 * 105 * 105 / 2 + 0.5 : 1.0;
+      EXPECT_NEAR(p.separation, std::sqrt(600.0 / W), 1e-9);
+      EXPECT_FALSE(p.look_alike);
+      // their fits: b's is 0, a's (or c's) prediction +5 on the same features: 6 x 25 / W
+      // less the knots' noise in it
+      EXPECT_GT(p.fit_separation, 11.0);
+    }
+  }
+  // what would separate them: nothing the measurement can do (they predict the same)
+  const auto next = next_measurement(d.ranking, data, h.f, d.verdict);
+  ASSERT_TRUE(next.has_value());
+  EXPECT_EQ(next->goal, "separate");
+  EXPECT_EQ(std::set<std::string>(next->effects.begin(), next->effects.end()), (std::set<std::string>{"a", "c"}));
+  EXPECT_FALSE(next->reaches);
+  EXPECT_NEAR(next->gain(), 0.0, 1e-9);
+}
+
+TEST(GapLimits, TheNextMeasurementDetectsTheUndetectedCandidate)
+{
+  // 100 x the measured variance: the gap (a at 0.5) is not detected; more runs at one speed
+  // shrink that speed's measured variance by n / (n + r), and the fewest r that bring a's
+  // expected likelihood ratio to its threshold is the answer (both speeds are alike here: the
+  // first is named), at the magnitude whose expected ratio is the measured one: lambda is
+  // c m^2, so sqrt(lr / c) (a little above 0.5: the measured ratio has no knot noise taken off)
+  HandMade h(0.5);
+  noisier(h, 100);
+  Diagnosis d;
+  d.nfeatures = 12;
+  const auto data = fit_candidates({&h.ea, &h.eb}, h.f, [](const std::string &) { return NAN; }, d);
+  EXPECT_EQ(d.verdict, "none");
+  const EffectFit &a = d.ranking[0].name == "a" ? d.ranking[0] : d.ranking[1];
+  ASSERT_FALSE(a.detected);
+  EXPECT_NEAR(a.magnitude, 0.5, 1e-3);
+  const auto next = next_measurement(d.ranking, data, h.f, d.verdict);
+  ASSERT_TRUE(next.has_value());
+  EXPECT_EQ(next->goal, "detect");
+  EXPECT_EQ(next->effects, (std::vector<std::string>{"a"}));
+  EXPECT_EQ(next->v0, 50.0);
+  const double m = std::sqrt(a.lr / hand_strength(h, 1.0, {1.0, 1.0}));
+  EXPECT_NEAR(m, 0.5, 0.01);
+  int r = 1;
+  while (hand_strength(h, m, {2.0 / (2.0 + r), 1.0}) < a.lr_threshold) ++r;
+  ASSERT_LE(r, MAX_RUNS_PER_SPEED);
+  EXPECT_TRUE(next->reaches);
+  EXPECT_EQ(next->runs, r);
+  // the bisection's tolerance on m, squared into lambda
+  EXPECT_NEAR(next->now, a.lr, 1e-6 * next->target);
+  // an explained verdict asks for nothing more
+  EXPECT_FALSE(next_measurement(d.ranking, data, h.f, "explained").has_value());
+  EXPECT_GE(next->after, next->target);
+  EXPECT_GT(next->gain(), 0.0);
+}
+
+TEST(GapWhich, FalseAlarmsOnTheNullReplicates)
+{
+  // the two null replicates are noise the size of one standard error: both `none`
+  HandMade h(0.5);
+  const EffectData ea = effect_data(h.ea, h.f), eb = effect_data(h.eb, h.f);
+  const std::map<std::string, EffectData> data{{"a", ea}, {"b", eb}};
+  const std::vector<EffectFit> fits{fit_candidate(ea, h.f), fit_candidate(eb, h.f)};
+  const FalseAlarms fa = null_false_alarms({&h.ea, &h.eb}, data, fits, h.f);
+  EXPECT_EQ(fa.replicates, 2);
+  EXPECT_EQ(fa.not_none, 0);
+  EXPECT_EQ(fa.verdicts.at("none"), 2);
+  // one replicate that is the measurement itself (effect a at 0.5): that one is a false alarm,
+  // found with a threshold calibrated on the other replicate alone
+  HandMade g(0.5);
+  g.f.nulls[0] = g.f.target;
+  const EffectData ga = effect_data(g.ea, g.f), gb = effect_data(g.eb, g.f);
+  const FalseAlarms fg = null_false_alarms({&g.ea, &g.eb}, {{"a", ga}, {"b", gb}},
+                                           {fit_candidate(ga, g.f), fit_candidate(gb, g.f)}, g.f);
+  EXPECT_EQ(fg.not_none, 1);
+  EXPECT_EQ(fg.verdicts.at("explained"), 1);
+  EXPECT_DOUBLE_EQ(fg.rate(), 0.5);
+}
+
+// ---- the residual (gap_residual.h)
+
+#include "gap_residual.h"
+
+#include <random>
+
+namespace {
+
+// runs of a constant mean with AR(1) noise (15%, c 0.6), 10 kHz, z from -0.5 to 4.2 cm, plus
+// a sine of amplitude A at frequency line(v0) (none when A = 0)
+std::vector<TraceRun> noisy_runs(double v0, unsigned seed0, int n, double A, double (*line)(double))
+{
+  std::vector<TraceRun> runs;
+  for (int r = 0; r < n; ++r) {
+    std::mt19937 rng(seed0 + r);
+    std::normal_distribution<double> n01;
+    TraceRun run;
+    run.v0 = v0;
+    double x = 0;
+    for (int i = 0;; ++i) {
+      const double t = i * 1e-4, z = std::round(v0 * t * 1e6) / 1e6 - 0.5;
+      if (z > 4.2) break;
+      x = 0.6 * x + 0.8 * n01(rng);
+      run.t.push_back(t), run.z.push_back(z);
+      run.F.push_back(z > 0 ? 1e5 * (1 + 0.15 * x) + (A > 0 ? A * std::sin(2 * M_PI * line(v0) * t) : 0.0) : 0.0);
+    }
+    runs.push_back(run);
+  }
+  return runs;
+}
+
+std::vector<const TraceRun *> ptrs(const std::vector<TraceRun> &runs)
+{
+  std::vector<const TraceRun *> p;
+  for (const auto &r : runs) p.push_back(&r);
+  return p;
+}
+
+double wavelength_line(double v0) { return v0 / 0.2; }    // a 0.2 cm wavelength
+double fixed_line(double) { return 700.0; }                // a resonance
+
+}    // namespace
+
+TEST(GapResidual, ANarrowLineItsFrequencyAndWhetherItScalesWithV0)
+{
+  // 8 runs a side: the log ratio's standard deviation is sqrt(2 trigamma(8)) = 0.52; a sine of
+  // 2e4 dyne (2e8 dyne^2 in one or two bins) on noise of 1.5e4 RMS spread over 80 to 320 bins
+  // stands 6 to 10 of them above its neighbours (half that amplitude: 5 to 7, too near the
+  // threshold of 5 for a test)
+  const GapGrid grid;
+  for (auto line : {wavelength_line, fixed_line}) {
+    std::vector<SpectralLine> lines;
+    for (double v0 : {50.0, 100.0, 200.0}) {
+      const auto model = noisy_runs(v0, 100, 8, 0, line), real = noisy_runs(v0, 200, 8, 2e4, line);
+      SpectralLine l;
+      l.v0 = v0;
+      std::vector<double> freq, ratio;
+      ASSERT_TRUE(find_line(ptrs(real), ptrs(model), grid, l, freq, ratio)) << v0;
+      // within a frequency bin: 1 / (the span's duration, 4 cm / v0)
+      EXPECT_NEAR(l.freq, line(v0), v0 / 4.0) << v0;
+      EXPECT_GT(l.sigma, 5.0);
+      EXPECT_EQ(freq.size(), ratio.size());
+      lines.push_back(l);
+      // no line without the sine: the same noise on both sides
+      const auto plain = noisy_runs(v0, 300, 8, 0, line);
+      EXPECT_FALSE(find_line(ptrs(plain), ptrs(model), grid, l, freq, ratio)) << v0;
+    }
+    EXPECT_EQ(line_scaling(lines), line == wavelength_line ? "scales with v0" : "fixed");
+  }
+  EXPECT_EQ(line_scaling({}), "");
+}
+
+TEST(GapResidual, WhereItLiesWhatItMovesAndTheNearestCandidate)
+{
+  // a grid of 8 bins (0 < z <= 2), 2 fluctuation windows, 4 bands: 14 features; two speeds;
+  // both sides' variances 1 (the difference's 2); the measured bin means 10 above the model's
+  // at bins 2 and 3 (0.5 < z <= 1.0) at the first speed
+  GapGrid grid;
+  grid.zmax = 2.0;
+  ASSERT_EQ(grid.nfeatures(), 14u);
+  ResidualSide R, M;
+  for (int s = 0; s < 2; ++s) {
+    M.mean.push_back(std::vector<double>(14, 100.0)), M.err.push_back(std::vector<double>(14, 1.0));
+    R.mean.push_back(M.mean.back()), R.err.push_back(M.err.back());
+  }
+  R.mean[0][2] += 10, R.mean[0][3] += 10;
+  ResidualContext ctx;
+  ctx.speeds = {50, 100};
+  ctx.z_transient_end = {1.5, 1.5};
+  ctx.peak_end = 0.7;    // bin 2 (centre 0.625) is in the peak regime, bin 3 (0.875) in the transient
+  ctx.verdict = "unexplained";
+  EffectFit near, far;
+  near.name = "near", near.explained = 0.3, near.heldout_explained = 0.4, near.detected = true, near.lr = 40, near.lr_threshold = 15.1;
+  far.name = "far", far.explained = 0.1, far.heldout_explained = 0.1, far.lr = 3, far.lr_threshold = 15.1;
+  ctx.ranking = {near, far};
+  Residual r = describe_residual(R, M, grid, ctx);
+  EXPECT_EQ(r.regimes, (std::vector<std::string>{"peak", "transient"}));
+  EXPECT_DOUBLE_EQ(r.z_from, 0.5);
+  EXPECT_DOUBLE_EQ(r.z_to, 1.0);
+  // chi^2 = 2 x 10^2 / 2 over 16 bin means; nothing in the 12 fluctuation features
+  EXPECT_DOUBLE_EQ(r.chi2_means, 100.0);
+  EXPECT_EQ(r.dof_means, 16);
+  EXPECT_EQ(r.dof_fluct, 12);
+  EXPECT_EQ(r.moves, "bin means");
+  EXPECT_TRUE(r.band.empty());
+  ASSERT_EQ(r.curves.size(), 2u);
+  EXPECT_EQ(r.curves[0].resid[2], 10.0);
+  EXPECT_NEAR(r.curves[0].band[2], 2 * std::sqrt(2.0), 1e-12);
+  EXPECT_EQ(r.nearest, "near");
+  EXPECT_EQ(r.why_rejected, "it explains 0.30 of the gap (0.5 needed)");
+  // the spectrum too: band 450-1350 Hz (feature 8 + 2 + 2 = 12) 20% up at both speeds
+  R.mean[0][12] = R.mean[1][12] = 120;
+  r = describe_residual(R, M, grid, ctx);
+  EXPECT_EQ(r.moves, "both");
+  EXPECT_EQ(r.band, "450-1350 Hz");
+  EXPECT_DOUBLE_EQ(r.band_ratio, 1.2);
+  // only the spectrum, and within the noise: neither
+  R.mean[0][2] = R.mean[0][3] = 100;
+  EXPECT_EQ(describe_residual(R, M, grid, ctx).moves, "spectrum");
+  R.mean[0][12] = R.mean[1][12] = 101;
+  EXPECT_EQ(describe_residual(R, M, grid, ctx).moves, "neither");
+  EXPECT_TRUE(r.lines.empty());    // no runs: no periodogram
+}
+
+// ---- the sweep layer's side: what a sweep folder holds, the cluster script
+
+TEST(SweepCache, FinishedTracesAndBedsOfASweep)
+{
+  TempDir root("cache");
+  EXPECT_TRUE(finished_traces(root.path.string(), "absent").empty());
+  fs::create_directories(root.path / "s" / "traces");
+  fs::create_directories(root.path / "s" / "beds");
+  for (const char *f : {"b.csv", "a.csv", "c.csv"}) write_file(root / (std::string("s/traces/") + f), "");
+  write_file(root / "s/traces/b.csv.done", "");
+  write_file(root / "s/traces/a.csv.done", "");
+  write_file(root / "s/beds/bed_2.info", "");
+  write_file(root / "s/beds/bed_1.info", "");
+  write_file(root / "s/beds/bed_1.restart", "");
+  // c.csv is unfinished (no marker); sorted
+  EXPECT_EQ(finished_traces(root.path.string(), "s"), (std::vector<std::string>{root / "s/traces/a.csv", root / "s/traces/b.csv"}));
+  EXPECT_EQ(bed_info_files(root.path.string(), "s"), (std::vector<std::string>{root / "s/beds/bed_1.info", root / "s/beds/bed_2.info"}));
+  EXPECT_EQ(sweep_of_trace(finished_traces(root.path.string(), "s")[0]), "s");
+}
+
+TEST(SlurmScript, OneAllocationWrittenWhole)
+{
+  TempDir dir("slurm");
+  SlurmAllocation job;
+  job.job_name = "granpen-gap-tiny";
+  job.ntasks = 8;
+  job.what = "granpen gap: the tiny cache.";
+  job.command = "granpen-cli gap --prepare-only --scenario tiny";
+  const std::string file = dir / "prepare.sh";
+  write_slurm_allocation(job, file);
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), "#!/bin/bash\n# granpen gap: the tiny cache.\n# Submit with: sbatch [--partition=... --time=...] " +
+                            file + "\n#SBATCH --job-name=granpen-gap-tiny\n#SBATCH --ntasks=8\nset -e\n"
+                                   "granpen-cli gap --prepare-only --scenario tiny\n");
+  EXPECT_FALSE(fs::exists(file + ".tmp"));
+  // a folder that does not exist: a named error, nothing left behind
+  try {
+    write_slurm_allocation(job, dir / "no/such/prepare.sh");
+    ADD_FAILURE() << "no error";
+  } catch (const InputError &e) {
+    EXPECT_NE(std::string(e.what()).find("no/such/prepare.sh: cannot write"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(this_executable("fallback").empty());
+}
+
+// ---- report: the output moved into place whole, or not at all
+
+#include "gap_report.h"
+
+TEST(GapReport, OutputReplacesAnOlderOneOnlyWhenComplete)
+{
+  TempDir dir("report");
+  const std::string out = dir / "out";
+  fs::create_directories(out);
+  write_file(out + "/keep", "before");
+  Diagnosis d;
+  d.scenario = "hand";
+  d.real_dir = dir / "real";
+  // a simulated trace that has gone: the copy fails, OUT stays as it was, no partial left
+  d.baseline_files = {dir / "cache/baseline/traces/gone.csv"};
+  try {
+    write_gap_output(d, out);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError &e) {
+    EXPECT_NE(std::string(e.what()).find("out.partial: cannot write the output"), std::string::npos) << e.what();
+  }
+  EXPECT_TRUE(fs::exists(out + "/keep"));
+  EXPECT_FALSE(fs::exists(out + ".partial"));
+  // the trace there: the new OUT replaces the old whole, the trace named after its sweep
+  fs::create_directories(dir.path / "cache/baseline/traces");
+  write_file(dir / "cache/baseline/traces/gone.csv", "x");
+  write_gap_output(d, out);
+  EXPECT_FALSE(fs::exists(out + "/keep"));
+  EXPECT_TRUE(fs::exists(out + "/diagnosis.json"));
+  EXPECT_TRUE(fs::exists(out + "/report.md"));
+  EXPECT_TRUE(fs::exists(out + "/baseline/baseline_gone.csv"));
+  EXPECT_TRUE(fs::exists(out + "/corrected/baseline_gone.csv"));    // nothing added: the baseline's
+  EXPECT_FALSE(fs::exists(out + ".partial"));
+  EXPECT_FALSE(fs::exists(out + ".old"));
+}
+
+// ---- the stages in order: a whole diagnosis in the synthetic world (tests/support/fake_lmp)
+
+#if defined(GRANPEN_FAKE_LMP) && defined(GRANPEN_INPUTS_DIR)
+#include "gap_diagnosis.h"
+#include "sweep_runner.h"
+
+TEST(GapDiagnosis, StagesReportProgressInOrderThroughTheCallback)
+{
+  TempDir dir("whole");
+  RunnerOptions runner;
+  runner.lmp = GRANPEN_FAKE_LMP;
+  runner.inputs = GRANPEN_INPUTS_DIR;
+  runner.jobs = 1;
+  runner.progress_seconds = 1e9;
+  // the "measurement": the tiny scenario with rolling resistance 0.2, on beds no diagnosis uses
+  SweepSpec truth;
+  truth.name = "truth";
+  truth.path = "(test)";
+  truth.presets = {"tiny"};
+  truth.seeds = {"101", "102"};
+  truth.v0 = {"50", "100"};
+  truth.set = {{"mu_roll", "0.2"}};
+  runner.out_root = dir / "measured";
+  ASSERT_EQ(run_sweep(truth, runner), 0);
+
+  GapOptions opt;
+  opt.real = dir / "measured/truth/traces";
+  opt.scenario = "tiny";
+  opt.out = dir / "out";
+  opt.cache = dir / "cache";
+  opt.effects = std::string("rolling_resistance");
+  opt.fit_only = true;    // the confirming runs are confirm's own test
+  opt.runner = runner;
+  std::vector<GapProgress> seen;
+  ASSERT_EQ(run_gap(opt, [&](const GapProgress &p) { seen.push_back(p); }), 0);
+  std::vector<std::string> steps, details;
+  for (const auto &p : seen) {
+    if (p.kind == GapProgress::STEP) steps.push_back(std::to_string(p.done) + "/" + std::to_string(p.total) + " " + p.stage);
+    if (p.kind == GapProgress::DETAIL) details.push_back(p.stage + " " + std::to_string(p.done) + "/" + std::to_string(p.total));
+  }
+  EXPECT_EQ(steps, (std::vector<std::string>{"1/4 simulate", "2/4 align", "3/4 which", "4/4 confirm"}));
+  EXPECT_EQ(details, (std::vector<std::string>{"which 1/1"}));
+  ASSERT_FALSE(seen.empty());
+  EXPECT_EQ(seen.front().stage, "validate");
+  EXPECT_NE(seen.front().message.find("4 measured runs at 2 speeds (50 100 cm/s) against scenario tiny"), std::string::npos)
+      << seen.front().message;
+  EXPECT_EQ(seen.back().stage, "report");
+  EXPECT_EQ(seen.back().message.rfind("verdict explained (rolling_resistance, magnitude ", 0), 0u) << seen.back().message;
+  EXPECT_TRUE(fs::exists(dir.path / "out" / "diagnosis.json"));
+  EXPECT_FALSE(fs::exists(dir.path / "out.partial"));
+
+  // refused input: nothing reported, nothing started, OUT as it was
+  std::vector<GapProgress> none;
+  opt.effects = std::string("");
+  opt.out = dir / "out2";
+  opt.cache = dir / "cache2";
+  EXPECT_THROW(run_gap(opt, [&](const GapProgress &p) { none.push_back(p); }), GapRefused);
+  EXPECT_TRUE(none.empty());
+  EXPECT_FALSE(fs::exists(dir.path / "out2"));
+  EXPECT_FALSE(fs::exists(dir.path / "cache2"));
+}
+#endif
+
+// ---- report: diagnosis.json's keys and values, as the hand-built writer wrote them
+
+#include <nlohmann/json.hpp>
+
+namespace {
+
+// A diagnosis with every field the report writes set to a value of its own (two speeds,
+// three candidates, a refinement), so that a key written from the wrong field shows.
+Diagnosis filled_diagnosis(const std::string &real_dir)
+{
+  Diagnosis d;
+  d.scenario = "hand";
+  d.real_dir = real_dir;
+  d.grid.zmax = 0.75;
+  d.peak_end = 0.7;
+  d.notes = {"first note", "a note with \"quotes\" and a tab\t"};
+  d.chi2_0 = 93.61, d.p_value = 2.5e-7, d.chi2_after = 54.8, d.confirmed_fraction = 0.71234;
+  d.nfeatures = 24, d.significant = true, d.targeted = false, d.n_null = 6, d.n_reference = 4;
+  d.proj_before = 5.7612, d.proj_after = -1.234567;
+  d.refined = true, d.refined_from = -0.078, d.gap_after_first = 0.1401, d.proj_refined = 0.05;
+  Finding w;
+  w.regime = "peak", w.observable = "peak_F", w.v0 = 50, w.real = 1234.5, w.sim = 1100.25, w.real_se = 20.5,
+  w.sim_se = 15.125, w.zscore = 5.2345, w.significant = true;
+  d.where.push_back(w);
+  w.regime = "linear", w.observable = "k_z", w.v0 = 100, w.real = 3.1e5, w.sim = 3.0e5, w.zscore = 0.8, w.significant = false;
+  d.where.push_back(w);
+  for (int i = 0; i < 3; ++i) {
+    EffectFit r;
+    r.name = i == 0 ? "packing" : i == 1 ? "rolling_resistance" : "sidewalls";
+    r.magnitude = -0.15 + 0.1 * i, r.chi2_0 = 93.61, r.chi2 = 40.0 + 10 * i, r.explained = 0.9 - 0.3 * i;
+    r.heldout_explained = 0.8 - 0.2 * i, r.score = 0.8 - 0.3 * i, r.at_edge = i == 2, r.lr = 50.5 - 20 * i;
+    r.lr_null_mean = 1.2 + i, r.lr_threshold = 18.2 + 15 * i, r.detected = i < 2;
+    d.ranking.push_back(r);
+  }
+  d.magnitude_note["packing"] = "pour friction 0.150: phi_0 0.5812 against the baseline's 0.5801";
+  d.verdict = "explained", d.top_effect = "packing", d.tested_effect = "packing";
+  d.magnitude = -0.150123, d.magnitude_unit = "pour friction minus 0.3";
+  for (double v : {50.0, 100.0}) {
+    SpeedCurves c;
+    c.v0 = v, c.n_real = 4, c.n_base = 4, c.n_corr = 4;
+    c.z = {0.125, 0.375, 0.625};
+    c.real = {100 + v, 200 + v, 300 + v}, c.real_se = {5, 6, 7};
+    c.base = {90 + v, 210 + v, 280 + v}, c.base_se = {4, 5, 6};
+    c.corr = {99 + v, 201 + v, 301 + v}, c.corr_se = {4, 5, 6};
+    c.gap = {10, -10, 20}, c.band = {12.8, 15.6, 18.4};
+    c.G_before = 0.1 + v / 1000, c.G_after = 0.02 + v / 10000, c.z_transient_end = 0.75;
+    d.speeds.push_back(c);
+  }
+  d.gap_before = 0.151234, d.gap_after = 0.030456;
+  d.gap_by_regime["peak"] = {0.2, 0.05};
+  d.gap_by_regime["linear"] = {0.1, 0.01};
+  d.heldout_v0 = 100, d.heldout_before = 0.193, d.heldout_after = 0.156, d.heldout_magnitude = -0.064;
+  d.n_real_min = 4, d.n_sim = 4;
+  return d;
+}
+
+nlohmann::json read_json_file(const std::string &path)
+{
+  std::ifstream in(path);
+  return nlohmann::json::parse(in);
+}
+
+}    // namespace
+
+// Every key and value the hand-built writer wrote (tests/analysis/gap/data/gap_report_before_nlohmann.json:
+// its output for filled_diagnosis, kept from before the move to nlohmann) is written again,
+// numbers to the printed precision; what the new writer adds is listed, nothing else.
+void expect_same_json(const nlohmann::json &before, const nlohmann::json &now, const std::string &at)
+{
+  if (before.is_number() && now.is_number()) {
+    // the old text rounded each number to its printf format; the new rounds it the same
+    // way, so the two read back equal up to the last printed digit's rounding
+    EXPECT_NEAR(before.get<double>(), now.get<double>(), 1e-12 * std::abs(before.get<double>()) + 1e-300) << at;
+    return;
+  }
+  ASSERT_EQ(before.type(), now.type()) << at;
+  if (before.is_object()) {
+    for (auto it = before.begin(); it != before.end(); ++it) {
+      ASSERT_TRUE(now.contains(it.key())) << at << "." << it.key() << " is gone";
+      expect_same_json(it.value(), now[it.key()], at + "." + it.key());
+    }
+  } else if (before.is_array()) {
+    ASSERT_EQ(before.size(), now.size()) << at;
+    for (std::size_t i = 0; i < before.size(); ++i) expect_same_json(before[i], now[i], at + "[" + std::to_string(i) + "]");
+  } else {
+    EXPECT_EQ(before, now) << at;
+  }
+}
+
+TEST(GapReport, DiagnosisJsonKeysAndValuesAsTheHandBuiltWriterWroteThem)
+{
+  TempDir dir("report_json");
+  write_gap_report(filled_diagnosis("real"), dir.path.string());
+  const nlohmann::json now = read_json_file(dir / "diagnosis.json");
+  nlohmann::json before = read_json_file(GRANPEN_GAP_REPORT_FIXTURE);
+  // the one value changed since, on purpose: gap_before, gap_after and the held-out figures
+  // are G_all now (filled_diagnosis sets them as numbers, so they compare equal)
+  EXPECT_EQ(before["gap_metric"], "shared/formats/gap-metric.md v1");
+  before["gap_metric"] = "shared/formats/gap-metric.md v2";
+  expect_same_json(before, now, "diagnosis.json");
+  // the top-level keys added since (issue 21; nlohmann::json orders them by name)
+  std::vector<std::string> added;
+  for (auto it = now.begin(); it != now.end(); ++it)
+    if (!before.contains(it.key())) added.push_back(it.key());
+  EXPECT_EQ(added, (std::vector<std::string>{"detection_limits", "false_alarms", "gap_parts", "look_alikes",
+                                             "next_measurement", "residual", "tie"}));
+  // written through the atomic writer: no temporary left beside it
+  for (const auto &e : fs::directory_iterator(dir.path))
+    EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+}
