@@ -4,11 +4,11 @@
 # then a rerun. No LAMMPS outlives its runner; the bed poured again equals, byte for byte,
 # the tiny bed of the same seed poured uninterrupted (tests/inputs fixture); the push,
 # resumed from its checkpoint, has exactly the rows of an uninterrupted push of that bed
-# (t column identical: none lost, none repeated) and agrees with it to 1e-3 of max F: a
-# resumed LAMMPS run re-evaluates the damping forces at setup and the difference grows with
-# the steps after the resume point (6e-5 after 3500 steps in tests/inputs restart_agrees,
-# here 9e-6 and 1.5e-4 measured in two runs resuming at steps near 3500 of 7500: chaotic
-# growth of round-off); another bed or push differs by O(1).
+# (t column identical: none lost, none repeated) and agrees with it to 1e-6 of max F: both
+# pushes run in chunks ending at their checkpoints (in.push), so the resumed one starts with
+# the run set-up the uninterrupted one had at that step, and only round-off differs (its
+# atoms come from the restart file in another order), grown over the steps after it;
+# another bed or push differs by O(1).
 #   fault_lammps.sh CLI TRACE_AGREE INPUTS BED OUT SEED    (BED: the fixture's bed_tiny, no extension)
 set -euo pipefail
 CLI=$1 AGREE=$2 INPUTS=$3 BED=$4 OUT=$5 SEED=$6
@@ -70,6 +70,6 @@ grep -q "start $id (resumed from $id.csv.[ab].restart" "$OUT/rerun.txt" ||
 cmp "$BED.restart" "$d/lfault/beds/$bed.restart" || fail "the bed poured after the kill differs from the uninterrupted pour's"
 diff <(grep '^[0-9-]' "$ref" | cut -d, -f1) <(grep '^[0-9-]' "$d/lfault/traces/$id.csv" | cut -d, -f1) > "$OUT/t.diff" ||
   { head "$OUT/t.diff"; fail "the resumed trace's rows differ from the uninterrupted one's (lost or repeated rows)"; }
-"$AGREE" "$ref" "$d/lfault/traces/$id.csv" --rtol 1e-3 --min-rows 100
+"$AGREE" "$ref" "$d/lfault/traces/$id.csv" --rtol 1e-6 --min-rows 100
 echo "fault_lammps: 2 runners killed with -9 (pour after progress line $chunk, push at row $target of $rows), push resumed from its checkpoint, bed equal byte" \
      "for byte, $rows trace rows compared, 0 lost or repeated"

@@ -17,4 +17,8 @@ rm "$t.done"
 grep -q "(4 already done)" "$OUT/second.txt" || { echo "finished runs were not skipped"; exit 1; }
 grep -q "start tiny_mu0.3_s1_v100_D2.0 (resumed from" "$OUT/second.txt" || { echo "the push was not resumed"; exit 1; }
 grep -q "replacing [0-9]* rows" "$OUT/tiny_demo/logs/tiny_mu0.3_s1_v100_D2.0.log" || { echo "no rows were replaced"; exit 1; }
-"$AGREE" "$OUT/original.csv" "$t" --rtol 1e-4 --min-rows 100
+# to round-off: the sweep's pushes run in chunks ending at their checkpoints (in.push), so the
+# resumed push starts with the run set-up the original had at that step; 1e-6 of max F is
+# round-off grown over the steps after it (the resumed atoms come in another order), as for
+# tests/inputs restart_agrees (measured here: 1.3e-10 on 29Sep2021, 5.7e-11 on 22Jul2025)
+"$AGREE" "$OUT/original.csv" "$t" --rtol 1e-6 --min-rows 100
