@@ -76,6 +76,17 @@ gap_bad_trace(${GAP_BAD}/two/a.csv "# v0 = 100\n# D = 2.0\n# g = 981\n" "5")
 gap_bad_trace(${GAP_BAD}/two/b.csv "# v0 = 100\n# D = 2.0\n# g = 981\n" "6")
 gap_bad_trace(${GAP_BAD}/mixed/a.csv "# v0 = 100\n# D = 2.0\n# g = 981\n" "5")
 gap_bad_trace(${GAP_BAD}/mixed/b.csv "# v0 = 1.0\n# D = 0.02\n# g = 9.81\n" "0.00005" si)
+# --scenario FILE (a preset of the user's own): tiny as is; tiny with lighter grains than the
+# traces' rho_g header; tiny without dt_push (a variable every preset sets)
+file(MAKE_DIRECTORY ${GAP_BAD}/rho)
+gap_bad_trace(${GAP_BAD}/rho/a.csv "# v0 = 100\n# D = 2.0\n# g = 981\n# rho_g = 3.0\n" "5")
+gap_bad_trace(${GAP_BAD}/rho/b.csv "# v0 = 100\n# D = 2.0\n# g = 981\n# rho_g = 3.0\n" "6")
+file(READ ${PROJECT_SOURCE_DIR}/inputs/presets/tiny.lmp GAP_TINY_PRESET)
+file(WRITE ${GAP_BAD}/rig.lmp "${GAP_TINY_PRESET}")
+string(REGEX REPLACE "variable rho_g[^\n]*" "variable rho_g index 2.5" GAP_LIGHT "${GAP_TINY_PRESET}")
+file(WRITE ${GAP_BAD}/light.lmp "${GAP_LIGHT}")
+string(REGEX REPLACE "variable dt_push[^\n]*" "" GAP_NO_DT "${GAP_TINY_PRESET}")
+file(WRITE ${GAP_BAD}/no_dt.lmp "${GAP_NO_DT}")
 # case, folder (or file) given to --real, further options, expected exit status, message
 set(GAP_BAD_CASES
   "wrongD|wrongD||2|wrongD/a.csv: header D = 3.*scenario 'tiny' has D = 2"
@@ -86,7 +97,12 @@ set(GAP_BAD_CASES
   "file|single/a.csv||2|--real [^ ]*/single/a.csv: a file, not a folder"
   "missing|no_such_folder||2|--real [^ ]*/no_such_folder: no such folder"
   "mixed|mixed||2|mixed/b.csv: units = si, but [^ ]*/mixed/a.csv has units = cgs"
-  "effects_empty|two|--effects ''|2|--effects: empty list")
+  "effects_empty|two|--effects ''|2|--effects: empty list"
+  "scenario_file_rho|rho|--scenario ${GAP_BAD}/light.lmp|2|rho/a.csv: header rho_g = 3.* scenario 'light-[0-9a-f]+' has rho_g = 2.5"
+  "scenario_file_missing|two|--scenario ${GAP_BAD}/no_dt.lmp|2|--scenario [^ ]*/no_dt.lmp: the preset sets no dt_push"
+  "scenario_file_none|two|--scenario ${GAP_BAD}/nowhere.lmp|2|--scenario [^ ]*/nowhere.lmp: cannot read this preset file"
+  "scenario_file_budget|two|--scenario ${GAP_BAD}/rig.lmp --budget 0.001|3|plan: [0-9]+ pours, [0-9]+ pushes, [0-9.e+]+ atom-steps: about [0-9.e+-]+ probe pours, [0-9.e+-]+ core-hours \\(scenario rig-[0-9a-f]+\\).*exceed --budget 0.001: stopping before anything starts"
+  "scenario_name_budget|two|--budget 0.001|3|plan: [0-9]+ pours, [0-9]+ pushes.*exceed --budget")
 foreach(entry ${GAP_BAD_CASES})
   string(REPLACE "|" ";" parts "${entry}")
   list(GET parts 0 case)
@@ -96,7 +112,11 @@ foreach(entry ${GAP_BAD_CASES})
   list(GET parts 4 message)
   set(out ${GAP_BAD}/out_${case})
   set(cache ${GAP_BAD}/cache_${case})
-  set(run "'$<TARGET_FILE:granpen-cli>' gap --real '${GAP_BAD}/${real}' --scenario tiny --out '${out}' --cache '${cache}' --lmp '$<TARGET_FILE:fake_lmp>' --inputs '${PROJECT_SOURCE_DIR}/inputs' ${extra}")
+  set(scenario "--scenario tiny")
+  if(extra MATCHES "--scenario ")
+    set(scenario "")
+  endif()
+  set(run "'$<TARGET_FILE:granpen-cli>' gap --real '${GAP_BAD}/${real}' ${scenario} --out '${out}' --cache '${cache}' --lmp '$<TARGET_FILE:fake_lmp>' --inputs '${PROJECT_SOURCE_DIR}/inputs' ${extra}")
   add_test(NAME gap_bad_${case}
     COMMAND sh -c "rm -rf '${out}' '${out}.partial' '${cache}'; ${run}; s1=$?; test ! -e '${out}' || echo 'OUT created'; mkdir '${out}' && echo before > '${out}/keep'; ${run} 2>/dev/null; s2=$?; test \"$(ls -A '${out}')\" = keep && test \"$(cat '${out}/keep')\" = before || echo 'OUT changed'; test ! -e '${out}.partial' && test ! -e '${cache}' || echo 'something was started'; echo exit=$s1,$s2")
   set_tests_properties(gap_bad_${case} PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "${message}.*exit=${status},${status}\n$"
