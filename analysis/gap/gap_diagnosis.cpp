@@ -179,14 +179,16 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   const auto effects = choose_effects(given.effects);
   MeasuredData measured = read_measured(given.real, sc);
   check_output_path(given.out, given.real, given.cache);
-  if (!plan_within_budget(given, sc, signature_requests(sc.name, measured.v0s, effects), given.cache + "/" + sc.name,
-                          progress))
-    return GAP_OVER_BUDGET;
-  const GapOptions opt = for_scenario(given, sc);
   for (const auto &n : measured.notes) progress.say(GapProgress::WARNING, "validate", n);
   progress.say(GapProgress::INFO, "validate",
                format_text("%zu measured runs at %zu speeds (%s cm/s) against scenario %s", measured.files.size(),
                       measured.runs.size(), joined(measured.v0s).c_str(), sc.name.c_str()));
+
+  // the plan, before anything is simulated; nothing more when it exceeds --budget
+  if (!plan_within_budget(given, sc, signature_requests(sc.name, measured.v0s, effects), given.cache + "/" + sc.name,
+                          progress))
+    return GAP_OVER_BUDGET;
+  const GapOptions opt = for_scenario(given, sc);
 
   // plan and simulate: the baseline and every effect knot (cached)
   const RunnerOptions runner = cache_runner(opt);
@@ -194,8 +196,6 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   progress.say(GapProgress::STEP, "simulate",
                format_text("simulations of the baseline and %zu candidate effects (cache %s)", effects.size(), cache.c_str()), 1, 4);
   const SimulationPlan plan = plan_simulations(sc, measured.v0s, effects, cache, opt.local);
-  if (plan.core_hours > 0.0)
-    progress.say(GapProgress::INFO, "plan", format_text("about %.1f core-hours of simulation to run", plan.core_hours));
   fs::create_directories(cache);
   if (run_requests(plan.requests, runner) != 0)
     throw InputError("some simulations failed: see the manifests under " + cache + " (rerun to retry them)");
