@@ -12,7 +12,7 @@ const char *HELP =
     "       granpen gap --prepare-only --scenario NAME --v0 \"50 100 200\" [--effects LIST] [--jobs N] [--cache DIR]\n"
     "       granpen gap --slurm FILE --scenario paper --v0 \"40 80 160\" [--jobs N --ranks R] [--cache DIR]\n"
     "Where do measured force traces (DIR: granpen-trace v1 files, one or more runs per speed,\n"
-    "cgs or SI) and the simulation of the same set-up (the preset NAME) differ, which\n"
+    "cgs or SI) and the simulation of the same set-up (the preset NAME, or your preset FILE) differ, which\n"
     "unmodelled effect causes it, and how far the gap shrinks once it is added.\n"
     "  1. simulates (or takes from the cache) the baseline and every candidate effect at its\n"
     "     reference magnitudes, at the measured speeds, two seeds each;\n"
@@ -27,7 +27,10 @@ const char *HELP =
     "     before and after, overall, per regime and at the held-out speed, and what is left.\n"
     "Output (written to OUT.partial, then moved to OUT): diagnosis.json, report.md with\n"
     "figures, baseline/ and corrected/ (the simulated traces used, trace CSV v1).\n"
-    "Exit status: 0 diagnosis written, 1 simulations failed or input unreadable, 2 usage.\n";
+    "Before anything is simulated it prints the plan: pours, pushes, atom-steps, and the estimate\n"
+    "in probe pours (bench/common.sh) and core-hours.\n"
+    "Exit status: 0 diagnosis written, 1 simulations failed or input unreadable, 2 usage,\n"
+    "3 the plan exceeds --budget (nothing started, nothing written in OUT).\n";
 
 }    // namespace
 
@@ -44,7 +47,8 @@ granpen::cli::GapCommandOptions granpen::cli::parse_gap(int argc, char **argv)
   bool sweep_by_sweep = false;
   auto &app = cmd.app;
   app.add_option("--real", opt.real, "the measured traces' folder")->type_name("DIR");
-  app.add_option("--scenario", opt.scenario, "the preset of the set-up")->type_name("NAME");
+  app.add_option("--scenario", opt.scenario, "the set-up: a preset of inputs/presets (NAME), or a preset file of\n"
+                                             "your own (a path, or a name ending in .lmp: docs/gap.md)")->type_name("NAME|FILE");
   app.add_option("--out", opt.out, "the diagnosis folder")->type_name("DIR");
   app.add_option("--cache", opt.cache, "simulation cache (default $GRANPEN_RUNS/gap_cache); interrupted, a\n"
                                      "diagnosis resumes from it; a finished one reruns without simulating")
@@ -58,9 +62,16 @@ granpen::cli::GapCommandOptions granpen::cli::parse_gap(int argc, char **argv)
                                             "\"confirmed\": false; nothing simulated on fresh seeds), G after = before");
   app.add_flag("--sweep-by-sweep", sweep_by_sweep, "run the sweeps one after another, each with its own N (the\n"
                                                      "runner's old way: for bench/pool_vs_sweeps.sh)");
-  app.add_option("--slurm", opt.slurm, "write a SLURM script preparing the cache on a cluster (--jobs runs\n"
-                                     "at once, R ranks each) and stop")
+  app.add_option("--slurm", opt.slurm, "write a SLURM script preparing the cache on a cluster as two job\n"
+                                     "arrays (the pours, then the pushes after them; one run per task,\n"
+                                     "R ranks each) and stop")
       ->check(file_name())->type_name("FILE");
+  app.add_option("--only", opt.only_task, "with --prepare-only: run task K of the --slurm job arrays alone (what\n"
+                                         "each array task does)")
+      ->check(whole_number(0, 100000000))->type_name("K");
+  app.add_option("--budget", opt.budget, "core-hours: print the plan and stop (exit 3, nothing started) when its\n"
+                                        "estimate exceeds them")
+      ->check(non_negative_number())->type_name("CORE_HOURS");
   app.add_option("--mpirun", opt.runner.mpirun, "run each simulation through PROG (mpirun, srun, ...)")->type_name("PROG");
   app.add_option("--ranks", opt.runner.ranks, "MPI ranks per simulation (with --mpirun)")->check(whole_number(1, 1000000))
       ->type_name("R");
@@ -76,5 +87,6 @@ granpen::cli::GapCommandOptions granpen::cli::parse_gap(int argc, char **argv)
   if (opt.scenario.empty() || (!opt.prepare_only && opt.slurm.empty() && (opt.real.empty() || opt.out.empty())) ||
       ((opt.prepare_only || !opt.slurm.empty()) && opt.v0.empty()))
     throw UsageError("needs --scenario and either --real and --out, or --prepare-only (or --slurm) and --v0");
+  if (opt.only_task >= 0 && !opt.prepare_only) throw UsageError("--only K needs --prepare-only (it is what a --slurm array task runs)");
   return go;
 }

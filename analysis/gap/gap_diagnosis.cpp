@@ -49,6 +49,44 @@ std::string joined(const std::vector<std::string> &words)
   return s;
 }
 
+// --scenario NAME (a preset of inputs/presets) or FILE (a preset of the user's own)
+Scenario load_scenario(const GapOptions &opt)
+{
+  return scenario_is_file(opt.scenario) ? read_scenario_file(opt.runner.inputs, opt.scenario)
+                                        : read_scenario(opt.runner.inputs, opt.scenario);
+}
+
+// The options the simulating stages use: the scenario by its name and, for a user's file,
+// the inputs folder staged in the cache (CACHE/_inputs/NAME: the decks unchanged, the file
+// as presets/NAME.lmp). Writes only into the cache.
+GapOptions for_scenario(const GapOptions &opt, const Scenario &sc)
+{
+  GapOptions o = opt;
+  o.scenario = sc.name;
+  if (scenario_is_file(opt.scenario)) o.runner.inputs = stage_scenario_inputs(sc, opt.runner.inputs, opt.cache + "/_inputs");
+  return o;
+}
+
+// The plan before anything is simulated: printed; false when it exceeds --budget (said).
+bool plan_within_budget(const GapOptions &given, const Scenario &sc, const std::vector<SimRequest> &req,
+                        const std::string &cache, const Progress &progress)
+{
+  double probe_grains = 0;
+  try {
+    probe_grains = preset_grains(read_scenario(given.runner.inputs, "bench"));
+  } catch (InputError &) {
+    // an inputs folder without the bench preset: the plan in core-hours only
+  }
+  const PlanCost c = plan_cost(sc, req, cache, probe_grains);
+  progress.say(GapProgress::INFO, "plan", "plan: " + plan_summary(c) + " (scenario " + sc.name + ")");
+  if (given.budget < 0 || c.core_hours <= given.budget) return true;
+  progress.say(GapProgress::INFO, "plan",
+               format_text("the plan's %.3g core-hours exceed --budget %.3g: stopping before anything starts "
+                           "(raise --budget, narrow --effects or the speeds, or use --slurm)",
+                           c.core_hours, given.budget));
+  return false;
+}
+
 // the runner of a scenario's cache: CACHE/SCENARIO
 RunnerOptions cache_runner(const GapOptions &opt)
 {
@@ -58,63 +96,99 @@ RunnerOptions cache_runner(const GapOptions &opt)
   return runner;
 }
 
-// --slurm: one allocation runs the cache's sweeps, --jobs at a time, each on --ranks MPI ranks
+// --slurm: the cache's runs as two job arrays, the pours (one task per pour) and, after
+// every pour has succeeded, the pushes (one task per push); each task is
+// `gap --prepare-only ... --only K` on --ranks MPI ranks through srun
 int write_cluster_script(const GapOptions &opt, const Scenario &sc, const std::vector<SimRequest> &req,
                          const RunnerOptions &runner, const Progress &progress)
 {
-  const double h = estimate_core_hours(sc, req, runner.out_root);
+  const PlanCost c = plan_cost(sc, req, runner.out_root, 0.0);
+  const ArrayTasks tasks = array_tasks(req);
   const std::string abs_cache = fs::absolute(opt.cache).string(), abs_inputs = fs::absolute(opt.runner.inputs).string();
-  SlurmAllocation job;
-  job.job_name = "granpen-gap-" + opt.scenario;
-  job.ntasks = runner.jobs * runner.ranks;
-  job.what = "granpen gap: the " + opt.scenario + " cache (" + std::to_string(req.size()) + " sweeps, about " +
-             std::to_string((long) std::ceil(h)) + " core-hours at 1.1e7 atom-steps/s/core).";
-  job.command = this_executable("granpen-cli") + " gap --prepare-only --scenario " + opt.scenario + " --v0 \"" + opt.v0 +
-                "\" --jobs " + std::to_string(runner.jobs) + " --mpirun srun --ranks " + std::to_string(runner.ranks) +
-                " --cache " + abs_cache + " --inputs " + abs_inputs + " --lmp " +
-                (opt.runner.lmp.find('/') == std::string::npos ? opt.runner.lmp : fs::absolute(opt.runner.lmp).string()) +
-                (opt.effects ? " --effects " + *opt.effects : "");
-  write_slurm_allocation(job, opt.slurm);
+  const std::string lmp = opt.runner.lmp.find('/') == std::string::npos ? opt.runner.lmp : fs::absolute(opt.runner.lmp).string();
+  const std::string cli = this_executable("granpen-cli");
+  for (const auto &p : {abs_cache, abs_inputs, lmp, cli, opt.v0, opt.effects.value_or("")})
+    if (p.find_first_of("'\"") != std::string::npos)
+      throw GapRefused("--slurm: a quote cannot go into a SLURM script: " + p);
+  auto q = [](const std::string &s) { return "'" + s + "'"; };
+  const std::string task = q(cli) + " gap --prepare-only --scenario " + q(sc.name) + " --v0 " + q(opt.v0) +
+                           " --mpirun srun --ranks " + std::to_string(runner.ranks) + " --cache " + q(abs_cache) +
+                           " --inputs " + q(abs_inputs) + " --lmp " + q(lmp) +
+                           (opt.effects ? " --effects " + q(*opt.effects) : "") + " --only";
+  const int np = (int) tasks.pours.size(), nq = (int) tasks.pushes.size();
+  const std::vector<std::string> what = {
+      "granpen gap: the " + sc.name + " cache (" + std::to_string(req.size()) + " sweeps; still to run: " +
+          plan_summary(c) + " at 1.1e7 atom-steps/s/core).",
+      "Submit with `bash " + opt.slurm + "` on the cluster: " + std::to_string(np) + " pours as one job array, then " +
+          std::to_string(nq) + " pushes as a second array that starts when every pour has succeeded.",
+      "Each task runs one planned run on " + std::to_string(runner.ranks) +
+          " MPI ranks; a task whose run is done does nothing, so rerunning this script resumes."};
+  write_slurm_arrays(what, {{"granpen-gap-" + sc.name + "-pour", "pours", 0, np - 1, task},
+                            {"granpen-gap-" + sc.name + "-push", "pushes", np, np + nq - 1, task}},
+                     runner.ranks, opt.slurm);
   progress.say(GapProgress::INFO, "plan",
-               format_text("wrote %s: the %zu sweeps of the %s cache, about %.0f core-hours; when it has run, "
-                      "rerun this diagnosis with --cache %s",
-                      opt.slurm.c_str(), req.size(), opt.scenario.c_str(), h, abs_cache.c_str()));
+               format_text("wrote %s: %d pours, then %d pushes, as two SLURM job arrays (%.3g core-hours still to run); "
+                           "when they have run, rerun this diagnosis with --cache %s",
+                           opt.slurm.c_str(), np, nq, c.core_hours, abs_cache.c_str()));
   return 0;
+}
+
+// --only K: task K of the --slurm arrays, alone
+int run_array_task(const std::vector<SimRequest> &req, RunnerOptions runner, int k)
+{
+  const ArrayTasks tasks = array_tasks(req);
+  const size_t np = tasks.pours.size(), n = np + tasks.pushes.size();
+  if (k < 0 || (size_t) k >= n)
+    throw GapRefused("--only " + std::to_string(k) + ": the cache's job arrays have tasks 0 to " + std::to_string(n - 1));
+  const ArrayTask t = (size_t) k < np ? tasks.pours[k] : tasks.pushes[k - np];
+  runner.only_index = t.run;
+  runner.jobs = 1;
+  return run_sweeps({req[t.request]}, runner) == 0 ? 0 : 1;
 }
 
 }    // namespace
 
-int run_gap(const GapOptions &opt, const GapProgressFn &fn)
+int run_gap(const GapOptions &given, const GapProgressFn &fn)
 {
-  if (!opt.prepare_only && opt.slurm.empty()) return run_gap_diagnosis(opt, fn);
+  if (!given.prepare_only && given.slurm.empty()) return run_gap_diagnosis(given, fn);
   const Progress progress{fn};
-  const Scenario sc = read_scenario(opt.runner.inputs, opt.scenario);
-  const auto effects = choose_effects(opt.effects);
+  const Scenario sc = load_scenario(given);
+  const auto effects = choose_effects(given.effects);
   std::vector<std::string> v0;
-  std::stringstream in(opt.v0);
+  std::stringstream in(given.v0);
   for (std::string v; in >> v;) v0.push_back(v);
   if (v0.empty()) throw GapRefused("--prepare-only and --slurm need --v0 \"SPEEDS\"");
+  if (!plan_within_budget(given, sc, signature_requests(sc.name, v0, effects), given.cache + "/" + sc.name, progress))
+    return GAP_OVER_BUDGET;
+  const GapOptions opt = for_scenario(given, sc);
   const RunnerOptions runner = cache_runner(opt);
   fs::create_directories(runner.out_root);
   const auto req = signature_requests(opt.scenario, v0, effects);
   if (!opt.slurm.empty()) return write_cluster_script(opt, sc, req, runner, progress);
+  if (opt.only_task >= 0) return run_array_task(req, runner, opt.only_task);
   progress.say(GapProgress::INFO, "simulate",
                format_text("preparing the %s cache in %s: %zu sweeps", opt.scenario.c_str(), runner.out_root.c_str(), req.size()));
   return run_requests(req, runner) == 0 ? 0 : 1;
 }
 
-int run_gap_diagnosis(const GapOptions &opt, const GapProgressFn &fn)
+int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
 {
   const Progress progress{fn};
   // validate: nothing is started or written before the inputs pass
-  const Scenario sc = read_scenario(opt.runner.inputs, opt.scenario);
-  const auto effects = choose_effects(opt.effects);
-  MeasuredData measured = read_measured(opt.real, sc);
-  check_output_path(opt.out, opt.real, opt.cache);
+  const Scenario sc = load_scenario(given);
+  const auto effects = choose_effects(given.effects);
+  MeasuredData measured = read_measured(given.real, sc);
+  check_output_path(given.out, given.real, given.cache);
   for (const auto &n : measured.notes) progress.say(GapProgress::WARNING, "validate", n);
   progress.say(GapProgress::INFO, "validate",
                format_text("%zu measured runs at %zu speeds (%s cm/s) against scenario %s", measured.files.size(),
                       measured.runs.size(), joined(measured.v0s).c_str(), sc.name.c_str()));
+
+  // the plan, before anything is simulated; nothing more when it exceeds --budget
+  if (!plan_within_budget(given, sc, signature_requests(sc.name, measured.v0s, effects), given.cache + "/" + sc.name,
+                          progress))
+    return GAP_OVER_BUDGET;
+  const GapOptions opt = for_scenario(given, sc);
 
   // plan and simulate: the baseline and every effect knot (cached)
   const RunnerOptions runner = cache_runner(opt);
@@ -122,8 +196,6 @@ int run_gap_diagnosis(const GapOptions &opt, const GapProgressFn &fn)
   progress.say(GapProgress::STEP, "simulate",
                format_text("simulations of the baseline and %zu candidate effects (cache %s)", effects.size(), cache.c_str()), 1, 4);
   const SimulationPlan plan = plan_simulations(sc, measured.v0s, effects, cache, opt.local);
-  if (plan.core_hours > 0.0)
-    progress.say(GapProgress::INFO, "plan", format_text("about %.1f core-hours of simulation to run", plan.core_hours));
   fs::create_directories(cache);
   if (run_requests(plan.requests, runner) != 0)
     throw InputError("some simulations failed: see the manifests under " + cache + " (rerun to retry them)");

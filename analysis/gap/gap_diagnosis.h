@@ -26,11 +26,18 @@ struct GapOptions {
   bool local = false;          // run even what the cost estimate sends to a cluster
   bool fit_only = false;       // stop before the confirming simulations (a provisional verdict)
   std::string slurm;           // write a SLURM script that prepares the cache, and stop
+  int only_task = -1;          // with prepare_only: run task K of the --slurm arrays alone
+  double budget = -1;          // core-hours; < 0: none. A plan above it stops before anything starts
   RunnerOptions runner;        // lmp, inputs, jobs (out_root is set per scenario)
 };
 
+// Exit status when the plan's estimate exceeds --budget: the plan printed, nothing started,
+// nothing written in OUT (docs/gap.md).
+constexpr int GAP_OVER_BUDGET = 3;
+
 // The diagnosis (or, with prepare_only, the cache's simulations; with slurm, the script
-// that runs them on a cluster). Returns the exit status (0 done, 1 simulations failed);
+// that runs them on a cluster). Returns the exit status (0 done, 1 simulations failed,
+// GAP_OVER_BUDGET);
 // throws GapRefused (gap_errors.h) for input it refuses before starting anything, and
 // InputError for unreadable input or failed simulations.
 int run_gap(const GapOptions &opt, const GapProgressFn &progress);

@@ -59,6 +59,10 @@ void check_against_scenario(const Trace &t, const Scenario &sc)
   if (differs(dg, sc.d_g))
     throw GapRefused(path + ": header d_g = " + std::to_string(dg) + " cm, scenario '" + sc.name + "' has d_g = " +
                      std::to_string(sc.d_g) + " cm");
+  const double rho = c.number("rho_g", sc.rho_g);
+  if (differs(rho, sc.rho_g))
+    throw GapRefused(path + ": header rho_g = " + std::to_string(rho) + " g/cm^3, scenario '" + sc.name +
+                     "' has rho_g = " + std::to_string(sc.rho_g) + " g/cm^3");
 }
 
 namespace {

@@ -24,7 +24,7 @@ std::vector<const Effect *> choose_effects(const std::optional<std::string> &lis
 // most 0.01 d_g per step.
 std::pair<double, double> runnable_speeds(const Scenario &sc);
 
-// Refuses a trace whose header contradicts the scenario: D, g, and d_g when given, each
+// Refuses a trace whose header contradicts the scenario: D, g, and d_g and rho_g when given, each
 // within 1%.
 void check_against_scenario(const Trace &t, const Scenario &sc);
 

@@ -47,19 +47,57 @@ std::vector<SimRequest> confirm_requests(const std::string &scenario, const Effe
   return out;
 }
 
-double estimate_core_hours(const Scenario &sc, const std::vector<SimRequest> &requests, const std::string &cache)
+double preset_grains(const Scenario &sc)
 {
   const double lat = sc.number("lat"), box = sc.number("box"), lo = sc.number("fill_lo");
   const double across = std::floor((box - 2.0 * lo) / lat + 1.0);
-  const double grains = across * across * std::floor((sc.number("zfill_hi") - sc.number("zfill_lo")) / lat + 1.0);
-  const double rate = 1.1e7 * 3600.0;    // atom-steps per core-hour
-  double h = 0.0;
+  return across * across * std::floor((sc.number("zfill_hi") - sc.number("zfill_lo")) / lat + 1.0);
+}
+
+PlanCost plan_cost(const Scenario &sc, const std::vector<SimRequest> &requests, const std::string &cache,
+                   double probe_grains)
+{
+  const double grains = preset_grains(sc);
+  PlanCost c;
   for (const auto &r : requests)
     for (const auto &run : pending_runs(r, cache)) {
-      if (run.kind == PlannedRun::POUR) h += grains * 0.6 / sc.number("dt_pour") / rate;
-      else h += grains * (sc.gap + sc.depth) / std::atof(run.v0.c_str()) / sc.number("dt_push") / rate;
+      if (run.kind == PlannedRun::POUR) {
+        ++c.pours;
+        c.atom_steps += grains * 0.6 / sc.number("dt_pour");
+      } else {
+        ++c.pushes;
+        c.atom_steps += grains * (sc.gap + sc.depth) / std::atof(run.v0.c_str()) / sc.number("dt_push");
+      }
     }
-  return h;
+  c.core_hours = c.atom_steps / (1.1e7 * 3600.0);
+  if (probe_grains > 0) c.probe_pours = c.atom_steps / (probe_grains * PROBE_POUR_STEPS);
+  return c;
+}
+
+std::string plan_summary(const PlanCost &c)
+{
+  return std::to_string(c.pours) + " pours, " + std::to_string(c.pushes) + " pushes, " +
+         printf_number("%.3g", c.atom_steps) + " atom-steps: about " +
+         (c.probe_pours > 0 ? printf_number("%.3g", c.probe_pours) + " probe pours, " : std::string()) +
+         printf_number("%.3g", c.core_hours) + " core-hours";
+}
+
+double estimate_core_hours(const Scenario &sc, const std::vector<SimRequest> &requests, const std::string &cache)
+{
+  return plan_cost(sc, requests, cache, 0.0).core_hours;
+}
+
+ArrayTasks array_tasks(const std::vector<SimRequest> &requests)
+{
+  ArrayTasks out;
+  for (size_t r = 0; r < requests.size(); ++r) {
+    const auto plan = plan_sweep(requests[r].spec);
+    for (size_t k = 0; k < plan.size(); ++k) {
+      if (plan[k].kind == PlannedRun::PUSH) out.pushes.push_back({r, (int) k});
+      else if (requests[r].beds_from.empty()) out.pours.push_back({r, (int) k});
+    }
+  }
+  return out;
 }
 
 SimulationPlan plan_simulations(const Scenario &sc, const std::vector<std::string> &v0s,

@@ -32,6 +32,37 @@ std::vector<SimRequest> confirm_requests(const std::string &scenario, const Effe
 // of simulated time).
 double estimate_core_hours(const Scenario &sc, const std::vector<SimRequest> &requests, const std::string &cache);
 
+// What the runs of the requests not yet done in the cache cost, before anything is
+// simulated: counted from the preset (grains from its lattice, a pour 0.6 s of simulated
+// time, a push gap + depth at v0), in atom-steps; in core-hours at 1.1e7 atom-steps per
+// second per core (docs/presets.md); and in probe pours (bench/common.sh: bed 1 of the
+// bench scenario, PROBE_POUR_STEPS steps of its grains), the machine unit of issue 21,
+// when probe_grains > 0.
+struct PlanCost {
+  int pours = 0, pushes = 0;
+  double atom_steps = 0, core_hours = 0, probe_pours = 0;
+};
+constexpr double PROBE_POUR_STEPS = 110000;    // bench bed 1 poured (its .info, 2026-11-22)
+double preset_grains(const Scenario &sc);     // the grains the pour deck creates
+PlanCost plan_cost(const Scenario &sc, const std::vector<SimRequest> &requests, const std::string &cache,
+                   double probe_grains);
+// "N pours, M pushes, A atom-steps: about P probe pours, H core-hours"
+std::string plan_summary(const PlanCost &c);
+
+// The requests' runs as the tasks of SLURM job arrays, in one index space (--slurm, and
+// `gap --prepare-only --only K`, which runs task K): every pour of the requests that pour
+// their own beds (tasks 0..pours-1), then every push (the next ones), each as (request,
+// index of the run in its sweep's plan). Every planned run, done or not: the indices do
+// not move as the cache fills, and a task whose run is done does nothing.
+struct ArrayTask {
+  size_t request = 0;
+  int run = 0;
+};
+struct ArrayTasks {
+  std::vector<ArrayTask> pours, pushes;
+};
+ArrayTasks array_tasks(const std::vector<SimRequest> &requests);
+
 // A diagnosis runs here up to this many core-hours; beyond, it asks for --slurm or --local.
 constexpr double LOCAL_CORE_HOURS = 8.0;
 

@@ -1,33 +1,36 @@
-// granpen sweep: one SLURM allocation running a command line (see slurm_script.h).
+// granpen sweep: SLURM scripts (see slurm_script.h).
 #include "slurm_script.h"
 
+#include "atomic_file.h"
 #include "errors.h"    // InputError
 
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <unistd.h>
 
 namespace granpen {
 
-void write_slurm_allocation(const SlurmAllocation &job, const std::string &file)
+void write_slurm_arrays(const std::vector<std::string> &what, const std::vector<SlurmArray> &arrays, int ntasks,
+                        const std::string &file)
 {
-  const std::string tmp = file + ".tmp";
-  {
-    std::ofstream f(tmp);
-    if (!f) throw InputError(file + ": cannot write");
-    f << "#!/bin/bash\n# " << job.what << "\n# Submit with: sbatch [--partition=... --time=...] " << file
-      << "\n#SBATCH --job-name=" << job.job_name << "\n#SBATCH --ntasks=" << job.ntasks << "\nset -e\n"
-      << job.command << "\n";
-    f.close();
-    if (!f) {
-      std::remove(tmp.c_str());
-      throw InputError(file + ": write failed");
-    }
+  std::ostringstream f;
+  f << "#!/bin/bash\n";
+  for (const auto &line : what) f << "# " << line << "\n";
+  f << "set -euo pipefail\n"
+    << "SBATCH_OPTS=${SBATCH_OPTS:-}   # e.g. --partition=... --time=...\n";
+  std::string before;    // the job id variable of the previous array
+  for (const auto &a : arrays) {
+    if (a.last < a.first) continue;
+    if (a.command.find('"') != std::string::npos)
+      throw InputError("a command with a double quote cannot go into a SLURM --wrap: " + a.command);
+    f << a.var << "=$(sbatch --parsable $SBATCH_OPTS --job-name=" << a.job_name << " --ntasks=" << ntasks
+      << (before.empty() ? "" : " --dependency=afterok:$" + before) << " --array=" << a.first << "-" << a.last
+      << " --wrap=\"" << a.command << " \\$SLURM_ARRAY_TASK_ID\")\n"
+      << "echo \"" << a.job_name << ": job $" << a.var << " (tasks " << a.first << "-" << a.last << ")\"\n";
+    before = a.var;
   }
-  if (std::rename(tmp.c_str(), file.c_str()) != 0) {
-    std::remove(tmp.c_str());
-    throw InputError(file + ": cannot move the script into place");
-  }
+  write_file_atomic(file, f.str());    // OutputError naming the file
 }
 
 std::string this_executable(const std::string &fallback)

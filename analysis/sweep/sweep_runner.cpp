@@ -3,6 +3,7 @@
 
 #include "atomic_file.h"
 #include "json_writer.h"
+#include "slurm_script.h"
 #include "errors.h"
 
 #include <algorithm>
@@ -911,25 +912,19 @@ void write_slurm_script(const SweepSpec &spec, const RunnerOptions &opt, const s
   for (const auto &r : plan)
     if (r.kind == PlannedRun::POUR) ++npour;
   const int nrun = (int) plan.size();
-  std::ostringstream f;
   auto q = [](const std::string &s) { return "'" + s + "'"; };
   const std::string run_one = q(cli) + " sweep " + q(spec.path) + " --lmp " + q(opt.lmp) + " --inputs " +
                               q(opt.inputs) + " --out " + q(opt.out_root) + " --mpirun srun --ranks " +
                               std::to_string(opt.ranks) + " --only";
-  f << "#!/bin/bash\n"
-    << "# granpen sweep " << spec.name << ": submit with `bash " << file << "` on the cluster.\n"
-    << "# " << npour << " pours as one job array, then " << nrun - npour
-    << " pushes as a second array that starts when every pour has succeeded.\n"
-    << "# Each task runs one planned run with " << opt.ranks << " MPI ranks; rerunning this script\n"
-    << "# skips finished runs and resumes interrupted pushes from their checkpoints.\n"
-    << "set -euo pipefail\n"
-    << "SBATCH_OPTS=${SBATCH_OPTS:-}   # e.g. --partition=... --time=...\n"
-    << "pours=$(sbatch --parsable $SBATCH_OPTS --job-name=" << spec.name << "-pour --ntasks=" << opt.ranks
-    << " --array=0-" << npour - 1 << " --wrap=\"" << run_one << " \\$SLURM_ARRAY_TASK_ID\")\n"
-    << "sbatch $SBATCH_OPTS --job-name=" << spec.name << "-push --ntasks=" << opt.ranks
-    << " --dependency=afterok:$pours --array=" << npour << "-" << nrun - 1 << " --wrap=\"" << run_one
-    << " \\$SLURM_ARRAY_TASK_ID\"\n";
-  write_file_atomic(file, f.str());    // OutputError naming the file
+  const std::vector<std::string> what = {
+      "granpen sweep " + spec.name + ": submit with `bash " + file + "` on the cluster.",
+      std::to_string(npour) + " pours as one job array, then " + std::to_string(nrun - npour) +
+          " pushes as a second array that starts when every pour has succeeded.",
+      "Each task runs one planned run with " + std::to_string(opt.ranks) + " MPI ranks; rerunning this script",
+      "skips finished runs and resumes interrupted pushes from their checkpoints."};
+  write_slurm_arrays(what, {{spec.name + "-pour", "pours", 0, npour - 1, run_one},
+                            {spec.name + "-push", "pushes", npour, nrun - 1, run_one}},
+                     opt.ranks, file);
 }
 
 }    // namespace granpen

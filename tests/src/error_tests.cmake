@@ -89,3 +89,28 @@ granpen_error_test(rod_gaps "Create_rod: rod spacing larger than the sphere diam
   "create_rod 2 2.0 6.0 0.4 0.5 4.0 4.0 9.0 shell")
 granpen_error_test(rod_type_bad "Create_rod atom type 3 is outside 1 to 2" "create_rod 3 2.0 6.0 0.4 0.2 4.0 4.0 9.0 shell")
 granpen_error_test(rod_density_bad "Create_rod density must be > 0, got 0" "create_rod 2 2.0 6.0 0.4 0.2 4.0 4.0 9.0 shell density 0")
+
+# restore_contact_history: it takes no arguments; and a restart with more gran/hertz/history
+# histories (a hybrid of two) than the new pair style defines (one) is refused, not dropped.
+# The second deck writes its own restart, one file per rank count (the two run in parallel).
+granpen_error_test(restore_history_arguments "Illegal restore_contact_history command: it takes no arguments"
+  "restore_contact_history all")
+foreach(np 1 2)
+  set(deck ${ERRDECKS}/restore_history_too_many_np${np}.lmp)
+  file(WRITE ${deck} "${ERR_BASE}pair_style hybrid gran/hertz/history 1e9 1e9 1000 1000 0.3 1 gran/hertz/history 1e9 1e9 1000 1000 0.6 1
+pair_coeff * * gran/hertz/history 1
+pair_coeff 1 2 gran/hertz/history 2
+run 0
+write_restart ${ERRDECKS}/restore_history_two_np${np}.restart
+clear
+read_restart ${ERRDECKS}/restore_history_two_np${np}.restart
+pair_style gran/hertz/history 1e9 1e9 1000 1000 0.3 1
+pair_coeff * *
+restore_contact_history
+")
+  add_test(NAME error_restore_history_too_many_np${np}
+    COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${np} $<TARGET_FILE:lmp_granpen> -in ${deck} -log none)
+  set_tests_properties(error_restore_history_too_many_np${np} PROPERTIES ENVIRONMENT "${GRANPEN_TEST_ENV}"
+    LABELS "lammps;errors" PROCESSORS ${np} PASS_REGULAR_EXPRESSION
+    "ERROR.*restore_contact_history: the restart holds 2 gran/hertz/history contact histories but the pair style defines 1")
+endforeach()

@@ -11,12 +11,14 @@
 #include "gap_inputs.h"
 #include "gap_plan.h"
 #include "gap_where.h"
+#include "scenario.h"
 #include "gap_which.h"
 #include "slurm_script.h"
 #include "sweep_cache.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -229,6 +231,91 @@ TEST(GapPlan, RequestsAndTheirCostFromWhatTheCacheLacks)
       InputError);
   EXPECT_GT(plan_simulations(big, {"50"}, mount, cache.path.string(), true).core_hours, LOCAL_CORE_HOURS);
 }
+
+// ---- a scenario of the user's own (--scenario FILE)
+
+#ifdef GRANPEN_INPUTS_DIR
+namespace {
+std::string read_text(const fs::path &p)
+{
+  std::ifstream f(p);
+  return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+}
+}    // namespace
+
+TEST(GapScenarioFile, ReadsAUserPresetAndNamesItByItsText)
+{
+  TempDir dir("scenario_file");
+  const std::string tiny = read_text(std::string(GRANPEN_INPUTS_DIR) + "/presets/tiny.lmp");
+  std::ofstream(dir.path / "my rig.lmp") << tiny;
+  const Scenario a = read_scenario_file(GRANPEN_INPUTS_DIR, (dir.path / "my rig.lmp").string());
+  const Scenario ref = read_scenario(GRANPEN_INPUTS_DIR, "tiny");
+  EXPECT_EQ(a.vars, ref.vars);    // the same variables as the preset it copies
+  EXPECT_TRUE(std::regex_match(a.name, std::regex("my_rig-[0-9a-f]{8}"))) << a.name;
+  // an edited file is another scenario (its own cache), the same text the same one
+  std::ofstream(dir.path / "my rig.lmp", std::ios::app) << "variable mu index 0.4\n";
+  EXPECT_NE(read_scenario_file(GRANPEN_INPUTS_DIR, (dir.path / "my rig.lmp").string()).name, a.name);
+  EXPECT_TRUE(scenario_is_file("mine.lmp"));
+  EXPECT_TRUE(scenario_is_file("./mine"));
+  EXPECT_FALSE(scenario_is_file("tiny"));
+}
+
+TEST(GapScenarioFile, RefusesAPresetMissingWhatTheDecksRead)
+{
+  TempDir dir("scenario_missing");
+  std::string text = read_text(std::string(GRANPEN_INPUTS_DIR) + "/presets/tiny.lmp");
+  // every preset sets dt_push and kn: the required list comes from them
+  const auto required = preset_variables(GRANPEN_INPUTS_DIR);
+  ASSERT_TRUE(std::count(required.begin(), required.end(), "dt_push") && std::count(required.begin(), required.end(), "kn"));
+  text = std::regex_replace(text, std::regex("variable dt_push[^\n]*\n|variable kn [^\n]*\n"), "");
+  std::ofstream(dir.path / "short.lmp") << text;
+  try {
+    read_scenario_file(GRANPEN_INPUTS_DIR, (dir.path / "short.lmp").string());
+    FAIL() << "a preset without dt_push was read";
+  } catch (const GapRefused &e) {
+    EXPECT_NE(std::string(e.what()).find("short.lmp: the preset sets no dt_push kn"), std::string::npos) << e.what();
+  }
+  std::ofstream(dir.path / "nan.lmp") << std::regex_replace(read_text(std::string(GRANPEN_INPUTS_DIR) + "/presets/tiny.lmp"),
+                                                             std::regex("variable D  [^\n]*"), "variable D index wide");
+  EXPECT_THROW(read_scenario_file(GRANPEN_INPUTS_DIR, (dir.path / "nan.lmp").string()), GapRefused);
+  EXPECT_THROW(read_scenario_file(GRANPEN_INPUTS_DIR, (dir.path / "none.lmp").string()), GapRefused);
+}
+
+TEST(GapScenarioFile, StagedInputsAreTheDecksWithTheFileAsAPreset)
+{
+  TempDir dir("scenario_stage");
+  const std::string text = read_text(std::string(GRANPEN_INPUTS_DIR) + "/presets/tiny.lmp") + "variable mu index 0.35\n";
+  std::ofstream(dir.path / "rig.lmp") << text;
+  const Scenario sc = read_scenario_file(GRANPEN_INPUTS_DIR, (dir.path / "rig.lmp").string());
+  const fs::path staged = stage_scenario_inputs(sc, GRANPEN_INPUTS_DIR, (dir.path / "cache/_inputs").string());
+  EXPECT_EQ(read_text(staged / "presets" / (sc.name + ".lmp")), text);
+  // the decks and the other presets, unchanged, through links
+  EXPECT_EQ(read_text(staged / "in.pour"), read_text(std::string(GRANPEN_INPUTS_DIR) + "/in.pour"));
+  EXPECT_EQ(read_text(staged / "model/contact.lmp"), read_text(std::string(GRANPEN_INPUTS_DIR) + "/model/contact.lmp"));
+  EXPECT_EQ(read_text(staged / "presets/bench.lmp"), read_text(std::string(GRANPEN_INPUTS_DIR) + "/presets/bench.lmp"));
+  // read back by name, as the decks and the stages do
+  EXPECT_EQ(read_scenario(staged.string(), sc.name).vars.at("mu"), "0.35");
+  // staging again is a no-op
+  EXPECT_EQ(stage_scenario_inputs(sc, GRANPEN_INPUTS_DIR, (dir.path / "cache/_inputs").string()), staged.string());
+}
+
+TEST(GapPlan, CostInProbePoursIsAtomStepsOverTheProbePours)
+{
+  const Scenario sc = hand_scenario();
+  TempDir cache("plan_cost");
+  const std::vector<const Effect *> mount{find_effect("measurement_chain")};
+  const auto req = signature_requests(sc.name, {"50", "100"}, mount);
+  const PlanCost c = plan_cost(sc, req, cache.path.string(), 1000.0);
+  // as in RequestsAndTheirCostFromWhatTheCacheLacks: 6 pours, 14 beds pushed at 2 speeds
+  EXPECT_EQ(c.pours, 6);
+  EXPECT_EQ(c.pushes, 28);
+  const double steps = 6 * 0.6 / 5e-6 + 14 * (2.5 / 50 + 2.5 / 100) / 2e-6;
+  EXPECT_NEAR(c.atom_steps, 320 * steps, 1e-9 * c.atom_steps);
+  EXPECT_NEAR(c.probe_pours, c.atom_steps / (1000.0 * PROBE_POUR_STEPS), 1e-12 * c.probe_pours);
+  EXPECT_NEAR(c.core_hours, estimate_core_hours(sc, req, cache.path.string()), 1e-12 * c.core_hours);
+  EXPECT_NE(plan_summary(c).find("6 pours, 28 pushes"), std::string::npos) << plan_summary(c);
+}
+#endif
 
 // ---- align and bin
 
@@ -761,30 +848,28 @@ TEST(SweepCache, FinishedTracesAndBedsOfASweep)
   EXPECT_EQ(sweep_of_trace(finished_traces(root.path.string(), "s")[0]), "s");
 }
 
-TEST(SlurmScript, OneAllocationWrittenWhole)
+TEST(SlurmScript, JobArraysChainedByAfterok)
 {
   TempDir dir("slurm");
-  SlurmAllocation job;
-  job.job_name = "granpen-gap-tiny";
-  job.ntasks = 8;
-  job.what = "granpen gap: the tiny cache.";
-  job.command = "granpen-cli gap --prepare-only --scenario tiny";
-  const std::string file = dir / "prepare.sh";
-  write_slurm_allocation(job, file);
+  const std::string file = dir / "submit.sh";
+  // an empty middle stage is left out: the third array depends on the first
+  write_slurm_arrays({"granpen gap: the tiny cache."},
+                     {{"p", "pours", 0, 3, "cli --only"}, {"x", "none", 0, -1, "cli --only"}, {"q", "pushes", 4, 9, "cli --only"}},
+                     2, file);
   std::ifstream in(file);
   std::stringstream text;
   text << in.rdbuf();
-  EXPECT_EQ(text.str(), "#!/bin/bash\n# granpen gap: the tiny cache.\n# Submit with: sbatch [--partition=... --time=...] " +
-                            file + "\n#SBATCH --job-name=granpen-gap-tiny\n#SBATCH --ntasks=8\nset -e\n"
-                                   "granpen-cli gap --prepare-only --scenario tiny\n");
-  EXPECT_FALSE(fs::exists(file + ".tmp"));
-  // a folder that does not exist: a named error, nothing left behind
-  try {
-    write_slurm_allocation(job, dir / "no/such/prepare.sh");
-    ADD_FAILURE() << "no error";
-  } catch (const InputError &e) {
-    EXPECT_NE(std::string(e.what()).find("no/such/prepare.sh: cannot write"), std::string::npos) << e.what();
-  }
+  EXPECT_EQ(text.str(),
+            "#!/bin/bash\n# granpen gap: the tiny cache.\nset -euo pipefail\n"
+            "SBATCH_OPTS=${SBATCH_OPTS:-}   # e.g. --partition=... --time=...\n"
+            "pours=$(sbatch --parsable $SBATCH_OPTS --job-name=p --ntasks=2 --array=0-3 --wrap=\"cli --only \\$SLURM_ARRAY_TASK_ID\")\n"
+            "echo \"p: job $pours (tasks 0-3)\"\n"
+            "pushes=$(sbatch --parsable $SBATCH_OPTS --job-name=q --ntasks=2 --dependency=afterok:$pours --array=4-9 "
+            "--wrap=\"cli --only \\$SLURM_ARRAY_TASK_ID\")\n"
+            "echo \"q: job $pushes (tasks 4-9)\"\n");
+  // a double quote would end --wrap early: refused, nothing written
+  EXPECT_THROW(write_slurm_arrays({}, {{"p", "pours", 0, 1, "cli \"x\""}}, 1, dir / "bad.sh"), InputError);
+  EXPECT_FALSE(fs::exists(dir / "bad.sh"));
   EXPECT_FALSE(this_executable("fallback").empty());
 }
 
