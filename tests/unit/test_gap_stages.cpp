@@ -436,6 +436,13 @@ TEST(GapConfirm, TheGapAlongTheSignatureAndTheConfirmationTest)
   EXPECT_TRUE(confirms(d, 150.0, 2.0));     // 16 -> 4
   EXPECT_FALSE(confirms(d, 150.0, 3.0));    // 16 -> 9: 7 only
   EXPECT_FALSE(confirms(d, 170.0, 0.0));    // chi^2 up by 20 > 14.7
+  // the confirmation is kept only when G_all shrinks: the side walls case in the faithful
+  // synthetic world passed chi^2 with packing while G_all grew 0.118 -> 0.139 (a confident
+  // wrong answer); equal is not a shrink, a NaN after (no runs) never one
+  EXPECT_TRUE(gap_shrinks(0.118, 0.039));
+  EXPECT_FALSE(gap_shrinks(0.118, 0.139));
+  EXPECT_FALSE(gap_shrinks(0.118, 0.118));
+  EXPECT_FALSE(gap_shrinks(0.118, std::nan("")));
 }
 
 // ---- how blind: detection limits, look-alikes, the next measurement, false alarms
