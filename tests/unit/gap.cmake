@@ -39,11 +39,15 @@ set_tests_properties(gap_selftest_synthetic PROPERTIES LABELS unit TIMEOUT 600 R
   FIXTURES_SETUP gap_synthetic)
 # one measured run per speed: a warning, the noise estimated from the simulations, still a
 # diagnosis (polydispersity: with one run of the rolling case, rolling resistance and packing,
-# nearly degenerate in the synthetic world, are too close to tell apart: unexplained)
+# nearly degenerate in the synthetic world, are too close to tell apart: unexplained). Since
+# the likelihood ratio pays for the signatures' own noise and fake_lmp's pours have their own
+# bed fields (gap-stats branch), the one run leaves polydispersity and rod_friction (in
+# fake_lmp both scale the impact peak P) a tie, which names the right effect beside its
+# look-alike: a right answer by issue 21's rules, so either is accepted.
 add_test(NAME gap_one_run_per_speed
   COMMAND sh -c "rm -rf '${GAP_SYNTH}/one' '${GAP_SYNTH}/one_out' && mkdir '${GAP_SYNTH}/one' && cp '${GAP_SYNTH}/tiny/real_polydispersity/'tiny_s101_v*.csv '${GAP_SYNTH}/one/' && '$<TARGET_FILE:granpen-cli>' gap --real '${GAP_SYNTH}/one' --scenario tiny --out '${GAP_SYNTH}/one_out' --cache '${GAP_SYNTH}/tiny/cache' --lmp '$<TARGET_FILE:fake_lmp>' --inputs '${PROJECT_SOURCE_DIR}/inputs' 2>&1")
 set_tests_properties(gap_one_run_per_speed PROPERTIES LABELS unit FIXTURES_REQUIRED gap_synthetic RESOURCE_LOCK gap_synthetic
-  PASS_REGULAR_EXPRESSION "warning: v0 = 50 cm/s has one measured run: its noise is unknown.*verdict explained \\(polydispersity")
+  PASS_REGULAR_EXPRESSION "warning: v0 = 50 cm/s has one measured run: its noise is unknown.*verdict (explained \\(polydispersity|tie \\(polydispersity)")
 # --fit-only: the same data set (polydispersity) diagnosed without confirming runs: a
 # provisional verdict, "confirmed": false, G after = before, no fresh-seed sweep of it
 add_test(NAME gap_fit_only_is_provisional
