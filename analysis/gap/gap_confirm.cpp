@@ -144,6 +144,8 @@ bool confirms(const Diagnosis &d, double chi2a, double proj_a)
                     : d.chi2_0 - chi2a > 3.0 * std::sqrt(2.0 * P) && excess_removed(d, chi2a) >= 0.25;
 }
 
+bool gap_shrinks(double before, double after) { return std::isfinite(after) && after <= GAP_SHRINK_EXPLAINED * before; }
+
 RunsBySpeed confirm_top_effect(const std::map<std::string, const Effect *> &by_name,
                                const std::map<std::string, EffectData> &data, const Features &f, const Alignment &al,
                                const SimContext &sim, bool fit_only, Diagnosis &d)
@@ -190,7 +192,13 @@ RunsBySpeed confirm_top_effect(const std::map<std::string, const Effect *> &by_n
   d.confirmed_fraction = excess_removed(d, first.chi2);
   d.proj_after = first.sigma();
   const bool confirmed = refine(e, ed, first, confirms(d, first.chi2, d.proj_after), f, al, sim, d, corr);
-  if (!confirmed) {
+  if (confirmed && !gap_shrinks(d.gap_before, d.gap_after)) {
+    d.notes.push_back("verdict: " + d.top_effect + " at magnitude " + fmt(d.magnitude) + " passed the chi^2 test on fresh seeds (" +
+                      fmt(d.chi2_0, "%.1f") + " -> " + fmt(d.chi2_after, "%.1f") + ") but G_all did not shrink to half (" + fmt(d.gap_before, "%.3f") + " -> " + fmt(d.gap_after, "%.3f") +
+                      "): the fit followed noise or a look-alike's part of the gap, not the gap: unexplained");
+    d.verdict = "unexplained";
+    d.top_effect.clear();
+  } else if (!confirmed) {
     d.notes.push_back("verdict: " + d.top_effect + " at magnitude " + fmt(d.magnitude) +
                       " did not shrink the gap on fresh seeds (chi^2 " + fmt(d.chi2_0, "%.1f") + " -> " +
                       fmt(d.chi2_after, "%.1f") + " over " + std::to_string(d.nfeatures) + " features; along its signature " +

@@ -57,6 +57,15 @@ double signature_sigma(const EffectData &ed, double a, const Features &f);
 // grow beyond its noise.
 bool confirms(const Diagnosis &d, double chi2a, double proj_a);
 
+// Whether confirming runs with G_all after `after` shrink the measured gap `before` to at
+// most half (issue 21's "how far it shrinks"). A confirmation by chi^2 or along the
+// signature whose G_all does not shrink so is the mark of a confident wrong answer (the
+// effect's own signature noise fitted, or a look-alike's part of the gap: the synthetic
+// friction case named polydispersity, G_all 0.088 -> 0.074), so the stage keeps
+// `explained` only when this holds.
+constexpr double GAP_SHRINK_EXPLAINED = 0.5;
+bool gap_shrinks(double before, double after);
+
 // The stage: for an explained verdict, simulates (through the sweep layer) and judges the
 // top effect, refines its magnitude when the runs call for it, and turns the verdict into
 // unexplained when they do not confirm it; with fit_only, marks the verdict provisional.

@@ -102,6 +102,29 @@ double weighted_residual(const Target &t, const EffectData &e, double a, const s
   return r2;
 }
 
+// -2 log likelihood at magnitude a (less its value's constant), as the likelihood ratio
+// needs it: the residual weighted by the baseline comparison's variances V plus the
+// signature's own U (effect_signature: the knots' ensembles, from their numbers of beds;
+// for a pour-level effect also the signature baseline's, as a difference of two ensembles
+// carries both), plus log((V + U) / V), the Gaussian's normalization. At a = 0 (U = 0) it
+// is weighted_residual; elsewhere a signature resting on few, noisy beds pays for its
+// noise (about U / V per feature), so it earns less evidence for the same fit.
+double signature_residual(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds)
+{
+  const std::size_t j0 = zero_knot(e);
+  double r2 = 0.0;
+  std::vector<double> m, v, u, uv;
+  for (std::size_t s : speeds) {
+    effect_predict(e, a, s, m, v);
+    effect_signature(e, a, s, u, uv);
+    for (std::size_t k = 0; k < m.size(); ++k) {
+      const double V = t.err[s][k] + e.err[j0][s][k];
+      r2 += std::pow(t.mean[s][k] - m[k], 2) / (V + uv[k]) + std::log1p(uv[k] / V);
+    }
+  }
+  return r2;
+}
+
 // The fraction of the residual w0 at magnitude 0 that the residual w at the fit removes:
 // of its excess over the noise's share n when that is known (n > 0), capped at 1. The
 // excess is taken at least at 3 standard deviations of a chi^2 with n degrees of freedom:
@@ -186,7 +209,7 @@ EffectFit fit_effect(const Target &t, const EffectData &e)
   f.chi2 = effect_chi2(t, e, f.magnitude, all);
   const double w0 = weighted_residual(t, e, 0.0, all), wa = weighted_residual(t, e, f.magnitude, all);
   f.explained = explained_fraction(w0, wa, noise_of(e, all));
-  f.lr = std::max(0.0, w0 - wa);
+  f.lr = std::max(0.0, w0 - signature_residual(t, e, f.magnitude, all));
   // leave one speed out: fit on the others, predict the one left out
   double sum = 0.0;
   int used = 0;
@@ -217,7 +240,7 @@ double effect_lr(const Target &t, const EffectData &e)
   std::vector<std::size_t> all(t.mean.size());
   std::iota(all.begin(), all.end(), 0);
   const double a = best_magnitude(t, e, all, nullptr);
-  return std::max(0.0, weighted_residual(t, e, 0.0, all) - weighted_residual(t, e, a, all));
+  return std::max(0.0, weighted_residual(t, e, 0.0, all) - signature_residual(t, e, a, all));
 }
 
 std::vector<double> noise_residual(const std::vector<Target> &nulls, const EffectData &e)

@@ -65,7 +65,8 @@ struct EffectFit {
   std::vector<double> loso_magnitude, loso_explained;    // per speed left out (NaN: no gap there)
   double heldout_explained = 0.0;   // mean over speeds left out that had a gap
   double score = 0.0;               // min(explained, heldout_explained), the ranking's number
-  // the targeted test: -2 log likelihood ratio of the fit against magnitude 0 (>= 0; a
+  // the targeted test: -2 log likelihood ratio of the fit against magnitude 0, the
+  // residual at the fit weighted with the signature's own variance too (>= 0; a
   // chi^2 with one degree of freedom for data without the effect, if the noise model
   // were exact), the same statistic's mean over null replicates (fresh baseline beds
   // taken as the measurement: how much the noise model under-states this effect's

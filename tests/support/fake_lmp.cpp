@@ -3,7 +3,7 @@
 // push: done" for in.push), simulating a synthetic world in milliseconds, so that
 // `granpen gap` can be tested end to end on known effects:
 //   F(z) = bed(z) * (k z + P (v0/100)^2 exp(-((z - 0.3) / 0.15)^2)) + grain noise,
-// bed(z) a smooth random field of the bed (seed), grain noise an AR(1) sequence whose
+// bed(z) a smooth random field of the bed (its seed and its pour's settings), grain noise an AR(1) sequence whose
 // level grows with the contact stiffness. The model knobs act as named in inputs/:
 //   mu_roll a: k *= 1 + 1.5 a           poly w: P *= 1 - 2 w
 //   walls 1, mu_wall a: + 5e4 a z^2     mu (pour friction) m: F *= 1 - 1.5 (m - 0.3)
@@ -35,7 +35,14 @@ int main(int argc, char **argv)
   if (in.size() >= 7 && in.compare(in.size() - 7, 7, "in.pour") == 0) {
     const std::string out = var["out"];
     std::ofstream(out + ".restart") << "fake bed\n";
-    std::ofstream(out + ".info") << "seed = " << var["seed"] << "\nmu = " << num("mu", 0.3)
+    // the bed field's key: the pour's settings (every variable but where it runs and writes,
+    // and the seed): a real pour diverges with any change of its physics, so a pour-level
+    // knot's beds are not the baseline's beds again
+    unsigned long key = 14695981039346656037ul;
+    for (const auto &[k, v] : var)
+      if (k != "seed" && k != "out" && k != "inputs" && k != "checkpoint")
+        for (char c : k + "=" + v + ";") key = (key ^ (unsigned char) c) * 1099511628211ul;
+    std::ofstream(out + ".info") << "seed = " << var["seed"] << "\nfield = " << key % 1000003 << "\nmu = " << num("mu", 0.3)
                                  << "\nz_s = 5.7\nphi_0 = " << 0.58 - 0.05 * (num("mu", 0.3) - 0.3) - 0.002 * num("cohesion", 0)
                                  << "\ngrains = 6300\nwall_seconds = 0\n";
     L << "granpen pour: bed " << out << ".restart\n";
@@ -46,11 +53,13 @@ int main(int argc, char **argv)
   const auto s = bed.rfind("_s");
   const int seed = std::atoi(bed.c_str() + s + 2);
   double mu_pour = 0.3;
+  long field = 0;
   {
     std::ifstream info(bed.substr(0, bed.size() - 8) + ".info");
     std::string line;
     while (std::getline(info, line))
       if (line.rfind("mu = ", 0) == 0) mu_pour = std::atof(line.c_str() + 5);
+      else if (line.rfind("field = ", 0) == 0) field = std::atol(line.c_str() + 8);
   }
   const double v0 = num("v0", 100), depth = num("depth", 4.0), dt = 1e-4;
   const double dmu_rod = num("dmu_rod", 0), coh = num("cohesion", 0);
@@ -61,8 +70,8 @@ int main(int argc, char **argv)
   const double scale = (1 - 1.5 * (mu_pour - 0.3)) * num("rho_g", 3.0) / 3.0;
   const double stiff = num("kn", 1e9) / 1e9;
   const double grain = 0.15 * std::pow(stiff, 0.5), corr = std::pow(0.6, std::pow(stiff, 0.5));
-  // the bed (seed, speed) and the grains (seed, speed, and the model: another realization)
-  std::mt19937 bed_rng(1000 * seed + (int) v0);
+  // the bed (seed, the pour's settings, speed) and the grains (seed, speed, and the model: another realization)
+  std::mt19937 bed_rng((unsigned) (1000 * seed + (int) v0 + 7777 * field));
   std::normal_distribution<double> n01(0.0, 1.0);
   double amp[3], ph[3];
   for (int j = 0; j < 3; ++j) amp[j] = 0.06 * n01(bed_rng), ph[j] = 6.283 * std::uniform_real_distribution<>(0, 1)(bed_rng);

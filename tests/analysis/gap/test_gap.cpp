@@ -241,7 +241,11 @@ TEST(GapFit, LikelihoodRatioOfASmallGapAlongOneSignature)
     t.err.push_back(er);
   }
   const EffectFit fa = fit_effect(t, A), fb = fit_effect(t, B);
-  EXPECT_NEAR(fa.lr, expect, 1e-6 * expect);
+  // the signature's own noise is paid for: at 0.3 (weights 0.7 and 0.3 on knots 0 and 1,
+  // each of variance 0.5) it carries 0.3^2 0.5 = 0.045 per feature against V = 1, and the
+  // fit (exact, residual 0) costs log(1.045) on each of 12 features (before issue 21's v2
+  // statistics the ratio was `expect` itself: a noisy signature earned as much as an exact one)
+  EXPECT_NEAR(fa.lr, expect - 12.0 * std::log1p(0.045), 1e-6 * expect);
   EXPECT_NEAR(effect_lr(t, A), fa.lr, 1e-9 * expect);
   EXPECT_LT(fb.lr, 0.05 * fa.lr);    // B's signature is nearly orthogonal to A's (cosine -0.1)
   // the threshold: 15.14 times the null mean, at least 15.14
