@@ -1,8 +1,12 @@
 // granpen collapse TRACE-OR-FOLDER...: F/F_z against t~ = (z/v0) sqrt(g/D) over a set of
-// traces, the crossover t~*, the collapse quality and the peak law (core/collapse.h).
+// traces, the crossover t~*, the collapse quality and the peak law (core/collapse.h); with
+// --ensemble the same from the ensemble means with run-to-run uncertainties
+// (core/ensemble_fit.h).
 #include "atomic_file.h"
 #include "subcommand.h"
 #include "collapse.h"
+#include "ensemble_args.h"
+#include "ensemble_tables.h"
 #include "json_text.h"
 #include "collapse_tables.h"
 #include "json_writer.h"
@@ -21,19 +25,118 @@ using granpen::json_number;
 
 namespace {
 
+using namespace granpen;
+
 const char *HELP =
     "usage: granpen collapse TRACE-OR-FOLDER... [--kz-zmin Z] [--kz-zmax Z] [--alpha A --mu MU --rho RHO]\n"
     "                        [--band B] [--tbin W] [--zmin Z] [--csv FILE] [--json FILE]\n"
+    "                        [--ensemble [--ensemble-bin W] [--bootstrap B]]\n"
     "Divides each trace's F by its depth term F_z = k_z z and plots it, binned, against\n"
     "t~ = (z / v0) sqrt(g / D) (paper: F/F_z joins 1 at t~ = 1). k_z comes from each trace's\n"
     "linear fit over z from --kz-zmin (default 3 cm, the paper's) to --kz-zmax (default: the\n"
-    "deepest point), or from --alpha: F_z = alpha mu rho_g g D^2 z (mu, rho_g from the headers\n"
-    "unless given). Reports per trace the crossover t~* (start of the first t~ bin of width\n"
-    "--tbin (0.1) after which F/F_z stays within 1 +- --band (0.2)), their mean and spread; the\n"
-    "collapse quality (spread of the curves against z, before, and against t~, after); the\n"
-    "peak height (0 < z < 0.7 R) against v0 on log axes: exponent and 95% interval; k_z\n"
-    "against v0. --csv writes the binned curves (trace, v0, g, D, t~, F/F_z); --json all.\n"
-    "Outputs are written whole or not at all, never over an input.\n";
+    "deepest point; a window the data do not fill is shortened to the deeper half of the\n"
+    "trace, with a note), or from --alpha: F_z = alpha mu rho_g g D^2 z (mu, rho_g from the\n"
+    "headers unless given). Reports per trace the crossover t~* (start of the first t~ bin of\n"
+    "width --tbin (0.1) after which F/F_z stays within 1 +- --band (0.2)), their mean and\n"
+    "spread; the collapse quality (spread of the curves against z, before, and against t~,\n"
+    "after); the peak height (0 < z < 0.7 R) against v0 on log axes: exponent and 95%\n"
+    "interval; k_z against v0. A trace without a positive k_z is named and left out.\n"
+    "--csv writes the binned curves (trace, v0, g, D, t~, F/F_z); --json all.\n"
+    "With --ensemble, then the same from one curve per ensemble (below), each number +- its\n"
+    "standard error over runs (--json: \"ensemble\"; --csv: rows \"ensemble v0=...\").\n"
+    "Outputs are written whole or not at all, never over an input. Exit status: 0, also when\n"
+    "traces were left out; 1 when a file could not be read or nothing is left to collapse;\n"
+    "2 for a usage error.\n";
+
+std::string pm(const Estimate &e, const char *f)
+{
+  if (!e.ok) return "not reached";
+  return json_number(f, e.value) + (e.se_ok ? " +- " + json_number(f, e.se) : std::string());
+}
+
+std::string percent(int k, int of) { return of > 0 ? json_number("%.0f", 100.0 * k / of) + "%" : "-"; }
+
+void print_result(const CollapseResult &r, const CollapseParams &p)
+{
+  for (const auto &c : r.curves)
+    std::printf("  %s: v0 = %g cm/s, g = %g, D = %g, k_z = %.4g dyne/cm, peak %.4g dyne at z = %.3g cm, t~* = %s\n",
+                c.name.c_str(), c.v0, c.g, c.D, c.k_z, c.peak, c.peak_z,
+                c.crossed ? json_number("%.2f", c.t_star).c_str() : "not reached");
+  std::printf("crossover: t~* = %.2f +- %.2f over %d of %zu traces (paper: 1)\n", r.t_star_mean, r.t_star_sd,
+              r.n_crossed, r.curves.size());
+  if (r.ens_crossed)
+    std::printf("ensemble crossover: the mean of F/F_z over the traces stays within 1 +- %g from t~* = %.2f "
+                "(bins with at least %d traces)\n",
+                p.band, r.t_star_ensemble, std::min<int>(p.min_curves, static_cast<int>(r.curves.size())));
+  else
+    std::printf("ensemble crossover: the mean of F/F_z over the traces does not stay within 1 +- %g\n", p.band);
+  std::printf("collapse quality: spread of F/F_z across traces %.3f against z, %.3f against t~ (ratio %.2f)\n",
+              r.spread_z, r.spread_t, r.spread_z > 0 ? r.spread_t / r.spread_z : 0.0);
+  if (r.peak_ok)
+    std::printf("peak law: peak ~ v0^%.2f +- %.2f (95%%; paper: 2)\n", r.peak_exponent, r.peak_exponent_ci95);
+  else
+    std::printf("peak law: needs at least 3 traces over 2 or more speeds\n");
+}
+
+void print_ensembles(const std::vector<TraceGroup> &groups, const EnsembleCollapse &c, const CollapseParams &p)
+{
+  const CollapseResult &r = c.result;
+  std::size_t runs = 0;
+  for (const auto &g : groups) runs += g.mean.runs;
+  std::printf("\ngranpen collapse --ensemble: %zu ensembles of %zu runs; +-: standard error over runs "
+              "(bootstrap, %d resamples, %d with a positive k_z in every ensemble)\n",
+              groups.size(), runs, c.resamples, c.usable);
+  for (std::size_t i = 0; i < groups.size(); ++i) {
+    std::puts(ensemble_summary(groups[i]).c_str());
+    std::printf("  mean: k_z = %s dyne/cm, peak %s dyne at z = %.3g cm, t~* = %s (crossed in %s of the resamples)\n",
+                pm(c.k_z[i], "%.4g").c_str(), pm(c.peak[i], "%.4g").c_str(), r.curves[i].peak_z,
+                pm(c.t_star[i], "%.2f").c_str(), percent(c.t_star[i].defined, c.usable).c_str());
+  }
+  std::printf("crossover: t~* = %s over %d of %zu ensembles (paper: 1)\n", pm(c.t_star_mean, "%.2f").c_str(),
+              r.n_crossed, r.curves.size());
+  std::printf("ensemble crossover: the mean of F/F_z over the ensembles %s\n",
+              r.ens_crossed ? ("stays within 1 +- " + json_number("%g", p.band) + " from t~* = " +
+                               pm(c.t_star_ensemble, "%.2f")).c_str()
+                            : ("does not stay within 1 +- " + json_number("%g", p.band)).c_str());
+  std::printf("collapse quality: spread of F/F_z across ensembles %s against z, %s against t~\n",
+              pm(c.spread_z, "%.3f").c_str(), pm(c.spread_t, "%.3f").c_str());
+  if (r.peak_ok)
+    std::printf("peak law: peak ~ v0^%s (95%%: +- %s, over runs; paper: 2)\n", pm(c.peak_exponent, "%.2f").c_str(),
+                json_number("%.2f", c.peak_exponent.ci95).c_str());
+  else
+    std::printf("peak law: needs ensembles at 3 or more speeds\n");
+}
+
+// --ensemble: groups averaged, their depth terms (an ensemble without a positive one is
+// left out, named), the collapse of the means with bootstrap uncertainties
+bool collapse_ensembled(const std::vector<Trace> &traces, const DepthTerm &dt, const CollapseParams &p,
+                        const cli::EnsembleOptions &ens, std::vector<TraceGroup> &groups, EnsembleCollapse &out)
+{
+  std::vector<std::string> left;
+  groups = group_traces(traces);
+  average_groups(groups, ens.mean, left);
+  std::vector<EnsembleCase> cases;
+  std::vector<TraceGroup> kept;
+  for (auto &g : groups) {
+    EnsembleCase c;
+    c.name = g.label(), c.v0 = g.v0, c.g = g.g, c.D = g.D, c.mean = g.mean;
+    const Trace &head = g.traces.front();
+    if (dt.alpha > 0) c.k_z_fixed = alpha_depth_term(dt, head);
+    else c.kz_fit = depth_term_window(dt, head);
+    if (!(ensemble_depth_term(c) > 0)) {
+      left.push_back("ensemble " + g.label() + ": no positive depth term on the mean of its " +
+                     std::to_string(g.mean.runs) + " runs; left out");
+      continue;
+    }
+    cases.push_back(std::move(c));
+    kept.push_back(std::move(g));
+  }
+  groups = std::move(kept);
+  for (const auto &m : left) std::printf("note: %s\n", m.c_str());
+  if (cases.empty()) return false;
+  out = collapse_ensembles(cases, p, ens.boot);
+  return true;
+}
 
 }    // namespace
 
@@ -56,51 +159,55 @@ int granpen::cli::collapse(int argc, char **argv)
   cmd.number("--zmin", p.zmin, "depths used from Z, cm (default 0.2)", true)->type_name("Z");
   cmd.app.add_option("--csv", csv, "write the binned curves (trace, v0, g, D, t~, F/F_z)")->type_name("FILE");
   cmd.app.add_option("--json", json, "write every result as JSON")->type_name("FILE");
+  EnsembleOptions ens;
+  ens.add_to(cmd);
   if (!cmd.parse(argc, argv)) return EXIT_OK;
+  ens.check();
   if (!(kz_zmin < kz_zmax)) throw UsageError("--kz-zmin must be below --kz-zmax");
 
-  std::vector<std::string> problems;
+  std::vector<std::string> problems, left_out, notes;
   const auto files = expand_trace_paths(inputs, problems);
-  DepthTerm dt;
-  dt.kz_zmin = kz_zmin, dt.kz_zmax = kz_zmax, dt.alpha = alpha, dt.mu = mu_opt, dt.rho_g = rho_opt;
-  const std::vector<CollapseInput> in = read_collapse_inputs(files, dt, problems);
-
   for (const auto &o : {std::make_pair("--csv", csv), std::make_pair("--json", json)})
     if (!o.second.empty()) refuse_overwriting_inputs(o.second, o.first, files);
+  const std::vector<Trace> traces = read_traces(files, problems);
+  DepthTerm dt;
+  dt.kz_zmin = kz_zmin, dt.kz_zmax = kz_zmax, dt.alpha = alpha, dt.mu = mu_opt, dt.rho_g = rho_opt;
+  const std::vector<CollapseInput> in = collapse_inputs(traces, dt, left_out, notes);
   for (const auto &m : problems) std::fprintf(stderr, "granpen collapse: %s\n", m.c_str());
-  if (in.empty()) {
-    std::fprintf(stderr, "granpen collapse: no usable trace\n");
-    return 1;
-  }
+  for (const auto &m : notes) std::printf("note: %s\n", m.c_str());
+  for (const auto &m : left_out) std::printf("note: %s\n", m.c_str());
 
-  const CollapseResult r = granpen::collapse(in, p);
-  std::printf("granpen collapse: %zu traces, band 1 +- %g, t~ bins of %g\n", r.curves.size(), p.band, p.tbin);
-  for (const auto &c : r.curves)
-    std::printf("  %s: v0 = %g cm/s, g = %g, D = %g, k_z = %.4g dyne/cm, peak %.4g dyne at z = %.3g cm, t~* = %s\n",
-                c.name.c_str(), c.v0, c.g, c.D, c.k_z, c.peak, c.peak_z,
-                c.crossed ? json_number("%.2f", c.t_star).c_str() : "not reached");
-  std::printf("crossover: t~* = %.2f +- %.2f over %d of %zu traces (paper: 1)\n", r.t_star_mean, r.t_star_sd,
-              r.n_crossed, r.curves.size());
-  if (r.ens_crossed)
-    std::printf("ensemble crossover: the mean of F/F_z over the traces stays within 1 +- %g from t~* = %.2f "
-                "(bins with at least %d traces)\n",
-                p.band, r.t_star_ensemble, std::min<int>(p.min_curves, static_cast<int>(r.curves.size())));
-  else
-    std::printf("ensemble crossover: the mean of F/F_z over the traces does not stay within 1 +- %g\n", p.band);
-  std::printf("collapse quality: spread of F/F_z across traces %.3f against z, %.3f against t~ (ratio %.2f)\n",
-              r.spread_z, r.spread_t, r.spread_z > 0 ? r.spread_t / r.spread_z : 0.0);
-  if (r.peak_ok)
-    std::printf("peak law: peak ~ v0^%.2f +- %.2f (95%%; paper: 2)\n", r.peak_exponent, r.peak_exponent_ci95);
-  else
-    std::printf("peak law: needs at least 3 traces over 2 or more speeds\n");
+  CollapseResult r;
+  if (!in.empty()) {
+    r = granpen::collapse(in, p);
+    std::printf("granpen collapse: %zu traces%s, band 1 +- %g, t~ bins of %g\n", r.curves.size(),
+                left_out.empty() ? "" : (" (" + std::to_string(left_out.size()) + " left out)").c_str(), p.band, p.tbin);
+    print_result(r, p);
+  } else if (!ens.on) {
+    std::fprintf(stderr, "granpen collapse: no usable trace\n");
+    return EXIT_FAILED;
+  } else {
+    std::printf("granpen collapse: no single trace has a positive k_z over the window; ensembles only\n");
+  }
+  std::vector<TraceGroup> groups;
+  EnsembleCollapse ec;
+  const bool have_ens = ens.on && collapse_ensembled(traces, dt, p, ens, groups, ec);
+  if (ens.on && !have_ens) {
+    std::fprintf(stderr, "granpen collapse: no usable ensemble\n");
+    return EXIT_FAILED;
+  }
+  if (have_ens) print_ensembles(groups, ec, p);
 
   if (!csv.empty()) {
-    write_file_atomic(csv, collapse_curves_csv(r));
+    write_file_atomic(csv, collapse_curves_csv(r) + (have_ens ? ensemble_collapse_csv_rows(groups, ec) : ""));
     std::printf("wrote %s\n", csv.c_str());
   }
   if (!json.empty()) {
-    write_json(json, collapse_json(r, p), 1);
+    Json j = collapse_json(r, p);
+    j["left_out"] = left_out;
+    if (have_ens) j["ensemble"] = ensemble_collapse_json(groups, ec);
+    write_json(json, j, 1);
     std::printf("wrote %s\n", json.c_str());
   }
-  return problems.empty() ? 0 : 1;
+  return problems.empty() ? EXIT_OK : EXIT_FAILED;
 }

@@ -1,6 +1,8 @@
 // granpen fit TRACE...: the paper's observables of each force trace: the depth term
 // k_z and alpha, the transient peak, the fluctuation wavelength (core/trace_fit.h).
 #include "args.h"
+#include "ensemble_args.h"
+#include "ensemble_tables.h"
 #include "atomic_file.h"
 #include "subcommand.h"
 #include "json_text.h"
@@ -17,6 +19,7 @@
 #include <filesystem>
 #include <sstream>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -31,6 +34,7 @@ using granpen::TraceFit;
 
 const char *HELP =
     "usage: granpen fit TRACE... [--zmin Z | --tmin T] [--zmax Z] [--mu MU] [--rho RHO] [--json FILE] [--csv FILE]\n"
+    "                [--ensemble [--ensemble-bin W] [--bootstrap B] [--ensemble-csv FILE]]\n"
     "Fits each force trace (granpen-trace v1; SI traces are converted to cgs). A folder\n"
     "argument stands for every *.csv in it. Per trace:\n"
     "  k_z    slope of F on z over the window (linear least squares), with its standard error\n"
@@ -41,9 +45,40 @@ const char *HELP =
     "  wavelength  dominant wavelength of F about the fit in the window (resampled to the\n"
     "         median dz, mean removed, Hann window, FFT; the lowest two bins excluded);\n"
     "         the paper sees fluctuations of wavelength about d_g\n"
+    "A window the data do not fill (e.g. z >= 3 cm on a 2 cm push) is shortened to the\n"
+    "deeper half of the trace, and a note says so.\n"
+    "With --ensemble, after the per-trace lines, one line per ensemble: the same numbers on\n"
+    "the ensemble mean, each +- its standard error over runs (--json: \"ensembles\";\n"
+    "--ensemble-csv: the mean curves z, F_mean, F_se).\n"
     "Exit status: 0 when every trace was read, 1 when a trace (or an output file) failed,\n"
     "2 for a usage error. Quantities that cannot be fitted (e.g. a window without data)\n"
     "are reported as undefined and do not change the exit status.\n";
+
+std::string pm(const granpen::Estimate &e, const char *f)
+{
+  std::string t = json_number(f, e.value);
+  return e.se_ok ? t + " +- " + json_number("%.2g", e.se) : t;
+}
+
+// the ensemble's line: the fit of its mean with standard errors over runs
+void print_ensemble(const granpen::TraceGroup &g, const granpen::EnsembleFit &e)
+{
+  std::puts(granpen::ensemble_summary(g).c_str());
+  const TraceFit &f = e.fit;
+  std::string line = "  mean:";
+  if (e.k_z.ok)
+    line += " k_z = " + pm(e.k_z, "%.4g") + " dyne/cm (z " + json_number("%.3g", f.z_first) + ".." +
+            json_number("%.3g", f.z_last) + " cm, " + std::to_string(f.n_window) + " bins)";
+  else line += " k_z undefined";
+  line += e.alpha.ok ? ", alpha = " + pm(e.alpha, "%.3g") : ", alpha undefined";
+  if (e.peak_F.ok) line += ", peak F = " + pm(e.peak_F, "%.4g") + " dyne at z = " + pm(e.peak_z, "%.3g") + " cm";
+  else line += ", peak undefined";
+  line += e.wavelength.ok ? ", wavelength = " + pm(e.wavelength, "%.3g") + " cm" : ", wavelength undefined";
+  std::puts(line.c_str());
+  if (e.resamples > 0)
+    std::printf("  (+-: standard error over the %zu runs, bootstrap of %d resamples)\n", e.runs, e.resamples);
+  for (const auto &n : f.notes) std::printf("  note: %s\n", n.c_str());
+}
 
 std::string window_text(double zlo, double zhi)
 {
@@ -82,6 +117,26 @@ void print_result(const FitResult &r)
   for (const auto &n : f.notes) std::printf("  note: %s\n", n.c_str());
 }
 
+// --ensemble: the runs read again, grouped by (v0, g, D), averaged and fitted with the
+// window and mu, rho_g, d_g of each group's first run; JSON of each into out
+std::vector<granpen::TraceGroup> fit_ensembles(const std::vector<FitResult> &results,
+                                               const granpen::cli::EnsembleOptions &ens, granpen::Json &out)
+{
+  using namespace granpen;
+  std::vector<std::string> files, problems;
+  std::map<std::string, const FitResult *> by_file;
+  for (const auto &r : results) files.push_back(r.file), by_file[r.file] = &r;
+  auto groups = group_traces(read_traces(files, problems));
+  average_groups(groups, ens.mean, problems);
+  for (const auto &p : problems) std::printf("granpen fit: %s\n", p.c_str());
+  for (const auto &g : groups) {
+    const EnsembleFit e = fit_ensemble(g.mean, by_file.at(g.traces.front().path)->fit.params, ens.boot);
+    print_ensemble(g, e);
+    out.push_back(ensemble_fit_json(g, e));
+  }
+  return groups;
+}
+
 }    // namespace
 
 int granpen::cli::fit(int argc, char **argv)
@@ -108,7 +163,14 @@ int granpen::cli::fit(int argc, char **argv)
                                       "with a false *_ok flag; unreadable traces under \"errors\")")
       ->check(file_name())->type_name("FILE");
   app.add_option("--csv", csv_path, "write one CSV row per fitted trace")->check(file_name())->type_name("FILE");
+  EnsembleOptions ens;
+  ens.add_to(cmd);
+  std::string ens_csv;
+  app.add_option("--ensemble-csv", ens_csv, "--ensemble: write the mean curves (v0, g, D, runs, z, F_mean, F_se, F_sd)")
+      ->check(file_name())->type_name("FILE");
   if (!cmd.parse(argc, argv)) return EXIT_OK;
+  ens.check();
+  if (!ens.on && !ens_csv.empty()) throw UsageError("--ensemble-csv needs --ensemble");
   const bool have_mu = mu->count() > 0, have_rho = rho->count() > 0;
   if (zmin_opt->count() > 0 && tmin_opt->count() > 0) throw UsageError("give --zmin or --tmin, not both");
   if (!(tmin_opt->count() > 0) && !(zmin < zmax)) throw UsageError("--zmin must be below --zmax");
@@ -120,7 +182,8 @@ int granpen::cli::fit(int argc, char **argv)
   const std::vector<std::string> files = expand_trace_paths(inputs, problems);
   for (const auto &m : problems) failures.push_back({m.substr(0, m.find(": ")), m});
   for (const auto &f : failures) std::fprintf(stderr, "granpen fit: %s\n", f.message.c_str());
-  for (const auto &o : {std::make_pair("--json", json_path), std::make_pair("--csv", csv_path)})
+  for (const auto &o : {std::make_pair("--json", json_path), std::make_pair("--csv", csv_path),
+                        std::make_pair("--ensemble-csv", ens_csv)})
     if (!o.second.empty()) refuse_overwriting_inputs(o.second, o.first, files);
 
   std::printf("granpen fit: window %s; %zu trace%s\n",
@@ -141,17 +204,26 @@ int granpen::cli::fit(int argc, char **argv)
     print_result(results.back());
   }
 
+  Json ensembles = Json::array();
+  std::vector<TraceGroup> groups;
+  if (ens.on) groups = fit_ensembles(results, ens, ensembles);
 
   int status = failures.empty() ? 0 : 1;
   if (!failures.empty())
     std::printf("granpen fit: %zu input%s failed (see above)\n", failures.size(), failures.size() == 1 ? "" : "s");
   if (!json_path.empty()) {
-    write_json(json_path, fit_results_json(results, failures, w), 1);
+    Json j = fit_results_json(results, failures, w);
+    if (ens.on) j["ensembles"] = ensembles;
+    write_json(json_path, j, 1);
     std::printf("wrote %s\n", json_path.c_str());
   }
   if (!csv_path.empty()) {
     write_file_atomic(csv_path, fit_results_csv(results));
     std::printf("wrote %s\n", csv_path.c_str());
+  }
+  if (!ens_csv.empty()) {
+    write_file_atomic(ens_csv, ensemble_curves_csv(groups));
+    std::printf("wrote %s\n", ens_csv.c_str());
   }
   return status;
 }

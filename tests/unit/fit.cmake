@@ -4,6 +4,10 @@ add_executable(test_fit test_fit.cpp)
 target_link_libraries(test_fit PRIVATE granpen_analysis GTest::gtest_main)
 gtest_discover_tests(test_fit PROPERTIES LABELS unit)
 
+add_executable(test_ensemble test_ensemble.cpp)
+target_link_libraries(test_ensemble PRIVATE granpen_analysis GTest::gtest_main)
+gtest_discover_tests(test_ensemble PROPERTIES LABELS unit)
+
 add_executable(test_calibration test_calibration.cpp)
 target_link_libraries(test_calibration PRIVATE granpen_analysis GTest::gtest_main)
 gtest_discover_tests(test_calibration PROPERTIES LABELS unit)

@@ -3,6 +3,7 @@
 # from tests/unit/CMakeLists.txt.
 add_executable(test_plot test_plot.cpp ${PROJECT_SOURCE_DIR}/analysis/cli/plot_cmd.cpp
   ${PROJECT_SOURCE_DIR}/analysis/cli/args.cpp
+  ${PROJECT_SOURCE_DIR}/analysis/cli/ensemble_args.cpp
   ${PROJECT_SOURCE_DIR}/analysis/cli/subcommand.cpp)
 target_include_directories(test_plot PRIVATE ${PROJECT_SOURCE_DIR}/analysis/cli)
 target_link_libraries(test_plot PRIVATE granpen_analysis CLI11::CLI11 GTest::gtest_main)
