@@ -356,6 +356,22 @@ void fold_key_column(std::vector<SeriesPanel> &panels, const SeriesFigure &fig, 
   }
 }
 
+// the figure without its panels that have no data (a note for each), unless every panel
+// is empty (then its "no data" panel stays)
+SeriesFigure without_empty_panels(const SeriesFigure &in, std::vector<std::string> &notes)
+{
+  SeriesFigure fig = in;
+  if (!std::any_of(in.panels.begin(), in.panels.end(), has_data)) return fig;
+  fig.panels.clear();
+  for (std::size_t i = 0; i < in.panels.size(); ++i) {
+    if (has_data(in.panels[i])) fig.panels.push_back(in.panels[i]);
+    else
+      notes.push_back(in.name + ": panel " + std::to_string(i + 1) +
+                      (in.panels[i].title.empty() ? "" : " (" + in.panels[i].title + ")") + " has no data: left out");
+  }
+  return fig;
+}
+
 }    // namespace
 
 double key_line_height(int height_px) { return KEY_LINE_PX / (double) std::max(1, height_px); }
@@ -373,18 +389,7 @@ PlotFiles series_figure(const SeriesFigure &fig_in)
   f.about = fig_in.about;
   f.width = fig_in.width;
   f.height = fig_in.height;
-  // a panel without data is left out (with a note) unless every panel is empty
-  SeriesFigure fig = fig_in;
-  if (std::any_of(fig.panels.begin(), fig.panels.end(), has_data)) {
-    fig.panels.clear();
-    for (std::size_t i = 0; i < fig_in.panels.size(); ++i) {
-      if (has_data(fig_in.panels[i])) fig.panels.push_back(fig_in.panels[i]);
-      else
-        f.notes.push_back(fig.name + ": panel " + std::to_string(i + 1) +
-                          (fig_in.panels[i].title.empty() ? "" : " (" + fig_in.panels[i].title + ")") +
-                          " has no data: left out");
-    }
-  }
+  SeriesFigure fig = without_empty_panels(fig_in, f.notes);
 
   int unplaced = 0;
   for (const auto &p : fig.panels)
