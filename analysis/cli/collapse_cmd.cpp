@@ -40,7 +40,8 @@ const char *HELP =
     "width --tbin (0.1) after which F/F_z stays within 1 +- --band (0.2)), their mean and\n"
     "spread; the collapse quality (spread of the curves against z, before, and against t~,\n"
     "after); the peak height (0 < z < 0.7 R) against v0 on log axes: exponent and 95%\n"
-    "interval; k_z against v0. A trace without a positive k_z is named and left out.\n"
+    "interval, over every trace read (it needs no k_z); k_z against v0. A trace without a\n"
+    "positive k_z is named and left out of F/F_z.\n"
     "--csv writes the binned curves (trace, v0, g, D, t~, F/F_z); --json all.\n"
     "With --ensemble, then the same from one curve per ensemble (below), each number +- its\n"
     "standard error over runs (--json: \"ensemble\"; --csv: rows \"ensemble v0=...\").\n"
@@ -73,9 +74,26 @@ void print_result(const CollapseResult &r, const CollapseParams &p)
   std::printf("collapse quality: spread of F/F_z across traces %.3f against z, %.3f against t~ (ratio %.2f)\n",
               r.spread_z, r.spread_t, r.spread_z > 0 ? r.spread_t / r.spread_z : 0.0);
   if (r.peak_ok)
-    std::printf("peak law: peak ~ v0^%.2f +- %.2f (95%%; paper: 2)\n", r.peak_exponent, r.peak_exponent_ci95);
+    std::printf("peak law: peak ~ v0^%.2f +- %.2f (95%%; over %zu traces; paper: 2)\n", r.peak_exponent,
+                r.peak_exponent_ci95, r.peak_points);
   else
     std::printf("peak law: needs at least 3 traces over 2 or more speeds\n");
+}
+
+// The peak law needs no depth term: from every trace read (k_z = 1), copied into r.
+void peak_law_of_all(const std::vector<Trace> &traces, const CollapseParams &p, CollapseResult &r)
+{
+  std::vector<CollapseInput> all;
+  for (const auto &t : traces) {
+    CollapseInput c;
+    c.name = t.path, c.z = t.z, c.F = t.F, c.v0 = t.v0, c.D = t.D, c.g = t.g, c.k_z = 1.0;
+    all.push_back(c);
+  }
+  if (all.empty()) return;
+  const CollapseResult law = granpen::collapse(all, p);
+  r.peak_ok = law.peak_ok, r.peak_exponent = law.peak_exponent, r.peak_exponent_se = law.peak_exponent_se;
+  r.peak_exponent_ci95 = law.peak_exponent_ci95, r.peak_prefactor = law.peak_prefactor;
+  r.peak_v2_prefactor = law.peak_v2_prefactor, r.peak_points = law.peak_points;
 }
 
 void print_ensembles(const std::vector<TraceGroup> &groups, const EnsembleCollapse &c, const CollapseParams &p)
@@ -83,9 +101,9 @@ void print_ensembles(const std::vector<TraceGroup> &groups, const EnsembleCollap
   const CollapseResult &r = c.result;
   std::size_t runs = 0;
   for (const auto &g : groups) runs += g.mean.runs;
-  std::printf("\ngranpen collapse --ensemble: %zu ensembles of %zu runs; +-: standard error over runs "
+  std::printf("\ngranpen collapse --ensemble: %zu ensemble%s of %zu runs; +-: standard error over runs "
               "(bootstrap, %d resamples, %d with a positive k_z in every ensemble)\n",
-              groups.size(), runs, c.resamples, c.usable);
+              groups.size(), groups.size() == 1 ? "" : "s", runs, c.resamples, c.usable);
   for (std::size_t i = 0; i < groups.size(); ++i) {
     std::puts(ensemble_summary(groups[i]).c_str());
     std::printf("  mean: k_z = %s dyne/cm, peak %s dyne at z = %.3g cm, t~* = %s (crossed in %s of the resamples)\n",
@@ -98,13 +116,37 @@ void print_ensembles(const std::vector<TraceGroup> &groups, const EnsembleCollap
               r.ens_crossed ? ("stays within 1 +- " + json_number("%g", p.band) + " from t~* = " +
                                pm(c.t_star_ensemble, "%.2f")).c_str()
                             : ("does not stay within 1 +- " + json_number("%g", p.band)).c_str());
-  std::printf("collapse quality: spread of F/F_z across ensembles %s against z, %s against t~\n",
-              pm(c.spread_z, "%.3f").c_str(), pm(c.spread_t, "%.3f").c_str());
-  if (r.peak_ok)
-    std::printf("peak law: peak ~ v0^%s (95%%: +- %s, over runs; paper: 2)\n", pm(c.peak_exponent, "%.2f").c_str(),
-                json_number("%.2f", c.peak_exponent.ci95).c_str());
+  if (r.curves.size() > 1)
+    std::printf("collapse quality: spread of F/F_z across ensembles %s against z, %s against t~\n",
+                pm(c.spread_z, "%.3f").c_str(), pm(c.spread_t, "%.3f").c_str());
+  else
+    std::printf("collapse quality: needs 2 or more ensembles\n");
+  if (c.peak_exponent.ok)
+    std::printf("peak law: peak ~ v0^%s (95%%: +- %s, over runs; %zu ensembles; paper: 2)\n",
+                pm(c.peak_exponent, "%.2f").c_str(), json_number("%.2f", c.peak_exponent.ci95).c_str(),
+                r.peak_points);
   else
     std::printf("peak law: needs ensembles at 3 or more speeds\n");
+}
+
+// The peak law of every ensemble (k_z = 1: the peaks need no depth term), into c.
+void ensemble_peak_law(const std::vector<TraceGroup> &groups, const CollapseParams &p, const cli::EnsembleOptions &ens,
+                       EnsembleCollapse &c)
+{
+  std::vector<EnsembleCase> cases;
+  for (const auto &g : groups) {
+    EnsembleCase k;
+    k.name = g.label(), k.v0 = g.v0, k.g = g.g, k.D = g.D, k.mean = g.mean, k.k_z_fixed = 1.0;
+    cases.push_back(k);
+  }
+  if (cases.empty()) return;
+  const EnsembleCollapse law = collapse_ensembles(cases, p, ens.boot);
+  c.peak_exponent = law.peak_exponent;
+  CollapseResult &r = c.result;
+  r.peak_ok = law.result.peak_ok, r.peak_exponent = law.result.peak_exponent;
+  r.peak_exponent_se = law.peak_exponent.se, r.peak_exponent_ci95 = law.peak_exponent.ci95;
+  r.peak_prefactor = law.result.peak_prefactor, r.peak_v2_prefactor = law.result.peak_v2_prefactor;
+  r.peak_points = law.result.peak_points;
 }
 
 // --ensemble: groups averaged, their depth terms (an ensemble without a positive one is
@@ -129,12 +171,13 @@ bool collapse_ensembled(const std::vector<Trace> &traces, const DepthTerm &dt, c
       continue;
     }
     cases.push_back(std::move(c));
-    kept.push_back(std::move(g));
+    kept.push_back(g);    // copied: every group still gives the peak law
   }
-  groups = std::move(kept);
   for (const auto &m : left) std::printf("note: %s\n", m.c_str());
   if (cases.empty()) return false;
   out = collapse_ensembles(cases, p, ens.boot);
+  ensemble_peak_law(groups, p, ens, out);    // every ensemble, with or without k_z
+  groups = std::move(kept);
   return true;
 }
 
@@ -180,6 +223,7 @@ int granpen::cli::collapse(int argc, char **argv)
   CollapseResult r;
   if (!in.empty()) {
     r = granpen::collapse(in, p);
+    peak_law_of_all(traces, p, r);
     std::printf("granpen collapse: %zu traces%s, band 1 +- %g, t~ bins of %g\n", r.curves.size(),
                 left_out.empty() ? "" : (" (" + std::to_string(left_out.size()) + " left out)").c_str(), p.band, p.tbin);
     print_result(r, p);
