@@ -30,6 +30,7 @@ struct Replicates {
     const double sd = std::sqrt(s2 / (double) (v.size() - 1));
     e.se_ok = true;
     e.se = sd * std::sqrt((double) runs / (double) (runs - 1));
+    if (e.se <= 1e-12 * std::fabs(value)) e.se = 0.0;    // the same in every resample: round-off only
     e.ci95 = t95((int) runs - 1) * e.se;
     return e;
   }
@@ -151,6 +152,7 @@ EnsembleCollapse collapse_ensembles(const std::vector<EnsembleCase> &cases, cons
   for (std::size_t i = 0; i < nc; ++i) {
     const std::size_t n = cases[i].mean.runs;
     out.k_z.push_back(kz[i].estimate(true, R.curves[i].k_z, n));
+    if (cases[i].k_z_fixed > 0.0) out.k_z.back().se_ok = false, out.k_z.back().se = out.k_z.back().ci95 = 0.0;    // given
     out.peak.push_back(peak[i].estimate(R.curves[i].peak > 0.0, R.curves[i].peak, n));
     out.t_star.push_back(tstar[i].estimate(R.curves[i].crossed, R.curves[i].t_star, n));
   }
