@@ -446,6 +446,9 @@ void plot_force(const std::vector<std::string> &inputs, Run &run)
   Json json_runs = Json::array();
   if (ens) force_ensembles(traces, ys.factor, zpeak, run, main, inset, json_runs);
   else force_groups(traces, ys.factor, zpeak, run, main, inset, json_runs);
+  if (!ens && mean_mode && std::none_of(main.series.begin(), main.series.end(),
+                                        [](const PlotSeries &s) { return !s.band_lo.empty(); }))
+    main.key_title = "every run (no v_0 has several)";    // no mean, no band to explain
   SeriesFigure fig;
   fig.name = "force";
   fig.title = "Drag force against depth";
@@ -568,13 +571,13 @@ std::string ratio_title(const CollapseResult &r, const RatioCurves &rc, bool ens
   const std::string what = ensemble ? " ensembles" : " traces";
   std::string t = "t̃* = " +
                   (!r.n_crossed ? std::string("not reached")
-                   : ensemble   ? pm_text(rc.ens.t_star_mean, "%.2f")
-                                : fmt("%.2f", r.t_star_mean) + " ± " + fmt("%.2f", r.t_star_sd)) +
+                   : ensemble   ? pm_text(rc.ens.t_star_mean, "%.3g")
+                                : fmt("%.3g", r.t_star_mean) + " ± " + fmt("%.2g", r.t_star_sd)) +
                   " (" + std::to_string(r.n_crossed) + " of " + std::to_string(r.curves.size()) + what;
   if (r.curves.size() > 1)
     t += "; their mean: " + (!r.ens_crossed ? std::string("not reached")
-                             : ensemble     ? pm_text(rc.ens.t_star_ensemble, "%.2f")
-                                            : fmt("%.2f", r.t_star_ensemble));
+                             : ensemble     ? pm_text(rc.ens.t_star_ensemble, "%.3g")
+                                            : fmt("%.3g", r.t_star_ensemble));
   t += "), spread ";
   if (ensemble) return t + pm_text(rc.ens.spread_z, "%.3f") + " against z, " + pm_text(rc.ens.spread_t, "%.3f") + " against t̃";
   return t + fmt("%.3f", r.spread_z) + " against z, " + fmt("%.3f", r.spread_t) + " against t̃";
@@ -662,7 +665,7 @@ void plot_ratio(const std::vector<std::string> &inputs, Run &run)
     PlotSeries e;
     e.colour = "#000000";
     e.line_width = 3.0;
-    e.title = std::string(run.opt.ensemble ? "all ensembles: mean ± se" : "mean of the runs ± se") + (r.ens_crossed ? " (t̃* = " + fmt("%.2f", r.t_star_ensemble) + ")" : std::string());
+    e.title = run.opt.ensemble ? "all ensembles: mean ± se" : "mean of the runs ± se";    // its t̃*: in the title
     e.x = r.ens_t, e.y = r.ens_ratio;
     for (std::size_t k = 0; k < r.ens_t.size(); ++k)
       e.band_lo.push_back(r.ens_ratio[k] - r.ens_se[k]), e.band_hi.push_back(r.ens_ratio[k] + r.ens_se[k]);
@@ -683,6 +686,17 @@ void plot_ratio(const std::vector<std::string> &inputs, Run &run)
     if (nonpos) clipped = " (" + std::to_string(nonpos) + " bins with F/F_z <= 0 not drawn on the log axis)";
   } else {
     a.ymin = b.ymin = std::min(0.0, ymin);
+  }
+  a.extra += "set autoscale xfix\n";
+  // t~ over more than 1000 bins (slow pushes, deep soundings): a log axis, so that every
+  // speed and the paper's t~ = 1 stay in view and the tic labels do not run together
+  double tmax = 0;
+  for (const auto &c : r.curves)
+    for (double t : c.t) tmax = std::max(tmax, t);
+  if (tmax > 1000 * run.opt.collapse.tbin) {
+    b.logx = true;
+    b.xmin = 0.5 * run.opt.collapse.tbin, b.xmax = tmax * 1.3;
+    b.extra += log_tics("x", b.xmin, b.xmax, true);
   }
   SeriesFigure fig;
   fig.name = "ratio";
@@ -770,11 +784,17 @@ void plot_peak(const std::vector<std::string> &inputs, Run &run)
   }
   std::vector<double> v0s;
   double pmax = 0;
+  std::vector<std::string> no_peak;
   for (const auto &c : r.curves) {
     v0s.push_back(c.v0);
-    if (!(c.peak > 0.0)) run.notes.push_back(c.name + ": no positive force at 0 < z < 0.7 R: no peak");
+    if (!(c.peak > 0.0)) no_peak.push_back(c.name);
     pmax = std::max(pmax, c.peak);
   }
+  if (no_peak.size() == 1) run.notes.push_back(no_peak[0] + ": no positive force at 0 < z < 0.7 R: no peak");
+  else if (!no_peak.empty())
+    run.notes.push_back(std::to_string(no_peak.size()) + " of " + std::to_string(r.curves.size()) +
+                        " traces have no positive force at 0 < z < 0.7 R (no peak), e.g. " + no_peak.front() + ", " +
+                        no_peak[1] + (no_peak.size() > 2 ? ", ..." : ""));
   SeriesPanel p;
   p.logx = p.logy = true;
   p.xlabel = "rod speed v_0 (cm/s)";

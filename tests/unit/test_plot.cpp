@@ -775,7 +775,7 @@ TEST(PlotCli, NineSpeedsOfSoundingsAllInTheLegendWithoutAnEmptyInset)
   EXPECT_EQ(count_containing(titles, "v_0 = "), 22);
   // kz, ratio: one entry per speed; peak: none of them has a sample in the peak region
   o = plot({"peak", in.string()});
-  EXPECT_NE(o.out.find("no positive force at 0 < z < 0.7 R"), std::string::npos) << o.out;
+  EXPECT_NE(o.out.find("22 of 22 traces have no positive force at 0 < z < 0.7 R"), std::string::npos) << o.out;
   for (const char *kind : {"kz", "ratio"}) {
     o = plot({kind, in.string(), "--kz-zmin", "300"});
     ASSERT_EQ(o.status, 0) << kind << ": " << o.err;
