@@ -4,15 +4,6 @@
 namespace granpen {
 namespace cli {
 
-const char *const ENSEMBLE_HELP =
-    "--ensemble: traces of the same v0, g and D are one ensemble: each run's depths shifted so\n"
-    "that its force onset sits at the runs' mean onset (as granpen gap aligns), F averaged in\n"
-    "depth bins over the depths every run covers (--ensemble-bin, default the runs' depth\n"
-    "step), with the standard error over runs per bin (the run-to-run band). Every number is\n"
-    "then computed on the ensemble mean; its +- is the standard error from a bootstrap over\n"
-    "runs (--bootstrap resamples, fixed seed; docs/postprocess.md says why runs and not bins).\n"
-    "The per-run results are still printed and written.\n";
-
 void EnsembleOptions::add_to(Command &cmd)
 {
   cmd.app.add_flag("--ensemble", on, "average the runs of each (v0, g, D) after aligning their force onsets");

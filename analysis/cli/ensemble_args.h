@@ -23,9 +23,6 @@ struct EnsembleOptions {
   CLI::Option *bin_ = nullptr, *boot_ = nullptr;
 };
 
-// The help text of those options, for a subcommand's prose.
-extern const char *const ENSEMBLE_HELP;
-
 }    // namespace cli
 }    // namespace granpen
 
