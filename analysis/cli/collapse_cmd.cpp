@@ -1,8 +1,11 @@
 // granpen collapse TRACE-OR-FOLDER...: F/F_z against t~ = (z/v0) sqrt(g/D) over a set of
-// traces, the crossover t~*, the collapse quality and the peak law (core/collapse.h).
+// traces, the crossover t~*, the collapse quality and the peak law (core/collapse.h); with
+// --ensemble the same from the ensemble means with run-to-run uncertainties
+// (core/ensemble_fit.h).
 #include "atomic_file.h"
 #include "options.h"
 #include "collapse.h"
+#include "ensemble_tables.h"
 #include "json_text.h"
 #include "collapse_tables.h"
 #include "json_writer.h"
@@ -19,24 +22,20 @@
 
 using granpen::json_number;
 
-int granpen::cli::run_collapse(const CollapseOptions &o)
+namespace {
+
+using namespace granpen;
+
+std::string pm(const Estimate &e, const char *f)
 {
-  const std::string &csv = o.csv, &json = o.json;
-  const CollapseParams &p = o.params;
-  std::vector<std::string> problems;
-  const auto files = expand_trace_paths(o.traces, problems);
-  const std::vector<CollapseInput> in = read_collapse_inputs(files, o.depth, problems);
+  if (!e.ok) return "not reached";
+  return json_number(f, e.value) + (e.se_ok ? " +- " + json_number(f, e.se) : std::string());
+}
 
-  for (const auto &output : {std::make_pair("--csv", csv), std::make_pair("--json", json)})
-    if (!output.second.empty()) refuse_overwriting_inputs(output.second, output.first, files);
-  for (const auto &m : problems) std::fprintf(stderr, "granpen collapse: %s\n", m.c_str());
-  if (in.empty()) {
-    std::fprintf(stderr, "granpen collapse: no usable trace\n");
-    return 1;
-  }
+std::string percent(int k, int of) { return of > 0 ? json_number("%.0f", 100.0 * k / of) + "%" : "-"; }
 
-  const CollapseResult r = granpen::collapse(in, p);
-  std::printf("granpen collapse: %zu traces, band 1 +- %g, t~ bins of %g\n", r.curves.size(), p.band, p.tbin);
+void print_result(const CollapseResult &r, const CollapseParams &p)
+{
   for (const auto &c : r.curves)
     std::printf("  %s: v0 = %g cm/s, g = %g, D = %g, k_z = %.4g dyne/cm, peak %.4g dyne at z = %.3g cm, t~* = %s\n",
                 c.name.c_str(), c.v0, c.g, c.D, c.k_z, c.peak, c.peak_z,
@@ -52,17 +51,163 @@ int granpen::cli::run_collapse(const CollapseOptions &o)
   std::printf("collapse quality: spread of F/F_z across traces %.3f against z, %.3f against t~ (ratio %.2f)\n",
               r.spread_z, r.spread_t, r.spread_z > 0 ? r.spread_t / r.spread_z : 0.0);
   if (r.peak_ok)
-    std::printf("peak law: peak ~ v0^%.2f +- %.2f (95%%; paper: 2)\n", r.peak_exponent, r.peak_exponent_ci95);
+    std::printf("peak law: peak ~ v0^%.2f +- %.2f (95%%; over %zu traces; paper: 2)\n", r.peak_exponent,
+                r.peak_exponent_ci95, r.peak_points);
   else
     std::printf("peak law: needs at least 3 traces over 2 or more speeds\n");
+}
+
+// The peak law needs no depth term: from every trace read (k_z = 1), copied into r.
+void peak_law_of_all(const std::vector<Trace> &traces, const CollapseParams &p, CollapseResult &r)
+{
+  std::vector<CollapseInput> all;
+  for (const auto &t : traces) {
+    CollapseInput c;
+    c.name = t.path, c.z = t.z, c.F = t.F, c.v0 = t.v0, c.D = t.D, c.g = t.g, c.k_z = 1.0;
+    all.push_back(c);
+  }
+  if (all.empty()) return;
+  const CollapseResult law = granpen::collapse(all, p);
+  r.peak_ok = law.peak_ok, r.peak_exponent = law.peak_exponent, r.peak_exponent_se = law.peak_exponent_se;
+  r.peak_exponent_ci95 = law.peak_exponent_ci95, r.peak_prefactor = law.peak_prefactor;
+  r.peak_v2_prefactor = law.peak_v2_prefactor, r.peak_points = law.peak_points;
+}
+
+void print_ensembles(const std::vector<TraceGroup> &groups, const EnsembleCollapse &c, const CollapseParams &p)
+{
+  const CollapseResult &r = c.result;
+  std::size_t runs = 0;
+  for (const auto &g : groups) runs += g.mean.runs;
+  std::printf("\ngranpen collapse --ensemble: %zu ensemble%s of %zu runs; +-: standard error over runs "
+              "(bootstrap, %d resamples, %d with a positive k_z in every ensemble)\n",
+              groups.size(), groups.size() == 1 ? "" : "s", runs, c.resamples, c.usable);
+  for (std::size_t i = 0; i < groups.size(); ++i) {
+    std::puts(ensemble_summary(groups[i]).c_str());
+    std::printf("  mean: k_z = %s dyne/cm, peak %s dyne at z = %.3g cm, t~* = %s (crossed in %s of the resamples)\n",
+                pm(c.k_z[i], "%.4g").c_str(), pm(c.peak[i], "%.4g").c_str(), r.curves[i].peak_z,
+                pm(c.t_star[i], "%.2f").c_str(), percent(c.t_star[i].defined, c.usable).c_str());
+  }
+  std::printf("crossover: t~* = %s over %d of %zu ensembles (paper: 1)\n", pm(c.t_star_mean, "%.2f").c_str(),
+              r.n_crossed, r.curves.size());
+  std::printf("ensemble crossover: the mean of F/F_z over the ensembles %s\n",
+              r.ens_crossed ? ("stays within 1 +- " + json_number("%g", p.band) + " from t~* = " +
+                               pm(c.t_star_ensemble, "%.2f")).c_str()
+                            : ("does not stay within 1 +- " + json_number("%g", p.band)).c_str());
+  if (r.curves.size() > 1)
+    std::printf("collapse quality: spread of F/F_z across ensembles %s against z, %s against t~\n",
+                pm(c.spread_z, "%.3f").c_str(), pm(c.spread_t, "%.3f").c_str());
+  else
+    std::printf("collapse quality: needs 2 or more ensembles\n");
+  if (c.peak_exponent.ok)
+    std::printf("peak law: peak ~ v0^%s (95%%: +- %s, over runs; %zu ensembles; paper: 2)\n",
+                pm(c.peak_exponent, "%.2f").c_str(), json_number("%.2f", c.peak_exponent.ci95).c_str(),
+                r.peak_points);
+  else
+    std::printf("peak law: needs ensembles at 3 or more speeds\n");
+}
+
+// The peak law of every ensemble (k_z = 1: the peaks need no depth term), into c.
+void ensemble_peak_law(const std::vector<TraceGroup> &groups, const CollapseParams &p, const cli::EnsembleOptions &ens,
+                       EnsembleCollapse &c)
+{
+  std::vector<EnsembleCase> cases;
+  for (const auto &g : groups) {
+    EnsembleCase k;
+    k.name = g.label(), k.v0 = g.v0, k.g = g.g, k.D = g.D, k.mean = g.mean, k.k_z_fixed = 1.0;
+    cases.push_back(k);
+  }
+  if (cases.empty()) return;
+  const EnsembleCollapse law = collapse_ensembles(cases, p, ens.boot);
+  c.peak_exponent = law.peak_exponent;
+  CollapseResult &r = c.result;
+  r.peak_ok = law.result.peak_ok, r.peak_exponent = law.result.peak_exponent;
+  r.peak_exponent_se = law.peak_exponent.se, r.peak_exponent_ci95 = law.peak_exponent.ci95;
+  r.peak_prefactor = law.result.peak_prefactor, r.peak_v2_prefactor = law.result.peak_v2_prefactor;
+  r.peak_points = law.result.peak_points;
+}
+
+// --ensemble: groups averaged, their depth terms (an ensemble without a positive one is
+// left out, named), the collapse of the means with bootstrap uncertainties
+bool collapse_ensembled(const std::vector<Trace> &traces, const DepthTerm &dt, const CollapseParams &p,
+                        const cli::EnsembleOptions &ens, std::vector<TraceGroup> &groups, EnsembleCollapse &out)
+{
+  std::vector<std::string> left;
+  groups = group_traces(traces);
+  average_groups(groups, ens.mean, left);
+  std::vector<EnsembleCase> cases;
+  std::vector<TraceGroup> kept;
+  for (auto &g : groups) {
+    EnsembleCase c;
+    c.name = g.label(), c.v0 = g.v0, c.g = g.g, c.D = g.D, c.mean = g.mean;
+    const Trace &head = g.traces.front();
+    if (dt.alpha > 0) c.k_z_fixed = alpha_depth_term(dt, head);
+    else c.kz_fit = depth_term_window(dt, head);
+    if (!(ensemble_depth_term(c) > 0)) {
+      left.push_back("ensemble " + g.label() + ": no positive depth term on the mean of its " +
+                     std::to_string(g.mean.runs) + " runs; left out");
+      continue;
+    }
+    cases.push_back(std::move(c));
+    kept.push_back(g);    // copied: every group still gives the peak law
+  }
+  for (const auto &m : left) std::printf("note: %s\n", m.c_str());
+  if (cases.empty()) return false;
+  out = collapse_ensembles(cases, p, ens.boot);
+  ensemble_peak_law(groups, p, ens, out);    // every ensemble, with or without k_z
+  groups = std::move(kept);
+  return true;
+}
+
+}    // namespace
+
+int granpen::cli::run_collapse(const CollapseOptions &o)
+{
+  const std::string &csv = o.csv, &json = o.json;
+  const CollapseParams &p = o.params;
+  const DepthTerm &dt = o.depth;
+  const EnsembleOptions &ens = o.ensemble;
+  std::vector<std::string> problems, left_out, notes;
+  const auto files = expand_trace_paths(o.traces, problems);
+  for (const auto &output : {std::make_pair("--csv", csv), std::make_pair("--json", json)})
+    if (!output.second.empty()) refuse_overwriting_inputs(output.second, output.first, files);
+  const std::vector<Trace> traces = read_traces(files, problems);
+  const std::vector<CollapseInput> in = collapse_inputs(traces, dt, left_out, notes);
+  for (const auto &m : problems) std::fprintf(stderr, "granpen collapse: %s\n", m.c_str());
+  for (const auto &m : notes) std::printf("note: %s\n", m.c_str());
+  for (const auto &m : left_out) std::printf("note: %s\n", m.c_str());
+
+  CollapseResult r;
+  if (!in.empty()) {
+    r = granpen::collapse(in, p);
+    peak_law_of_all(traces, p, r);
+    std::printf("granpen collapse: %zu traces%s, band 1 +- %g, t~ bins of %g\n", r.curves.size(),
+                left_out.empty() ? "" : (" (" + std::to_string(left_out.size()) + " left out)").c_str(), p.band, p.tbin);
+    print_result(r, p);
+  } else if (!ens.on) {
+    std::fprintf(stderr, "granpen collapse: no usable trace\n");
+    return EXIT_FAILED;
+  } else {
+    std::printf("granpen collapse: no single trace has a positive k_z over the window; ensembles only\n");
+  }
+  std::vector<TraceGroup> groups;
+  EnsembleCollapse ec;
+  const bool have_ens = ens.on && collapse_ensembled(traces, dt, p, ens, groups, ec);
+  if (ens.on && !have_ens) {
+    std::fprintf(stderr, "granpen collapse: no usable ensemble\n");
+    return EXIT_FAILED;
+  }
+  if (have_ens) print_ensembles(groups, ec, p);
 
   if (!csv.empty()) {
-    write_file_atomic(csv, collapse_curves_csv(r));
+    write_file_atomic(csv, collapse_curves_csv(r) + (have_ens ? ensemble_collapse_csv_rows(groups, ec) : ""));
     std::printf("wrote %s\n", csv.c_str());
   }
   if (!json.empty()) {
-    write_json(json, collapse_json(r, p), 1);
+    Json j = collapse_json(r, p);
+    j["left_out"] = left_out;
+    if (have_ens) j["ensemble"] = ensemble_collapse_json(groups, ec);
+    write_json(json, j, 1);
     std::printf("wrote %s\n", json.c_str());
   }
-  return problems.empty() ? 0 : 1;
+  return problems.empty() ? EXIT_OK : EXIT_FAILED;
 }

@@ -1,6 +1,7 @@
 // granpen fit TRACE...: the paper's observables of each force trace: the depth term
 // k_z and alpha, the transient peak, the fluctuation wavelength (core/trace_fit.h).
 #include "options.h"
+#include "ensemble_tables.h"
 #include "atomic_file.h"
 #include "subcommand.h"
 #include "json_text.h"
@@ -17,6 +18,7 @@
 #include <filesystem>
 #include <sstream>
 #include <limits>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -29,6 +31,32 @@ namespace fs = std::filesystem;
 using granpen::FitResult;
 using granpen::TraceFit;
 
+
+std::string pm(const granpen::Estimate &e, const char *f)
+{
+  std::string t = json_number(f, e.value);
+  return e.se_ok ? t + " +- " + json_number("%.2g", e.se) : t;
+}
+
+// the ensemble's line: the fit of its mean with standard errors over runs
+void print_ensemble(const granpen::TraceGroup &g, const granpen::EnsembleFit &e)
+{
+  std::puts(granpen::ensemble_summary(g).c_str());
+  const TraceFit &f = e.fit;
+  std::string line = "  mean:";
+  if (e.k_z.ok)
+    line += " k_z = " + pm(e.k_z, "%.4g") + " dyne/cm (z " + json_number("%.3g", f.z_first) + ".." +
+            json_number("%.3g", f.z_last) + " cm, " + std::to_string(f.n_window) + " bins)";
+  else line += " k_z undefined";
+  line += e.alpha.ok ? ", alpha = " + pm(e.alpha, "%.3g") : ", alpha undefined";
+  if (e.peak_F.ok) line += ", peak F = " + pm(e.peak_F, "%.4g") + " dyne at z = " + pm(e.peak_z, "%.3g") + " cm";
+  else line += ", peak undefined";
+  line += e.wavelength.ok ? ", wavelength = " + pm(e.wavelength, "%.3g") + " cm" : ", wavelength undefined";
+  std::puts(line.c_str());
+  if (e.resamples > 0)
+    std::printf("  (+-: standard error over the %zu runs, bootstrap of %d resamples)\n", e.runs, e.resamples);
+  for (const auto &n : f.notes) std::printf("  note: %s\n", n.c_str());
+}
 
 std::string window_text(double zlo, double zhi)
 {
@@ -67,6 +95,26 @@ void print_result(const FitResult &r)
   for (const auto &n : f.notes) std::printf("  note: %s\n", n.c_str());
 }
 
+// --ensemble: the runs read again, grouped by (v0, g, D), averaged and fitted with the
+// window and mu, rho_g, d_g of each group's first run; JSON of each into out
+std::vector<granpen::TraceGroup> fit_ensembles(const std::vector<FitResult> &results,
+                                               const granpen::cli::EnsembleOptions &ens, granpen::Json &out)
+{
+  using namespace granpen;
+  std::vector<std::string> files, problems;
+  std::map<std::string, const FitResult *> by_file;
+  for (const auto &r : results) files.push_back(r.file), by_file[r.file] = &r;
+  auto groups = group_traces(read_traces(files, problems));
+  average_groups(groups, ens.mean, problems);
+  for (const auto &p : problems) std::printf("granpen fit: %s\n", p.c_str());
+  for (const auto &g : groups) {
+    const EnsembleFit e = fit_ensemble(g.mean, by_file.at(g.traces.front().path)->fit.params, ens.boot);
+    print_ensemble(g, e);
+    out.push_back(ensemble_fit_json(g, e));
+  }
+  return groups;
+}
+
 }    // namespace
 
 int granpen::cli::run_fit(const FitOptions &o)
@@ -75,6 +123,8 @@ int granpen::cli::run_fit(const FitOptions &o)
   const double zmin = w.zmin, zmax = w.zmax, tmin = w.tmin;
   const std::string &json_path = o.json, &csv_path = o.csv;
   const std::vector<std::string> &inputs = o.traces;
+  const EnsembleOptions &ens = o.ensemble;
+  const std::string &ens_csv = o.ensemble_csv;
   std::vector<FitResult> results;
   std::vector<FitFailure> failures;
 
@@ -82,7 +132,8 @@ int granpen::cli::run_fit(const FitOptions &o)
   const std::vector<std::string> files = expand_trace_paths(inputs, problems);
   for (const auto &m : problems) failures.push_back({m.substr(0, m.find(": ")), m});
   for (const auto &f : failures) std::fprintf(stderr, "granpen fit: %s\n", f.message.c_str());
-  for (const auto &o : {std::make_pair("--json", json_path), std::make_pair("--csv", csv_path)})
+  for (const auto &o : {std::make_pair("--json", json_path), std::make_pair("--csv", csv_path),
+                        std::make_pair("--ensemble-csv", ens_csv)})
     if (!o.second.empty()) refuse_overwriting_inputs(o.second, o.first, files);
 
   std::printf("granpen fit: window %s; %zu trace%s\n",
@@ -100,17 +151,26 @@ int granpen::cli::run_fit(const FitOptions &o)
     print_result(results.back());
   }
 
+  Json ensembles = Json::array();
+  std::vector<TraceGroup> groups;
+  if (ens.on) groups = fit_ensembles(results, ens, ensembles);
 
   int status = failures.empty() ? 0 : 1;
   if (!failures.empty())
     std::printf("granpen fit: %zu input%s failed (see above)\n", failures.size(), failures.size() == 1 ? "" : "s");
   if (!json_path.empty()) {
-    write_json(json_path, fit_results_json(results, failures, w), 1);
+    Json j = fit_results_json(results, failures, w);
+    if (ens.on) j["ensembles"] = ensembles;
+    write_json(json_path, j, 1);
     std::printf("wrote %s\n", json_path.c_str());
   }
   if (!csv_path.empty()) {
     write_file_atomic(csv_path, fit_results_csv(results));
     std::printf("wrote %s\n", csv_path.c_str());
+  }
+  if (!ens_csv.empty()) {
+    write_file_atomic(ens_csv, ensemble_curves_csv(groups));
+    std::printf("wrote %s\n", ens_csv.c_str());
   }
   return status;
 }

@@ -5,6 +5,7 @@ namespace {
 
 const char *HELP =
     "usage: granpen fit TRACE... [--zmin Z | --tmin T] [--zmax Z] [--mu MU] [--rho RHO] [--json FILE] [--csv FILE]\n"
+    "                [--ensemble [--ensemble-bin W] [--bootstrap B] [--ensemble-csv FILE]]\n"
     "Fits each force trace (granpen-trace v1; SI traces are converted to cgs). A folder\n"
     "argument stands for every *.csv in it. Per trace:\n"
     "  k_z    slope of F on z over the window (linear least squares), with its standard error\n"
@@ -15,6 +16,11 @@ const char *HELP =
     "  wavelength  dominant wavelength of F about the fit in the window (resampled to the\n"
     "         median dz, mean removed, Hann window, FFT; the lowest two bins excluded);\n"
     "         the paper sees fluctuations of wavelength about d_g\n"
+    "A window the data do not fill (e.g. z >= 3 cm on a 2 cm push) is shortened to the\n"
+    "deeper half of the trace, and a note says so.\n"
+    "With --ensemble, after the per-trace lines, one line per ensemble: the same numbers on\n"
+    "the ensemble mean, each +- its standard error over runs (--json: \"ensembles\";\n"
+    "--ensemble-csv: the mean curves z, F_mean, F_se).\n"
     "Exit status: 0 when every trace was read, 1 when a trace (or an output file) failed,\n"
     "2 for a usage error. Quantities that cannot be fitted (e.g. a window without data)\n"
     "are reported as undefined and do not change the exit status.\n";
@@ -43,7 +49,12 @@ granpen::cli::FitOptions granpen::cli::parse_fit(int argc, char **argv)
                                    "with a false *_ok flag; unreadable traces under \"errors\")")
       ->check(file_name())->type_name("FILE");
   app.add_option("--csv", o.csv, "write one CSV row per fitted trace")->check(file_name())->type_name("FILE");
+  add_ensemble_options(cmd, o.ensemble);
+  app.add_option("--ensemble-csv", o.ensemble_csv, "--ensemble: write the mean curves (v0, g, D, runs, z, F_mean, F_se, F_sd)")
+      ->check(file_name())->type_name("FILE");
   if (!cmd.parse(argc, argv, o.help)) return o;
+  check_ensemble_options(cmd, o.ensemble);
+  if (!o.ensemble.on && !o.ensemble_csv.empty()) throw UsageError("--ensemble-csv needs --ensemble");
   if (zmin_opt->count() > 0 && tmin_opt->count() > 0) throw UsageError("give --zmin or --tmin, not both");
   if (!(tmin_opt->count() > 0) && !(w.zmin < w.zmax)) throw UsageError("--zmin must be below --zmax");
   return o;

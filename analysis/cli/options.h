@@ -11,6 +11,7 @@
 #include "args.h"
 #include "collapse_tables.h"    // DepthTerm
 #include "dump_frames.h"        // RodOptions
+#include "ensemble_args.h"      // EnsembleOptions
 #include "figures.h"            // figures::Options
 #include "fit_tables.h"         // FitWindow
 #include "gap_diagnosis.h"      // GapOptions
@@ -53,11 +54,14 @@ CheckOptions parse_check(int argc, char **argv);
 // granpen fit TRACE... Checks: at least one trace; window.tmin -1 (not given) or > 0 and
 // finite, and then zmin at its default 3 (--zmin and --tmin exclude each other);
 // without tmin, zmin < zmax (zmax may be +inf); window.mu, rho_g 0 (from the header) or
-// > 0; json, csv empty (not written) or a name.
+// > 0; json, csv empty (not written) or a name; ensemble as EnsembleOptions
+// (ensemble_args.h); ensemble_csv empty, or a name and then ensemble.on.
 struct FitOptions : ParsedCommand {
   std::vector<std::string> traces;
   FitWindow window = {3.0, std::numeric_limits<double>::infinity(), -1.0, 0.0, 0.0};
   std::string json, csv;
+  EnsembleOptions ensemble;
+  std::string ensemble_csv;
 };
 FitOptions parse_fit(int argc, char **argv);
 
@@ -71,12 +75,14 @@ CalibrationOptions parse_calibration(int argc, char **argv);
 
 // granpen collapse TRACE-OR-FOLDER... Checks: at least one trace; depth.kz_zmin <
 // kz_zmax (kz_zmax may be +inf, kz_zmin finite); depth.alpha, mu, rho_g 0 (not given) or
-// > 0; params.band, tbin > 0 and finite, params.zmin finite; csv, json empty or a name.
+// > 0; params.band, tbin > 0 and finite, params.zmin finite; csv, json empty or a name;
+// ensemble as EnsembleOptions (ensemble_args.h).
 struct CollapseOptions : ParsedCommand {
   std::vector<std::string> traces;
   DepthTerm depth;
   CollapseParams params;
   std::string csv, json;
+  EnsembleOptions ensemble;
 };
 CollapseOptions parse_collapse(int argc, char **argv);
 
@@ -128,7 +134,9 @@ MomentumOptions parse_momentum(int argc, char **argv);
 // granpen plot KIND INPUTS... --out DIR. Checks: kind force, ratio, peak, kz, flow or
 // momentum; at least one input (flow, momentum: exactly one); figures.out not empty;
 // figures.kz_zmin < kz_zmax; figures.alpha, mu, rho, D >= 0; figures.collapse.band, tbin
-// > 0 and finite, collapse.zmin finite.
+// > 0 and finite, collapse.zmin finite; figures.ensemble only with kind force, ratio, peak
+// or kz and without figures.each; figures.ens.bin and figures.boot.resamples as
+// EnsembleOptions' mean.bin and boot.resamples (ensemble_args.h).
 struct PlotOptions : ParsedCommand {
   std::string kind;
   std::vector<std::string> inputs;

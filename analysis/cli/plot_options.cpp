@@ -34,6 +34,12 @@ const char *HELP =
     "  momentum DIR   momentum_classes.csv (upward momentum and counts per speed class\n"
     "                 against t~) and momentum_drag.csv (F against mu g M(v_z > v0/320)\n"
     "                 with the 1:1 line).                -> momentum_classes, momentum_drag\n"
+    "--ensemble (force, ratio, peak, kz): the runs of each (v0, g, D) aligned at their force\n"
+    "onsets and averaged (as granpen fit/collapse --ensemble): force draws each mean with\n"
+    "its standard error over runs as a band; ratio the ensembles' F/F_z with that band; peak\n"
+    "and kz each ensemble's value +- its se, single runs as small open circles.\n"
+    "Every legend lists every group, or says how many entries it folded; a panel or inset\n"
+    "with nothing to show is left out with a note.\n"
     "gnuplot (gnuplot-nox; $GRANPEN_GNUPLOT overrides the program) needs the pngcairo\n"
     "and svg terminals. Exit status: 0 when every figure was made, 1 when an input was\n"
     "unusable or gnuplot is missing or failed (the scripts and data are still written),\n"
@@ -69,13 +75,19 @@ granpen::cli::PlotOptions granpen::cli::parse_plot(int argc, char **argv)
   cmd.number("--zmin", o.collapse.zmin, "ratio: as granpen collapse (default 0.2 cm)")->type_name("Z");
   app.add_option("--D", o.D, "flow: rod diameter in cm when the tables' headers do not give it\n(default 2)")
       ->check(non_negative_number())->type_name("D");
+  EnsembleOptions ens;
+  add_ensemble_options(cmd, ens);
   if (!cmd.parse(argc, argv, po.help)) return po;
+  check_ensemble_options(cmd, ens);
+  o.ensemble = ens.on, o.ens = ens.mean, o.boot = ens.boot;
+  if (ens.on && o.each) throw UsageError("give --ensemble or --each, not both");
   static const char *kinds[] = {"force", "ratio", "peak", "kz", "flow", "momentum"};
   if (std::find_if(std::begin(kinds), std::end(kinds), [&](const char *k) { return kind == k; }) == std::end(kinds))
     throw UsageError("unknown kind '" + kind + "' (force, ratio, peak, kz, flow, momentum)");
   if (o.out.empty()) throw UsageError("--out DIR is required");
   if (po.inputs.empty())
     throw UsageError(kind == "flow" || kind == "momentum" ? "give the folder of the tables" : "no trace given");
+  if ((kind == "flow" || kind == "momentum") && ens.on) throw UsageError("--ensemble is for force, ratio, peak and kz");
   if ((kind == "flow" || kind == "momentum") && po.inputs.size() != 1)
     throw UsageError(kind + " takes one folder, got " + std::to_string(po.inputs.size()) + " arguments");
   if (!(o.kz_zmin < o.kz_zmax)) throw UsageError("--kz-zmin must be below --kz-zmax");

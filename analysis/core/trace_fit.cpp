@@ -47,6 +47,29 @@ std::size_t smooth_at_most(std::size_t n)
   return best;
 }
 
+// the finite samples with wlo <= z <= whi
+void window_samples(const std::vector<double> &z, const std::vector<double> &F, double wlo, double whi,
+                    std::vector<double> &zw, std::vector<double> &Fw)
+{
+  zw.clear(), Fw.clear();
+  for (std::size_t i = 0; i < z.size(); ++i)
+    if (z[i] >= wlo && z[i] <= whi && std::isfinite(F[i])) {
+      zw.push_back(z[i]);
+      Fw.push_back(F[i]);
+    }
+}
+
+std::size_t distinct_depths(std::vector<double> zw)
+{
+  std::sort(zw.begin(), zw.end());
+  return (std::size_t) (std::unique(zw.begin(), zw.end()) - zw.begin());
+}
+
+std::string window_name(double zlo, double zhi)
+{
+  return std::isfinite(zhi) ? "z = " + fmt(zlo) + ".." + fmt(zhi) + " cm" : "z >= " + fmt(zlo) + " cm";
+}
+
 }    // namespace
 
 Wavelength dominant_wavelength(const std::vector<double> &z, const std::vector<double> &y)
@@ -165,11 +188,23 @@ TraceFit fit_trace(const std::vector<double> &z, const std::vector<double> &F, c
 
   // depth term over the window
   std::vector<double> zw, Fw;
-  for (std::size_t i = 0; i < z.size(); ++i)
-    if (z[i] >= p.zlo && z[i] <= p.zhi && std::isfinite(F[i])) {
-      zw.push_back(z[i]);
-      Fw.push_back(F[i]);
+  double wlo = p.zlo, whi = p.zhi;
+  window_samples(z, F, wlo, whi, zw, Fw);
+  if (p.shorten_window && any && zdeep > 0.0) {
+    if (distinct_depths(zw) < 3) {
+      const std::string was = window_name(p.zlo, p.zhi);
+      wlo = 0.5 * zdeep, whi = zdeep;
+      window_samples(z, F, wlo, whi, zw, Fw);
+      r.zlo = wlo, r.zhi = whi;
+      r.window_shortened = true;
+      r.notes.push_back("k_z window " + was + " does not fit the data (deepest z = " + fmt(zdeep) +
+                        " cm): shortened to z = " + fmt(wlo) + ".." + fmt(whi) + " cm, the deeper half of the trace");
+    } else if (std::isfinite(p.zhi) && p.zhi > zdeep) {
+      r.zhi = zdeep;
+      r.notes.push_back("k_z window end " + fmt(p.zhi) + " cm lies beyond the deepest z = " + fmt(zdeep) +
+                        " cm: fitted to " + fmt(zdeep) + " cm");
     }
+  }
   r.n_window = zw.size();
   if (!zw.empty()) {
     r.z_first = *std::min_element(zw.begin(), zw.end());
@@ -194,7 +229,7 @@ TraceFit fit_trace(const std::vector<double> &z, const std::vector<double> &F, c
     }
   } catch (std::invalid_argument &) {
     r.notes.push_back("k_z undefined: " + std::to_string(zw.size()) + " points in the window z = " +
-                      fmt(p.zlo) + ".." + (std::isfinite(p.zhi) ? fmt(p.zhi) : std::string("end")) +
+                      fmt(wlo) + ".." + (std::isfinite(whi) ? fmt(whi) : std::string("end")) +
                       " cm (at least 3 at distinct depths needed; deepest z = " + fmt(zdeep) + " cm)");
   }
 

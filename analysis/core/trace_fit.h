@@ -29,6 +29,11 @@ struct TraceFitParams {
   double mu = 0.0;       // grain friction coefficient
   double rho_g = 0.0;    // grain density, g/cm^3
   double d_g = 0.0;      // grain diameter, cm (the wavelength's natural unit)
+  // A window the data do not fill: when it holds fewer than 3 distinct depths and the trace
+  // reaches z > 0, the fit uses the deeper half of the trace, z = zdeep/2 .. zdeep (the
+  // depth term dominates at depth); window_shortened and a note say so. A window end beyond
+  // the deepest depth gets a note. Off: such a window leaves k_z undefined.
+  bool shorten_window = false;
 };
 
 // Bounds of the wavelength's grid (docs/reliability.md). The grid is never finer than a
@@ -63,6 +68,7 @@ Wavelength dominant_wavelength(const std::vector<double> &z, const std::vector<d
 struct TraceFit {
   TraceFitParams params;            // as given (params.zhi may be infinite)
   double zlo = 0.0, zhi = 0.0;      // the window; an infinite end is the data's end
+  bool window_shortened = false;    // params.shorten_window moved it onto the data
 
   // depth term: F = intercept + k_z z over the window
   bool slope_ok = false;

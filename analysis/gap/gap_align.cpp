@@ -1,6 +1,7 @@
 // granpen gap, stage 4 (align and bin): see gap_align.h.
 #include "gap_align.h"
 
+#include "onset_alignment.h"
 #include "text_util.h"
 
 #include <algorithm>
@@ -11,6 +12,13 @@ namespace granpen {
 namespace {
 
 std::string fmt(double v, const char *f = "%.4g") { return printf_number(f, v); }
+
+std::vector<double> onsets_of(const std::vector<TraceRun> &runs)
+{
+  std::vector<double> o;
+  for (const auto &r : runs) o.push_back(r.onset);
+  return o;
+}
 
 // aligns an ensemble at speed v to onset; returns its deepest common depth
 double align_ensemble(std::vector<TraceRun> &runs, double onset, const std::string &what, double v)
@@ -29,11 +37,8 @@ Alignment align_and_bin(RunsBySpeed &real, SimulatedRuns &sims, double max_depth
   for (auto &[v, runs] : real) {
     auto &base = sims.base[v];
     if (base.size() < 2) throw InputError("the baseline has fewer than 2 runs at v0 = " + fmt(v));
-    double s = 0;
-    for (const auto &r : base) s += r.onset;
-    const double ref = out.onset[v] = s / base.size();
-    double shift_max = 0;
-    for (const auto &r : runs) shift_max = std::max(shift_max, std::abs(ref - r.onset));
+    const double ref = out.onset[v] = align_onsets(onsets_of(base)).reference;
+    const double shift_max = align_onsets(onsets_of(runs), ref).max_shift;
     if (shift_max > 0.01)
       out.notes.push_back("v0 = " + fmt(v) + ": measured depth origins moved by up to " + fmt(shift_max, "%.3f") +
                           " cm to align the force onsets with the simulation's");

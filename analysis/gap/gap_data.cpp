@@ -12,27 +12,6 @@
 
 namespace granpen {
 
-double force_onset(const std::vector<double> &z, const std::vector<double> &F, double frac, double search)
-{
-  const std::size_t n = std::min(z.size(), F.size());
-  double fmax = 0.0;
-  for (std::size_t i = 0; i < n; ++i) fmax = std::max(fmax, F[i]);
-  if (!(fmax > 0.0)) return std::numeric_limits<double>::quiet_NaN();
-  // first touch: F above 2% of the run's largest force (well above a sensor's noise floor)
-  std::size_t first = 0;
-  while (first < n && F[first] <= 0.02 * fmax) ++first;
-  double fp = 0.0;
-  for (std::size_t i = first; i < n && z[i] <= z[first] + search; ++i) fp = std::max(fp, F[i]);
-  const double level = frac * fp;
-  for (std::size_t i = first; i < n; ++i)
-    if (F[i] >= level) {
-      if (i == 0 || F[i - 1] >= level) return z[i];
-      const double f = (level - F[i - 1]) / (F[i] - F[i - 1]);
-      return z[i - 1] + f * (z[i] - z[i - 1]);
-    }
-  return std::numeric_limits<double>::quiet_NaN();
-}
-
 std::size_t GapGrid::nbins() const { return (std::size_t) std::floor(zmax / w + 1e-9); }
 std::size_t GapGrid::nwindows() const { return (std::size_t) std::floor(zmax / window + 1e-9); }
 

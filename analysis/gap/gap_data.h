@@ -1,5 +1,5 @@
 // granpen gap: the numerics of comparing two ensembles of force traces (plain arrays in,
-// no files): depth alignment by force onset, the common depth grid, per-run features
+// no files): the common depth grid (runs aligned by core/onset_alignment.h), per-run features
 // (bin means of F and the fluctuation level about them), ensembles with run-to-run
 // scatter, a pooled noise model, the overall gap G of shared/formats/gap-metric.md, and
 // the paper's observables per regime.
@@ -7,6 +7,7 @@
 #define GRANPEN_GAP_DATA_H
 
 #include "gap_metric.h"
+#include "onset_alignment.h"
 
 #include <cstddef>
 #include <string>
@@ -14,10 +15,7 @@
 
 namespace granpen {
 
-// Depth (cm) where F first reaches frac of its largest value over the first `search` cm
-// after F first rises above zero, interpolated between samples; NaN without contact.
-double force_onset(const std::vector<double> &z, const std::vector<double> &F, double frac = 0.2,
-                   double search = 1.0);
+// force_onset: core/onset_alignment.h.
 
 // The common grid: bins of width w over 0 < z <= zmax, fluctuation windows of `window` cm,
 // and frequency bands (Hz) of the fluctuation spectrum.

@@ -2,6 +2,7 @@
 #include "gap_runs.h"
 
 #include "gap_data.h"
+#include "onset_alignment.h"
 
 #include <algorithm>
 
@@ -25,18 +26,20 @@ TraceRun run_of_trace(const Trace &trace)
 
 void align_runs(std::vector<TraceRun> &runs, double onset)
 {
-  for (auto &r : runs) {
-    const double d = onset - r.onset;
-    for (auto &z : r.z) z += d;
-    r.onset = onset;
+  std::vector<double> onsets;
+  for (const auto &r : runs) onsets.push_back(r.onset);
+  const OnsetAlignment a = align_onsets(onsets, onset);
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    shift_depths(runs[i].z, a.shift[i]);
+    runs[i].onset += a.shift[i];
   }
 }
 
 double deepest_common(const std::vector<TraceRun> &runs)
 {
-  double m = INFINITY;
-  for (const auto &r : runs) m = std::min(m, r.z.empty() ? -INFINITY : *std::max_element(r.z.begin(), r.z.end()));
-  return m;
+  std::vector<const std::vector<double> *> z;
+  for (const auto &r : runs) z.push_back(&r.z);
+  return deepest_common(z);
 }
 
 }    // namespace granpen

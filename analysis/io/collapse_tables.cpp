@@ -7,37 +7,47 @@
 
 namespace granpen {
 
-std::vector<CollapseInput> read_collapse_inputs(const std::vector<std::string> &files, const DepthTerm &dt,
-                                                std::vector<std::string> &problems)
+double alpha_depth_term(const DepthTerm &dt, const Trace &tr)
+{
+  const double mu = dt.mu > 0 ? dt.mu : tr.number("mu", 0.3);
+  const double rho = dt.rho_g > 0 ? dt.rho_g : tr.number("rho_g", 3.0);
+  return dt.alpha * mu * rho * tr.g * tr.D * tr.D;
+}
+
+TraceFitParams depth_term_window(const DepthTerm &dt, const Trace &tr)
+{
+  TraceFitParams fp;
+  fp.zlo = dt.kz_zmin, fp.zhi = dt.kz_zmax, fp.v0 = tr.v0, fp.D = tr.D, fp.g = tr.g;
+  fp.shorten_window = true;
+  return fp;
+}
+
+std::vector<CollapseInput> collapse_inputs(const std::vector<Trace> &traces, const DepthTerm &dt,
+                                           std::vector<std::string> &left_out, std::vector<std::string> &notes)
 {
   std::vector<CollapseInput> in;
-  for (const auto &f : files) {
-    try {
-      auto tr = to_cgs(read_trace(f));
-      CollapseInput c;
-      c.name = f;
-      c.z = tr.z;
-      c.F = tr.F;
-      c.v0 = tr.v0, c.D = tr.D, c.g = tr.g;
-      if (dt.alpha > 0.0) {
-        const double mu = dt.mu > 0 ? dt.mu : tr.number("mu", 0.3);
-        const double rho = dt.rho_g > 0 ? dt.rho_g : tr.number("rho_g", 3.0);
-        c.k_z = dt.alpha * mu * rho * tr.g * tr.D * tr.D;
-      } else {
-        TraceFitParams fp;
-        fp.zlo = dt.kz_zmin, fp.zhi = dt.kz_zmax, fp.v0 = tr.v0, fp.D = tr.D, fp.g = tr.g;
-        auto fit = fit_trace(tr.z, tr.F, fp);
-        if (!fit.slope_ok || !(fit.k_z > 0)) {
-          problems.push_back(f + ": no positive depth term over the k_z window (use --kz-zmin/--kz-zmax or --alpha)");
-          continue;
-        }
-        c.k_z = fit.k_z;
+  for (const auto &tr : traces) {
+    CollapseInput c;
+    c.name = tr.path;
+    c.z = tr.z;
+    c.F = tr.F;
+    c.v0 = tr.v0, c.D = tr.D, c.g = tr.g;
+    if (dt.alpha > 0.0) {
+      c.k_z = alpha_depth_term(dt, tr);
+    } else {
+      const auto fit = fit_trace(tr.z, tr.F, depth_term_window(dt, tr));
+      if (fit.window_shortened) notes.push_back(tr.path + ": " + fit.notes.front());
+      if (!fit.slope_ok || !(fit.k_z > 0)) {
+        left_out.push_back(tr.path + ": no positive depth term over the k_z window z = " + json_number("%g", fit.zlo) +
+                           ".." + json_number("%.3g", fit.zhi) + " cm (k_z = " + json_number("%.3g", fit.k_z) +
+                           " dyne/cm); left out (--kz-zmin/--kz-zmax, --alpha or --ensemble may help)");
+        continue;
       }
-      in.push_back(c);
-    } catch (InputError &e) {
-      problems.push_back(e.what());
+      c.k_z = fit.k_z;
     }
-  }  return in;
+    in.push_back(c);
+  }
+  return in;
 }
 
 std::string collapse_curves_csv(const CollapseResult &r)

@@ -6,6 +6,8 @@
 
 #include "collapse.h"
 #include "json_writer.h"
+#include "trace_fit.h"
+#include "trace_reader.h"
 
 #include <cmath>
 #include <string>
@@ -19,10 +21,16 @@ struct DepthTerm {
   double kz_zmin = 3.0, kz_zmax = INFINITY;
   double alpha = 0.0, mu = 0.0, rho_g = 0.0;
 };
-// The traces of files (cgs) with their k_z; a trace that cannot be read, or has no
-// positive depth term, is a line in problems naming the file.
-std::vector<CollapseInput> read_collapse_inputs(const std::vector<std::string> &files, const DepthTerm &dt,
-                                                std::vector<std::string> &problems);
+// The traces (cgs) with their k_z (a window the data do not fill shortened, as
+// core/trace_fit's shorten_window; notes say so). A trace without a positive depth term is
+// a line in left_out naming the file.
+std::vector<CollapseInput> collapse_inputs(const std::vector<Trace> &traces, const DepthTerm &dt,
+                                           std::vector<std::string> &left_out, std::vector<std::string> &notes);
+
+// The depth term of a trace or an ensemble of the case of `header`: k_z = alpha mu rho_g g
+// D^2 when dt.alpha > 0 (fixed), else the window of the fit (shorten_window on).
+double alpha_depth_term(const DepthTerm &dt, const Trace &header);
+TraceFitParams depth_term_window(const DepthTerm &dt, const Trace &header);
 
 std::string collapse_curves_csv(const CollapseResult &r);
 Json collapse_json(const CollapseResult &r, const CollapseParams &p);

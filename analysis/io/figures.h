@@ -6,6 +6,8 @@
 #define GRANPEN_FIGURES_H
 
 #include "collapse.h"
+#include "ensemble_average.h"
+#include "ensemble_fit.h"
 #include "json_writer.h"
 #include "plot_writer.h"
 
@@ -25,6 +27,9 @@ struct Options {
   double alpha = 0.0, mu = 0.0, rho = 0.0;     // ratio: F_z from alpha, as granpen collapse
   CollapseParams collapse;      // --band, --tbin, --zmin
   double D = 0.0;               // flow: rod diameter when the tables do not say (cm)
+  bool ensemble = false;        // force, ratio, peak, kz: runs of one (v0, g, D) averaged
+  EnsembleParams ens;           // its bins
+  BootstrapParams boot;         // its uncertainties
 };
 
 // What one invocation made: the figures' outcomes, problems with the inputs (each a
@@ -34,7 +39,11 @@ struct Run {
   std::vector<PlotResult> figures;
   std::vector<std::string> problems, notes;
   Json numbers = Json::object();
-  void make(const PlotFiles &f) { figures.push_back(write_plot(opt.out, f, opt.run)); }
+  void make(const PlotFiles &f)
+  {
+    figures.push_back(write_plot(opt.out, f, opt.run));
+    notes.insert(notes.end(), f.notes.begin(), f.notes.end());
+  }
   // a series figure: its name, title, the about text of its script, size in pixels, the
   // panels, and the screen fraction of their grid (the rest: the key column)
   void make_series(const std::string &name, const std::string &title, const std::string &about, int width, int height,

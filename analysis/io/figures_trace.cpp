@@ -4,6 +4,8 @@
 // and granpen fit.
 #include "figures.h"
 
+#include "collapse_tables.h"
+#include "ensemble_tables.h"
 #include "json_text.h"
 #include "linear_fit.h"
 #include "trace_files.h"
@@ -11,6 +13,7 @@
 #include "trace_reader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -100,13 +103,38 @@ std::vector<TraceIn> load_traces(const std::vector<std::string> &inputs, Run &ru
   return out;
 }
 
-// traces grouped by v0 (ascending): indices into the traces
+// a < b with runs of digits compared as numbers ("run 2" < "run 10")
+bool natural_less(const std::string &a, const std::string &b)
+{
+  std::size_t i = 0, j = 0;
+  while (i < a.size() && j < b.size()) {
+    if (std::isdigit((unsigned char) a[i]) && std::isdigit((unsigned char) b[j])) {
+      std::size_t i2 = i, j2 = j;
+      while (i2 < a.size() && std::isdigit((unsigned char) a[i2])) ++i2;
+      while (j2 < b.size() && std::isdigit((unsigned char) b[j2])) ++j2;
+      const double x = std::stod(a.substr(i, i2 - i)), y = std::stod(b.substr(j, j2 - j));
+      if (x != y) return x < y;
+      i = i2, j = j2;
+    } else {
+      if (a[i] != b[j]) return a[i] < b[j];
+      ++i, ++j;
+    }
+  }
+  return a.size() - i < b.size() - j;
+}
+
+// traces grouped by v0 (ascending): indices into the traces, each group in the natural
+// order of the runs' labels (seed 2 before seed 10)
 std::vector<std::vector<int>> by_speed(const std::vector<TraceIn> &t)
 {
   std::map<double, std::vector<int>> m;
   for (std::size_t i = 0; i < t.size(); ++i) m[t[i].tr.v0].push_back((int) i);
   std::vector<std::vector<int>> g;
-  for (auto &kv : m) g.push_back(kv.second);
+  for (auto &kv : m) {
+    std::stable_sort(kv.second.begin(), kv.second.end(),
+                     [&](int a, int b) { return natural_less(t[a].label, t[b].label); });
+    g.push_back(kv.second);
+  }
   return g;
 }
 
@@ -157,9 +185,11 @@ bool depth_term(const TraceIn &t, const Options &o, double &k_z, std::string &wh
   }
   TraceFitParams fp;
   fp.zlo = o.kz_zmin, fp.zhi = o.kz_zmax, fp.v0 = t.tr.v0, fp.D = t.tr.D, fp.g = t.tr.g;
+  fp.shorten_window = true;
   const TraceFit fit = fit_trace(t.tr.z, t.tr.F, fp);
+  if (fit.window_shortened) why = t.file + ": " + fit.notes.front();
   if (!fit.slope_ok || !(fit.k_z > 0)) {
-    why = t.file + ": no positive depth term over the k_z window (use --kz-zmin/--kz-zmax or --alpha)";
+    why = t.file + ": no positive depth term over the k_z window; left out (use --kz-zmin/--kz-zmax, --alpha or --ensemble)";
     return false;
   }
   k_z = fit.k_z;
@@ -183,43 +213,157 @@ bool collapse_or_note(const std::vector<CollapseInput> &in, Run &run, CollapseRe
 
 // ---------------------------------------------------------------- force
 
-void plot_force(const std::vector<std::string> &inputs, Run &run)
+namespace {
+
+// "" when the peak region earns an enlarged view: some run has at least 5 samples at
+// 0 < z < zpeak and the region is less than half the depth drawn (else the main plot shows
+// it as large); otherwise why not, for a note.
+std::string peak_view_missing(const std::vector<TraceIn> &traces, double zpeak)
 {
-  const auto traces = load_traces(inputs, run);
-  if (traces.empty()) return;
-  const auto groups = by_speed(traces);
-  double Dmax = 0, Fmax = 0;
+  std::size_t most = 0;
+  double zdeep = -INFINITY;
   for (const auto &t : traces) {
-    Dmax = std::max(Dmax, t.tr.D);
-    for (double F : t.tr.F) Fmax = std::max(Fmax, std::fabs(F));
+    std::size_t n = 0;
+    for (double z : t.tr.z) n += z > 0 && z < zpeak, zdeep = std::max(zdeep, z);
+    most = std::max(most, n);
   }
-  const double zpeak = 0.35 * Dmax;    // 0.7 R
-  const AxisScale ys = axis_scale(Fmax, "dyne");
+  const std::string region = "the peak region 0 < z < 0.7 R = " + fmt("%.3g", zpeak) + " cm";
+  if (most < 5)
+    return region + " holds " + std::to_string(most) + " samples of the best-resolved run (5 needed): no enlarged view of it";
+  if (zpeak >= 0.5 * zdeep)
+    return region + " is half or more of the depth drawn (to " + fmt("%.3g", zdeep) + " cm): no enlarged view of it";
+  return "";
+}
 
-  SeriesPanel main, inset;
-  main.xlabel = "rod tip depth z below the bed surface (cm)";
-  main.ylabel = "drag force F (" + ys.unit + ")";
-  main.extra = "set offsets 0, 0, graph 0.04, 0\n"
-               "set object 2 rectangle from first 0, graph 0 to first " + gp_number(zpeak) +
-               ", graph 1 behind fillcolor rgb \"#e8e8e8\" fillstyle solid 1.0 noborder\n"
-               "set label 2 \"z < 0.7 R\" at first " + gp_number(0.5 * zpeak) + ", graph 0.975 center textcolor rgb \"#606060\"\n";
-  main.title = "";
+// The inset below the key column's legend of `lines` lines, the figure made taller (to
+// 1000 px at most) until the inset is at least 0.32 of its height; false when it cannot be.
+bool place_below_key(SeriesFigure &fig, SeriesPanel &inset, int lines)
+{
+  for (;;) {
+    const double h = key_column_top(fig) - lines * key_line_height(fig.height) - 0.05 - 0.04;
+    if (h >= 0.32) {
+      inset.at_y = 0.04, inset.at_h = std::min(h, 0.64);
+      return true;
+    }
+    if (fig.height >= 1000) {
+      inset.at_y = 0.04, inset.at_h = 0.32;
+      return false;
+    }
+    fig.height = std::min(1000, fig.height + 60);
+  }
+}
+
+int key_lines(const SeriesPanel &p)
+{
+  int n = p.key_title.empty() ? 0 : 1 + (int) std::count(p.key_title.begin(), p.key_title.end(), '\n');
+  for (const auto &s : p.series) n += !s.title.empty();
+  return n;
+}
+
+// one series per run of group g (shades of colour); in: their part in the peak region
+void each_run(const std::vector<TraceIn> &traces, const std::vector<int> &g, const std::string &colour,
+              double factor, double zpeak, SeriesPanel &main, SeriesPanel &inset)
+{
+  for (std::size_t j = 0; j < g.size(); ++j) {
+    const auto &t = traces[g[j]];
+    PlotSeries s, in;
+    s.title = v0_text(t.tr.v0) + (g.size() > 1 ? ", " + t.label : "");
+    s.colour = in.colour = plot_shade(colour, (int) j, (int) g.size());
+    s.line_width = in.line_width = g.size() > 1 ? 1.5 : 2.0;
+    for (std::size_t k = 0; k < t.tr.z.size(); ++k) {
+      s.x.push_back(t.tr.z[k]), s.y.push_back(t.tr.F[k] / factor);
+      if (t.tr.z[k] >= -0.15 * zpeak && t.tr.z[k] <= zpeak * 1.05) in.x.push_back(t.tr.z[k]), in.y.push_back(t.tr.F[k] / factor);
+    }
+    main.series.push_back(s);
+    inset.series.push_back(in);
+  }
+}
+
+// the mean of the runs of g on the first run's depth step, with their min..max range
+PlotSeries mean_and_range(const std::vector<TraceIn> &traces, const std::vector<int> &g, double factor)
+{
+  double z0 = -INFINITY, z1 = INFINITY;
+  for (int i : g) z0 = std::max(z0, traces[i].tr.z.front()), z1 = std::min(z1, traces[i].tr.z.back());
+  const auto &zr = traces[g[0]].tr.z;
+  std::vector<double> dz;
+  for (std::size_t k = 1; k < zr.size(); ++k) dz.push_back(zr[k] - zr[k - 1]);
+  std::nth_element(dz.begin(), dz.begin() + dz.size() / 2, dz.end());
+  const double step = dz[dz.size() / 2];
+  PlotSeries s;
+  s.title = v0_text(traces[g[0]].tr.v0) + " (" + std::to_string(g.size()) + " runs)";
+  for (std::size_t k = 0; z0 + k * step <= z1 + 1e-9 * step; ++k) {
+    const double z = z0 + k * step;
+    double sum = 0, lo = INFINITY, hi = -INFINITY;
+    for (int i : g) {
+      const double F = interp(traces[i].tr.z, traces[i].tr.F, z) / factor;
+      sum += F, lo = std::min(lo, F), hi = std::max(hi, F);
+    }
+    s.x.push_back(z), s.y.push_back(sum / g.size()), s.band_lo.push_back(lo), s.band_hi.push_back(hi);
+  }
+  return s;
+}
+
+// a series cut to the inset's depths
+PlotSeries inset_part(const PlotSeries &s, double zpeak)
+{
+  PlotSeries in = s;
+  in.title.clear();
+  in.x.clear(), in.y.clear(), in.band_lo.clear(), in.band_hi.clear();
+  const bool band = s.band_lo.size() == s.x.size();
+  for (std::size_t k = 0; k < s.x.size(); ++k)
+    if (s.x[k] >= -0.15 * zpeak && s.x[k] <= zpeak * 1.05) {
+      in.x.push_back(s.x[k]), in.y.push_back(s.y[k]);
+      if (band) in.band_lo.push_back(s.band_lo[k]), in.band_hi.push_back(s.band_hi[k]);
+    }
+  return in;
+}
+
+// --ensemble: the groups of (v0, g, D), averaged; the mean +- se per group and its peak
+// (fit_ensemble's, with its standard error)
+void force_ensembles(const std::vector<TraceIn> &traces, double factor, double zpeak, Run &run, SeriesPanel &main,
+                     SeriesPanel &inset, Json &json_runs)
+{
+  std::vector<Trace> tr;
+  for (const auto &t : traces) tr.push_back(t.tr);
+  auto groups = group_traces(tr);
+  average_groups(groups, run.opt.ens, run.problems);
+  bool several_cases = false;
+  for (const auto &g : groups) several_cases |= g.g != groups.front().g || g.D != groups.front().D;
+  for (std::size_t gi = 0; gi < groups.size(); ++gi) {
+    const auto &g = groups[gi];
+    const EnsembleMean &m = g.mean;
+    PlotSeries s;
+    s.colour = plot_colour((int) gi);
+    s.title = v0_text(g.v0) + (several_cases ? ", g = " + fmt("%g", g.g) + ", D = " + fmt("%g", g.D) : std::string()) +
+              " (" + std::to_string(m.runs) + (m.runs == 1 ? " run)" : " runs)");
+    for (std::size_t k = 0; k < m.z.size(); ++k)
+      s.x.push_back(m.z[k]), s.y.push_back(m.mean[k] / factor), s.band_lo.push_back((m.mean[k] - m.se[k]) / factor),
+          s.band_hi.push_back((m.mean[k] + m.se[k]) / factor);
+    main.series.push_back(s);
+    inset.series.push_back(inset_part(s, zpeak));
+    TraceFitParams fp;
+    fp.D = g.D, fp.g = g.g, fp.v0 = g.v0;
+    const EnsembleFit e = fit_ensemble(m, fp, run.opt.boot);
+    PlotSeries peak;
+    peak.style = "points", peak.colour = s.colour, peak.point_type = 7, peak.point_size = 1.3;
+    if (e.peak_F.ok) {
+      peak.x.push_back(e.peak_z.value), peak.y.push_back(e.peak_F.value / factor);
+      peak.y_err.push_back(e.peak_F.se / factor);
+    }
+    inset.series.push_back(peak);
+    json_runs.push_back({{"v0", num("%.10g", g.v0)}, {"g", num("%.10g", g.g)}, {"D", num("%.10g", g.D)},
+                         {"runs", m.runs}, {"max_shift", num("%.4g", m.alignment.max_shift)},
+                         {"peak_F", estimate_json(e.peak_F)}, {"peak_z", estimate_json(e.peak_z)}});
+    for (const auto &n : m.notes) run.notes.push_back(g.label() + ": " + n);
+  }
+}
+
+// without --ensemble: per v0, the mean and range of its runs (or every run), the peaks
+void force_groups(const std::vector<TraceIn> &traces, double factor, double zpeak, Run &run, SeriesPanel &main,
+                  SeriesPanel &inset, Json &json_runs)
+{
+  const auto groups = by_speed(traces);
   const bool mean_mode = !run.opt.each;
-  main.key = "column";
-  main.extra += std::string("set key title ") +
-                gp_quote(mean_mode ? "lines: mean of the runs at each v_0\nbands: their range" : "every run") + "\n";
-  // the peak region, enlarged beside the main plot (an inset over the plot would hide data)
-  inset.at_x = 0.655, inset.at_y = 0.04, inset.at_w = 0.335, inset.at_h = 0.64;
-  inset.key = "off";
-  inset.title = "peak region z < 0.7 R = " + fmt("%g", zpeak) + " cm\n(dots: each run's peak)";
-  inset.xlabel = "z (cm)";
-  inset.ylabel = "F (" + ys.unit + ")";
-  inset.xmin = -0.1, inset.xmax = zpeak;
-  inset.ymin = 0;
-  inset.extra = "set xtics 0.2\nset mxtics 2\nset tics font \",11\"\nset title font \",11\"\n"
-                "set xlabel font \",11\"\nset ylabel font \",11\"\n";
-
-  Json json_runs = Json::array();
   for (std::size_t gi = 0; gi < groups.size(); ++gi) {
     const auto &g = groups[gi];
     const std::string colour = plot_colour((int) gi);
@@ -231,103 +375,243 @@ void plot_force(const std::vector<std::string> &inputs, Run &run)
     // the peaks (trace_fit's definition, as granpen fit and collapse)
     PlotSeries peaks;
     peaks.style = "points", peaks.colour = colour, peaks.point_type = 7, peaks.point_size = 1.3;
-    for (std::size_t j = 0; j < g.size(); ++j) {
-      const auto &t = traces[g[j]];
+    for (int i : g) {
+      const auto &t = traces[i];
       TraceFitParams fp;
       fp.D = t.tr.D, fp.g = t.tr.g, fp.v0 = t.tr.v0;
       const TraceFit fit = fit_trace(t.tr.z, t.tr.F, fp);
-      if (fit.peak_ok) peaks.x.push_back(fit.peak_z), peaks.y.push_back(fit.peak_F / ys.factor);
+      if (fit.peak_ok) peaks.x.push_back(fit.peak_z), peaks.y.push_back(fit.peak_F / factor);
       json_runs.push_back({{"file", t.file}, {"v0", num("%.10g", v0)}, {"peak_F", num("%.6g", fit.peak_F)},
                            {"peak_z", num("%.6g", fit.peak_z)}});
     }
     if (can_mean) {
-      std::vector<double> zs;
-      double z0 = -INFINITY, z1 = INFINITY;
-      for (int i : g) z0 = std::max(z0, traces[i].tr.z.front()), z1 = std::min(z1, traces[i].tr.z.back());
-      const auto &zr = traces[g[0]].tr.z;
-      std::vector<double> dz;
-      for (std::size_t k = 1; k < zr.size(); ++k) dz.push_back(zr[k] - zr[k - 1]);
-      std::nth_element(dz.begin(), dz.begin() + dz.size() / 2, dz.end());
-      const double step = dz[dz.size() / 2];
-      PlotSeries s;
-      s.title = v0_text(v0) + " (" + std::to_string(g.size()) + " runs)";
+      PlotSeries s = mean_and_range(traces, g, factor);
       s.colour = colour;
-      for (std::size_t k = 0; z0 + k * step <= z1 + 1e-9 * step; ++k) {
-        const double z = z0 + k * step;
-        double sum = 0, lo = INFINITY, hi = -INFINITY;
-        for (int i : g) {
-          const double F = interp(traces[i].tr.z, traces[i].tr.F, z) / ys.factor;
-          sum += F, lo = std::min(lo, F), hi = std::max(hi, F);
-        }
-        s.x.push_back(z), s.y.push_back(sum / g.size()), s.band_lo.push_back(lo), s.band_hi.push_back(hi);
-      }
-      PlotSeries in = s;
-      in.title.clear();
-      in.x.clear(), in.y.clear(), in.band_lo.clear(), in.band_hi.clear();
-      for (std::size_t k = 0; k < s.x.size(); ++k)
-        if (s.x[k] >= -0.1 && s.x[k] <= zpeak + step)
-          in.x.push_back(s.x[k]), in.y.push_back(s.y[k]), in.band_lo.push_back(s.band_lo[k]),
-              in.band_hi.push_back(s.band_hi[k]);
+      double deepest = s.x.empty() ? 0 : s.x.back();
+      for (int i : g) deepest = std::max(deepest, traces[i].tr.z.back());
+      if (!s.x.empty() && deepest > s.x.back() * 1.02 + 1e-9)
+        run.notes.push_back(v0_text(v0) + ": the mean stops at z = " + fmt("%.3g", s.x.back()) +
+                            " cm, where the shallowest of its runs ends (the deepest reaches " + fmt("%.3g", deepest) + " cm)");
       main.series.push_back(s);
-      inset.series.push_back(in);
+      inset.series.push_back(inset_part(s, zpeak));
     } else {
-      for (std::size_t j = 0; j < g.size(); ++j) {
-        const auto &t = traces[g[j]];
-        PlotSeries s, in;
-        s.title = v0_text(v0) + (g.size() > 1 ? ", " + t.label : "");
-        s.colour = in.colour = plot_shade(colour, (int) j, (int) g.size());
-        s.line_width = in.line_width = g.size() > 1 ? 1.5 : 2.0;
-        for (std::size_t k = 0; k < t.tr.z.size(); ++k) {
-          s.x.push_back(t.tr.z[k]), s.y.push_back(t.tr.F[k] / ys.factor);
-          if (t.tr.z[k] >= -0.1 && t.tr.z[k] <= zpeak * 1.05) in.x.push_back(t.tr.z[k]), in.y.push_back(t.tr.F[k] / ys.factor);
-        }
-        main.series.push_back(s);
-        inset.series.push_back(in);
-      }
+      each_run(traces, g, colour, factor, zpeak, main, inset);
     }
     inset.series.push_back(peaks);
   }
+}
+
+// many runs drawn one by one: one legend entry per v0 ("v_0 = 50 cm/s (3 runs)") instead of per run
+void legend_per_speed(SeriesPanel &main)
+{
+  std::map<std::string, int> runs, seen;
+  const auto speed = [](const std::string &t) { return t.substr(0, t.find(',')); };
+  for (const auto &s : main.series)
+    if (!s.title.empty()) ++runs[speed(s.title)];
+  for (auto &s : main.series) {
+    if (s.title.empty()) continue;
+    const std::string v = speed(s.title);
+    s.title = seen[v]++ ? std::string() : v + (runs[v] > 1 ? " (" + std::to_string(runs[v]) + " runs)" : "");
+  }
+}
+
+}    // namespace
+
+void plot_force(const std::vector<std::string> &inputs, Run &run)
+{
+  const auto traces = load_traces(inputs, run);
+  if (traces.empty()) return;
+  double Dmax = 0, Fmax = 0;
+  for (const auto &t : traces) {
+    Dmax = std::max(Dmax, t.tr.D);
+    for (double F : t.tr.F) Fmax = std::max(Fmax, std::fabs(F));
+  }
+  const double zpeak = 0.35 * Dmax;    // 0.7 R
+  const AxisScale ys = axis_scale(Fmax, "dyne");
+  const std::string no_view = peak_view_missing(traces, zpeak);
+  const bool view = no_view.empty();
+  if (!view) run.notes.push_back("force: " + no_view);
+
+  SeriesPanel main, inset;
+  main.xlabel = "rod tip depth z below the bed surface (cm)";
+  main.ylabel = "drag force F (" + ys.unit + ")";
+  main.extra = "set offsets 0, 0, graph 0.04, 0\nset autoscale xfix\n";    // x: the depths drawn, no more
+  if (view)
+    main.extra += "set object 2 rectangle from first 0, graph 0 to first " + gp_number(zpeak) +
+                  ", graph 1 behind fillcolor rgb \"#e8e8e8\" fillstyle solid 1.0 noborder\n"
+                  "set label 2 \"z < 0.7 R\" at first " + gp_number(0.5 * zpeak) +
+                  ", graph 0.975 center textcolor rgb \"#606060\"\n";
+  main.key = "column";
+  const bool ens = run.opt.ensemble, mean_mode = !run.opt.each;
+  main.key_title = ens ? "lines: mean of the runs at each v_0,\naligned at their force onsets\nbands: ± standard error over runs"
+                       : mean_mode ? "lines: mean of the runs at each v_0\nbands: their range" : "every run";
+  // the peak region, enlarged beside the main plot (an inset over the plot would hide data)
+  inset.at_x = 0.655, inset.at_w = 0.335;
+  inset.key = "off";
+  inset.title = "peak region z < 0.7 R = " + fmt("%.3g", zpeak) + " cm\n(" +
+                (ens ? "dots: the mean's peak ± se" : "dots: each run's peak") + ")";
+  inset.xlabel = "z (cm)";
+  inset.ylabel = "F (" + ys.unit + ")";
+  inset.xmin = -0.15 * zpeak, inset.xmax = zpeak;
+  inset.ymin = 0;
+  inset.extra = "set mxtics 2\nset tics font \",11\"\nset title font \",11\"\nset xlabel font \",11\"\nset ylabel font \",11\"\n";
+
+  Json json_runs = Json::array();
+  if (ens) force_ensembles(traces, ys.factor, zpeak, run, main, inset, json_runs);
+  else force_groups(traces, ys.factor, zpeak, run, main, inset, json_runs);
+  if (!ens && mean_mode && std::none_of(main.series.begin(), main.series.end(),
+                                        [](const PlotSeries &s) { return !s.band_lo.empty(); }))
+    main.key_title = "every run (no v_0 has several)";    // no mean, no band to explain
   SeriesFigure fig;
   fig.name = "force";
   fig.title = "Drag force against depth";
   fig.about = "granpen plot force: F against the tip depth z for each v0 (" +
-              std::string(mean_mode ? "mean of the runs at each v0, band: their min..max" : "every run") +
-              "), F in " + ys.unit + ";\nbeside it, enlarged: the transient peak region 0 < z < 0.7 R, dots at each run's peak.";
+              std::string(ens ? "mean of the runs of each (v0, g, D) aligned at their force onsets, band: +- se over runs"
+                          : mean_mode ? "mean of the runs at each v0, band: their min..max" : "every run") +
+              "), F in " + ys.unit + (view ? ";\nbeside it, enlarged: the transient peak region 0 < z < 0.7 R, dots at the peaks." : ".");
   fig.width = 1250, fig.height = 720;
-  fig.grid_width = 0.64;
-  fig.panels = {main, inset};
+  fig.grid_width = view ? 0.64 : 0.7;
+  if (view && !place_below_key(fig, inset, key_lines(main)) && !ens && !mean_mode) {
+    legend_per_speed(main);    // every run drawn: the legend names the speeds
+    run.notes.push_back("force: one legend entry per v0 (shades: its runs), for room");
+    fig.height = 720;
+    place_below_key(fig, inset, key_lines(main));
+  }
+  fig.panels = {main};
+  if (view) fig.panels.push_back(inset);
   run.make(series_figure(fig));
   run.numbers["F_unit"] = "dyne";
   run.numbers["F_scale"] = num("%g", ys.factor);
   run.numbers["peak_zmax"] = num("%g", zpeak);
-  run.numbers["runs"] = json_runs;
+  run.numbers["peak_view"] = view;
+  run.numbers[ens ? "ensembles" : "runs"] = json_runs;
 }
 
 // ---------------------------------------------------------------- ratio
 
+namespace {
+
+// The curves of the ratio figure: one per trace, or with --ensemble one per ensemble (its
+// mean, k_z from it) with the run-to-run standard error of each t~ bin.
+struct RatioCurves {
+  std::vector<CollapseInput> in;
+  std::vector<std::string> label;             // legend detail: "seed 1", "5 runs"
+  std::vector<EnsembleCase> cases;            // --ensemble
+  std::vector<std::vector<double>> se;        // --ensemble: per curve, per t~ bin of its CollapseCurve
+  EnsembleCollapse ens;
+};
+
+// each run's F/F_z averaged in the curve's t~ bins (as core/collapse bins), their se over runs
+std::vector<double> ratio_se(const EnsembleCase &c, const CollapseCurve &cv, const CollapseParams &p)
+{
+  const EnsembleMean &m = c.mean;
+  const double scale = std::sqrt(c.g / c.D) / c.v0;
+  std::map<long, std::vector<std::pair<double, int>>> bins;    // bin -> per run (sum, count)
+  for (std::size_t k = 0; k < m.z.size(); ++k) {
+    if (m.z[k] < p.zmin) continue;
+    auto &b = bins[(long) std::floor(m.z[k] * scale / p.tbin)];
+    b.resize(m.runs);
+    for (std::size_t r = 0; r < m.runs; ++r) b[r].first += m.per_run[r][k] / (cv.k_z * m.z[k]), ++b[r].second;
+  }
+  std::vector<double> se;
+  for (double t : cv.t) {
+    const auto it = bins.find((long) std::floor(t / p.tbin));
+    double mean = 0, s2 = 0;
+    const double n = (double) m.runs;
+    if (it == bins.end() || m.runs < 2) {
+      se.push_back(0.0);
+      continue;
+    }
+    for (const auto &v : it->second) mean += v.first / v.second;
+    mean /= n;
+    for (const auto &v : it->second) s2 += std::pow(v.first / v.second - mean, 2);
+    se.push_back(std::sqrt(s2 / (n - 1) / n));
+  }
+  return se;
+}
+
+bool ratio_curves(const std::vector<TraceIn> &traces, Run &run, RatioCurves &rc, CollapseResult &r)
+{
+  const Options &o = run.opt;
+  if (!o.ensemble) {
+    for (const auto &t : traces) {
+      CollapseInput c;
+      std::string why;
+      const bool ok = depth_term(t, o, c.k_z, why);
+      if (!why.empty()) run.notes.push_back(why);    // left out, or its window shortened
+      if (!ok) continue;
+      c.name = t.file, c.z = t.tr.z, c.F = t.tr.F, c.v0 = t.tr.v0, c.D = t.tr.D, c.g = t.tr.g;
+      rc.in.push_back(c);
+      rc.label.push_back(t.label);
+    }
+    if (rc.in.empty()) return false;
+    r = collapse(rc.in, o.collapse);
+    return true;
+  }
+  std::vector<Trace> tr;
+  for (const auto &t : traces) tr.push_back(t.tr);
+  auto groups = group_traces(tr);
+  average_groups(groups, o.ens, run.problems);
+  DepthTerm dt;
+  dt.kz_zmin = o.kz_zmin, dt.kz_zmax = o.kz_zmax, dt.alpha = o.alpha, dt.mu = o.mu, dt.rho_g = o.rho;
+  for (const auto &g : groups) {
+    EnsembleCase c;
+    c.name = g.label(), c.v0 = g.v0, c.g = g.g, c.D = g.D, c.mean = g.mean;
+    if (o.alpha > 0) c.k_z_fixed = alpha_depth_term(dt, g.traces.front());
+    else c.kz_fit = depth_term_window(dt, g.traces.front());
+    if (!(ensemble_depth_term(c) > 0)) {
+      run.notes.push_back("ensemble " + g.label() + ": no positive depth term on its mean; left out");
+      continue;
+    }
+    rc.cases.push_back(c);
+    rc.label.push_back(std::to_string(g.mean.runs) + (g.mean.runs == 1 ? " run" : " runs"));
+  }
+  if (rc.cases.empty()) return false;
+  rc.ens = collapse_ensembles(rc.cases, o.collapse, o.boot);
+  r = rc.ens.result;
+  for (std::size_t i = 0; i < rc.cases.size(); ++i) rc.se.push_back(ratio_se(rc.cases[i], r.curves[i], o.collapse));
+  return true;
+}
+
+std::string pm_text(const Estimate &e, const char *f)
+{
+  return fmt(f, e.value) + (e.se_ok ? " ± " + fmt(f, e.se) : std::string());
+}
+
+// the crossover and the spread, as granpen collapse reports them
+std::string ratio_title(const CollapseResult &r, const RatioCurves &rc, bool ensemble)
+{
+  const std::string what = ensemble ? " ensembles" : " traces";
+  std::string t = "t̃* = " +
+                  (!r.n_crossed ? std::string("not reached")
+                   : ensemble   ? pm_text(rc.ens.t_star_mean, "%.3g")
+                                : fmt("%.3g", r.t_star_mean) + " ± " + fmt("%.2g", r.t_star_sd)) +
+                  " (" + std::to_string(r.n_crossed) + " of " + std::to_string(r.curves.size()) + what;
+  if (r.curves.size() > 1)
+    t += "; their mean: " + (!r.ens_crossed ? std::string("not reached")
+                             : ensemble     ? pm_text(rc.ens.t_star_ensemble, "%.3g")
+                                            : fmt("%.3g", r.t_star_ensemble));
+  t += "), spread ";
+  if (ensemble) return t + pm_text(rc.ens.spread_z, "%.3f") + " against z, " + pm_text(rc.ens.spread_t, "%.3f") + " against t̃";
+  return t + fmt("%.3f", r.spread_z) + " against z, " + fmt("%.3f", r.spread_t) + " against t̃";
+}
+
+}    // namespace
+
 void plot_ratio(const std::vector<std::string> &inputs, Run &run)
 {
   const auto traces = load_traces(inputs, run);
-  std::vector<CollapseInput> in;
-  std::vector<int> which;
-  for (std::size_t i = 0; i < traces.size(); ++i) {
-    const auto &t = traces[i];
-    CollapseInput c;
-    std::string why;
-    if (!depth_term(t, run.opt, c.k_z, why)) {
-      run.problems.push_back(why);
-      continue;
+  RatioCurves rc;
+  CollapseResult r;
+  try {
+    if (!ratio_curves(traces, run, rc, r)) {
+      run.problems.push_back(std::string("no usable ") + (run.opt.ensemble ? "ensemble" : "trace") + " for the ratio");
+      return;
     }
-    c.name = t.file, c.z = t.tr.z, c.F = t.tr.F, c.v0 = t.tr.v0, c.D = t.tr.D, c.g = t.tr.g;
-    in.push_back(c);
-    which.push_back((int) i);
-  }
-  if (in.empty()) {
-    run.problems.push_back("no usable trace for the ratio");
+  } catch (std::invalid_argument &e) {
+    run.problems.push_back(e.what());
     return;
   }
-  CollapseResult r;
-  if (!collapse_or_note(in, run, r)) return;
   // colours: by v0, shades for the runs of one v0
   std::map<double, std::vector<int>> speed;
   for (std::size_t i = 0; i < r.curves.size(); ++i) speed[r.curves[i].v0].push_back((int) i);
@@ -347,6 +631,7 @@ void plot_ratio(const std::vector<std::string> &inputs, Run &run)
   a.ylabel = b.ylabel = run.opt.alpha > 0 ? "F / F_z   (F_z = α μ ρ_g g D² z)" : "F / F_z   (F_z = k_z z)";
   a.key = "off";
   b.key = "column";
+  if (run.opt.ensemble) b.key_title = "bands: ± se over runs";
   PlotHBand hb;
   hb.lo = 1 - band, hb.hi = 1 + band;
   a.hbands.push_back(hb);
@@ -362,11 +647,13 @@ void plot_ratio(const std::vector<std::string> &inputs, Run &run)
   for (auto &kv : speed)
     for (int i : kv.second) {
       const CollapseCurve &c = r.curves[i];
-      const auto &t = traces[which[i]];
       PlotSeries sa, sb;
       sa.colour = sb.colour = colour[i];
-      if (per_run)
-        sb.title = v0_text(c.v0) + (kv.second.size() > 1 ? ", " + t.label : "");
+      if (run.opt.ensemble)
+        sb.title = v0_text(c.v0) + (kv.second.size() > 1 ? ", g = " + fmt("%g", c.g) + ", D = " + fmt("%g", c.D) : "") +
+                   " (" + rc.label[i] + ")";
+      else if (per_run)
+        sb.title = v0_text(c.v0) + (kv.second.size() > 1 ? ", " + rc.label[i] : "");
       else if (i == kv.second.front())
         sb.title = v0_text(c.v0) + " (" + std::to_string(kv.second.size()) + " runs)";
       sa.line_width = sb.line_width = 1.8;
@@ -375,6 +662,11 @@ void plot_ratio(const std::vector<std::string> &inputs, Run &run)
         sa.x.push_back(c.t[k] / scale), sa.y.push_back(c.ratio[k]);
         sb.x.push_back(c.t[k]), sb.y.push_back(c.ratio[k]);
         ymax = std::max(ymax, c.ratio[k]), ymin = std::min(ymin, c.ratio[k]);
+        if (run.opt.ensemble) {    // the run-to-run band
+          const double e = rc.se[i][k];
+          sa.band_lo.push_back(c.ratio[k] - e), sa.band_hi.push_back(c.ratio[k] + e);
+          sb.band_lo.push_back(c.ratio[k] - e), sb.band_hi.push_back(c.ratio[k] + e);
+        }
       }
       a.series.push_back(sa);
       b.series.push_back(sb);
@@ -386,7 +678,7 @@ void plot_ratio(const std::vector<std::string> &inputs, Run &run)
     PlotSeries e;
     e.colour = "#000000";
     e.line_width = 3.0;
-    e.title = "mean of the runs ± se" + (r.ens_crossed ? " (t̃* = " + fmt("%.2f", r.t_star_ensemble) + ")" : std::string());
+    e.title = run.opt.ensemble ? "all ensembles: mean ± se" : "mean of the runs ± se";    // its t̃*: in the title
     e.x = r.ens_t, e.y = r.ens_ratio;
     for (std::size_t k = 0; k < r.ens_t.size(); ++k)
       e.band_lo.push_back(r.ens_ratio[k] - r.ens_se[k]), e.band_hi.push_back(r.ens_ratio[k] + r.ens_se[k]);
@@ -408,16 +700,20 @@ void plot_ratio(const std::vector<std::string> &inputs, Run &run)
   } else {
     a.ymin = b.ymin = std::min(0.0, ymin);
   }
+  a.extra += "set autoscale xfix\n";
+  // t~ over more than 1000 bins (slow pushes, deep soundings): a log axis, so that every
+  // speed and the paper's t~ = 1 stay in view and the tic labels do not run together
+  double tmax = 0;
+  for (const auto &c : r.curves)
+    for (double t : c.t) tmax = std::max(tmax, t);
+  if (tmax > 1000 * run.opt.collapse.tbin) {
+    b.logx = true;
+    b.xmin = 0.5 * run.opt.collapse.tbin, b.xmax = tmax * 1.3;
+    b.extra += log_tics("x", b.xmin, b.xmax, true);
+  }
   SeriesFigure fig;
   fig.name = "ratio";
-  fig.title = "F over its depth term F_z" + clipped + ": t̃* = " +
-              (r.n_crossed ? fmt("%.2f", r.t_star_mean) + " ± " + fmt("%.2f", r.t_star_sd) : std::string("not reached")) +
-              " (" + std::to_string(r.n_crossed) + " of " + std::to_string(r.curves.size()) + " traces" +
-              (r.curves.size() > 1 ? std::string("; their mean: ") +
-                                         (r.ens_crossed ? fmt("%.2f", r.t_star_ensemble) : std::string("not reached"))
-                                   : std::string()) +
-              "), spread " +
-              fmt("%.3f", r.spread_z) + " against z, " + fmt("%.3f", r.spread_t) + " against t̃";
+  fig.title = "F over its depth term F_z" + clipped + ": " + ratio_title(r, rc, run.opt.ensemble);
   fig.about = "granpen plot ratio: the binned F/F_z curves of granpen collapse (bins of t~ of width " +
               fmt("%g", run.opt.collapse.tbin) + ", z >= " + fmt("%g", run.opt.collapse.zmin) +
               " cm), against z (bin centre t~ converted back to z)\nand against t~; the band 1 +- " + fmt("%g", band) +
@@ -426,7 +722,7 @@ void plot_ratio(const std::vector<std::string> &inputs, Run &run)
                                  : "fitted over " + window_text(run.opt)) +
               ".";
   fig.width = 1450, fig.height = 620;
-  fig.grid_width = 0.8;
+  fig.grid_width = 0.76;    // the key column: room for "mean of the runs ± se (t̃* = 1.23)"
   fig.panels = {a, b};
   run.make(series_figure(fig));
   Json &n = run.numbers;
@@ -438,6 +734,48 @@ void plot_ratio(const std::vector<std::string> &inputs, Run &run)
 }
 
 // ---------------------------------------------------------------- peak
+
+namespace {
+
+// --ensemble: the peak of each ensemble's mean +- its se over runs, and the law through
+// them (collapse_ensembles; the peaks do not depend on k_z, set to 1)
+bool peak_ensembles(const std::vector<TraceIn> &traces, Run &run, std::vector<TraceGroup> &groups, EnsembleCollapse &ec)
+{
+  std::vector<Trace> tr;
+  for (const auto &t : traces) tr.push_back(t.tr);
+  groups = group_traces(tr);
+  average_groups(groups, run.opt.ens, run.problems);
+  std::vector<EnsembleCase> cases;
+  for (const auto &g : groups) {
+    EnsembleCase c;
+    c.name = g.label(), c.v0 = g.v0, c.g = g.g, c.D = g.D, c.mean = g.mean, c.k_z_fixed = 1.0;
+    cases.push_back(c);
+  }
+  if (cases.empty()) return false;
+  ec = collapse_ensembles(cases, run.opt.collapse, run.opt.boot);
+  return true;
+}
+
+// the ensembles' points with their standard errors, and every run's own peak, small
+void ensemble_peak_series(const std::vector<TraceGroup> &groups, const EnsembleCollapse &ec, const CollapseResult &single,
+                          SeriesPanel &p)
+{
+  for (std::size_t i = 0; i < groups.size(); ++i) {
+    PlotSeries s;
+    s.style = "points", s.colour = plot_colour((int) i), s.point_size = 1.6;
+    s.title = v0_text(groups[i].v0) + " (mean of " + std::to_string(groups[i].mean.runs) + " runs ± se)";
+    if (ec.peak[i].ok && ec.peak[i].value > 0)
+      s.x.push_back(groups[i].v0), s.y.push_back(ec.peak[i].value), s.y_err.push_back(ec.peak[i].se);
+    p.series.push_back(s);
+  }
+  PlotSeries one;
+  one.style = "points", one.colour = "#808080", one.point_type = 6, one.point_size = 0.9, one.title = "single runs";
+  for (const auto &c : single.curves)
+    if (c.peak > 0) one.x.push_back(c.v0), one.y.push_back(c.peak);
+  p.series.push_back(one);
+}
+
+}    // namespace
 
 void plot_peak(const std::vector<std::string> &inputs, Run &run)
 {
@@ -454,11 +792,17 @@ void plot_peak(const std::vector<std::string> &inputs, Run &run)
   if (!collapse_or_note(in, run, r)) return;
   std::vector<double> v0s;
   double pmax = 0;
+  std::vector<std::string> no_peak;
   for (const auto &c : r.curves) {
     v0s.push_back(c.v0);
-    if (!(c.peak > 0.0)) run.notes.push_back(c.name + ": no positive force at 0 < z < 0.7 R: no peak");
+    if (!(c.peak > 0.0)) no_peak.push_back(c.name);
     pmax = std::max(pmax, c.peak);
   }
+  if (no_peak.size() == 1) run.notes.push_back(no_peak[0] + ": no positive force at 0 < z < 0.7 R: no peak");
+  else if (!no_peak.empty())
+    run.notes.push_back(std::to_string(no_peak.size()) + " of " + std::to_string(r.curves.size()) +
+                        " traces have no positive force at 0 < z < 0.7 R (no peak), e.g. " + no_peak.front() + ", " +
+                        no_peak[1] + (no_peak.size() > 2 ? ", ..." : ""));
   SeriesPanel p;
   p.logx = p.logy = true;
   p.xlabel = "rod speed v_0 (cm/s)";
@@ -477,7 +821,18 @@ void plot_peak(const std::vector<std::string> &inputs, Run &run)
   PlotBlock points;
   points.title = "peaks: v0 (cm/s), peak F (dyne), its depth (cm)";
   points.columns = {"v0", "peak_F", "peak_z"};
-  for (std::size_t gi = 0; gi < groups.size(); ++gi) {
+  std::vector<TraceGroup> eg;
+  EnsembleCollapse ec;
+  const bool ens = run.opt.ensemble && peak_ensembles(traces, run, eg, ec);
+  if (ens) {
+    ensemble_peak_series(eg, ec, r, p);
+    for (const auto &c : r.curves) points.rows.push_back({c.v0, c.peak, c.peak_z});
+    r.peak_ok = ec.result.peak_ok, r.peak_exponent = ec.result.peak_exponent;
+    r.peak_exponent_se = ec.peak_exponent.se, r.peak_exponent_ci95 = ec.peak_exponent.ci95;
+    r.peak_prefactor = ec.result.peak_prefactor, r.peak_v2_prefactor = ec.result.peak_v2_prefactor;
+    r.peak_points = ec.result.peak_points;
+  }
+  for (std::size_t gi = 0; gi < groups.size() && !ens; ++gi) {
     PlotSeries s;
     s.style = "points", s.colour = plot_colour((int) gi), s.point_size = 1.6;
     s.title = v0_text(traces[groups[gi][0]].tr.v0) + (groups[gi].size() > 1 ? " (" + std::to_string(groups[gi].size()) + " runs)" : "");
@@ -490,14 +845,16 @@ void plot_peak(const std::vector<std::string> &inputs, Run &run)
   }
   Json law = {{"peak_ok", false}};
   PlotBlock fitblk;
-  fitblk.title = "peak law (granpen collapse): F_peak = prefactor * v0^exponent; exponent_ci95 = t95 * se";
+  fitblk.title = ens ? "peak law (granpen collapse --ensemble): over the ensembles' peaks; se, ci95 from the bootstrap over runs"
+                     : "peak law (granpen collapse): F_peak = prefactor * v0^exponent; exponent_ci95 = t95 * se";
   fitblk.columns = {"exponent", "exponent_se", "exponent_ci95", "prefactor", "n"};
   std::string title = "Transient peak against speed";
   if (r.peak_ok) {
     const double pref = r.peak_prefactor;
     PlotGuide fit;
     fit.expression = gp_number(pref) + "*x**" + gp_number(r.peak_exponent);
-    fit.title = "fit: F_{peak} ∝ v_0^{" + fmt("%.2f", r.peak_exponent) + " ± " + fmt("%.2f", r.peak_exponent_ci95) + "} (95%)";
+    fit.title = "fit: F_{peak} ∝ v_0^{" + fmt("%.2f", r.peak_exponent) + " ± " + fmt("%.2f", r.peak_exponent_ci95) + "} (95%" +
+                (ens ? ", over runs)" : ")");
     fit.colour = "#000000", fit.dash = 1, fit.line_width = 2;
     PlotGuide sq;
     sq.expression = gp_number(r.peak_v2_prefactor) + "*x**2";
@@ -532,28 +889,79 @@ void plot_peak(const std::vector<std::string> &inputs, Run &run)
 
 // ---------------------------------------------------------------- kz
 
+namespace {
+
+struct K {
+  double v0, k, se;
+  std::string file, label;
+};
+
+// --ensemble: k_z of each ensemble's mean +- its se over runs (one group per ensemble), and
+// each run's own k_z in singles
+void ensemble_kz(const std::vector<TraceIn> &traces, Run &run, std::vector<std::vector<K>> &per, PlotSeries &singles,
+                 Json &json_fits)
+{
+  std::vector<Trace> tr;
+  for (const auto &t : traces) tr.push_back(t.tr);
+  auto groups = group_traces(tr);
+  average_groups(groups, run.opt.ens, run.problems);
+  for (const auto &g : groups) {
+    TraceFitParams fp;
+    fp.zlo = run.opt.kz_zmin, fp.zhi = run.opt.kz_zmax, fp.v0 = g.v0, fp.D = g.D, fp.g = g.g;
+    fp.shorten_window = true;
+    const EnsembleFit e = fit_ensemble(g.mean, fp, run.opt.boot);
+    if (!e.k_z.ok) {
+      run.notes.push_back("ensemble " + g.label() + ": k_z undefined on its mean; left out");
+      continue;
+    }
+    if (e.fit.window_shortened) run.notes.push_back("ensemble " + g.label() + ": " + e.fit.notes.front());
+    per.push_back({{g.v0, e.k_z.value, e.k_z.se, g.label(), std::to_string(g.mean.runs) + " runs"}});
+    Json j = ensemble_json(g);
+    j["k_z"] = estimate_json(e.k_z);
+    json_fits.push_back(j);
+    // each run on the ensemble's aligned bins: their mean is the ensemble's k_z (a linear fit)
+    for (const auto &F : g.mean.per_run) {
+      const TraceFit f = fit_trace(g.mean.z, F, fp);
+      if (f.slope_ok) singles.x.push_back(g.v0), singles.y.push_back(f.k_z);
+    }
+  }
+}
+
+}    // namespace
+
 void plot_kz(const std::vector<std::string> &inputs, Run &run)
 {
   const auto traces = load_traces(inputs, run);
   if (traces.empty()) return;
   const auto groups = by_speed(traces);
-  struct K {
-    double v0, k, se;
-    std::string file, label;
-  };
   std::vector<std::vector<K>> per(groups.size());
   double kmax = 0, sum = 0, sum2 = 0;
   int n = 0;
   std::vector<double> v0s;
   Json json_fits = Json::array();
-  for (std::size_t gi = 0; gi < groups.size(); ++gi)
+  PlotSeries singles;    // --ensemble: each run's own k_z, small
+  singles.style = "points", singles.colour = "#808080", singles.point_type = 6, singles.point_size = 0.9;
+  if (run.opt.ensemble) {
+    per.clear();
+    ensemble_kz(traces, run, per, singles, json_fits);
+    for (const auto &g : per)
+      for (const auto &k : g) {
+        kmax = std::max(kmax, std::fabs(k.k) + k.se);
+        sum += k.k, sum2 += k.k * k.k, ++n;
+        v0s.push_back(k.v0);
+      }
+    for (double y : singles.y) kmax = std::max(kmax, std::fabs(y));
+  }
+  for (std::size_t gi = 0; gi < groups.size() && !run.opt.ensemble; ++gi)
     for (int i : groups[gi]) {
       const auto &t = traces[i];
       TraceFitParams fp;
       fp.zlo = run.opt.kz_zmin, fp.zhi = run.opt.kz_zmax, fp.v0 = t.tr.v0, fp.D = t.tr.D, fp.g = t.tr.g;
+      fp.shorten_window = true;
       const TraceFit fit = fit_trace(t.tr.z, t.tr.F, fp);
+      if (fit.window_shortened) run.notes.push_back(t.file + ": " + fit.notes.front());
       if (!fit.slope_ok) {
-        run.problems.push_back(t.file + ": k_z undefined over the window: " +
+        run.notes.push_back(t.file + ": k_z undefined over the window, left out: " +
                                (fit.notes.empty() ? std::string("no fit") : fit.notes.front()));
         continue;
       }
@@ -578,15 +986,16 @@ void plot_kz(const std::vector<std::string> &inputs, Run &run)
   double kmin = 0;
   for (const auto &g : per)
     for (const auto &k : g) kmin = std::min(kmin, k.k - k.se);
+  for (double y : singles.y) kmin = std::min(kmin, y);
   p.ymin = kmin < 0 ? 1.1 * kmin / ys.factor : 0.0;    // negative fits are drawn, not cut off
   std::sort(v0s.begin(), v0s.end());
   p.xmin = v0s.front() / 1.35, p.xmax = v0s.back() * 1.35;
   p.extra = value_tics("x", v0s) + "set mxtics 10\nset offsets 0, 0, graph 0.1, 0\n";
-  p.extra += "set key title \"runs of one v_0 side by side\"\n";
+  p.key_title = run.opt.ensemble ? "ensemble means ± se over runs;\nopen circles: each run, aligned" : "runs of one v_0 side by side";
   if (kmin < 0) p.extra += "set xzeroaxis lt 1 lw 1 lc rgb \"#606060\"\n";
   PlotHBand hb;
   hb.lo = (mean - sd) / ys.factor, hb.hi = (mean + sd) / ys.factor;
-  hb.title = "mean ± sd over the " + std::to_string(n) + " traces";
+  hb.title = "mean ± sd over the " + std::to_string(n) + (run.opt.ensemble ? " ensembles" : " traces");
   hb.colour = "#606060";
   if (n > 1) p.hbands.push_back(hb);
   PlotGuide mg;
@@ -597,7 +1006,8 @@ void plot_kz(const std::vector<std::string> &inputs, Run &run)
     if (per[gi].empty()) continue;
     PlotSeries s;
     s.style = "points", s.colour = plot_colour((int) gi), s.point_size = 1.4, s.line_width = 1.5;
-    s.title = v0_text(per[gi][0].v0) + (per[gi].size() > 1 ? " (" + std::to_string(per[gi].size()) + " runs)" : "");
+    s.title = v0_text(per[gi][0].v0) + (run.opt.ensemble ? " (" + per[gi][0].label + ")"
+                                        : per[gi].size() > 1 ? " (" + std::to_string(per[gi].size()) + " runs)" : "");
     const std::size_t m = per[gi].size();
     for (std::size_t j = 0; j < m; ++j) {
       const double shift = std::pow(1.04, double(j) - 0.5 * (m - 1));
@@ -606,9 +1016,15 @@ void plot_kz(const std::vector<std::string> &inputs, Run &run)
     }
     p.series.push_back(s);
   }
+  if (!singles.x.empty()) {
+    for (auto &y : singles.y) y /= ys.factor;
+    singles.title = "single runs";
+    p.series.push_back(singles);
+  }
   SeriesFigure fig;
   fig.name = "kz";
-  fig.title = "Depth coefficient against speed (fit over " + window_text(run.opt) + "; bars: standard errors)";
+  fig.title = "Depth coefficient against speed (fit over " + window_text(run.opt) + "; bars: standard errors" +
+              (run.opt.ensemble ? " over runs)" : ")");
   fig.about = "granpen plot kz: k_z of each trace (granpen fit's linear fit of F on z over the window) with its\n"
               "standard error, against v0; runs of one v0 drawn side by side (x scaled by 1.04 per run);\n"
               "k_z in " + ys.unit + ".";

@@ -140,6 +140,7 @@ FitResult fit_trace_file(const std::string &file, const FitWindow &w)
   p.zhi = w.zmax;
   p.v0 = tr.v0, p.D = tr.D, p.g = tr.g;
   p.mu = r.mu, p.rho_g = r.rho_g, p.d_g = r.d_g;
+  p.shorten_window = true;    // a window beyond the data: its deeper half, with a note
   r.fit = fit_trace(tr.z, tr.F, p);
   return r;
 }

@@ -301,15 +301,95 @@ std::string line_props(const std::string &colour, double lw, int dash)
 
 std::string title_of(const std::string &t) { return t.empty() ? "notitle" : "title " + gp_quote(t); }
 
+// one line of a legend at key spacing 1.25 in the 12 pt font of plot_script, pixels
+// (measured on pngcairo: 22 entries over 489 px)
+constexpr double KEY_LINE_PX = 22.5;
+
+bool has_data(const SeriesPanel &p)
+{
+  for (const auto &s : p.series)
+    if (!s.x.empty() && !s.y.empty()) return true;
+  return false;
+}
+
+int text_lines(const std::string &t) { return t.empty() ? 0 : 1 + (int) std::count(t.begin(), t.end(), '\n'); }
+
+// the titles of a panel's legend, in the order gnuplot lists them (bands, band entries,
+// series, guides)
+std::vector<std::string *> key_titles(SeriesPanel &p)
+{
+  std::vector<std::string *> t;
+  for (auto &s : p.series)
+    if (!s.x.empty() && s.band_lo.size() == s.x.size() && !s.band_title.empty()) t.push_back(&s.band_title);
+  for (auto &h : p.hbands)
+    if (!h.title.empty()) t.push_back(&h.title);
+  for (auto &s : p.series)
+    if (!s.x.empty() && !s.title.empty()) t.push_back(&s.title);
+  for (auto &g : p.guides)
+    if (!g.title.empty()) t.push_back(&g.title);
+  return t;
+}
+
+// a key-column legend longer than the column: its tail folded into one entry
+void fold_key_column(std::vector<SeriesPanel> &panels, const SeriesFigure &fig, double top,
+                     std::vector<std::string> &notes)
+{
+  double bottom = 0.02;
+  for (const auto &p : panels)
+    if (p.at_w > 0 && p.at_h > 0 && p.at_x + 1e-9 >= fig.grid_width) bottom = std::max(bottom, p.at_y + p.at_h + 0.01);
+  const int room = (int) std::floor((top - bottom) / key_line_height(fig.height) + 1e-9);
+  for (auto &p : panels) {
+    if (p.key != "column") continue;
+    auto titles = key_titles(p);
+    const int fit = room - text_lines(p.key_title);
+    if ((int) titles.size() <= fit) continue;
+    const int keep = std::max(0, fit - 1), folded = (int) titles.size() - keep;
+    for (int k = keep; k < (int) titles.size(); ++k) titles[k]->clear();
+    PlotGuide more;
+    more.expression = "keyentry";    // a legend line without a curve
+    more.colour = "#ffffff";
+    more.title = "+ " + std::to_string(folded) + " more not listed (drawn)";
+    p.guides.push_back(more);
+    notes.push_back(fig.name + ": the legend has room for " + std::to_string(std::max(0, fit)) + " of its " +
+                    std::to_string(titles.size()) + " entries; " + std::to_string(folded) +
+                    " folded into one \"more not listed\" entry");
+  }
+}
+
+// the figure without its panels that have no data (a note for each), unless every panel
+// is empty (then its "no data" panel stays)
+SeriesFigure without_empty_panels(const SeriesFigure &in, std::vector<std::string> &notes)
+{
+  SeriesFigure fig = in;
+  if (!std::any_of(in.panels.begin(), in.panels.end(), has_data)) return fig;
+  fig.panels.clear();
+  for (std::size_t i = 0; i < in.panels.size(); ++i) {
+    if (has_data(in.panels[i])) fig.panels.push_back(in.panels[i]);
+    else
+      notes.push_back(in.name + ": panel " + std::to_string(i + 1) +
+                      (in.panels[i].title.empty() ? "" : " (" + in.panels[i].title + ")") + " has no data: left out");
+  }
+  return fig;
+}
+
 }    // namespace
 
-PlotFiles series_figure(const SeriesFigure &fig)
+double key_line_height(int height_px) { return KEY_LINE_PX / (double) std::max(1, height_px); }
+
+double key_column_top(const SeriesFigure &fig)
+{
+  const bool titled = !fig.title.empty();
+  return (titled ? 0.94 : 1.0) - 0.04;
+}
+
+PlotFiles series_figure(const SeriesFigure &fig_in)
 {
   PlotFiles f;
-  f.name = fig.name;
-  f.about = fig.about;
-  f.width = fig.width;
-  f.height = fig.height;
+  f.name = fig_in.name;
+  f.about = fig_in.about;
+  f.width = fig_in.width;
+  f.height = fig_in.height;
+  SeriesFigure fig = without_empty_panels(fig_in, f.notes);
 
   int unplaced = 0;
   for (const auto &p : fig.panels)
@@ -321,6 +401,7 @@ PlotFiles series_figure(const SeriesFigure &fig)
   const bool multi = fig.panels.size() > 1 || unplaced != (int) fig.panels.size() || fig.grid_width < 1.0 ||
                      !fig.title.empty();
   const double top = (multi && !fig.title.empty()) ? 0.94 : 1.0;
+  if (multi) fold_key_column(fig.panels, fig, top - 0.04, f.notes);
 
   std::ostringstream b;
   if (multi)
@@ -362,6 +443,7 @@ PlotFiles series_figure(const SeriesFigure &fig)
         << gp_number(top - 0.04) << " left top Left reverse\n";
     else b << "set key " << p.key << "\n";
     if (p.key != "off") b << "set key spacing 1.25\n";    // room for sub- and superscripts
+    if (p.key != "off" && !p.key_title.empty()) b << "set key title " << gp_quote(p.key_title) << "\n";
     int obj = 10;
     for (const auto &h : p.hbands)
       b << "set object " << obj++ << " rectangle from graph 0, first " << gp_number(h.lo) << " to graph 1, first "
@@ -430,13 +512,11 @@ PlotFiles series_figure(const SeriesFigure &fig)
                         " fillstyle transparent solid " + gp_number(std::min(1.0, 2 * h.opacity)) + " noborder title " +
                         gp_quote(h.title));
     for (const auto &g : p.guides)
-      lines.push_back(g.expression + " with lines " + line_props(g.colour, g.line_width, g.dash) + " " +
+      lines.push_back(g.expression + " with lines " + line_props(g.colour, g.expression == "keyentry" ? 0.0 : g.line_width, g.dash) + " " +
                       title_of(g.title));
     std::vector<std::string> all = bands;
     all.insert(all.end(), lines.begin(), lines.end());
-    bool has_data = false;
-    for (const auto &s : p.series) has_data |= !s.x.empty() && !s.y.empty();
-    if (!has_data) {
+    if (!has_data(p)) {
       b << "unset logscale\nset xrange [0:1]\nset yrange [0:1]\nunset key\n"
         << "set label 99 \"no data\" at graph 0.5, graph 0.5 center font \",16\"\nplot 2 notitle\n";
       continue;

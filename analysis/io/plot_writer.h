@@ -49,6 +49,7 @@ struct PlotFiles {
   int width = 1000, height = 620;    // pixels, both formats
   std::vector<PlotBlock> blocks;     // NAME.dat: blocks[i] is `index i`
   std::string body;                  // gnuplot commands; read the data as `data index i`
+  std::vector<std::string> notes;    // what the writer changed (a legend it folded), for the caller
   // appends a block, returns its index
   int add_block(const PlotBlock &b);
 };
@@ -103,7 +104,8 @@ struct PlotSeries {
   double band_opacity = 0.22;
 };
 
-// A reference line y = f(x), f a gnuplot expression in x ("1", "x", "2.5e3*x**2").
+// A reference line y = f(x), f a gnuplot expression in x ("1", "x", "2.5e3*x**2"); the
+// expression "keyentry" draws nothing and only adds its title to the legend.
 struct PlotGuide {
   std::string expression, title;
   std::string colour = "#404040";
@@ -138,6 +140,7 @@ struct SeriesPanel {
   // `set key` arguments; "off" for no legend; "column" for the figure's key column
   // (SeriesFigure::grid_width), where a multi-panel figure's shared legend goes
   std::string key = "outside right top Left reverse";
+  std::string key_title;                    // the key's title (lines counted in the key column's room)
   std::string extra;                        // further commands, set before plotting
   // Placement in the figure, screen fractions of the lower left corner and size
   // (an inset: drawn over what came before, on a white background, in a smaller
@@ -154,8 +157,18 @@ struct SeriesFigure {
                                       // rest is the key column
 };
 
-// Data blocks and script of a series figure (one block per series).
+// Data blocks and script of a series figure (one block per series). The key column holds
+// the legend entries of the panels whose key is "column", from the top down to the highest
+// panel placed in the column (an inset beside the plot), else to the bottom. When they do
+// not all fit, the last entries that fit are replaced by one entry "+ N more not listed"
+// (their series are still drawn) and PlotFiles::notes says so.
 PlotFiles series_figure(const SeriesFigure &f);
+
+// The height of one line of a legend (key spacing 1.25, the 12 pt font) as a fraction of a
+// figure of height_px pixels, and the top of the key column: for a caller that places an
+// inset below the legend.
+double key_line_height(int height_px);
+double key_column_top(const SeriesFigure &f);
 
 // ---------------------------------------------------------------- bar charts
 

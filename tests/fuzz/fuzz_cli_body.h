@@ -51,6 +51,14 @@ inline void check_numbers(const ParsedArgs &a, const std::set<std::string> &posi
     }
 }
 inline void check_rod(const granpen::RodOptions &r) { GRANPEN_FUZZ_CHECK(r.rod_type >= 1); }
+// --ensemble-bin 0 (the runs' median step) or > 0; --bootstrap 20 to 1000000; both at
+// their defaults without --ensemble (ensemble_args.h)
+inline void check_ensemble(bool on, const granpen::EnsembleParams &mean, const granpen::BootstrapParams &boot)
+{
+  GRANPEN_FUZZ_CHECK(mean.bin == 0.0 || positive_finite(mean.bin));
+  GRANPEN_FUZZ_CHECK(boot.resamples >= 20 && boot.resamples <= 1000000);
+  if (!on) GRANPEN_FUZZ_CHECK(mean.bin == 0.0 && boot.resamples == granpen::BootstrapParams().resamples);
+}
 
 inline void check(const ConvertOptions &o)
 {
@@ -80,6 +88,8 @@ inline void check(const FitOptions &o)
   }
   GRANPEN_FUZZ_CHECK(!std::isnan(w.zmax));
   GRANPEN_FUZZ_CHECK(zero_or_positive(w.mu) && zero_or_positive(w.rho_g));
+  check_ensemble(o.ensemble.on, o.ensemble.mean, o.ensemble.boot);
+  GRANPEN_FUZZ_CHECK(o.ensemble_csv.empty() || o.ensemble.on);
 }
 inline void check(const CalibrationOptions &o)
 {
@@ -93,6 +103,7 @@ inline void check(const CollapseOptions &o)
   for (double v : {o.depth.alpha, o.depth.mu, o.depth.rho_g}) GRANPEN_FUZZ_CHECK(zero_or_positive(v));
   GRANPEN_FUZZ_CHECK(positive_finite(o.params.band) && positive_finite(o.params.tbin));
   GRANPEN_FUZZ_CHECK(std::isfinite(o.params.zmin));
+  check_ensemble(o.ensemble.on, o.ensemble.mean, o.ensemble.boot);
 }
 inline void check(const SweepOptions &o)
 {
@@ -142,6 +153,8 @@ inline void check(const PlotOptions &o)
   for (double v : {f.alpha, f.mu, f.rho, f.D}) GRANPEN_FUZZ_CHECK(std::isfinite(v) && v >= 0.0);
   GRANPEN_FUZZ_CHECK(positive_finite(f.collapse.band) && positive_finite(f.collapse.tbin));
   GRANPEN_FUZZ_CHECK(std::isfinite(f.collapse.zmin));
+  check_ensemble(f.ensemble, f.ens, f.boot);
+  if (f.ensemble) GRANPEN_FUZZ_CHECK(o.kind != "flow" && o.kind != "momentum" && !f.each);
 }
 inline void check(const GapCommandOptions &o)
 {

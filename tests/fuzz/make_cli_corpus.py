@@ -28,7 +28,9 @@ for c in sorted(commands):
     with open(os.path.join(out, name), "w") as f:
         f.write(c)
 options = set()
-for src in glob.glob(os.path.join(root, "analysis/cli/*_options.cpp")):
+# the parse functions, and the option groups several of them add (ensemble_args.cpp)
+for src in glob.glob(os.path.join(root, "analysis/cli/*_options.cpp")) + \
+        glob.glob(os.path.join(root, "analysis/cli/*_args.cpp")):
     options.update(re.findall(r'"(--[A-Za-z0-9_-]+)', open(src).read()))
 with open(os.path.join(root, "tests/fuzz/cli.dict"), "w") as f:
     f.write("# libFuzzer dictionary for fuzz_cli_options: subcommands, option names (made by\n"
@@ -36,7 +38,7 @@ with open(os.path.join(root, "tests/fuzz/cli.dict"), "w") as f:
     for s in SUBCOMMANDS + sorted(options) + ["--help", "-h"]:
         f.write('"%s\\x0a"\n' % s)
     for v in ["\\x0a", "0", "-1", "1", "2", "-0", "1e308", "1e-320", "nan", "inf", "-inf", "0x10", "1.5",
-              "9999999999999999999", "=", ":", "xy", "none", "auto", "voro++", "cgs", "si", "ave/time",
+              "9999999999999999999", "19", "20", "1000001", "=", ":", "xy", "none", "auto", "voro++", "cgs", "si", "ave/time",
               "force", "ratio", "peak", "kz", "flow", "momentum"]:
         f.write('"%s"\n' % v)
 print("%d commands, %d options" % (len(commands), len(options)))

@@ -82,6 +82,19 @@ expect 2 "--thresholds: .*strictly decreasing" "$CLI" momentum "$DUMP" --trace "
 expect 2 "--kz-zmin must be below --kz-zmax" "$CLI" collapse "$TRACE" --kz-zmin 5 --kz-zmax 5
 expect 2 "--zmin must be below --zmax" "$CLI" calibration "$W" --zmin 3 --zmax 1
 expect 2 "--csv needs a name" "$CLI" collapse "$TRACE" --csv ""
+# --ensemble's options (fit, collapse, plot): their ranges, and none without --ensemble
+expect 2 "--bootstrap must be a whole number from 20 to 1000000, got '0'" "$CLI" fit "$TRACE" --ensemble --bootstrap 0
+expect 2 "--bootstrap must be a whole number from 20 to 1000000, got '19'" "$CLI" collapse "$TRACE" --ensemble --bootstrap 19
+expect 2 "--ensemble-bin must be > 0, got '-1'" "$CLI" collapse "$TRACE" --ensemble --ensemble-bin -1
+expect 2 "--ensemble-bin must be > 0, got '0'" "$CLI" plot force "$TRACE" --out "$W/p" --ensemble --ensemble-bin 0
+expect 2 "--ensemble-bin needs a number, got 'inf'" "$CLI" fit "$TRACE" --ensemble --ensemble-bin inf
+expect 2 "--ensemble-csv needs --ensemble" "$CLI" fit "$TRACE" --ensemble-csv "$W/e.csv"
+expect 2 "--ensemble-csv needs a name" "$CLI" fit "$TRACE" --ensemble --ensemble-csv ""
+expect 2 "--bootstrap needs --ensemble" "$CLI" collapse "$TRACE" --bootstrap 50
+expect 2 "--ensemble-bin needs --ensemble" "$CLI" plot peak "$TRACE" --out "$W/p" --ensemble-bin 0.1
+expect 2 "give --ensemble or --each, not both" "$CLI" plot force "$TRACE" --out "$W/p" --ensemble --each
+expect 2 "--ensemble is for force, ratio, peak and kz" "$CLI" plot flow "$W" --out "$W/p" --ensemble
+[ -e "$W/e.csv" ] && fail "fit wrote $W/e.csv on a usage error"
 expect 2 "--out needs a name" "$CLI" convert "$AVE" --v0 100 --dt 2e-6 --D 2 --g 981 --out ""
 expect 2 "--D must be > 0, got '0'" "$CLI" "${IMPORT[@]}" --out "$W/imp" --D 0
 expect 2 "--run" "$CLI" "${IMPORT[@]}" --out "$W/imp" --run 0
@@ -96,6 +109,7 @@ expect 1 "--json .*t\.csv is the input" "$CLI" fit "$W/t.csv" --json "$W/t.csv";
 expect 1 "--csv .*t\.csv is the input" "$CLI" fit "$W/t.csv" --csv "$W/./t.csv"; same "$W/t.csv" "$W/t.orig"
 expect 1 "--json .*t\.csv is the input" "$CLI" collapse "$W" --json "$W/t.csv"; same "$W/t.csv" "$W/t.orig"
 expect 1 "--csv .*t\.csv is the input" "$CLI" collapse "$W/t.csv" --csv "$W/t.csv"; same "$W/t.csv" "$W/t.orig"
+expect 1 "--ensemble-csv .*t\.csv is the input" "$CLI" fit "$W/t.csv" --ensemble --ensemble-csv "$W/t.csv"; same "$W/t.csv" "$W/t.orig"
 ln -sf "$W/t.csv" "$W/link.csv"
 expect 1 "--json .*link\.csv is the input" "$CLI" fit "$W/t.csv" --json "$W/link.csv"; same "$W/t.csv" "$W/t.orig"
 cp "$AVE" "$W/ave.txt" && cp "$AVE" "$W/ave.orig"

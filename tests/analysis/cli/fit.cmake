@@ -87,3 +87,31 @@ add_test(NAME fit_cli_tmin COMMAND granpen-cli fit ${GRANPEN_FIT_DIR}/kz25300.cs
 set_tests_properties(fit_cli_tmin PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "window t~ >= 0.5.*z 2.26\\.\\.5 cm")
 add_test(NAME fit_cli_tmin_and_zmin COMMAND granpen-cli fit ${GRANPEN_FIT_DIR}/kz25300.csv --tmin 0.5 --zmin 1)
 set_tests_properties(fit_cli_tmin_and_zmin PROPERTIES LABELS unit PASS_REGULAR_EXPRESSION "give --zmin or --tmin, not both")
+
+# issue 20: a trace without a positive depth term is named and left out, and the command
+# still succeeds; only when nothing is left does it fail. A window beyond the data is
+# shortened, said. --ensemble: the bench sweep's runs averaged per speed, +- over runs.
+set(GRANPEN_LEFT_DIR ${CMAKE_CURRENT_BINARY_DIR}/collapse_left_out)
+granpen_synthetic_trace(${GRANPEN_LEFT_DIR}/up_a.csv 253 "# mu = 0.3\n" ON)
+granpen_synthetic_trace(${GRANPEN_LEFT_DIR}/up_b.csv 240 "# mu = 0.3\n" ON)
+granpen_synthetic_trace(${GRANPEN_LEFT_DIR}/falling.csv -120 "# mu = 0.3\n" OFF)
+add_test(NAME cli_collapse_leaves_out_unfittable COMMAND granpen-cli collapse ${GRANPEN_LEFT_DIR})
+set_tests_properties(cli_collapse_leaves_out_unfittable PROPERTIES LABELS "unit;cli"
+  PASS_REGULAR_EXPRESSION "note: [^\n]*falling\\.csv: no positive depth term[^\n]*left out.*granpen collapse: 2 traces \\(1 left out\\)")
+add_test(NAME cli_collapse_nothing_left COMMAND granpen-cli collapse ${GRANPEN_LEFT_DIR}/falling.csv)
+set_tests_properties(cli_collapse_nothing_left PROPERTIES LABELS "unit;cli" WILL_FAIL ON)
+add_test(NAME cli_fit_window_beyond_the_data COMMAND granpen-cli fit ${GRANPEN_FIT_DIR}/kz25300.csv --zmin 10)
+set_tests_properties(cli_fit_window_beyond_the_data PROPERTIES LABELS "unit;cli"
+  PASS_REGULAR_EXPRESSION "k_z = 2\\.5[0-9]*e\\+04[^\n]*\n[^\n]*note: k_z window z >= 10 cm does not fit the data \\(deepest z = 5 cm\\): shortened to z = 2\\.5\\.\\.5 cm")
+add_test(NAME cli_fit_ensemble_bench COMMAND granpen-cli fit ${PROJECT_SOURCE_DIR}/data/sims/v0_bench --zmin 1 --zmax 3
+  --ensemble --json ${CMAKE_CURRENT_BINARY_DIR}/fit_ensemble.json)
+set_tests_properties(cli_fit_ensemble_bench PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "ensemble v0 = 100 cm/s, g = 981 cm/s\\^2, D = 2 cm: 2 runs[^\n]*aligned[^\n]*\n(  note[^\n]*\n)*  mean: k_z = [-0-9.e+]+ \\+- [0-9.e+]+ dyne/cm")
+# five beds per speed: the committed baseline and data/sims/v0_bench_ensemble
+add_test(NAME cli_collapse_ensemble_bench COMMAND granpen-cli collapse ${PROJECT_SOURCE_DIR}/data/sims/v0_bench
+  ${PROJECT_SOURCE_DIR}/data/sims/v0_bench_ensemble --alpha 18.6 --ensemble --json ${CMAKE_CURRENT_BINARY_DIR}/collapse_ensemble.json)
+set_tests_properties(cli_collapse_ensemble_bench PROPERTIES LABELS cli
+  PASS_REGULAR_EXPRESSION "granpen collapse --ensemble: 3 ensembles of 15 runs.*collapse quality: spread of F/F_z across ensembles [0-9.]+ \\+- [0-9.]+ against z.*peak law: peak ~ v0\\^[0-9.]+ \\+- [0-9.]+ \\(95%: \\+- [0-9.]+, over runs")
+add_test(NAME cli_fit_ensemble_options_need_ensemble COMMAND granpen-cli fit ${GRANPEN_FIT_DIR}/kz25300.csv --bootstrap 50)
+set_tests_properties(cli_fit_ensemble_options_need_ensemble PROPERTIES LABELS "unit;cli"
+  PASS_REGULAR_EXPRESSION "--bootstrap needs --ensemble")

@@ -463,3 +463,144 @@ TEST(PlotCli, UndefinedTimeFallsBackToDepth)
   EXPECT_NE(slurp(out / "flow_annulus.gp").find("rod tip depth z_{tip} (cm)"), std::string::npos);
   EXPECT_EQ(block(out / "flow_annulus.dat", 0)[2][0], 3.0);
 }
+
+// ---------------------------------------------------------------- real data sets (issue 20)
+
+namespace {
+
+// 22 penetrometer-like soundings at nine speeds (2 or 3 each), depths to 14 m at 2 cm, a
+// cone of D = 3.57 cm: 0.7 R = 1.25 cm holds no sample, so there is no peak region to show
+fs::path soundings(const std::string &name)
+{
+  const fs::path d = fresh(name);
+  const double speeds[] = {0.5, 1, 2, 5, 10, 20, 50, 100, 200};
+  const int runs[] = {3, 3, 3, 2, 2, 2, 3, 2, 2};
+  int id = 0;
+  for (int s = 0; s < 9; ++s)
+    for (int r = 0; r < runs[s]; ++r, ++id) {
+      std::ostringstream o;
+      o << "# granpen-trace v1\n# units = cgs\n# v0 = " << speeds[s] << "\n# D = 3.57\n# g = 981\n# d_g = 0.05\n"
+        << "# rho_g = 2.65\n# run = " << r + 1 << "\nt,z,F\n";
+      o.precision(10);
+      for (int i = 0; i <= 705; ++i) {
+        const double z = -10 + 2.0 * i;
+        const double F = z > 0 ? 4e5 * std::pow(z, 0.8) * (1 + 0.08 * std::sin(0.05 * z + id)) : 0.0;
+        o << (z + 10) / speeds[s] << "," << z << "," << F << "\n";
+      }
+      write(d / ("sounding_" + std::to_string(id) + ".csv"), o.str());
+    }
+  return d;
+}
+
+// the legend entries of a script: every `title "..."` (key titles excluded)
+std::vector<std::string> legend_titles(const std::string &gp)
+{
+  std::vector<std::string> t;
+  const std::regex re(" title \"([^\"]*)\"");
+  for (auto it = std::sregex_iterator(gp.begin(), gp.end(), re); it != std::sregex_iterator(); ++it)
+    t.push_back((*it)[1]);
+  return t;
+}
+
+int count_containing(const std::vector<std::string> &v, const std::string &s)
+{
+  return (int) std::count_if(v.begin(), v.end(), [&](const std::string &x) { return x.find(s) != std::string::npos; });
+}
+
+}    // namespace
+
+TEST(PlotCli, NineSpeedsOfSoundingsAllInTheLegendWithoutAnEmptyInset)
+{
+  const fs::path in = soundings("soundings_in"), out = fresh("soundings_out");
+  const bool run = have_gnuplot();
+  std::vector<std::string> extra = run ? std::vector<std::string>{} : std::vector<std::string>{"--no-run"};
+  const auto plot = [&](std::vector<std::string> a) {
+    a.insert(a.end(), {"--out", out.string()});
+    a.insert(a.end(), extra.begin(), extra.end());
+    return run_plot(a);
+  };
+  // force, mean per speed: nine entries, each speed once; no inset (no sample in the peak
+  // region), and a note saying so
+  Outcome o = plot({"force", in.string()});
+  ASSERT_EQ(o.status, 0) << o.err;
+  std::string gp = slurp(out / "force.gp");
+  auto titles = legend_titles(gp);
+  for (const char *v : {"= 0.5 cm/s", "= 1 cm/s", "= 2 cm/s", "= 5 cm/s", "= 10 cm/s", "= 20 cm/s", "= 50 cm/s",
+                        "= 100 cm/s", "= 200 cm/s"})
+    EXPECT_EQ(count_containing(titles, v), 1) << v << "\n" << gp;
+  EXPECT_EQ(gp.find("peak region"), std::string::npos);
+  EXPECT_NE(o.out.find("no enlarged view"), std::string::npos) << o.out;
+  EXPECT_EQ(count_containing(titles, "more not listed"), 0);
+  // every run: 22 entries (or the legend says what it folded), never silently cut
+  o = plot({"force", in.string(), "--each"});
+  ASSERT_EQ(o.status, 0) << o.err;
+  titles = legend_titles(slurp(out / "force.gp"));
+  EXPECT_EQ(count_containing(titles, "v_0 = "), 22);
+  // kz, ratio: one entry per speed; peak: none of them has a sample in the peak region
+  o = plot({"peak", in.string()});
+  EXPECT_NE(o.out.find("22 of 22 traces have no positive force at 0 < z < 0.7 R"), std::string::npos) << o.out;
+  for (const char *kind : {"kz", "ratio"}) {
+    o = plot({kind, in.string(), "--kz-zmin", "300"});
+    ASSERT_EQ(o.status, 0) << kind << ": " << o.err;
+    titles = legend_titles(slurp(out / (std::string(kind) + ".gp")));
+    EXPECT_EQ(count_containing(titles, "v_0 = "), 9) << kind;
+  }
+  if (run) EXPECT_TRUE(is_png((out / "force.png").string()));
+}
+
+TEST(PlotCli, ALegendLongerThanItsColumnSaysHowManyItFolded)
+{
+  // 60 runs at 60 speeds, every one its own entry: 60 lines do not fit 720 px
+  const fs::path in = fresh("many_in"), out = fresh("many_out");
+  for (int i = 0; i < 60; ++i) write(in / ("v" + std::to_string(i) + ".csv"), trace_text(10 + 5 * i, 20000, 0, 0, 1));
+  const Outcome o = run_plot({"force", in.string(), "--each", "--out", out.string(), "--no-run"});
+  ASSERT_EQ(o.status, 0) << o.err;
+  const auto titles = legend_titles(slurp(out / "force.gp"));
+  ASSERT_EQ(count_containing(titles, "more not listed"), 1);
+  const std::string more = titles[(std::size_t) (std::find_if(titles.begin(), titles.end(), [](const std::string &t) {
+                                                   return t.find("more not listed") != std::string::npos;
+                                                 }) - titles.begin())];
+  const int folded = std::atoi(more.c_str() + 2);
+  EXPECT_EQ(count_containing(titles, "v_0 = ") + folded, 60) << more;
+  EXPECT_NE(o.out.find("folded"), std::string::npos) << o.out;
+}
+
+TEST(PlotCli, AMillimetreTraceHasNoPeakInsetAndAShortenedWindow)
+{
+  const fs::path in = fresh("mm_in"), out = fresh("mm_out");
+  std::ostringstream t;
+  t << "# granpen-trace v1\n# units = cgs\n# v0 = 1\n# D = 2\n# g = 981\nt,z,F\n";
+  for (int i = 0; i <= 350; ++i) {
+    const double z = -0.05 + 0.001 * i;
+    t << z + 0.05 << "," << z << "," << (z > 0 ? 3e4 * z : 0.0) << "\n";
+  }
+  write(in / "mm.csv", t.str());
+  Outcome o = run_plot({"force", in.string(), "--out", out.string(), "--no-run"});
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_EQ(slurp(out / "force.gp").find("peak region"), std::string::npos);
+  EXPECT_NE(o.out.find("half or more of the depth drawn"), std::string::npos) << o.out;
+  // k_z over the default z >= 3 cm: the window is the deeper half of the trace, said
+  o = run_plot({"kz", in.string(), "--out", out.string(), "--no-run"});
+  ASSERT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.out.find("shortened to z = 0.15..0.3 cm"), std::string::npos) << o.out;
+}
+
+TEST(PlotCli, EnsembleBandsAreTheStandardErrorOverRuns)
+{
+  // two runs at 100 cm/s, F = 20000 z and 40000 z: the ensemble's band is mean +- |a - b| / 2 z
+  const fs::path in = fresh("ens_in"), out = fresh("ens_out");
+  write(in / "a.csv", trace_text(100, 20000, 0, 0, 1));
+  write(in / "b.csv", trace_text(100, 40000, 0, 0, 2));
+  const Outcome o = run_plot({"force", in.string(), "--ensemble", "--out", out.string(), "--no-run"});
+  ASSERT_EQ(o.status, 0) << o.err;
+  const auto b = block(out / "force.dat", 0);    // x, mean, mean - se, mean + se in 10^5 dyne
+  ASSERT_GT(b.size(), 400u);
+  for (const auto &row : b)
+    if (row[0] > 0.5) {
+      // bins of 0.01 cm with one sample each, off the centre by up to 0.005 cm
+      EXPECT_NEAR(row[1], 0.3 * row[0], 0.3 * 0.006);
+      EXPECT_NEAR(row[3] - row[1], 0.1 * row[0], 0.1 * 0.011);
+    }
+  EXPECT_NE(slurp(out / "force.gp").find("standard error over runs"), std::string::npos);
+  EXPECT_EQ(run_plot({"force", in.string(), "--ensemble", "--each", "--out", out.string()}).status, 2);
+}

@@ -1,0 +1,182 @@
+// granpen analysis: ensembles of trace files (see ensemble_tables.h).
+#include "ensemble_tables.h"
+
+#include "errors.h"
+#include "json_text.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <tuple>
+
+namespace granpen {
+
+namespace {
+
+double key6(double v)
+{
+  if (!(v != 0.0) || !std::isfinite(v)) return v;
+  const double e = std::pow(10.0, std::floor(std::log10(std::fabs(v))) - 5);
+  return std::round(v / e) * e;
+}
+
+std::string g3(double v) { return json_number("%g", v); }
+
+}    // namespace
+
+std::string TraceGroup::label() const
+{
+  return "v0 = " + g3(v0) + " cm/s, g = " + g3(g) + " cm/s^2, D = " + g3(D) + " cm";
+}
+
+std::vector<Trace> read_traces(const std::vector<std::string> &files, std::vector<std::string> &problems)
+{
+  std::vector<Trace> out;
+  for (const auto &f : files) {
+    try {
+      out.push_back(to_cgs(read_trace(f)));
+    } catch (InputError &e) {
+      problems.push_back(e.what());
+    }
+  }
+  return out;
+}
+
+std::vector<TraceGroup> group_traces(const std::vector<Trace> &traces)
+{
+  std::map<std::tuple<double, double, double>, TraceGroup> m;    // (g, D, v0)
+  for (const auto &t : traces) {
+    TraceGroup &g = m[{key6(t.g), key6(t.D), key6(t.v0)}];
+    if (g.traces.empty()) g.v0 = t.v0, g.g = t.g, g.D = t.D;
+    g.traces.push_back(t);
+  }
+  std::vector<TraceGroup> out;
+  for (auto &kv : m) out.push_back(std::move(kv.second));
+  return out;
+}
+
+void average_groups(std::vector<TraceGroup> &groups, const EnsembleParams &p, std::vector<std::string> &problems)
+{
+  std::vector<TraceGroup> kept;
+  for (auto &g : groups) {
+    std::vector<std::vector<double>> z, F;
+    for (const auto &t : g.traces) z.push_back(t.z), F.push_back(t.F);
+    try {
+      g.mean = ensemble_mean(z, F, p);
+      kept.push_back(std::move(g));
+    } catch (std::invalid_argument &e) {
+      std::string why = e.what();
+      why = why.substr(why.find(": ") == std::string::npos ? 0 : why.find(": ") + 2);
+      problems.push_back("ensemble " + g.label() + " (" + std::to_string(g.traces.size()) + " runs): " + why +
+                         "; left out");
+    }
+  }
+  groups = std::move(kept);
+}
+
+std::string ensemble_summary(const TraceGroup &g)
+{
+  const EnsembleMean &m = g.mean;
+  std::string s = "ensemble " + g.label() + ": " + std::to_string(m.runs) + (m.runs == 1 ? " run" : " runs") +
+                  ", bins of " + json_number("%.3g", m.bin) + " cm over z = " + json_number("%.3g", m.z_first) +
+                  ".." + json_number("%.3g", m.z_last) + " cm";
+  if (m.runs > 1) s += ", aligned at the mean force onset z = " + json_number("%.3f", m.alignment.reference) +
+                       " cm (origins moved by up to " + json_number("%.3f", m.alignment.max_shift) + " cm)";
+  if (m.runs == 1) s += " (one run: no run-to-run band, no uncertainties)";
+  for (const auto &n : m.notes) s += "\n  note: " + n;
+  return s;
+}
+
+std::string ensemble_curves_csv(const std::vector<TraceGroup> &groups)
+{
+  std::string o = "v0,g,D,runs,z,F_mean,F_se,F_sd\n";
+  const auto n = [](double v) { return json_number("%.10g", v); };
+  for (const auto &g : groups)
+    for (std::size_t k = 0; k < g.mean.z.size(); ++k)
+      o += n(g.v0) + "," + n(g.g) + "," + n(g.D) + "," + std::to_string(g.mean.n[k]) + "," + n(g.mean.z[k]) + "," +
+           n(g.mean.mean[k]) + "," + n(g.mean.se[k]) + "," + n(g.mean.sd[k]) + "\n";
+  return o;
+}
+
+Json estimate_json(const Estimate &e)
+{
+  const auto n = [](double v) { return json_rounded("%.10g", v); };
+  return {{"ok", e.ok}, {"value", n(e.value)}, {"se_ok", e.se_ok}, {"se", n(e.se)}, {"ci95", n(e.ci95)},
+          {"defined", e.defined}};
+}
+
+Json ensemble_json(const TraceGroup &g)
+{
+  const auto n = [](double v) { return json_rounded("%.10g", v); };
+  const EnsembleMean &m = g.mean;
+  Json j;
+  j["v0"] = n(g.v0), j["g"] = n(g.g), j["D"] = n(g.D), j["runs"] = m.runs;
+  j["files"] = Json::array();
+  for (std::size_t i = 0; i < g.traces.size(); ++i)
+    j["files"].push_back({{"file", g.traces[i].path}, {"onset", i < m.alignment.onset.size() && std::isfinite(m.alignment.onset[i]) ? n(m.alignment.onset[i]) : Json()},
+                          {"shift", n(i < m.alignment.shift.size() ? m.alignment.shift[i] : 0.0)}});
+  j["reference_onset"] = n(m.alignment.reference);
+  j["max_shift"] = n(m.alignment.max_shift);
+  j["bin"] = n(m.bin), j["z_first"] = n(m.z_first), j["z_last"] = n(m.z_last), j["bins"] = m.z.size();
+  j["notes"] = m.notes;
+  return j;
+}
+
+Json ensemble_fit_json(const TraceGroup &g, const EnsembleFit &f)
+{
+  const auto n = [](double v) { return json_rounded("%.10g", v); };
+  Json j = ensemble_json(g);
+  j["resamples"] = f.resamples;
+  j["zlo"] = n(f.fit.zlo), j["zhi"] = n(f.fit.zhi), j["window_shortened"] = f.fit.window_shortened;
+  j["n_window"] = f.fit.n_window;
+  for (const auto &[name, e] : {std::make_pair("k_z", &f.k_z), std::make_pair("intercept", &f.intercept),
+                                std::make_pair("alpha", &f.alpha), std::make_pair("k_z0", &f.k_z0),
+                                std::make_pair("alpha0", &f.alpha0), std::make_pair("peak_F", &f.peak_F),
+                                std::make_pair("peak_z", &f.peak_z), std::make_pair("wavelength", &f.wavelength)})
+    j[name] = estimate_json(*e);
+  for (const auto &note : f.fit.notes) j["notes"].push_back(note);
+  return j;
+}
+
+Json ensemble_collapse_json(const std::vector<TraceGroup> &groups, const EnsembleCollapse &c)
+{
+  const auto n = [](double v) { return json_rounded("%.10g", v); };
+  Json j;
+  j["resamples"] = c.resamples, j["usable_resamples"] = c.usable;
+  j["ensembles"] = Json::array();
+  for (std::size_t i = 0; i < groups.size() && i < c.result.curves.size(); ++i) {
+    Json e = ensemble_json(groups[i]);
+    e["k_z"] = estimate_json(c.k_z[i]);
+    e["peak"] = estimate_json(c.peak[i]);
+    e["peak_z"] = n(c.result.curves[i].peak_z);
+    e["crossed"] = c.result.curves[i].crossed;
+    e["t_star"] = estimate_json(c.t_star[i]);
+    j["ensembles"].push_back(e);
+  }
+  j["t_star_mean"] = estimate_json(c.t_star_mean);
+  j["n_crossed"] = c.result.n_crossed;
+  j["t_star_ensemble"] = estimate_json(c.t_star_ensemble);
+  j["spread_z"] = estimate_json(c.spread_z);
+  j["spread_t"] = estimate_json(c.spread_t);
+  j["peak_exponent"] = estimate_json(c.peak_exponent);
+  j["peak_prefactor"] = n(c.result.peak_prefactor);
+  return j;
+}
+
+std::string ensemble_collapse_csv_rows(const std::vector<TraceGroup> &groups, const EnsembleCollapse &c)
+{
+  std::string o;
+  for (std::size_t i = 0; i < groups.size() && i < c.result.curves.size(); ++i) {
+    const auto &g = groups[i];
+    const auto &cv = c.result.curves[i];
+    const std::string name = "ensemble v0=" + g3(g.v0) + " g=" + g3(g.g) + " D=" + g3(g.D) +
+                             " runs=" + std::to_string(g.mean.runs);
+    for (std::size_t k = 0; k < cv.t.size(); ++k)
+      o += name + "," + json_number("%.10g", g.v0) + "," + json_number("%.10g", g.g) + "," + json_number("%.10g", g.D) +
+           "," + json_number("%.6g", cv.t[k]) + "," + json_number("%.6g", cv.ratio[k]) + "\n";
+  }
+  return o;
+}
+
+}    // namespace granpen

@@ -1,0 +1,58 @@
+// granpen analysis: ensembles of trace files for granpen fit, collapse and plot --ensemble:
+// traces grouped by case (same v0, g and D), each group's ensemble mean
+// (core/ensemble_average.h), and the files they write: the mean curves as CSV, the
+// alignment and the estimates (core/ensemble_fit.h) as JSON.
+#ifndef GRANPEN_ENSEMBLE_TABLES_H
+#define GRANPEN_ENSEMBLE_TABLES_H
+
+#include "ensemble_average.h"
+#include "ensemble_fit.h"
+#include "json_writer.h"
+#include "trace_reader.h"
+
+#include <string>
+#include <vector>
+
+namespace granpen {
+
+struct TraceGroup {
+  double v0 = 0.0, g = 0.0, D = 0.0;    // cgs
+  std::vector<Trace> traces;            // cgs, in the order given
+  EnsembleMean mean;                    // set by average_groups
+  std::string label() const;            // "v0 = 100 cm/s, g = 981 cm/s^2, D = 2 cm"
+};
+
+// Traces grouped by (v0, g, D), each rounded to 6 significant digits so that "100" and
+// "1.0 m/s" meet; groups sorted by g, D, then v0. Traces arrive in cgs.
+std::vector<TraceGroup> group_traces(const std::vector<Trace> &traces);
+
+// Reads the files (cgs); an unreadable file is a line in problems naming it.
+std::vector<Trace> read_traces(const std::vector<std::string> &files, std::vector<std::string> &problems);
+
+// Sets each group's ensemble mean; a group that cannot be averaged (runs that share no
+// depth) is a line in problems and removed.
+void average_groups(std::vector<TraceGroup> &groups, const EnsembleParams &p, std::vector<std::string> &problems);
+
+// One line per group saying what the averaging did: runs, bins, range, the largest onset
+// shift, and its notes.
+std::string ensemble_summary(const TraceGroup &g);
+
+// The mean curves: v0,g,D,runs,z,F_mean,F_se,F_sd (cgs), one row per bin.
+std::string ensemble_curves_csv(const std::vector<TraceGroup> &groups);
+
+// An estimate as {"ok", "value", "se_ok", "se", "ci95", "defined"}.
+Json estimate_json(const Estimate &e);
+// A group's case, files, alignment (reference onset, shift per file) and grid.
+Json ensemble_json(const TraceGroup &g);
+// ensemble_json with the fit of its mean: window, notes, and each estimate.
+Json ensemble_fit_json(const TraceGroup &g, const EnsembleFit &f);
+// The collapse of ensembles (groups[i] is case i): per ensemble its k_z, peak and t~*, and
+// the crossover, collapse quality and peak law, each an estimate.
+Json ensemble_collapse_json(const std::vector<TraceGroup> &groups, const EnsembleCollapse &c);
+// The binned F/F_z curves of the ensembles as rows of collapse_curves_csv (trace
+// "ensemble v0=V g=G D=D runs=N").
+std::string ensemble_collapse_csv_rows(const std::vector<TraceGroup> &groups, const EnsembleCollapse &c);
+
+}    // namespace granpen
+
+#endif
