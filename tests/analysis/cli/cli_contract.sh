@@ -10,7 +10,7 @@
 # usage: cli_contract.sh GRANPEN_CLI WORK_DIR TRACE AVE_TIME DUMP DUMP_TRACE
 set -u
 CLI=$1 W=$2 TRACE=$3 AVE=$4 DUMP=$5 DTRACE=$6
-INPUTS=$(cd "$(dirname "$0")/../../inputs" && pwd)    # the decks' presets, for granpen sweep
+INPUTS=$(cd "$(dirname "$0")/../../../inputs" && pwd)    # the decks' presets, for granpen sweep
 rm -rf "$W" && mkdir -p "$W" || exit 1
 fails=0 cases=0
 fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
