@@ -91,11 +91,14 @@ analyse_traces() {
     IFS=: read -r v g D <<< "$key"
     put "$preset.alpha0_window.v$v.g$g.D$D = $(col "$o/fit_z$zmin.csv" alpha0 v0 "$v" g "$g" D "$D" | stats)  # granpen fit --zmin $zmin: k_z0 / (mu rho_g g D^2)"
   done
-  # k_z against v0 in the deep regime t~ >= 1, where the push reaches it (>= 0.5 cm of window)
+  # k_z against v0 in the deep regime t~ >= 1, where the push reaches it (>= 0.5 cm of window
+  # that starts at t~ = 1: fit shortens a window the data do not fill to the trace's deeper
+  # half, which is not the deep regime)
   for v in $(col "$o/fit_deep.csv" v0 g 981 D 2 | sort -gu); do
     local n
     n=$(awk -F, -v v="$v" 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next }
-      $i["v0"] + 0 == v && $i["g"] + 0 == 981 && $i["D"] + 0 == 2 && $i["z_last"] - $i["z_first"] >= 0.5' "$o/fit_deep.csv" | wc -l)
+      $i["v0"] + 0 == v && $i["g"] + 0 == 981 && $i["D"] + 0 == 2 && $i["z_last"] - $i["z_first"] >= 0.5 &&
+      $i["zlo"] >= $i["v0"] * sqrt($i["D"] / $i["g"]) * (1 - 1e-9)' "$o/fit_deep.csv" | wc -l)
     [ "$n" -gt 0 ] || { put "$preset.k_z_deep.v$v = undefined  # t~ >= 1 not reached by 0.5 cm before the push ends"; continue; }
     put "$preset.k_z_deep.v$v = $(col "$o/fit_deep.csv" k_z v0 "$v" g 981 D 2 | stats)  # granpen fit --tmin 1, g = 981, D = 2"
   done
