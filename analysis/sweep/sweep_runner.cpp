@@ -30,6 +30,23 @@
 
 namespace granpen {
 
+// Rounded to whole seconds before splitting: 119.7 s is "2m00s", never "1m60s".
+std::string format_duration(double s)
+{
+  char buf[64];
+  if (s < 0 || !std::isfinite(s)) return "?";
+  if (s < 119.5) {
+    std::snprintf(buf, sizeof(buf), "%.0fs", s);
+  } else if (s < 7200) {
+    const long t = std::lround(s);
+    std::snprintf(buf, sizeof(buf), "%ldm%02lds", t / 60, t % 60);
+  } else {
+    std::snprintf(buf, sizeof(buf), "%.1fh", s / 3600);
+  }
+  return buf;
+}
+
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -155,15 +172,6 @@ void unlock(Job &j)
   j.lock_fd = -1;
 }
 
-std::string fmt_seconds(double s)
-{
-  char buf[64];
-  if (s < 0 || !std::isfinite(s)) return "?";
-  if (s < 120) std::snprintf(buf, sizeof(buf), "%.0fs", s);
-  else if (s < 7200) std::snprintf(buf, sizeof(buf), "%.0fm%02.0fs", std::floor(s / 60), std::fmod(s, 60));
-  else std::snprintf(buf, sizeof(buf), "%.1fh", s / 3600);
-  return buf;
-}
 
 // Starts argv with stdout and stderr into out. The child is a process group of its own and
 // dies with the runner (PR_SET_PDEATHSIG): a runner killed with -9 leaves no LAMMPS behind
@@ -771,7 +779,7 @@ void Pool::reap(pid_t pid, int wstatus)
       }
       unlock(j);
       std::printf("  %s %s%s in %s%s%s\n", j.status == "done" ? "done " : "FAILED", sw.label.c_str(),
-                  j.run.id.c_str(), fmt_seconds(j.wall).c_str(), j.error.empty() ? "" : ": ", j.error.c_str());
+                  j.run.id.c_str(), format_duration(j.wall).c_str(), j.error.empty() ? "" : ": ", j.error.c_str());
       std::fflush(stdout);
       write_manifest(sw);
     }
@@ -798,7 +806,7 @@ void Pool::report_progress()
       const std::string ps = pour ? pour_status(j.log) : "";
       if (std::isfinite(z)) std::snprintf(b, sizeof(b), " %s z=%.2f", id.c_str(), z);
       else if (!ps.empty()) std::snprintf(b, sizeof(b), " %s (%s)", id.c_str(), ps.c_str());
-      else std::snprintf(b, sizeof(b), " %s %s", id.c_str(), fmt_seconds(seconds_since(j.start)).c_str());
+      else std::snprintf(b, sizeof(b), " %s %s", id.c_str(), format_duration(seconds_since(j.start)).c_str());
       now += b;
     }
   }
@@ -807,8 +815,8 @@ void Pool::report_progress()
   if ((n_pour || !left_pour) && (n_push || !left_push))
     eta = ((n_pour ? sum_pour / n_pour : 0) * left_pour + (n_push ? sum_push / n_push : 0) * left_push) /
         std::max(1, opt.jobs);
-  std::printf("  [%s] %d/%d done, %d failed; running:%s; ETA %s\n", fmt_seconds(seconds_since(t0)).c_str(), done,
-              total, failed, now.c_str(), fmt_seconds(eta).c_str());
+  std::printf("  [%s] %d/%d done, %d failed; running:%s; ETA %s\n", format_duration(seconds_since(t0)).c_str(), done,
+              total, failed, now.c_str(), format_duration(eta).c_str());
   std::fflush(stdout);
 }
 
@@ -830,7 +838,7 @@ void Pool::close_finished()
     sw.reported = true;
     write_manifest(sw);
     std::printf("granpen sweep %s: %d done, %d failed in %s; manifest %s/manifest.json\n", sw.spec.name.c_str(),
-                done, failed, fmt_seconds(seconds_since(t0)).c_str(), sw.dir.c_str());
+                done, failed, format_duration(seconds_since(t0)).c_str(), sw.dir.c_str());
     for (size_t k = 0; k < sw.jobs.size(); ++k)
       if (planned_in(k) && sw.jobs[k].action == "refused")
         std::printf("granpen sweep %s: refused %s: %s\n", sw.spec.name.c_str(), sw.jobs[k].run.id.c_str(),

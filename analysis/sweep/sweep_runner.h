@@ -29,6 +29,9 @@ struct RunnerOptions {
 // Returns 0 when every run is done, 1 when any failed (all others still run).
 int run_sweep(const SweepSpec &spec, const RunnerOptions &opt);
 
+// A wall time for progress lines: "45s", "30m07s", "2.5h"; "?" when negative or not finite.
+std::string format_duration(double seconds);
+
 // A sweep of a pool; beds_from names another sweep (same presets, mu and seeds) in
 // out_root whose beds it reuses (hard links) instead of pouring its own.
 struct SweepTask {

@@ -144,3 +144,17 @@ TEST(SweepSpec, JsonStringsAreEscaped)
   EXPECT_EQ(json_string("a\"b\\c\nd\x01"), "\"a\\\"b\\\\c\\nd\\u0001\"");
   EXPECT_EQ(json_number("%.3g", 1.0 / 0.0), "0");
 }
+
+// Progress lines: seconds that round up to a full minute carry into the minutes (a run
+// once printed "30m60s"); each case is an exact string, so any carry or rounding slip fails.
+TEST(FormatDuration, RoundsBeforeSplitting)
+{
+  EXPECT_EQ(format_duration(45.2), "45s");
+  EXPECT_EQ(format_duration(119.4), "119s");
+  EXPECT_EQ(format_duration(119.6), "2m00s");
+  EXPECT_EQ(format_duration(1859.7), "31m00s");
+  EXPECT_EQ(format_duration(1807.0), "30m07s");
+  EXPECT_EQ(format_duration(7199.4), "119m59s");
+  EXPECT_EQ(format_duration(9000.0), "2.5h");
+  EXPECT_EQ(format_duration(-1.0), "?");
+}
