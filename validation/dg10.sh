@@ -1,51 +1,138 @@
 #!/usr/bin/env bash
-# The D/d_g = 10 runs (docs/presets.md, issue: physics at the paper's grain size ratio),
-# resumable across sessions: run it again and it goes on where it stopped. Pours checkpoint
-# every settling chunk (in.pour -var checkpoint 1); pushes every 5000 steps (the sweep
-# runner). One run at a time, niced, so that the machine's other core stays free.
+# The D/d_g = 10 runs (docs/presets.md, "dg10"; issue: physics at the paper's grain size
+# ratio). Every session gets a new machine and only what is committed to git survives, so
+# the work is cut into units that each fit a session, and each finished unit is copied into
+# data/sims/dg10 at once, to be committed:
+#   a bed   the preset pours a periodic tile of 5 x 5 cm (in.pour -var tile 2, the preset's
+#           value; about 33500 grains) and replicates it 2 x 2 into the 10 x 10 cm bed.
+#           Its tile (beds/ID.tile.data.gz, a few MB, and ID.tile.info) and the bed's ID.info
+#           are copied to data/sims/dg10/beds; a later session rebuilds the bed from them
+#           in seconds (in.pour -var from_tile) instead of pouring it again.
+#   a push  its trace goes to data/sims/dg10/SWEEP/ID.csv (SWEEP = dg10_peak, dg10_flow,
+#           dg10_D: inputs/sweeps/SWEEP.sweep); a push whose trace is there is never rerun.
+#           A dg10_flow push (dumps of every atom, hundreds of MB, not committed) is followed
+#           by `granpen flow` on its dumps, whose outputs (small) go to
+#           data/sims/dg10/dg10_flow/ID.flow/.
+# Run it again in any session and it goes on with the first unit not committed. One run at
+# a time, niced, so that the machine's other core stays free. Units in order: the three beds
+# (dg10_peak's pours), then the pushes of dg10_peak, dg10_flow, dg10_D.
 #
-#   validation/dg10.sh [--out DIR] [--jobs N] [--status]
+#   validation/dg10.sh [--out DIR] [--units N] [--ranks N] [--commit] [--status]
 #
-#   --out DIR   where the runs live (default /work/granpen-runs: outside the work tree, so
-#               that a new checkout does not lose hours of pouring); DIR/dg10/ is the
-#               sweep folder of inputs/sweeps/dg10_{peak,flow,D}.sweep
-#   --status    print how far it got (beds poured, pushes done) and stop
-# The decks are copied into DIR/dg10/inputs at every start, so that editing inputs/ in the
-# work tree never changes a run under way (LAMMPS rereads a deck at every jump); a pour
-# resumed under newer decks reads the same checkpoint state.
+#   --out DIR   scratch folder of the runs (default /work/granpen-runs; lost with the
+#               machine): DIR/SWEEP/ is the sweep folder of inputs/sweeps/SWEEP.sweep
+#   --units N   stop after N units of work have been run (default: all); a unit is a bed
+#               poured or a push; rebuilding a bed from its committed tile is not one
+#   --ranks N   run each unit on N MPI ranks (mpirun; default 1): the longest unit, the
+#               dg10_flow push at 40 cm/s, is 1.4 to 2.3 core-hours (docs/presets.md)
+#   --commit    git-commit data/sims/dg10 after every unit (on the work tree's branch)
+#   --status    print what is committed and what is under way, and stop
+#   --data DIR, --sweeps "FILE..."   other committed folder and sweep files (for tests)
+# The decks are copied into DIR/inputs at every start, so that editing inputs/ in the work
+# tree never changes a run under way (LAMMPS rereads a deck at every jump).
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
-OUT=/work/granpen-runs JOBS=1 STATUS=0
+OUT=/work/granpen-runs UNITS=-1 RANKS=1 COMMIT=0 STATUS=0 DATA=$ROOT/data/sims/dg10
+SWEEPS="$ROOT/inputs/sweeps/dg10_peak.sweep $ROOT/inputs/sweeps/dg10_flow.sweep $ROOT/inputs/sweeps/dg10_D.sweep"
 while [ $# -gt 0 ]; do
   case $1 in
     --out) OUT=$2; shift 2 ;;
-    --jobs) JOBS=$2; shift 2 ;;
+    --units) UNITS=$2; shift 2 ;;
+    --ranks) RANKS=$2; shift 2 ;;
+    --commit) COMMIT=1; shift ;;
     --status) STATUS=1; shift ;;
+    --data) DATA=$2; shift 2 ;;
+    --sweeps) SWEEPS=$2; shift 2 ;;
     *) echo "dg10.sh: unknown argument $1 (see the header of $0)" >&2; exit 2 ;;
   esac
 done
+[[ $UNITS =~ ^(-1|[0-9]+)$ ]] || { echo "dg10.sh: --units $UNITS is not a whole number" >&2; exit 2; }
+[[ $RANKS =~ ^[1-9][0-9]*$ ]] || { echo "dg10.sh: --ranks $RANKS is not a whole number >= 1" >&2; exit 2; }
 LMP=${GRANPEN_LMP:-$ROOT/build/lmp_granpen} CLI=${GRANPEN_CLI:-$ROOT/build/analysis/granpen-cli}
-D=$OUT/dg10
-mkdir -p "$D/beds" "$D/logs"
-if [ "$STATUS" = 0 ]; then rm -rf "$D/inputs.new"; cp -r "$ROOT/inputs" "$D/inputs.new"; rm -rf "$D/inputs"; mv "$D/inputs.new" "$D/inputs"; fi
+[ -x "$CLI" ] || { echo "dg10.sh: no granpen-cli at $CLI (build first, or set GRANPEN_CLI)" >&2; exit 2; }
+mkdir -p "$DATA/beds"
+
+# the planned runs of a sweep file: lines "K pour|push ID"
+plan() { "$CLI" sweep "$1" --plan --inputs "$ROOT/inputs" --out "$OUT" | awk '{print $1, $2, $3}'; }
+sweep_name() { awk -F= '$1 ~ /^name *$/ {gsub(/[ \t]/, "", $2); sub(/#.*/, "", $2); print $2}' "$1"; }
 
 status() {
-  local beds pushes
-  beds=$(find "$D/beds" -maxdepth 1 -name "*.info" | wc -l)
-  pushes=$(find "$D" -maxdepth 2 -path "*/traces/*.csv.done" | wc -l)
-  echo "dg10: $beds of 3 beds poured, $pushes of 20 pushes done ($D)"
-  for s in 1 2 3; do
-    local st="$D/beds/bed_dg10_mu0.3_s$s.pour.state"
-    [ -f "$st" ] && echo "  bed $s: pouring, $(awk '$2 == "phase" {p=$4} $2 == "ichunk0" {c=$4} $2 == "irelax0" {r=$4} END {print p, (p == "settle" ? "chunk " c : "relaxation " r)}' "$st") next"
+  local total=0 done=0 beds=0 nbeds=0
+  for f in $SWEEPS; do
+    local name; name=$(sweep_name "$f")
+    while read -r k kind id; do
+      if [ "$kind" = pour ]; then
+        case " $seen " in *" $id "*) continue ;; esac
+        seen="$seen $id"; nbeds=$((nbeds + 1))
+        [ -f "$DATA/beds/$id.tile.data.gz" ] && beds=$((beds + 1))
+      else
+        total=$((total + 1)); [ -f "$DATA/$name/$id.csv" ] && done=$((done + 1))
+      fi
+    done < <(plan "$f")
+  done
+  echo "dg10: $beds of $nbeds beds and $done of $total pushes committed ($DATA)"
+  for st in "$OUT"/*/beds/*.pour.state; do
+    [ -f "$st" ] || continue
+    echo "  under way here: ${st%.pour.state}: $(awk '$2 == "phase" {p=$4} $2 == "ichunk0" {c=$4} $2 == "irelax0" {r=$4} END {print p, (p == "settle" ? "chunk " c : "relaxation " r)}' "$st") next"
   done
   return 0
 }
+seen=""
 [ "$STATUS" = 1 ] && { status; exit 0; }
+[ -x "$LMP" ] || { echo "dg10.sh: no lmp_granpen at $LMP (build first, or set GRANPEN_LMP)" >&2; exit 2; }
 
-# the sweep runner pours the beds (pour_checkpoint = yes: resumed at their last chunk) and
-# runs the pushes; it skips what is done and resumes the rest
-for part in peak flow D; do
-  nice -n 19 "$CLI" sweep "$ROOT/inputs/sweeps/dg10_$part.sweep" --jobs "$JOBS" --out "$OUT" \
-    --inputs "$D/inputs" --lmp "$LMP"
+mkdir -p "$OUT"
+rm -rf "$OUT/inputs.new"; cp -r "$ROOT/inputs" "$OUT/inputs.new"; rm -rf "$OUT/inputs"; mv "$OUT/inputs.new" "$OUT/inputs"
+INPUTS=$OUT/inputs
+ran=0
+commit() {    # MESSAGE
+  [ "$COMMIT" = 1 ] || { echo "dg10.sh: $1: to be committed (git add $DATA)"; return 0; }
+  git -C "$ROOT" add "$DATA" && git -C "$ROOT" commit -q -m "dg10: $1" -- "$DATA" && echo "dg10.sh: committed: $1"
+}
+budget_left() { [ "$UNITS" -lt 0 ] || [ "$ran" -lt "$UNITS" ]; }
+runner() {    # SWEEP_FILE K: the sweep runner runs planned run K alone
+  local mpi=(); [ "$RANKS" -gt 1 ] && mpi=(--mpirun mpirun --ranks "$RANKS")
+  nice -n 19 "$CLI" sweep "$1" --jobs 1 --only "$2" --out "$OUT" --inputs "$INPUTS" --lmp "$LMP" "${mpi[@]}"
+}
+
+for f in $SWEEPS; do
+  name=$(sweep_name "$f") dir=$OUT/$(sweep_name "$f")
+  mkdir -p "$dir/beds" "$DATA/$name"
+  while read -r k kind id; do
+    if [ "$kind" = pour ]; then
+      [ -f "$dir/beds/$id.info" ] && continue
+      if [ -f "$DATA/beds/$id.tile.data.gz" ]; then
+        # the committed tile: the bed in seconds (preset, mu and tile checked by in.pour)
+        preset=$(awk -F' = ' '$1 == "preset" {print $2}' "$DATA/beds/$id.tile.info")
+        mu=$(awk -F' = ' '$1 == "mu" {print $2}' "$DATA/beds/$id.tile.info")
+        tile=$(awk -F' = ' '$1 == "tile" {print $2}' "$DATA/beds/$id.tile.info")
+        "$LMP" -in "$INPUTS/in.pour" -var inputs "$INPUTS" -var preset "$preset" -var mu "$mu" -var tile "$tile" \
+          -var from_tile "$DATA/beds/$id" -var out "$dir/beds/$id" -log "$dir/beds/$id.rebuild.log" -screen none >/dev/null \
+          || { echo "dg10.sh: rebuilding $id from its tile failed: $(grep -m1 '^ERROR' "$dir/beds/$id.rebuild.log") ($dir/beds/$id.rebuild.log)" >&2; exit 1; }
+        echo "dg10.sh: $name: bed $id rebuilt from $DATA/beds/$id.tile.data.gz"
+        continue
+      fi
+      budget_left || break
+      echo "dg10.sh: $name: pouring bed $id (a tile: docs/presets.md, dg10)"
+      runner "$f" "$k"
+      [ -f "$dir/beds/$id.tile.data.gz" ] && [ -f "$dir/beds/$id.info" ] || { echo "dg10.sh: the pour of $id left no tile" >&2; exit 1; }
+      cp "$dir/beds/$id.tile.data.gz" "$dir/beds/$id.tile.info" "$dir/beds/$id.info" "$DATA/beds/"
+      ran=$((ran + 1)); commit "bed $id (its tile)"
+    else
+      [ -f "$DATA/$name/$id.csv" ] && continue
+      budget_left || break
+      echo "dg10.sh: $name: push $id"
+      runner "$f" "$k"
+      [ -f "$dir/traces/$id.csv.done" ] || { echo "dg10.sh: the push $id did not finish (see $dir/logs/$id.log)" >&2; exit 1; }
+      if ls "$dir/traces/$id.csv".*.dump.gz >/dev/null 2>&1; then
+        "$CLI" flow "$dir/traces/$id.csv".*.dump.gz --trace "$dir/traces/$id.csv" --out "$DATA/$name/$id.flow" \
+          || echo "dg10.sh: granpen flow on the dumps of $id failed; its trace is kept, the dumps are in $dir/traces" >&2
+      fi
+      cp "$dir/traces/$id.csv" "$DATA/$name/$id.csv"
+      cp "$dir/manifest.json" "$DATA/$name/manifest.json" 2>/dev/null || true
+      ran=$((ran + 1)); commit "push $id ($name)"
+    fi
+  done < <(plan "$f")
+  budget_left || break
 done
 status

@@ -3,11 +3,12 @@
 # chunks, a push's checkpoint interval), atoms x steps per CPU-second, the CPU seconds being
 # LAMMPS's loop time times its "CPU use" (the process's own share: a niced run on a busy
 # machine gets a fraction of a core, and its wall time says nothing).
-#   validation/dg10_throughput.sh [DIR]     (DIR: the runs' root, default /work/granpen-runs)
+#   validation/dg10_throughput.sh [DIR]     (DIR: the runs' root, default /work/granpen-runs;
+#                                           the logs of validation/dg10.sh's runs, DIR/dg10_*/logs)
 set -euo pipefail
 DIR=${1:-/work/granpen-runs}
-logs=("$DIR"/dg10/logs/*.log)
-[ -e "${logs[0]}" ] || { echo "dg10_throughput.sh: no logs in $DIR/dg10/logs" >&2; exit 1; }
+logs=("$DIR"/dg10*/logs/*.log)
+[ -e "${logs[0]}" ] || { echo "dg10_throughput.sh: no logs in $DIR/dg10*/logs" >&2; exit 1; }
 awk '
   /^Loop time of/ { lt = $4; steps = $9; atoms = $12 }
   /% CPU use with/ {
