@@ -179,6 +179,10 @@ fix_harness() {
   # package tree's unittest/force-styles/tests/, the tree configured with ENABLE_TESTING and
   # MOLECULE (the harness's default force field needs it), test_fix_timestep built, and each
   # file run under ctest as FixTimestep:NAME (a full run, a run from the restart file)
+  # LAMMPS's unittest/ CMake adds examples/COUPLE (c-library tests): a tree without it
+  # stops at configure with a bare "not an existing directory"
+  [ -d "$src/examples/COUPLE/simple" ] || {
+    echo "the tree lacks examples/COUPLE (LAMMPS's unittest/ builds it): take examples/COUPLE and examples/plugins too (docs/compat.md, 'How to get a tree')"; return 1; }
   make_package_tree
   local tests=$LBUILD/package-tree/unittest/force-styles/tests f names=()
   for f in "$ROOT"/tests/compat/force-styles/*; do
