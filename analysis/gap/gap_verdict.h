@@ -12,7 +12,8 @@
 // noise subtracted); under the evidence margin the top two are not told apart, whatever
 // their likelihood ratios say (the difference is then the knots' noise), so a second that
 // explains the gap as well makes a tie. Without it (the null replicates, unit tests) only
-// the evidence margin tells them apart.
+// the evidence margin tells them apart. On either route an effect is named (or half of a
+// tie) only when detected: its likelihood ratio above its null-calibrated threshold.
 // docs/gap.md, "Verdict".
 #ifndef GRANPEN_GAP_VERDICT_H
 #define GRANPEN_GAP_VERDICT_H

@@ -41,7 +41,9 @@
 // enduring contact's period under the grain's own load, ~ m^(1/3), would give 0.581): kept
 // for both, so that lighter grains are exactly what the dimensionless physics says,
 // `contact_stiffness` at log10(3 / r) (+0.079 for r = 2.5) with F scaled by r / 3: a
-// signature no single library effect has.
+// signature no single library effect has, though packing at +0.1 (k down as much, P by 1%)
+// comes within 2 to 3 standard deviations of it in tiny with eight beds a side
+// (docs/gap-validation.md, "2026-11-27").
 #include "lmp_command_line.h"
 
 #include <cmath>

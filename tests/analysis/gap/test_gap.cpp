@@ -385,6 +385,28 @@ TEST(GapVerdict, FitsWithinTheKnotsNoiseOfEachOtherAreATieWhateverTheirEvidence)
   EXPECT_TRUE(asked.empty());
 }
 
+TEST(GapVerdict, TheNamedEffectIsDetectedOnTheOmnibusRouteToo)
+{
+  // a significant gap; the top candidate explains 0.8 of it but its likelihood ratio (30) is
+  // below its threshold (50: a noisy signature that fits that much of pure noise)
+  Diagnosis d = significance(true, {candidate("a", 0.8, 0.7, 40, 30, 50), candidate("b", 0.3, 0.3, 60, 10, 15)});
+  decide_verdict(d);
+  EXPECT_EQ(d.verdict, "unexplained");
+  EXPECT_TRUE(d.top_effect.empty());
+  ASSERT_FALSE(d.notes.empty());
+  EXPECT_NE(d.notes.back().find("likelihood ratio 30.0 is below its threshold 50.0"), std::string::npos) << d.notes.back();
+  // the same above its threshold: named
+  d = significance(true, {candidate("a", 0.8, 0.7, 40, 60, 50), candidate("b", 0.3, 0.3, 60, 10, 15)});
+  decide_verdict(d);
+  EXPECT_EQ(d.verdict, "explained");
+  EXPECT_EQ(d.top_effect, "a");
+  // nor is an undetected candidate half of a tie
+  d = significance(true, {candidate("a", 0.8, 0.7, 40, 60, 50), candidate("b", 0.8, 0.7, 40, 58, 60)});
+  decide_verdict(d);
+  EXPECT_EQ(d.verdict, "unexplained");    // a leads by 2.7 (< 6), b (58 < 60) is not detected
+  EXPECT_TRUE(d.tie.empty());
+}
+
 TEST(GapLimits, TwoPourLevelFitsShareTheSignatureBaselinesNoise)
 {
   // two unpaired effects referenced to other beds (ref_err: the signature baseline B_sig,
