@@ -71,6 +71,12 @@ void effect_signature(const EffectData &e, double a, std::size_t s, std::vector<
   }
 }
 
+double signature_baseline_share(const EffectData &e, double a)
+{
+  if (e.paired || e.ref_err.empty()) return 0.0;
+  return 1.0 - weights(e.knots, a)[zero_knot(e)];
+}
+
 double effect_chi2(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds)
 {
   // against the model with its own variance (reported; the fit uses fixed weights)

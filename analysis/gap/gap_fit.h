@@ -53,6 +53,11 @@ void effect_predict(const EffectData &e, double a, std::size_t s, std::vector<do
 // cancels): for a paired effect the paired differences', else the knots' and the signature
 // baseline's with their interpolation weights.
 void effect_signature(const EffectData &e, double a, std::size_t s, std::vector<double> &u, std::vector<double> &var);
+// The signature baseline's coefficient in u at magnitude a (u = ... - c B_sig): 1 - w0 for an
+// unpaired effect referenced to other beds (ref_err given), else 0 (a paired effect's knots
+// are differences on the same beds). Two such effects share B_sig (the baseline's signature
+// beds), so it enters u_a - u_b with c_a - c_b, not with both.
+double signature_baseline_share(const EffectData &e, double a);
 
 struct EffectFit {
   std::string name;

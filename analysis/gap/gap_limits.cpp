@@ -100,14 +100,19 @@ DetectionLimit detection_limit(const Effect &e, const EffectData &ed, const Effe
 double prediction_separation2(const EffectData &a, double ma, const EffectData &b, double mb, const Target &t,
                               const NoiseFactors &factors)
 {
-  // both models are the reference at magnitude 0, so M_a(ma) - M_b(mb) = u_a(ma) - u_b(mb)
+  // both models are the reference at magnitude 0, so M_a(ma) - M_b(mb) = u_a(ma) - u_b(mb);
+  // its knot noise: both signatures', less the shared signature baseline's counted twice
+  // (u_a - u_b carries it with c_a - c_b: variance (c_a^2 + c_b^2 - 2 c_a c_b) var(B_sig))
   double d2 = 0.0;
+  const double shared = 2 * signature_baseline_share(a, ma) * signature_baseline_share(b, mb);
   std::vector<double> ua, va, ub, vb;
   for (std::size_t s = 0; s < t.mean.size(); ++s) {
     effect_signature(a, ma, s, ua, va);
     effect_signature(b, mb, s, ub, vb);
-    for (std::size_t k = 0; k < ua.size(); ++k)
-      d2 += (std::pow(ua[k] - ub[k], 2) - va[k] - vb[k]) / weight(a, t, factors, s, k);
+    for (std::size_t k = 0; k < ua.size(); ++k) {
+      const double noise = va[k] + vb[k] - (shared > 0 ? shared * a.ref_err[0][s][k] : 0.0);
+      d2 += (std::pow(ua[k] - ub[k], 2) - noise) / weight(a, t, factors, s, k);
+    }
   }
   return std::max(0.0, d2);
 }

@@ -13,25 +13,38 @@ namespace {
 std::string fmt(double v, const char *f = "%.4g") { return printf_number(f, v); }
 
 // a candidate that would be the answer on its own: explains at least half of the gap,
-// predicts the speeds left out, and fits inside its simulated range
-bool explains(const EffectFit &f) { return f.explained >= 0.5 && f.heldout_explained >= 0.3 && !f.at_edge; }
+// predicts the speeds left out, fits inside its simulated range, and is detected: its
+// likelihood ratio above its null-calibrated threshold, what its signature fits of pure
+// noise (on the omnibus route too: a significant gap says something is there, not that a
+// noisy signature's fit of it is more than noise)
+bool explains(const EffectFit &f)
+{
+  return f.explained >= 0.5 && f.heldout_explained >= 0.3 && !f.at_edge && f.detected;
+}
 
-// the top two both explain the gap and are not told apart: the answer names both
-void tie(const EffectFit &top, const EffectFit &second, Diagnosis &d)
+// the top two both explain the gap and are not told apart: the answer names both. sep2 >= 0:
+// their fitted predictions differ by sep2 only (said when their evidence is the margin apart)
+void tie(const EffectFit &top, const EffectFit &second, Diagnosis &d, double sep2 = -1)
 {
   d.verdict = "tie";
   d.tie = {top.name, second.name};
+  const bool by_margin = sep2 < 0 || lr_evidence(top) - lr_evidence(second) < EVIDENCE_MARGIN;
+  const std::string why =
+      by_margin ? "their evidence differs by " + fmt(lr_evidence(top) - lr_evidence(second), "%.1f") +
+                     ", less than the margin of " + fmt(EVIDENCE_MARGIN, "%g")
+               : "their evidence differs by " + fmt(lr_evidence(top) - lr_evidence(second), "%.1f") +
+                     ", but their fitted predictions only by " + fmt(sep2, "%.1f") +
+                     " squared standard deviations beyond their knots' noise, less than the margin of " +
+                     fmt(EVIDENCE_MARGIN, "%g") + " (the difference in evidence is the knots' noise)";
   d.notes.push_back("verdict: a tie between " + top.name + " and " + second.name + ": each explains the gap (" +
                     fmt(top.explained, "%.2f") + " and " + fmt(second.explained, "%.2f") + ", held out " +
-                    fmt(top.heldout_explained, "%.2f") + " and " + fmt(second.heldout_explained, "%.2f") +
-                    ") and their evidence differs by " + fmt(lr_evidence(top) - lr_evidence(second), "%.1f") +
-                    ", less than the margin of " + fmt(EVIDENCE_MARGIN, "%g") +
+                    fmt(top.heldout_explained, "%.2f") + " and " + fmt(second.heldout_explained, "%.2f") + ") and " + why +
                     ": at this noise they look alike (next_measurement says what would separate them)");
 }
 
 }    // namespace
 
-void decide_verdict(Diagnosis &d)
+void decide_verdict(Diagnosis &d, const Separation2 &separation2)
 {
   // two routes to a finding: the omnibus chi^2 over every feature (a gap spread over many
   // features), or one candidate's likelihood ratio above its null-calibrated threshold (a
@@ -47,13 +60,23 @@ void decide_verdict(Diagnosis &d)
   const double margin = EVIDENCE_MARGIN;
   const EffectFit *top = d.ranking.empty() ? nullptr : &d.ranking[0];
   const EffectFit *second = d.ranking.size() > 1 ? &d.ranking[1] : nullptr;
+  // a second that would explain the gap on its own, with a fitted prediction within the
+  // knots' noise of the top's: the two are not told apart by the evidence margin alone
+  double sep2 = -1;
+  if (separation2 && top && second && explains(*second)) {
+    sep2 = separation2(*top, *second);
+    if (sep2 >= margin) sep2 = -1;
+  }
+  const bool look_alike = sep2 >= 0 && explains(*top);
   std::string why;
   if (d.targeted) {
     // one candidate's signature stands out: it must stand out alone (a second detected one
     // at least the margin behind) and, as on the omnibus route, explain at least half of the
     // gap and predict the speeds left out
-    const bool alone = !second || !second->detected || lr_evidence(*top) - lr_evidence(*second) >= margin;
-    if (alone && top->explained >= 0.5 && top->heldout_explained >= 0.3) {
+    const bool alone = (!second || !second->detected || lr_evidence(*top) - lr_evidence(*second) >= margin) && !look_alike;
+    if (look_alike) {
+      tie(*top, *second, d, sep2);
+    } else if (alone && top->detected && top->explained >= 0.5 && top->heldout_explained >= 0.3) {
       d.verdict = "explained";
       d.top_effect = top->name;
       d.notes.push_back("the gap is within the noise over all features (chi^2 " + fmt(d.chi2_0, "%.1f") + " over " +
@@ -77,8 +100,9 @@ void decide_verdict(Diagnosis &d)
     d.verdict = "none";
     why = "the gap is within the noise (chi^2 " + fmt(d.chi2_0, "%.1f") + " over " + std::to_string(d.nfeatures) +
           " features, p = " + fmt(d.p_value, "%.2g") + "; no candidate's likelihood ratio above its threshold)";
-  } else if (top && top->explained >= 0.5 && top->heldout_explained >= 0.3 &&
-             (!second || lr_evidence(*top) - lr_evidence(*second) >= margin) && !top->at_edge) {
+  } else if (look_alike) {
+    tie(*top, *second, d, sep2);
+  } else if (top && explains(*top) && (!second || lr_evidence(*top) - lr_evidence(*second) >= margin)) {
     d.verdict = "explained";
     d.top_effect = top->name;
   } else if (top && second && explains(*top) && explains(*second) && lr_evidence(*top) - lr_evidence(*second) < margin) {
@@ -89,6 +113,10 @@ void decide_verdict(Diagnosis &d)
     else if (top->explained < 0.5) why = "the best candidate (" + top->name + ") explains " + fmt(top->explained, "%.2f") + " of the gap";
     else if (top->heldout_explained < 0.3) why = top->name + " fits but does not predict the speeds left out (" + fmt(top->heldout_explained, "%.2f") + ")";
     else if (top->at_edge) why = top->name + " needs a magnitude beyond its simulated range";
+    else if (!top->detected)
+      why = "the best candidate (" + top->name + ") explains " + fmt(top->explained, "%.2f") + " of the gap, but its likelihood ratio " +
+            fmt(top->lr, "%.1f") + " is below its threshold " + fmt(top->lr_threshold, "%.1f") +
+            " (what its signature fits of pure noise): not told from noise fitting";
     else why = top->name + " and " + second->name + " explain the gap about equally well (likelihood ratios beyond the noise's " +
                fmt(lr_evidence(*top), "%.1f") + " and " + fmt(lr_evidence(*second), "%.1f") + ", chi^2 at the fits " +
                fmt(top->chi2, "%.1f") + " and " + fmt(second->chi2, "%.1f") + ")";

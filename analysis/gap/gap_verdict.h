@@ -5,17 +5,28 @@
 // lies along an effect's signature). Sorts d.ranking best first (by the likelihood ratio
 // beyond the noise's, lr_evidence) and sets d.targeted, d.significant, d.verdict
 // ("none", "explained", "tie", "unexplained"), d.top_effect (explained) or d.tie (the two
-// candidates that both explain the gap within the evidence margin of each other), and a
-// note saying why.
+// candidates that both explain the gap within the evidence margin of each other, or whose
+// fitted predictions lie within their knots' noise of each other), and a note saying why.
+// separation2(a, b), when given: the evidence the data would give between a's and b's fitted
+// predictions (gap_limits.h, prediction_separation2: squared standard deviations, the knots'
+// noise subtracted); under the evidence margin the top two are not told apart, whatever
+// their likelihood ratios say (the difference is then the knots' noise), so a second that
+// explains the gap as well makes a tie. Without it (the null replicates, unit tests) only
+// the evidence margin tells them apart. On either route an effect is named (or half of a
+// tie) only when detected: its likelihood ratio above its null-calibrated threshold.
 // docs/gap.md, "Verdict".
 #ifndef GRANPEN_GAP_VERDICT_H
 #define GRANPEN_GAP_VERDICT_H
 
 #include "gap_result.h"
 
+#include <functional>
+
 namespace granpen {
 
-void decide_verdict(Diagnosis &d);
+using Separation2 = std::function<double(const EffectFit &, const EffectFit &)>;
+
+void decide_verdict(Diagnosis &d, const Separation2 &separation2 = {});
 
 }    // namespace granpen
 

@@ -1,6 +1,7 @@
 // granpen gap, stage 7 (which): see gap_which.h.
 #include "gap_which.h"
 
+#include "gap_limits.h"
 #include "gap_verdict.h"
 #include "gap_where.h"
 #include "text_util.h"
@@ -163,7 +164,11 @@ std::map<std::string, EffectData> fit_candidates(const std::vector<const Effect 
     data[e->name] = std::move(ed);
   }
   d.n_null = (int) f.nulls.size();
-  decide_verdict(d);
+  // the top two told apart by the data, not only by the evidence margin (gap_verdict.h)
+  const NoiseFactors now(f.target.mean.size(), 1.0);
+  decide_verdict(d, [&](const EffectFit &a, const EffectFit &b) {
+    return prediction_separation2(data.at(a.name), a.magnitude, data.at(b.name), b.magnitude, f.target, now);
+  });
   d.false_alarms = null_false_alarms(effects, data, d.ranking, f);
   return data;
 }

@@ -3,17 +3,47 @@
 // push: done" for in.push), simulating a synthetic world in milliseconds, so that
 // `granpen gap` can be tested end to end on known effects:
 //   F(z) = bed(z) * (k z + P (v0/100)^2 exp(-((z - 0.3) / 0.15)^2)) + grain noise,
-// bed(z) a smooth random field of the bed (its seed and its pour's settings), grain noise an AR(1) sequence whose
-// level grows with the contact stiffness. The model knobs act as named in inputs/:
+// bed(z) a smooth random field of the bed (its seed and its pour's settings), grain noise an
+// AR(1) sequence (one sample per 1e-4 s, correlation corr) whose level grows with the contact
+// stiffness. k z is the quasi-static depth term (lithostatic: ~ rho_g g phi z), P the
+// inertial impact peak (~ rho_g phi v0^2 D^2). The model knobs act as named in inputs/:
 //   mu_roll a: k *= 1 + 1.5 a           poly w: P *= 1 - 2 w
-//   walls 1, mu_wall a: + 5e4 a z^2     mu (pour friction) m: F *= 1 - 1.5 (m - 0.3)
+//   walls 1, mu_wall a: + 5e4 a z^2 (quasi-static: scales as k does with the packing and rho_g)
+//   mu (pour friction) m: the bed's packing phi_0 = 0.58 - 0.05 (m - 0.3) (its .info), and
+//       k *= 1 + 30 (phi_0 - 0.58) (= 1 - 1.5 (m - 0.3)), P *= phi_0 / 0.58 (see below)
 //   mu_push m (the pour's when not given): k *= 1 + 2 (m - 0.3)
-//   kn s*1e9: grain noise *= s^0.5, and it decorrelates faster
+//   kn s*1e9: grain noise *= s^0.5, and it decorrelates faster: corr = 0.6^(s^0.5) (see rho_g)
 //   ramp L: the peak moves deeper by (L - 0.5) / 2 once L > 0.5 (the rod is still slow)
 //   mount_k, mount_c, mount_m: the signal goes through the mount's spring-damper
 //   cohesion c: + 5e3 c exp(-z / 0.6) (a cohesive crust, at any speed); phi_0 -= 0.002 c
+//       (in the .info only: the crust stands for the cohesive bed's whole force)
 //   dmu_rod m: P *= 1 + 1.5 m, k *= 1 + 0.5 m (the rod's own friction: the tip and the side)
-//   rho_g r: F *= r / 3 (an effect outside the library)
+//   rho_g r (an effect outside the library; the headers say 3): k, P and the walls *= r / 3,
+//       and the grain noise as for kn s * 3 / r (see below)
+// Packing (the pour's friction sets phi_0): near jamming the quasi-static resistance of a bed
+// is very sensitive to its packing fraction (tens of % per 0.02 in phi in drag and
+// penetration experiments; here 60% per 0.02, linear, which keeps the depth term's response
+// to the pour friction that this world always had: 1 - 1.5 (m - 0.3), so the library's
+// `packing` magnitude, the pour friction less 0.3, means what it meant), while the inertial
+// peak ~ rho_g phi v0^2 D^2 is only linear in phi: a few % (+1.6% for a pour at mu 0.12).
+// So packing moves k strongly and P weakly, not F uniformly.
+// Lighter grains at the same contact law (rho_g r against the header's 3): the lithostatic
+// depth term (rho_g g) and the inertial peak (rho_g v0^2) both scale by r / 3, so the mean
+// force scales uniformly; but the grains' contacts are shorter: the Hertz contact time
+// (gran/hertz/history) is t_c ~ (m^2 / (kn^2 R v))^(1/5) = (m / kn)^(2/5) (R v)^(-1/5), m ~
+// rho_g, so the grain-scale force fluctuations decorrelate faster. More generally, F / (rho_g
+// g d^3) depends on rho_g and kn only through kn / (rho_g g d) (the grains' stiffness against
+// their weight; the damping gamma_n acts per unit mass): lighter grains are, to everything
+// but the force scale, stiffer contacts by 3 / r. So the grain noise follows this world's
+// stiffness law at s 3 / r: its level *= (3 / r)^0.5 and corr = 0.6^((s 3 / r)^0.5), the
+// correlation time tau = -dt / ln(corr) ~ (m / kn)^(1/2) (0.6 -> 0.571 for r = 2.5). The
+// world's kn law has the linear spring's exponent 1/2 where Hertz has 2/5 (0.6 -> 0.577; an
+// enduring contact's period under the grain's own load, ~ m^(1/3), would give 0.581): kept
+// for both, so that lighter grains are exactly what the dimensionless physics says,
+// `contact_stiffness` at log10(3 / r) (+0.079 for r = 2.5) with F scaled by r / 3: a
+// signature no single library effect has, though packing at +0.1 (k down as much, P by 1%)
+// comes within 2 to 3 standard deviations of it in tiny with eight beds a side
+// (docs/gap-validation.md, "2026-11-27").
 #include "lmp_command_line.h"
 
 #include <cmath>
@@ -23,6 +53,10 @@
 #include <map>
 #include <random>
 #include <string>
+
+// the pour's packing fraction from its friction (docs/calibration.md: 0.594 -> 0.574 for
+// mu 0.1 -> 0.5): the .info's phi_0 and the push's packing law share it
+static double phi_pour(double mu) { return 0.58 - 0.05 * (mu - 0.3); }
 
 int main(int argc, char **argv)
 {
@@ -43,7 +77,7 @@ int main(int argc, char **argv)
       if (k != "seed" && k != "out" && k != "inputs" && k != "checkpoint")
         for (char c : k + "=" + v + ";") key = (key ^ (unsigned char) c) * 1099511628211ul;
     std::ofstream(out + ".info") << "seed = " << var["seed"] << "\nfield = " << key % 1000003 << "\nmu = " << num("mu", 0.3)
-                                 << "\nz_s = 5.7\nphi_0 = " << 0.58 - 0.05 * (num("mu", 0.3) - 0.3) - 0.002 * num("cohesion", 0)
+                                 << "\nz_s = 5.7\nphi_0 = " << phi_pour(num("mu", 0.3)) - 0.002 * num("cohesion", 0)
                                  << "\ngrains = 6300\nwall_seconds = 0\n";
     L << "granpen pour: bed " << out << ".restart\n";
     return 0;
@@ -63,12 +97,16 @@ int main(int argc, char **argv)
   }
   const double v0 = num("v0", 100), depth = num("depth", 4.0), dt = 1e-4;
   const double dmu_rod = num("dmu_rod", 0), coh = num("cohesion", 0);
-  double k = 3e5 * (1 + 1.5 * num("mu_roll", 0)) * (1 + 2 * (num("mu_push", mu_pour) - 0.3)) * (1 + 0.5 * dmu_rod),
-         P = 4e5 * std::pow(v0 / 100, 2) * (1 - 2 * num("poly", 0)) * (1 + 1.5 * dmu_rod);
+  // packing (the pour's phi_0): the quasi-static terms strongly, the inertial peak linearly;
+  // grain density (rho_g against the headers' 3): both terms alike
+  const double phi = phi_pour(mu_pour), quasi = 1 + 30 * (phi - 0.58), inertial = phi / 0.58;
+  const double dens = num("rho_g", 3.0) / 3.0;
+  double k = 3e5 * (1 + 1.5 * num("mu_roll", 0)) * (1 + 2 * (num("mu_push", mu_pour) - 0.3)) * (1 + 0.5 * dmu_rod) * quasi * dens,
+         P = 4e5 * std::pow(v0 / 100, 2) * (1 - 2 * num("poly", 0)) * (1 + 1.5 * dmu_rod) * inertial * dens;
   const double peak_z = 0.3 + std::max(0.0, num("ramp", 0) - 0.5) / 2;
-  const double wall = num("walls", 0) > 0 ? 5e4 * num("mu_wall", 0.3) : 0.0;
-  const double scale = (1 - 1.5 * (mu_pour - 0.3)) * num("rho_g", 3.0) / 3.0;
-  const double stiff = num("kn", 1e9) / 1e9;
+  const double wall = num("walls", 0) > 0 ? 5e4 * num("mu_wall", 0.3) * quasi * dens : 0.0;
+  // the grains' stiffness against their weight, kn / rho_g, relative to the bench's (see above)
+  const double stiff = num("kn", 1e9) / 1e9 / dens;
   const double grain = 0.15 * std::pow(stiff, 0.5), corr = std::pow(0.6, std::pow(stiff, 0.5));
   // the bed (seed, the pour's settings, speed) and the grains (seed, speed, and the model: another realization)
   std::mt19937 bed_rng((unsigned) (1000 * seed + (int) v0 + 7777 * field));
@@ -88,8 +126,8 @@ int main(int argc, char **argv)
     if (z > 0) {
       double b = 1;
       for (int j = 0; j < 3; ++j) b += amp[j] * std::sin(6.283 * (j + 1) * z / 4.0 + ph[j]);
-      const double stick = 5e3 * coh * std::exp(-z / 0.6);
-      const double mean = b * (k * z + P * std::exp(-std::pow((z - peak_z) / 0.15, 2)) + wall * z * z + stick) * scale;
+      const double stick = 5e3 * coh * std::exp(-z / 0.6) * quasi;    // a static strength; not rho_g's
+      const double mean = b * (k * z + P * std::exp(-std::pow((z - peak_z) / 0.15, 2)) + wall * z * z + stick);
       ar = corr * ar + std::sqrt(1 - corr * corr) * n01(grain_rng);
       F = mean * (1 + grain * ar);
     }

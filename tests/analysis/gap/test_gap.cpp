@@ -2,6 +2,7 @@
 #include "effects.h"
 #include "gap_data.h"
 #include "gap_fit.h"
+#include "gap_limits.h"
 #include "gap_sims.h"
 #include "gap_verdict.h"
 
@@ -331,6 +332,105 @@ TEST(GapVerdict, TheTwoRoutesAndTheirConditions)
   decide_verdict(d);
   EXPECT_EQ(d.verdict, "explained");
   EXPECT_EQ(d.top_effect, "b");
+}
+
+TEST(GapVerdict, FitsWithinTheKnotsNoiseOfEachOtherAreATieWhateverTheirEvidence)
+{
+  // b leads a by 10 in evidence (beyond the margin of 6), both explain the gap; the evidence
+  // the data give between their fitted predictions (knot noise subtracted) decides
+  std::vector<std::pair<std::string, std::string>> asked;
+  double sep2 = 2.0;
+  const Separation2 sep = [&](const EffectFit &x, const EffectFit &y) {
+    asked.push_back({x.name, y.name});
+    return sep2;
+  };
+  auto omnibus = [] { return significance(true, {candidate("a", 0.8, 0.7, 40, 110, 15), candidate("b", 0.9, 0.8, 30, 120, 15)}); };
+  Diagnosis d = omnibus();
+  decide_verdict(d);    // the margin alone: b
+  EXPECT_EQ(d.verdict, "explained");
+  EXPECT_EQ(d.top_effect, "b");
+  d = omnibus();
+  decide_verdict(d, sep);    // their predictions 2 squared sigmas apart: the 10 is the knots' noise
+  EXPECT_EQ(d.verdict, "tie");
+  EXPECT_EQ(d.tie, (std::vector<std::string>{"b", "a"}));
+  EXPECT_TRUE(d.top_effect.empty());
+  EXPECT_EQ(asked, (std::vector<std::pair<std::string, std::string>>{{"b", "a"}}));
+  ASSERT_FALSE(d.notes.empty());
+  EXPECT_NE(d.notes.back().find("fitted predictions only by 2.0 squared standard deviations"), std::string::npos) << d.notes.back();
+  sep2 = 6.0;    // at the margin: told apart
+  d = omnibus();
+  decide_verdict(d, sep);
+  EXPECT_EQ(d.verdict, "explained");
+  EXPECT_EQ(d.top_effect, "b");
+  // a second that does not explain the gap on its own is no rival, however close
+  sep2 = 0.0;
+  d = significance(true, {candidate("a", 0.4, 0.7, 40, 110, 15), candidate("b", 0.9, 0.8, 30, 120, 15)});
+  decide_verdict(d, sep);
+  EXPECT_EQ(d.verdict, "explained");
+  EXPECT_EQ(d.top_effect, "b");
+  // the targeted route: the same, with both detected
+  d = significance(false, {candidate("a", 0.6, 0.6, 40, 40, 20), candidate("b", 0.7, 0.7, 40, 60, 20)});
+  decide_verdict(d, sep);
+  EXPECT_TRUE(d.targeted);
+  EXPECT_EQ(d.verdict, "tie");
+  d = significance(false, {candidate("a", 0.6, 0.6, 40, 18, 20), candidate("b", 0.7, 0.7, 40, 60, 20)});
+  decide_verdict(d, sep);    // a not detected: b alone
+  EXPECT_EQ(d.verdict, "explained");
+  EXPECT_EQ(d.top_effect, "b");
+  // no rival explains: the separation is not asked for
+  asked.clear();
+  d = significance(false, {candidate("a", 0.1, 0.1, 40, 0, 20), candidate("b", 0.1, 0.1, 40, 1, 20)});
+  decide_verdict(d, sep);
+  EXPECT_EQ(d.verdict, "none");
+  EXPECT_TRUE(asked.empty());
+}
+
+TEST(GapVerdict, TheNamedEffectIsDetectedOnTheOmnibusRouteToo)
+{
+  // a significant gap; the top candidate explains 0.8 of it but its likelihood ratio (30) is
+  // below its threshold (50: a noisy signature that fits that much of pure noise)
+  Diagnosis d = significance(true, {candidate("a", 0.8, 0.7, 40, 30, 50), candidate("b", 0.3, 0.3, 60, 10, 15)});
+  decide_verdict(d);
+  EXPECT_EQ(d.verdict, "unexplained");
+  EXPECT_TRUE(d.top_effect.empty());
+  ASSERT_FALSE(d.notes.empty());
+  EXPECT_NE(d.notes.back().find("likelihood ratio 30.0 is below its threshold 50.0"), std::string::npos) << d.notes.back();
+  // the same above its threshold: named
+  d = significance(true, {candidate("a", 0.8, 0.7, 40, 60, 50), candidate("b", 0.3, 0.3, 60, 10, 15)});
+  decide_verdict(d);
+  EXPECT_EQ(d.verdict, "explained");
+  EXPECT_EQ(d.top_effect, "a");
+  // nor is an undetected candidate half of a tie
+  d = significance(true, {candidate("a", 0.8, 0.7, 40, 60, 50), candidate("b", 0.8, 0.7, 40, 58, 60)});
+  decide_verdict(d);
+  EXPECT_EQ(d.verdict, "unexplained");    // a leads by 2.7 (< 6), b (58 < 60) is not detected
+  EXPECT_TRUE(d.tie.empty());
+}
+
+TEST(GapLimits, TwoPourLevelFitsShareTheSignatureBaselinesNoise)
+{
+  // two unpaired effects referenced to other beds (ref_err: the signature baseline B_sig,
+  // which both signatures subtract): at their first knots (weight 1 on it, c = 1) u_a - u_b
+  // carries the knots' variances, not B_sig's, which cancels
+  std::vector<double> sa{1, 1, 1, 0, 0, 0}, sb{1, 1, 1, 0, 0, 2};
+  EffectData A = synthetic_effect("A", sa, 0.5), B = synthetic_effect("B", sb, 0.5);
+  Target t;
+  for (int s = 0; s < 2; ++s) {
+    t.mean.push_back(std::vector<double>(6, 100.0));
+    t.err.push_back(std::vector<double>(6, 0.25));
+  }
+  for (EffectData *e : {&A, &B}) e->ref_err.assign(1, Table(2, std::vector<double>(6, 3.0)));
+  const NoiseFactors one(2, 1.0);
+  // u_a - u_b: -2 (s + 1) on feature 5 of 6, at 2 speeds; the knots' noise 0.5 + 0.5 on each
+  // of the 12 features (u_a's and u_b's 3.5 each, less 2 x 3.0); weights 0.25 + 0.5
+  EXPECT_NEAR(prediction_separation2(A, 1.0, B, 1.0, t, one), (4.0 + 16.0 - 12 * 1.0) / 0.75, 1e-9);
+  // without the correction, 12 x 7.0 would be subtracted: nothing left, a look-alike made of
+  // the baseline's noise counted twice. A paired effect's signature is a difference on the
+  // same beds, with no B_sig in it: then u_b's own 0.5 and u_a's 3.5 count, 12 x 4.0
+  B.paired = true;
+  EXPECT_NEAR(prediction_separation2(A, 1.0, B, 1.0, t, one), 0.0, 1e-12);
+  EXPECT_NEAR(signature_baseline_share(B, 1.0), 0.0, 1e-12);
+  EXPECT_NEAR(signature_baseline_share(A, 0.5), 0.5, 1e-12);
 }
 
 TEST(GapFit, ChiSquareTail)
