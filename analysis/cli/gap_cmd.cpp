@@ -8,6 +8,7 @@
 #include "subcommands.h"
 #include "errors.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -43,7 +44,13 @@ void list_effects()
   for (const auto &e : granpen::effect_library()) {
     std::printf("%-20s %s\n%-20s magnitude: %s; reference values:", e.name.c_str(), e.what.c_str(), "", e.unit.c_str());
     for (double k : e.knots) std::printf(" %s", granpen::deck_number(k).c_str());
-    std::printf("%s\n", e.pour_level ? " (new beds)" : " (push only: the baseline's beds)");
+    if (e.transform && std::isfinite(e.transform_max))
+      std::printf(" (up to %s the baseline's traces transformed, nothing simulated; beyond, push only: the baseline's beds)\n",
+                  granpen::deck_number(e.transform_max).c_str());
+    else
+      std::printf("%s\n", e.transform    ? " (the baseline's traces transformed: nothing simulated)"
+                          : e.pour_level ? " (new beds)"
+                                         : " (push only: the baseline's beds)");
   }
 }
 

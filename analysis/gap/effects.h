@@ -1,10 +1,13 @@
 // granpen gap: the library of candidate unmodelled effects. Each is a real change to the
 // simulation (deck variables of in.pour, inputs/model/contact.lmp and in.push), with a
 // magnitude in physical units and the reference magnitudes ("knots") at which its
-// signature on the observables is simulated. Pure: no processes, no files.
+// signature on the observables is simulated, or, for an effect that is a linear filter on
+// the force (the measurement chain), computed from the baseline's own traces. Pure: no
+// processes, no files.
 #ifndef GRANPEN_GAP_EFFECTS_H
 #define GRANPEN_GAP_EFFECTS_H
 
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,7 +29,23 @@ struct Effect {
   std::string pour_mu;      // friction of the pours ("" = the scenario's)
   std::string (*pour_mu_at)(double a) = nullptr;    // packing: the pour friction sets phi_0
   bool push_mu_follows = false;  // the push keeps the pour's friction (else the scenario's 0.3)
+  // A push-only effect realised by a transform of the baseline's traces instead of a
+  // simulation, at magnitudes up to transform_max: F at magnitude a from the baseline's F,
+  // sampled every dt s (the measurement chain: a filter on the force the grains exert,
+  // core/sensor_response.h, while the rod's motion does not feed back into the grains). Its
+  // knots there cost nothing, and its confirming runs are the baseline pushed on fresh beds,
+  // transformed. Beyond transform_max (and without a transform) it is simulated (push_set).
+  std::vector<double> (*transform)(const std::vector<double> &F, double dt, double a) = nullptr;
+  double transform_max = INFINITY;
+  // The reference value (detection limit, look-alikes); NaN: the first knot.
+  double reference = NAN;
 };
+
+// The effect's reference value: Effect::reference, or its first knot.
+double reference_magnitude(const Effect &e);
+
+// Whether effect e at magnitude a is realised by its transform (nothing simulated).
+bool by_transform(const Effect &e, double a);
 
 // The library, in a fixed order.
 const std::vector<Effect> &effect_library();

@@ -20,6 +20,15 @@ double excess_removed(const Diagnosis &d, double chi2a)
   return excess0 > 0 ? 1.0 - std::max(0.0, chi2a - P) / excess0 : 0.0;
 }
 
+// the runs of e at magnitude a that confirm_requests(..., tag, seeds) made (a transform
+// effect's: the baseline's pushes on those beds, transformed)
+RunsBySpeed effect_runs(const SimContext &sim, const Effect &e, double a, const std::string &tag,
+                        const std::vector<std::string> &seeds = CONFIRM_SEEDS)
+{
+  RunsBySpeed runs = load_sweep_runs(sim.runner.out_root, confirm_sweep(e, a, tag, seeds));
+  return by_transform(e, a) ? transformed_runs(e, a, runs) : runs;
+}
+
 void run_or_throw(const std::vector<SimRequest> &req, const SimContext &sim, const char *what)
 {
   if (run_requests(req, sim.runner) != 0)
@@ -41,7 +50,7 @@ bool refine(const Effect &e, const EffectData &ed, const AfterRuns &first, bool 
   const double a2 = refined_magnitude(ed, d.magnitude, c);
   if (std::abs(a2 - d.magnitude) <= 0.05 * (ahi - alo)) return confirmed;
   run_or_throw(confirm_requests(sim.scenario, e, a2, sim.v0s, "refine", REFINE_SEEDS), sim, "refining");
-  RunsBySpeed runs2 = load_sweep_runs(sim.runner.out_root, "refine_" + effect_sweep_name(e, a2));
+  RunsBySpeed runs2 = effect_runs(sim, e, a2, "refine", REFINE_SEEDS);
   const AfterRuns second = evaluate_after(runs2, a2, ed, f, al, d);
   d.refined = true;
   d.refined_from = d.magnitude;
@@ -175,9 +184,8 @@ RunsBySpeed confirm_top_effect(const std::map<std::string, const Effect *> &by_n
       if (std::none_of(req.begin(), req.end(), [&](const SimRequest &r) { return r.spec.name == h.spec.name; }))
         req.push_back(h);
   run_or_throw(req, sim, "confirming");
-  RunsBySpeed corr = load_sweep_runs(sim.runner.out_root, "confirm_" + effect_sweep_name(e, d.magnitude));
-  RunsBySpeed held = own_heldout ? load_sweep_runs(sim.runner.out_root, "heldout_" + effect_sweep_name(e, d.heldout_magnitude))
-                                 : corr;
+  RunsBySpeed corr = effect_runs(sim, e, d.magnitude, "confirm");
+  RunsBySpeed held = own_heldout ? effect_runs(sim, e, d.heldout_magnitude, "heldout") : corr;
   d.proj_before = signature_sigma(ed, d.magnitude, f);
   const AfterRuns first = evaluate_after(corr, d.magnitude, ed, f, al, d);
   {
@@ -192,6 +200,8 @@ RunsBySpeed confirm_top_effect(const std::map<std::string, const Effect *> &by_n
   d.confirmed_fraction = excess_removed(d, first.chi2);
   d.proj_after = first.sigma();
   const bool confirmed = refine(e, ed, first, confirms(d, first.chi2, d.proj_after), f, al, sim, d, corr);
+  // a transform effect's "after" is computed: the output writes its traces transformed
+  if (by_transform(e, d.magnitude)) d.corrected_effect = e.name, d.corrected_magnitude = d.magnitude;
   if (confirmed && !gap_shrinks(d.gap_before, d.gap_after)) {
     d.notes.push_back("verdict: " + d.top_effect + " at magnitude " + fmt(d.magnitude) + " passed the chi^2 test on fresh seeds (" +
                       fmt(d.chi2_0, "%.1f") + " -> " + fmt(d.chi2_after, "%.1f") + ") but G_all did not shrink to half (" + fmt(d.gap_before, "%.3f") + " -> " + fmt(d.gap_after, "%.3f") +

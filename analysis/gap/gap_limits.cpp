@@ -83,7 +83,7 @@ DetectionLimit detection_limit(const Effect &e, const EffectData &ed, const Effe
   DetectionLimit L;
   L.effect = e.name;
   L.unit = e.unit;
-  L.reference = e.knots.empty() ? 0.0 : e.knots[0];
+  L.reference = reference_magnitude(e);
   L.threshold = fit.lr_threshold;
   const double sign = L.reference < 0 ? -1.0 : 1.0;
   const NoiseFactors now = ones(f.target);
@@ -125,7 +125,7 @@ std::vector<LookAlike> look_alikes(const std::vector<EffectFit> &ranking, const 
   for (std::size_t i = 0; i < ranking.size(); ++i)
     for (std::size_t j = i + 1; j < ranking.size(); ++j) {
       const EffectData &A = data.at(ranking[i].name), &B = data.at(ranking[j].name);
-      const double ra = effects.at(A.name)->knots.at(0), rb = effects.at(B.name)->knots.at(0);
+      const double ra = reference_magnitude(*effects.at(A.name)), rb = reference_magnitude(*effects.at(B.name));
       double ab = 0, aa = 0, bb = 0;
       std::vector<double> ua, va, ub, vb;
       for (std::size_t s = 0; s < f.nspeeds(); ++s) {

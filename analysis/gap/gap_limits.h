@@ -36,7 +36,7 @@ double signature_strength(const EffectData &ed, const Target &t, double a, const
 
 struct DetectionLimit {
   std::string effect, unit;
-  double reference = 0;                    // the effect's first reference value (library order)
+  double reference = 0;                    // the effect's reference value (reference_magnitude: its first knot unless set)
   double threshold = 0;                    // its likelihood ratio's threshold in this diagnosis
   std::optional<double> limit;             // on the reference's side of 0; none: not within the knots
   std::optional<double> limit_other_side;  // two-sided effects: the same on the other side

@@ -23,6 +23,7 @@ std::vector<SimRequest> signature_requests(const std::string &scenario, const st
                               baseline_request(scenario, v0, REFERENCE_SEEDS, "fresh_baseline")};
   for (const Effect *e : effects)
     for (double a : e->knots) {
+      if (by_transform(*e, a)) continue;    // the baseline's runs, transformed
       SimRequest r = effect_request(scenario, *e, a, v0, SIGNATURE_SEEDS, effect_sweep_name(*e, a));
       if (!e->pour_level) r.beds_from = "baseline";
       out.push_back(r);
@@ -30,19 +31,25 @@ std::vector<SimRequest> signature_requests(const std::string &scenario, const st
   return out;
 }
 
+std::string confirm_sweep(const Effect &e, double a, const std::string &tag, const std::vector<std::string> &seeds)
+{
+  if (by_transform(e, a)) return seeds == CONFIRM_SEEDS ? "confirm_baseline" : "refine_baseline";
+  return tag + "_" + effect_sweep_name(e, a);
+}
+
 std::vector<SimRequest> confirm_requests(const std::string &scenario, const Effect &e, double a,
                                          const std::vector<std::string> &v0, const std::string &tag,
                                          const std::vector<std::string> &seeds)
 {
+  // the confirmation's beds, poured once for every push-only confirmation (pours only:
+  // nothing pushes in this sweep)
+  const std::string beds = seeds == CONFIRM_SEEDS ? "confirm_beds" : "refine_beds";
   std::vector<SimRequest> out;
-  SimRequest r = effect_request(scenario, e, a, v0, seeds, tag + "_" + effect_sweep_name(e, a));
-  if (!e.pour_level) {
-    // the confirmation's beds, poured once for every push-only confirmation (pours only:
-    // the baseline's pushes on them would enter nothing)
-    const std::string beds = seeds == CONFIRM_SEEDS ? "confirm_beds" : "refine_beds";
-    out.push_back(baseline_request(scenario, {}, seeds, beds));
-    r.beds_from = beds;
-  }
+  if (!e.pour_level) out.push_back(baseline_request(scenario, {}, seeds, beds));
+  const std::string name = confirm_sweep(e, a, tag, seeds);
+  SimRequest r = by_transform(e, a) ? baseline_request(scenario, v0, seeds, name)
+                                    : effect_request(scenario, e, a, v0, seeds, name);
+  if (!e.pour_level) r.beds_from = beds;
   out.push_back(r);
   return out;
 }

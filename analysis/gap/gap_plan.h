@@ -17,15 +17,25 @@ namespace granpen {
 // magnitude corrected from the confirming runs, which it has seen).
 extern const std::vector<std::string> SIGNATURE_SEEDS, REFERENCE_SEEDS, CONFIRM_SEEDS, REFINE_SEEDS;
 
-// The baseline and every knot of the chosen effects, at the speeds v0 (the cache).
+// The baseline and every knot of the chosen effects, at the speeds v0 (the cache); knots
+// a transform realises (by_transform: the measurement chain up to 2 ms) need nothing
+// simulated (gap_sims.h).
 std::vector<SimRequest> signature_requests(const std::string &scenario, const std::vector<std::string> &v0,
                                            const std::vector<const Effect *> &effects);
 
 // The runs confirming effect e at magnitude a with fresh seeds, at speeds v0; a push-only
-// effect pours the fresh beds once (sweep confirm_beds, or refine_beds) and reuses them.
+// effect pours the fresh beds once (sweep confirm_beds, or refine_beds) and reuses them. At
+// a magnitude its transform realises, an effect's are the baseline's pushes on those beds
+// (confirm_baseline, refine_baseline), one sweep for every such magnitude and tag:
+// transformed when loaded.
 std::vector<SimRequest> confirm_requests(const std::string &scenario, const Effect &e, double a,
                                          const std::vector<std::string> &v0, const std::string &tag,
                                          const std::vector<std::string> &seeds = CONFIRM_SEEDS);
+
+// The sweep holding those runs: TAG_EFFECT_MAGNITUDE, or at a magnitude the transform
+// realises the baseline's pushes (confirm_baseline for CONFIRM_SEEDS, else refine_baseline).
+std::string confirm_sweep(const Effect &e, double a, const std::string &tag,
+                          const std::vector<std::string> &seeds = CONFIRM_SEEDS);
 
 // Core-hours of the runs of the requests not yet done in the cache (1.1e7 atom-steps
 // per second per core, docs/presets.md; grains from the preset's lattice, a pour 0.6 s

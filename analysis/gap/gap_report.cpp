@@ -2,12 +2,15 @@
 // figures (io/plot_writer.h).
 #include "gap_report.h"
 
+#include "effects.h"
 #include "gap_plan.h"
 #include "atomic_file.h"
 #include "json_writer.h"
 #include "plot_writer.h"
 #include "sweep_cache.h"
 #include "text_util.h"
+#include "trace_reader.h"
+#include "trace_writer.h"
 #include "errors.h"
 
 #include <algorithm>
@@ -590,6 +593,27 @@ void gap_by_regime(const GapGrid &grid, double D, Diagnosis &d)
   }
 }
 
+namespace {
+
+// A transform effect's corrected run as a trace file: the source's header (a line `derived`
+// said), t and z, its F transformed (in the file's units: the transform is linear)
+std::string transformed_trace_text(const std::string &path, const Effect &e, double a)
+{
+  const Trace t = read_trace(path);
+  TraceHeader h;
+  h.units = t.units, h.v0 = t.v0, h.D = t.D, h.g = t.g;
+  for (const auto &[k, v] : t.keys)
+    if (k != "units" && k != "v0" && k != "D" && k != "g") h.extra.emplace_back(k, v);
+  h.extra.emplace_back("derived", e.name + " " + deck_number(a) + ": F transformed by granpen gap (analysis/gap/effects.cpp)");
+  const double dt = t.t.size() > 1 ? (t.t.back() - t.t.front()) / (double) (t.t.size() - 1) : 1.0;
+  const std::vector<double> F = e.transform(t.F, dt, a);
+  std::string text = format_trace_header(h);
+  for (std::size_t i = 0; i < F.size(); ++i) text += format_trace_row({t.t[i], t.z[i], F[i]});
+  return text;
+}
+
+}    // namespace
+
 void write_gap_output(const Diagnosis &d, const std::string &out_dir)
 {
   const fs::path out = out_dir, part = fs::path(out_dir + ".partial");
@@ -606,7 +630,13 @@ void write_gap_output(const Diagnosis &d, const std::string &out_dir)
     fs::create_directories(part / "baseline");
     fs::create_directories(part / "corrected");
     copy_all(d.baseline_files, part / "baseline");
-    copy_all(d.corrected_files.empty() ? d.baseline_files : d.corrected_files, part / "corrected");
+    const Effect *derived = d.corrected_effect.empty() ? nullptr : find_effect(d.corrected_effect);
+    if (derived && derived->transform && !d.corrected_files.empty())
+      for (const auto &f : d.corrected_files)
+        write_file_atomic((part / "corrected" / (sweep_of_trace(f) + "_" + fs::path(f).filename().string())).string(),
+                          transformed_trace_text(f, *derived, d.corrected_magnitude));
+    else
+      copy_all(d.corrected_files.empty() ? d.baseline_files : d.corrected_files, part / "corrected");
     write_gap_report(d, part.string());
   } catch (const fs::filesystem_error &e) {
     fs::remove_all(part, ec);

@@ -52,6 +52,10 @@ struct Diagnosis {
   double peak_end = 0;                      // 0.35 D: the peak regime ends here
   std::vector<std::string> notes;           // warnings and choices, said in the report
   std::vector<std::string> real_files, baseline_files, corrected_files;
+  // the corrected runs are corrected_files transformed by this effect at this magnitude (a
+  // transform effect, effects.h: the baseline's traces filtered); "": the files as they are
+  std::string corrected_effect;
+  double corrected_magnitude = 0;
   double chi2_0 = 0, p_value = 1;
   double chi2_after = 0, confirmed_fraction = 0;    // the fresh runs of the tested effect
   std::size_t nfeatures = 0;

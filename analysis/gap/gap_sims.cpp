@@ -1,6 +1,7 @@
 #include "gap_sims.h"
 
 #include "bed_info.h"
+#include "onset_alignment.h"
 #include "sweep_cache.h"
 
 #include <cmath>
@@ -51,12 +52,34 @@ RunsBySpeed load_sweep_runs(const std::string &cache, const std::string &sweep)
   return out;
 }
 
+TraceRun transformed_run(const Effect &e, double a, const TraceRun &run)
+{
+  TraceRun r = run;
+  if (r.t.size() < 2) return r;
+  const double dt = (r.t.back() - r.t.front()) / (double) (r.t.size() - 1);
+  r.F = e.transform(run.F, dt, a);
+  r.onset = force_onset(r.z, r.F);
+  if (!std::isfinite(r.onset))
+    throw InputError(run.path + ": no force onset after " + effect_sweep_name(e, a) + " (F never rises above zero)");
+  return r;
+}
+
+RunsBySpeed transformed_runs(const Effect &e, double a, const RunsBySpeed &runs)
+{
+  RunsBySpeed out;
+  for (const auto &[v, rs] : runs)
+    for (const auto &r : rs) out[v].push_back(transformed_run(e, a, r));
+  return out;
+}
+
 SimulatedRuns load_simulations(const std::string &cache, const std::vector<const Effect *> &effects)
 {
   SimulatedRuns s;
   s.base = load_sweep_runs(cache, "baseline");
   for (const Effect *e : effects)
-    for (double a : e->knots) s.knots[effect_sweep_name(*e, a)] = load_sweep_runs(cache, effect_sweep_name(*e, a));
+    for (double a : e->knots)
+      s.knots[effect_sweep_name(*e, a)] =
+          by_transform(*e, a) ? transformed_runs(*e, a, s.base) : load_sweep_runs(cache, effect_sweep_name(*e, a));
   s.fresh = load_sweep_runs(cache, "fresh_baseline");
   return s;
 }

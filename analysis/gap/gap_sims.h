@@ -6,8 +6,14 @@
 //   CACHE/SCENARIO/confirm_EFFECT_MAGNITUDE the top effect at its fitted magnitude, seeds 21 to 24
 //   CACHE/SCENARIO/heldout_EFFECT_MAGNITUDE the same at the held-out speed's own magnitude
 //   CACHE/SCENARIO/confirm_beds             beds of seeds 21 to 24 for push-only confirmations
-// A push-only effect (measurement chain) reuses the beds of the baseline with the same
-// seeds (hard links): its signature is then a paired difference, bed noise cancels.
+//   CACHE/SCENARIO/confirm_baseline         the baseline pushed into them (a filtered mount's
+//                                           confirmation; refine_beds, refine_baseline: 31-34)
+// A push-only effect (actuator ramp, rod friction) reuses the beds of the baseline with the
+// same seeds (hard links): its signature is then a paired difference, bed noise cancels.
+// Where an effect is realised by a transform (effects.h, by_transform: the measurement chain
+// up to 2 ms) nothing is simulated: its knots are the baseline's own runs transformed, paired
+// on the same beds, and its confirming runs the baseline pushed on the confirmation's beds
+// (CACHE/SCENARIO/confirm_baseline), transformed.
 // The sweep runner skips what is done and resumes what was interrupted, so a diagnosis
 // resumes from the cache and a repeated one costs nothing. What a sweep folder holds is
 // the sweep layer's to say (sweep/sweep_cache.h); the gap names sweeps only.
@@ -44,8 +50,15 @@ int run_requests(const std::vector<SimRequest> &requests, const RunnerOptions &o
 // that cannot be read).
 RunsBySpeed load_sweep_runs(const std::string &cache, const std::string &sweep);
 
+// A transform effect's run at magnitude a (Effect::transform): F transformed (sampled at
+// the run's mean time step), the onset found anew (throws InputError as run_of_trace).
+// The path stays the source's: the run is computed, not a file.
+TraceRun transformed_run(const Effect &e, double a, const TraceRun &run);
+RunsBySpeed transformed_runs(const Effect &e, double a, const RunsBySpeed &runs);
+
 // What the fits compare against: the baseline on the signature beds, on the reference
-// beds, and every effect knot (sweep name -> runs).
+// beds, and every effect knot (sweep name -> runs; the knots a transform realises from the
+// baseline's runs).
 struct SimulatedRuns {
   RunsBySpeed base, fresh;
   std::map<std::string, RunsBySpeed> knots;

@@ -5,6 +5,7 @@
 #include "gap_limits.h"
 #include "gap_sims.h"
 #include "gap_verdict.h"
+#include "sensor_response.h"
 
 #include <gtest/gtest.h>
 
@@ -456,12 +457,29 @@ TEST(GapEffects, LibraryKnobsAreDeckVariables)
   EXPECT_FALSE(rod.pour_level);
   EXPECT_FALSE(rod.one_sided);
   EXPECT_EQ(rod.push_set(-0.2), (DeckVars{{"dmu_rod", "-0.2"}}));
+  // the measurement chain: up to 2 ms a filter on the baseline's traces (fix rod/drive
+  // mount's reading at damping ratio 0.2), beyond, simulated with the mount's deck variables
   const Effect &m = *find_effect("measurement_chain");
   EXPECT_FALSE(m.pour_level);
-  // a 1 ms mount period with 100 g: k = m (2 pi / T)^2
-  const auto v = m.push_set(1.0);
+  ASSERT_NE(m.transform, nullptr);
+  EXPECT_TRUE(by_transform(m, 0.2) && by_transform(m, 2.0));
+  EXPECT_FALSE(by_transform(m, 4.0));
+  EXPECT_FALSE(by_transform(*find_effect("actuator_ramp"), 1.6));
+  EXPECT_EQ(m.knots.front(), 0.2);
+  EXPECT_EQ(m.knots.back(), 10.0);
+  EXPECT_EQ(reference_magnitude(m), 0.7);
+  EXPECT_EQ(reference_magnitude(*find_effect("packing")), -0.2);    // the first knot unless set
+  // a 4 ms mount period with 100 g: k = m (2 pi / T)^2
+  const auto v = m.push_set(4.0);
   ASSERT_EQ(v[0].first, "mount_k");
-  EXPECT_NEAR(std::stod(v[0].second), 100.0 * std::pow(2.0 * M_PI / 1e-3, 2), 1e4);
+  EXPECT_NEAR(std::stod(v[0].second), 100.0 * std::pow(2.0 * M_PI / 4e-3, 2), 1e3);
+  std::vector<double> step(200, 1e5);
+  step[0] = 0.0;
+  SensorChain c;
+  c.mount = mount_of(100.0 * std::pow(2.0 * M_PI / 1e-3, 2), 2 * 0.2 * 100.0 * 2.0 * M_PI / 1e-3, 100.0);
+  const auto a = m.transform(step, 1e-4, 1.0), b = sensor_response(step, 1e-4, c);    // 100 g, T = 1 ms
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_NEAR(a[i], b[i], 1e-6);
   // stiffer contacts get a shorter timestep that keeps the 1e-4 s trace window whole
   for (const auto &[k, val] : find_effect("contact_stiffness")->set(0.6))
     if (k == "dt_push") EXPECT_NEAR(1e-4 / std::stod(val), std::round(1e-4 / std::stod(val)), 1e-6);

@@ -10,6 +10,8 @@
 #include "gap_features.h"
 #include "gap_inputs.h"
 #include "gap_plan.h"
+#include "gap_sims.h"
+#include "sensor_response.h"
 #include "gap_where.h"
 #include "scenario.h"
 #include "gap_which.h"
@@ -200,14 +202,17 @@ TEST(GapPlan, RequestsAndTheirCostFromWhatTheCacheLacks)
   TempDir cache("plan");
   const std::vector<const Effect *> mount{find_effect("measurement_chain")};
   const SimulationPlan p = plan_simulations(sc, {"50", "100"}, mount, cache.path.string(), false);
-  // the baseline (seeds 1 2), the reference beds (11-14), the mount's four knots on the baseline's beds
-  ASSERT_EQ(p.requests.size(), 6u);
+  // the baseline (seeds 1 2), the reference beds (11-14), the mount's two simulated knots (4
+  // and 10 ms) on the baseline's beds; its knots up to 2 ms are the baseline's traces filtered
+  ASSERT_EQ(p.requests.size(), 4u);
   EXPECT_EQ(p.requests[2].beds_from, "baseline");
+  EXPECT_EQ(p.requests[2].spec.name, "measurement_chain_4");
+  EXPECT_EQ(p.requests[3].spec.name, "measurement_chain_10");
   // by hand: grains on the lattice, 8 x 8 across ((4 - 2 x 0.25) / 0.5 + 1) and 5 high;
-  // 6 pours of 0.6 s (the knots reuse the baseline's beds), (2 + 4 + 4 x 2) beds pushed
+  // 6 pours of 0.6 s (the knots reuse the baseline's beds), (2 + 4 + 2 x 2) beds pushed
   // 2.5 cm at each speed; 1.1e7 atom-steps per core-second
   const double grains = 8 * 8 * 5;
-  const double steps = 6 * 0.6 / 5e-6 + 14 * (2.5 / 50 + 2.5 / 100) / 2e-6;
+  const double steps = 6 * 0.6 / 5e-6 + 10 * (2.5 / 50 + 2.5 / 100) / 2e-6;
   EXPECT_NEAR(p.core_hours, grains * steps / (1.1e7 * 3600), 1e-9 * p.core_hours);    // rounding only
   // a done push is not counted again
   const auto pending = pending_runs(p.requests[0], cache.path.string());
@@ -306,16 +311,79 @@ TEST(GapPlan, CostInProbePoursIsAtomStepsOverTheProbePours)
   const std::vector<const Effect *> mount{find_effect("measurement_chain")};
   const auto req = signature_requests(sc.name, {"50", "100"}, mount);
   const PlanCost c = plan_cost(sc, req, cache.path.string(), 1000.0);
-  // as in RequestsAndTheirCostFromWhatTheCacheLacks: 6 pours, 14 beds pushed at 2 speeds
+  // as in RequestsAndTheirCostFromWhatTheCacheLacks: 6 pours, 10 beds pushed at 2 speeds
   EXPECT_EQ(c.pours, 6);
-  EXPECT_EQ(c.pushes, 28);
-  const double steps = 6 * 0.6 / 5e-6 + 14 * (2.5 / 50 + 2.5 / 100) / 2e-6;
+  EXPECT_EQ(c.pushes, 20);
+  const double steps = 6 * 0.6 / 5e-6 + 10 * (2.5 / 50 + 2.5 / 100) / 2e-6;
   EXPECT_NEAR(c.atom_steps, 320 * steps, 1e-9 * c.atom_steps);
   EXPECT_NEAR(c.probe_pours, c.atom_steps / (1000.0 * PROBE_POUR_STEPS), 1e-12 * c.probe_pours);
   EXPECT_NEAR(c.core_hours, estimate_core_hours(sc, req, cache.path.string()), 1e-12 * c.core_hours);
-  EXPECT_NE(plan_summary(c).find("6 pours, 28 pushes"), std::string::npos) << plan_summary(c);
+  EXPECT_NE(plan_summary(c).find("6 pours, 20 pushes"), std::string::npos) << plan_summary(c);
 }
+
 #endif
+
+TEST(GapPlan, TransformEffectConfirmsOnTheBaselinePushedIntoFreshBeds)
+{
+  // the mount's confirming, held-out and refining runs: the baseline pushed into the fresh
+  // beds (poured once, shared with every push-only confirmation), one sweep for any magnitude
+  const Effect &m = *find_effect("measurement_chain");
+  const auto c = confirm_requests("tiny", m, 1.23, {"50", "100"}, "confirm");
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_EQ(c[0].spec.name, "confirm_beds");
+  EXPECT_TRUE(c[0].spec.v0.empty());
+  EXPECT_EQ(c[1].spec.name, "confirm_baseline");
+  EXPECT_EQ(c[1].beds_from, "confirm_beds");
+  EXPECT_TRUE(c[1].spec.push_set.empty() && c[1].spec.set.empty());
+  EXPECT_EQ(confirm_sweep(m, 1.5, "heldout"), "confirm_baseline");
+  EXPECT_EQ(confirm_sweep(m, 1.23, "refine", REFINE_SEEDS), "refine_baseline");
+  const auto r = confirm_requests("tiny", m, 2.0, {"50"}, "refine", REFINE_SEEDS);
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_EQ(r[1].spec.name, "refine_baseline");
+  EXPECT_EQ(r[1].beds_from, "refine_beds");
+  // beyond 2 ms the mount is simulated: its own sweep, pushed into the same fresh beds
+  const auto l = confirm_requests("tiny", m, 4.5, {"50"}, "confirm");
+  ASSERT_EQ(l.size(), 2u);
+  EXPECT_EQ(l[1].spec.name, "confirm_measurement_chain_4.5");
+  EXPECT_EQ(l[1].beds_from, "confirm_beds");
+  ASSERT_FALSE(l[1].spec.push_set.empty());
+  EXPECT_EQ(l[1].spec.push_set[0].first, "mount_k");
+  EXPECT_EQ(confirm_sweep(m, 2.0, "confirm"), "confirm_baseline");
+  EXPECT_EQ(confirm_sweep(m, 2.01, "confirm"), "confirm_measurement_chain_2.01");
+  // a simulated push-only effect keeps its own sweep on the same beds
+  const Effect &ramp = *find_effect("actuator_ramp");
+  const auto s = confirm_requests("tiny", ramp, 2.4, {"50"}, "confirm");
+  ASSERT_EQ(s.size(), 2u);
+  EXPECT_EQ(s[1].spec.name, "confirm_actuator_ramp_2.4");
+  EXPECT_EQ(confirm_sweep(ramp, 2.4, "confirm"), "confirm_actuator_ramp_2.4");
+}
+
+// ---- simulate: a transform effect's runs are the baseline's, filtered
+
+TEST(GapSims, ATransformEffectsRunsAreTheBaselinesFiltered)
+{
+  const Effect &m = *find_effect("measurement_chain");
+  ASSERT_NE(m.transform, nullptr);
+  const TraceRun base = ramp_run("baseline/traces/b1.csv", 100, 0.2, 3.0);    // 1e-4 s samples
+  const TraceRun r = transformed_run(m, 2.0, base);
+  SensorChain c;
+  c.mount.period = 2e-3;
+  c.mount.zeta = 0.2;
+  const auto F = sensor_response(base.F, 1e-4, c);
+  ASSERT_EQ(r.F.size(), F.size());
+  for (std::size_t i = 0; i < F.size(); ++i) EXPECT_NEAR(r.F[i], F[i], 1e-9 * 500.0);
+  EXPECT_EQ(r.z, base.z);
+  EXPECT_EQ(r.t, base.t);
+  EXPECT_EQ(r.path, base.path);
+  // the mount's lag moves the onset deeper
+  EXPECT_GT(r.onset, base.onset + 0.001);
+  EXPECT_NEAR(r.onset, force_onset(r.z, r.F), 1e-12);
+  RunsBySpeed by;
+  by[100] = {base, ramp_run("baseline/traces/b2.csv", 100, 0.3, 3.0)};
+  const RunsBySpeed t = transformed_runs(m, 2.0, by);
+  ASSERT_EQ(t.at(100).size(), 2u);
+  EXPECT_EQ(t.at(100)[0].F, r.F);
+}
 
 // ---- align and bin
 
