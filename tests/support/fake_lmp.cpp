@@ -14,7 +14,7 @@
 //   mu_push m (the pour's when not given): k *= 1 + 2 (m - 0.3)
 //   kn s*1e9: grain noise *= s^0.5, and it decorrelates faster: corr = 0.6^(s^0.5) (see rho_g)
 //   ramp L: the peak moves deeper by (L - 0.5) / 2 once L > 0.5 (the rod is still slow)
-//   mount_k, mount_c, mount_m: the signal goes through the mount's spring-damper
+//   mount_k, mount_c, mount_m: the signal goes through the mount's spring-damper: the reading is k x + c x' (fix rod/drive mount)
 //   cohesion c: + 5e3 c exp(-z / 0.6) (a cohesive crust, at any speed); phi_0 -= 0.002 c
 //       (in the .info only: the crust stands for the cohesive bed's whole force)
 //   dmu_rod m: P *= 1 + 1.5 m, k *= 1 + 0.5 m (the rod's own friction: the tip and the side)
@@ -136,7 +136,7 @@ int main(int argc, char **argv)
         xv += (F - mk * x - mc * xv) / mm * dt / 20;
         x += xv * dt / 20;
       }
-      F = mk * x;
+      F = mk * x + mc * xv;    // the mount reads spring and damper, as fix rod/drive mount does
     }
     char row[96];
     std::snprintf(row, sizeof row, "%.6f,%.6f,%.6g\n", t, z, F);
