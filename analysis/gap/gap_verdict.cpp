@@ -42,11 +42,12 @@ void tie(const EffectFit &top, const EffectFit &second, Diagnosis &d, double sep
                     ": at this noise they look alike (next_measurement says what would separate them)");
 }
 
-// Every further candidate that the data cannot tell from the top either (it explains the
-// gap on its own, and its evidence is within the margin of the top's or its fitted
-// prediction within the knots' noise of the top's) joins the tie: naming two of three
-// look-alikes would drop one the data allow as much (a noiseless transform signature, as
-// force_scale's, outranks two noisy pour-level ones that fit the data better).
+// Once the top ties, every further candidate that the data cannot tell from the top
+// either (it explains the gap on its own, and its evidence is within the margin of the
+// top's or its fitted prediction within the knots' noise of the top's) joins the tie:
+// naming two of three look-alikes would drop one the data allow as much (a noiseless
+// transform signature, as force_scale's, outranks two noisy pour-level ones that fit the
+// data better).
 void widen_tie(Diagnosis &d, const Separation2 &separation2)
 {
   const EffectFit &top = d.ranking[0];
@@ -89,7 +90,8 @@ void decide_verdict(Diagnosis &d, const Separation2 &separation2)
   const EffectFit *second = d.ranking.size() > 1 ? &d.ranking[1] : nullptr;
   // a second that would explain the gap on its own, with a fitted prediction within the
   // knots' noise of the top's: the two are not told apart by the evidence margin alone
-  // (the first such in the ranking: a look-alike further down ties as the second would)
+  // (the first such in the ranking, not only the second: a further candidate ranked in
+  // between, as a new effect in the library may be, must not hide a look-alike of the top)
   double sep2 = -1;
   const EffectFit *alike = nullptr;
   for (std::size_t i = 1; separation2 && top && !alike && i < d.ranking.size(); ++i) {

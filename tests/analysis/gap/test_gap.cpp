@@ -408,7 +408,8 @@ TEST(GapVerdict, EveryCandidateTheDataCannotTellFromTheTopJoinsTheTie)
   decide_verdict(d);
   EXPECT_EQ(d.tie, (std::vector<std::string>{"s", "p"}));
   // the second told apart (its evidence 9 behind, its prediction 20 away), the third a
-  // look-alike of the top: a tie of the top and the third, not an explained top
+  // look-alike of the top: a tie of the top and the third, not an explained top (the second
+  // must not hide it: adding a candidate to the library never makes a tie an explained)
   d = significance(true, {candidate("r", 0.85, 0.76, 43, 118, 15), candidate("p", 0.93, 0.9, 24, 121, 15),
                           candidate("s", 0.91, 0.9, 63, 130, 15)});
   decide_verdict(d, sep);
