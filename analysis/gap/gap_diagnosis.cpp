@@ -254,7 +254,7 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   progress.say(GapProgress::INFO, "report",
                format_text("verdict %s%s; G_all %.3f -> %.3f (%d measured runs per speed at least, %d simulated); %s",
                       d.verdict.c_str(),
-                      !d.tie.empty() ? (" (" + d.tie[0] + " or " + d.tie[1] + ")").c_str()
+                      !d.tie.empty() ? (" (" + tie_names(d.tie) + ")").c_str()
                       : d.top_effect.empty() ? ""
                                              : (" (" + d.top_effect + ", magnitude " + printf_number("%.4g", d.magnitude) + ")").c_str(),
                       d.gap_before, d.gap_after, d.n_real_min, d.n_sim, (opt.out + "/diagnosis.json").c_str()));

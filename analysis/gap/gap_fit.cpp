@@ -216,6 +216,13 @@ EffectFit fit_effect(const Target &t, const EffectData &e)
   const double w0 = weighted_residual(t, e, 0.0, all), wa = weighted_residual(t, e, f.magnitude, all);
   f.explained = explained_fraction(w0, wa, noise_of(e, all));
   f.lr = std::max(0.0, w0 - signature_residual(t, e, f.magnitude, all));
+  {
+    const auto [lo, hi] = magnitude_range(e);
+    const double h = 0.01 * (hi - lo), a = std::clamp(f.magnitude, lo + h, hi - h);
+    const double c2 = signature_residual(t, e, a + h, all) - 2.0 * signature_residual(t, e, a, all) +
+                      signature_residual(t, e, a - h, all);
+    if (c2 > 0.0) f.magnitude_error = h * std::sqrt(2.0 / c2);
+  }
   // leave one speed out: fit on the others, predict the one left out
   double sum = 0.0;
   int used = 0;

@@ -10,6 +10,7 @@
 #ifndef GRANPEN_GAP_FIT_H
 #define GRANPEN_GAP_FIT_H
 
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -62,6 +63,9 @@ double signature_baseline_share(const EffectData &e, double a);
 struct EffectFit {
   std::string name;
   double magnitude = 0.0;           // best fit over all speeds
+  // its standard error: where -2 log L (signature_residual: the knots' noise included)
+  // rises by 1, from its curvature at the fit; NaN where the curvature is not positive
+  double magnitude_error = std::numeric_limits<double>::quiet_NaN();
   double chi2_0 = 0.0, chi2 = 0.0;  // at magnitude 0 (the baseline) and at the fit
   std::size_t nfeatures = 0;
   double explained = 0.0;           // fraction of the noise-weighted squared gap the fit removes

@@ -49,6 +49,7 @@ Json ranking_json(const Diagnosis &d)
              {"explained_fraction", num(r.explained, "%.4f")},
              {"score", num(r.score, "%.4f")},
              {"magnitude", num(r.magnitude)},
+             {"magnitude_error", std::isfinite(r.magnitude_error) ? num(r.magnitude_error) : Json()},
              {"heldout_explained", num(r.heldout_explained, "%.4f")},
              {"chi2", num(r.chi2, "%.2f")},
              {"chi2_baseline", num(r.chi2_0, "%.2f")},
@@ -394,7 +395,7 @@ std::string md_summary(const Diagnosis &d)
                   "confirmation on %zu fresh beds (after).\n\n",
                d.scenario.c_str(), d.grid.zmax, d.grid.w, d.n_real_min, d.n_sim, SIGNATURE_SEEDS.size(),
                CONFIRM_SEEDS.size());
-  const std::string named = !d.tie.empty() ? " — " + d.tie[0] + " or " + d.tie[1] + ": they cannot be told apart here"
+  const std::string named = !d.tie.empty() ? " — " + tie_names(d.tie) + ": they cannot be told apart here"
                             : d.top_effect.empty()
                                 ? ""
                                 : " — " + d.top_effect + " at magnitude " + f3(d.magnitude, "%.4g") + " (" + d.magnitude_unit + ")";

@@ -73,7 +73,7 @@ struct Diagnosis {
   std::vector<EffectFit> ranking;           // best first
   std::map<std::string, std::string> magnitude_note;    // effect -> e.g. "phi_0 shift -0.012"
   std::string verdict = "none", top_effect;  // top_effect "" = null; verdict "tie": see tie
-  std::vector<std::string> tie;              // "tie": the two candidates that cannot be told apart
+  std::vector<std::string> tie;              // "tie": the candidates (two or more) that cannot be told apart
   std::string tested_effect;                 // simulated for confirmation (even when downgraded)
   double magnitude = 0;
   std::string magnitude_unit;
@@ -92,6 +92,14 @@ struct Diagnosis {
   FalseAlarms false_alarms;
   std::optional<Residual> residual;          // what the gap left over (none for a `none`)
 };
+
+// The tie's candidates as a sentence names them: "a or b", "a, b or c".
+inline std::string tie_names(const std::vector<std::string> &tie)
+{
+  std::string s;
+  for (std::size_t i = 0; i < tie.size(); ++i) s += (i == 0 ? "" : i + 1 == tie.size() ? " or " : ", ") + tie[i];
+  return s;
+}
 
 }    // namespace granpen
 

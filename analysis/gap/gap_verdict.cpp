@@ -42,6 +42,34 @@ void tie(const EffectFit &top, const EffectFit &second, Diagnosis &d, double sep
                     ": at this noise they look alike (next_measurement says what would separate them)");
 }
 
+// Once the top ties, every further candidate that the data cannot tell from the top
+// either (it explains the gap on its own, and its evidence is within the margin of the
+// top's or its fitted prediction within the knots' noise of the top's) joins the tie:
+// naming two of three look-alikes would drop one the data allow as much (a noiseless
+// transform signature, as force_scale's, outranks two noisy pour-level ones that fit the
+// data better).
+void widen_tie(Diagnosis &d, const Separation2 &separation2)
+{
+  const EffectFit &top = d.ranking[0];
+  for (const auto &c : d.ranking) {
+    if (std::find(d.tie.begin(), d.tie.end(), c.name) != d.tie.end() || !explains(c)) continue;
+    const double gap = lr_evidence(top) - lr_evidence(c);
+    const double sep2 = gap < EVIDENCE_MARGIN || !separation2 ? -1 : separation2(top, c);
+    if (gap >= EVIDENCE_MARGIN && !(sep2 >= 0 && sep2 < EVIDENCE_MARGIN)) continue;
+    d.tie.push_back(c.name);
+    d.notes.push_back("verdict: " + c.name + " joins the tie: it explains the gap (" + fmt(c.explained, "%.2f") + ", held out " +
+                      fmt(c.heldout_explained, "%.2f") + ") and " +
+                      (gap < EVIDENCE_MARGIN ? "its evidence is " + fmt(gap, "%.1f") + " below " + top.name + "'s, within the margin"
+                                             : "its fitted prediction lies " + fmt(sep2, "%.1f") + " squared standard deviations from " +
+                                                   top.name + "'s beyond their knots' noise"));
+  }
+  // best first, as the ranking
+  std::vector<std::string> ordered;
+  for (const auto &c : d.ranking)
+    if (std::find(d.tie.begin(), d.tie.end(), c.name) != d.tie.end()) ordered.push_back(c.name);
+  d.tie = ordered;
+}
+
 }    // namespace
 
 void decide_verdict(Diagnosis &d, const Separation2 &separation2)
@@ -62,10 +90,15 @@ void decide_verdict(Diagnosis &d, const Separation2 &separation2)
   const EffectFit *second = d.ranking.size() > 1 ? &d.ranking[1] : nullptr;
   // a second that would explain the gap on its own, with a fitted prediction within the
   // knots' noise of the top's: the two are not told apart by the evidence margin alone
+  // (the first such in the ranking, not only the second: a further candidate ranked in
+  // between, as a new effect in the library may be, must not hide a look-alike of the top)
   double sep2 = -1;
-  if (separation2 && top && second && explains(*second)) {
-    sep2 = separation2(*top, *second);
+  const EffectFit *alike = nullptr;
+  for (std::size_t i = 1; separation2 && top && !alike && i < d.ranking.size(); ++i) {
+    if (!explains(d.ranking[i])) continue;
+    sep2 = separation2(*top, d.ranking[i]);
     if (sep2 >= margin) sep2 = -1;
+    else alike = &d.ranking[i];
   }
   const bool look_alike = sep2 >= 0 && explains(*top);
   std::string why;
@@ -75,7 +108,7 @@ void decide_verdict(Diagnosis &d, const Separation2 &separation2)
     // gap and predict the speeds left out
     const bool alone = (!second || !second->detected || lr_evidence(*top) - lr_evidence(*second) >= margin) && !look_alike;
     if (look_alike) {
-      tie(*top, *second, d, sep2);
+      tie(*top, *alike, d, sep2);
     } else if (alone && top->detected && top->explained >= 0.5 && top->heldout_explained >= 0.3) {
       d.verdict = "explained";
       d.top_effect = top->name;
@@ -101,7 +134,7 @@ void decide_verdict(Diagnosis &d, const Separation2 &separation2)
     why = "the gap is within the noise (chi^2 " + fmt(d.chi2_0, "%.1f") + " over " + std::to_string(d.nfeatures) +
           " features, p = " + fmt(d.p_value, "%.2g") + "; no candidate's likelihood ratio above its threshold)";
   } else if (look_alike) {
-    tie(*top, *second, d, sep2);
+    tie(*top, *alike, d, sep2);
   } else if (top && explains(*top) && (!second || lr_evidence(*top) - lr_evidence(*second) >= margin)) {
     d.verdict = "explained";
     d.top_effect = top->name;
@@ -121,6 +154,7 @@ void decide_verdict(Diagnosis &d, const Separation2 &separation2)
                fmt(lr_evidence(*top), "%.1f") + " and " + fmt(lr_evidence(*second), "%.1f") + ", chi^2 at the fits " +
                fmt(top->chi2, "%.1f") + " and " + fmt(second->chi2, "%.1f") + ")";
   }
+  if (d.verdict == "tie") widen_tie(d, separation2);
   if (!why.empty()) d.notes.push_back("verdict: " + why);
 
 }

@@ -4,14 +4,15 @@
 // null-calibrated threshold (EffectFit::detected: a gap too small for the omnibus test that
 // lies along an effect's signature). Sorts d.ranking best first (by the likelihood ratio
 // beyond the noise's, lr_evidence) and sets d.targeted, d.significant, d.verdict
-// ("none", "explained", "tie", "unexplained"), d.top_effect (explained) or d.tie (the two
-// candidates that both explain the gap within the evidence margin of each other, or whose
-// fitted predictions lie within their knots' noise of each other), and a note saying why.
+// ("none", "explained", "tie", "unexplained"), d.top_effect (explained) or d.tie (the
+// candidates that explain the gap within the evidence margin of the top's, or whose fitted
+// predictions lie within their knots' noise of the top's: two or more, best first), and a
+// note saying why.
 // separation2(a, b), when given: the evidence the data would give between a's and b's fitted
 // predictions (gap_limits.h, prediction_separation2: squared standard deviations, the knots'
-// noise subtracted); under the evidence margin the top two are not told apart, whatever
-// their likelihood ratios say (the difference is then the knots' noise), so a second that
-// explains the gap as well makes a tie. Without it (the null replicates, unit tests) only
+// noise subtracted); under the evidence margin the top and such a candidate are not told
+// apart, whatever their likelihood ratios say (the difference is then the knots' noise), so
+// one that explains the gap as well makes a tie, wherever it ranks. Without it (the null replicates, unit tests) only
 // the evidence margin tells them apart. On either route an effect is named (or half of a
 // tie) only when detected: its likelihood ratio above its null-calibrated threshold.
 // docs/gap.md, "Verdict".

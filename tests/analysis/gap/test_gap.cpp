@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <random>
 
 using namespace granpen;
@@ -386,6 +387,41 @@ TEST(GapVerdict, FitsWithinTheKnotsNoiseOfEachOtherAreATieWhateverTheirEvidence)
   EXPECT_TRUE(asked.empty());
 }
 
+TEST(GapVerdict, EveryCandidateTheDataCannotTellFromTheTopJoinsTheTie)
+{
+  // s (a noiseless signature) leads p by 3 and r by 12 in evidence; r's fitted prediction is
+  // within the knots' noise of s's (the synthetic rolling case once force_scale came in:
+  // naming s and p alone dropped the truth)
+  std::map<std::pair<std::string, std::string>, double> sep2{{{"s", "p"}, 20.0}, {{"s", "r"}, 1.0}, {{"s", "x"}, 30.0}};
+  const Separation2 sep = [&](const EffectFit &a, const EffectFit &b) { return sep2.at({a.name, b.name}); };
+  auto ranking = [] {
+    return significance(true, {candidate("r", 0.85, 0.76, 43, 118, 15), candidate("p", 0.93, 0.9, 24, 127, 15),
+                               candidate("s", 0.91, 0.9, 63, 130, 15), candidate("x", 0.9, 0.9, 50, 100, 15)});
+  };
+  Diagnosis d = ranking();
+  decide_verdict(d, sep);
+  EXPECT_EQ(d.verdict, "tie");
+  EXPECT_EQ(d.tie, (std::vector<std::string>{"s", "p", "r"}));    // x: 30 behind and told apart
+  EXPECT_EQ(tie_names(d.tie), "s, p or r");
+  // without the look-alike rule (the null replicates) only the margin: s and p
+  d = ranking();
+  decide_verdict(d);
+  EXPECT_EQ(d.tie, (std::vector<std::string>{"s", "p"}));
+  // the second told apart (its evidence 9 behind, its prediction 20 away), the third a
+  // look-alike of the top: a tie of the top and the third, not an explained top (the second
+  // must not hide it: adding a candidate to the library never makes a tie an explained)
+  d = significance(true, {candidate("r", 0.85, 0.76, 43, 118, 15), candidate("p", 0.93, 0.9, 24, 121, 15),
+                          candidate("s", 0.91, 0.9, 63, 130, 15)});
+  decide_verdict(d, sep);
+  EXPECT_EQ(d.verdict, "tie");
+  EXPECT_EQ(d.tie, (std::vector<std::string>{"s", "r"}));
+  // a third that does not explain the gap on its own stays out
+  d = significance(true, {candidate("r", 0.4, 0.76, 43, 118, 15), candidate("p", 0.93, 0.9, 24, 127, 15),
+                          candidate("s", 0.91, 0.9, 63, 130, 15)});
+  decide_verdict(d, sep);
+  EXPECT_EQ(d.tie, (std::vector<std::string>{"s", "p"}));
+}
+
 TEST(GapVerdict, TheNamedEffectIsDetectedOnTheOmnibusRouteToo)
 {
   // a significant gap; the top candidate explains 0.8 of it but its likelihood ratio (30) is
@@ -500,7 +536,7 @@ TEST(GapFit, ChiSquareTail)
 TEST(GapEffects, LibraryKnobsAreDeckVariables)
 {
   for (const char *n : {"rolling_resistance", "polydispersity", "sidewalls", "measurement_chain", "actuator_ramp",
-                        "packing", "contact_stiffness"})
+                        "packing", "contact_stiffness", "force_scale"})
     EXPECT_NE(find_effect(n), nullptr) << n;
   EXPECT_EQ(find_effect("magic"), nullptr);
   // cohesion: pour and push get contact.lmp's surface energy; rod_friction: the push alone

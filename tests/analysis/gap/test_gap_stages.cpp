@@ -385,6 +385,57 @@ TEST(GapSims, ATransformEffectsRunsAreTheBaselinesFiltered)
   EXPECT_EQ(t.at(100)[0].F, r.F);
 }
 
+// force_scale: the baseline's traces times (1 + a), at any magnitude; every feature is
+// homogeneous of degree one in F, so its signature at a is a / knot times the knot's:
+// the interpolation the fit makes between 0 and a knot is exact
+TEST(GapSims, ForceScaleScalesTheTraceAndItsSignatureIsLinear)
+{
+  const Effect &e = *find_effect("force_scale");
+  ASSERT_NE(e.transform, nullptr);
+  EXPECT_FALSE(e.pour_level);
+  EXPECT_FALSE(e.one_sided);
+  EXPECT_TRUE(by_transform(e, -0.25) && by_transform(e, 0.25) && by_transform(e, 10.0));
+  EXPECT_EQ(reference_magnitude(e), 0.1);
+  EXPECT_EQ(confirm_sweep(e, -0.167, "confirm"), "confirm_baseline");
+  // nothing to simulate: no sweep of its own in the plan
+  for (const auto &r : signature_requests("tiny", {"100"}, {&e})) EXPECT_EQ(r.spec.name.find("force_scale"), std::string::npos);
+  // a force with grain-scale wiggles, so the fluctuation levels and bands are not zero
+  auto wiggly = [](const std::string &name, double z0, double phase) {
+    TraceRun r = ramp_run(name, 100, z0, 3.0);
+    for (std::size_t i = 0; i < r.F.size(); ++i)
+      if (r.F[i] > 0) r.F[i] += 80.0 * std::sin(0.9 * (double) i + phase) + 30.0 * std::sin(0.23 * (double) i);
+    r.onset = force_onset(r.z, r.F);
+    return r;
+  };
+  const TraceRun base = wiggly("baseline/traces/b1.csv", 0.2, 0.0);
+  // the known answer: F times 1 + a, sample by sample; t, z and the onset unchanged
+  const TraceRun r = transformed_run(e, -1.0 / 6.0, base);
+  ASSERT_EQ(r.F.size(), base.F.size());
+  for (std::size_t i = 0; i < r.F.size(); ++i) EXPECT_NEAR(r.F[i], base.F[i] * 5.0 / 6.0, 1e-12 * std::abs(base.F[i]));
+  EXPECT_EQ(r.z, base.z);
+  EXPECT_EQ(r.onset, base.onset);
+  // the signature two ways: the transform at a, and a / 0.25 times the knot's
+  std::vector<TraceRun> runs{base, wiggly("b2", 0.25, 1.0), wiggly("b3", 0.3, 2.0)};
+  GapGrid grid;
+  grid.zmax = 2.5;
+  auto ens = [&](double a) {
+    std::vector<TraceRun> t;
+    for (const auto &x : runs) t.push_back(transformed_run(e, a, x));
+    return ensemble_of(t, grid, 100);
+  };
+  const Ensemble e0 = ens(0.0), knot = ens(0.25);
+  ASSERT_EQ(e0.mean.size(), grid.nfeatures());
+  for (double a : {-0.3, -1.0 / 6.0, 0.05, 0.31}) {
+    const Ensemble ea = ens(a);
+    for (std::size_t k = 0; k < e0.mean.size(); ++k) {
+      const double direct = ea.mean[k] - e0.mean[k], by_knot = a / 0.25 * (knot.mean[k] - e0.mean[k]);
+      EXPECT_NEAR(direct, by_knot, 1e-9 * std::abs(e0.mean[k]) + 1e-12) << "a = " << a << ", feature " << k;
+    }
+  }
+  // the features are not all bin means: the fluctuation levels and bands scale too
+  EXPECT_GT(e0.mean[grid.nbins()], 1.0);
+}
+
 // ---- align and bin
 
 TEST(GapAlign, TwoMeasuredRunsWithAKnownOffset)
