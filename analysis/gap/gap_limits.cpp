@@ -186,8 +186,11 @@ std::vector<KnotBend> knot_bends(const EffectData &ed, const Target &t)
         const double wt = weight(ed, t, now, s, k);
         b.bend2 += (d * d - var) / wt;
         b.noise2 += var / wt;
+        b.bend2_sd += (2.0 * var * var + 4.0 * std::max(0.0, d * d - var) * var) / (wt * wt);
       }
+    b.bend2_sd = std::sqrt(b.bend2_sd);
     b.earns_cost = b.bend2 >= EVIDENCE_MARGIN;
+    b.resolved = b.bend2 + 2.0 * b.bend2_sd < EVIDENCE_MARGIN || b.bend2 - 2.0 * b.bend2_sd >= EVIDENCE_MARGIN;
     out.push_back(b);
   }
   return out;

@@ -81,7 +81,12 @@ struct KnotBend {
   double knot = 0, left = 0, right = 0;   // the knot and its neighbours (0: the baseline)
   double bend2 = 0;        // squared standard deviations off the line, knot noise subtracted (may be < 0)
   double noise2 = 0;       // the knot noise's part, subtracted: bend2's own expected size when flat
-  bool earns_cost = false; // bend2 >= EVIDENCE_MARGIN
+  // bend2's standard deviation from the knots' noise (each term's d^2 of a normal d: 2 v^2 +
+  // 4 mu^2 v, features taken as independent, so a lower bound): where it is as large as the
+  // margin, the knots' noise hides whether the knot is needed
+  double bend2_sd = 0;
+  bool earns_cost = false; // bend2 >= EVIDENCE_MARGIN: the knot is needed at this noise
+  bool resolved = false;   // bend2 + 2 sd < EVIDENCE_MARGIN or bend2 - 2 sd >= it: the answer is not the knots' noise
 };
 
 // Every interior knot of the effect (knots with a neighbour on both sides, the baseline of a

@@ -149,7 +149,8 @@ Json knot_bends_json(const Diagnosis &d)
   for (const auto &b : d.knot_bends)
     rows.push_back(Json{{"effect", b.effect}, {"knot", num(b.knot, "%.6g")}, {"left", num(b.left, "%.6g")},
                         {"right", num(b.right, "%.6g")}, {"bend2", num(b.bend2, "%.3g")},
-                        {"noise2", num(b.noise2, "%.3g")}, {"earns_cost", b.earns_cost}});
+                        {"noise2", num(b.noise2, "%.3g")}, {"bend2_sd", num(b.bend2_sd, "%.3g")},
+                        {"earns_cost", b.earns_cost}, {"resolved", b.resolved}});
   return rows;
 }
 

@@ -491,6 +491,10 @@ TEST(GapLimits, AKnotOnTheLineThroughItsNeighboursEarnsNothing)
   EXPECT_NEAR(b[0].noise2, noise, 1e-9);
   EXPECT_NEAR(b[0].bend2, -noise, 1e-9);
   EXPECT_FALSE(b[0].earns_cost);
+  // flat: sd = sqrt(sum 2 v^2 / w^2), v = 0.75 (the three knots' noise) and w = 0.75: sqrt(24)
+  EXPECT_NEAR(b[0].bend2_sd, std::sqrt(12 * 2.0), 1e-9);
+  EXPECT_TRUE(b[0].resolved);    // -12 + 2 sqrt(24) = -2.2 < 6: resolved as not needed
+
   // bend knot 1 by +3 on feature 0 at both speeds: bend2 gains 2 x 9 / 0.75 = 24 (>= 6)
   for (int s = 0; s < 2; ++s) A.mean[1][s][0] += 3.0;
   b = knot_bends(A, t);
