@@ -42,7 +42,10 @@ namespace {
 void list_effects()
 {
   for (const auto &e : granpen::effect_library()) {
-    std::printf("%-20s %s\n%-20s magnitude: %s; reference values:", e.name.c_str(), e.what.c_str(), "", e.unit.c_str());
+    // the reference value is what detection limits and look-alikes are stated at; the knots
+    // are where the signature is simulated (or transformed)
+    std::printf("%-20s %s\n%-20s magnitude: %s; reference value %s; knots:", e.name.c_str(), e.what.c_str(), "",
+                e.unit.c_str(), granpen::deck_number(granpen::reference_magnitude(e)).c_str());
     for (double k : e.knots) std::printf(" %s", granpen::deck_number(k).c_str());
     if (e.transform && std::isfinite(e.transform_max))
       std::printf(" (up to %s the baseline's traces transformed, nothing simulated; beyond, push only: the baseline's beds)\n",

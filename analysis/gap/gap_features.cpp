@@ -98,8 +98,12 @@ void speed_ensembles(Features &f, std::size_t s, const RunsBySpeed &real, const 
   f.spec_real[s] = spectrum_moments(real.at(v), grid);
   f.base[s] = ensemble_of(sims.base.at(v), grid, v);
   // the noise model pools ensembles on beds of their own: a push-only effect's runs
-  // repeat the baseline's beds, and would count the same bed-to-bed difference again
-  std::vector<const Ensemble *> pool{&f.base[s]};
+  // repeat the baseline's beds, and would count the same bed-to-bed difference again. The
+  // reference beds (seeds 11 to 14) are beds of their own too: with them a library of
+  // push-only effects alone (--effects measurement_chain) still has 4 degrees of freedom
+  // per speed, not the baseline's 1 (with 1, 3 of 6 null replicates came out unexplained)
+  f.fresh[s] = ensemble_of(sims.fresh.at(v), grid, v);
+  std::vector<const Ensemble *> pool{&f.base[s], &f.fresh[s]};
   for (auto &[name, by] : sims.knots) {
     f.knots[name].resize(f.nspeeds());
     f.knots[name][s] = ensemble_of(by.at(v), grid, v);
@@ -138,7 +142,6 @@ Features build_features(const RunsBySpeed &real, const SimulatedRuns &sims, cons
   // effect's model is referenced to them: M(a) = B_ref + (I(a) - B_sig) (EffectData::
   // ref_err); its residual at magnitude 0 is T - B_ref, independent of the signatures.
   for (std::size_t s = 0; s < ns; ++s) {
-    f.fresh[s] = ensemble_of(sims.fresh.at(f.speeds[s]), grid, f.speeds[s]);
     f.fresh_err[s] = model_err(f.fresh[s], f.cv2[s]);
     f.spec_fresh[s] = spectrum_moments(sims.fresh.at(f.speeds[s]), grid);
   }

@@ -70,6 +70,29 @@ double prediction_separation2(const EffectData &a, double ma, const EffectData &
 std::vector<LookAlike> look_alikes(const std::vector<EffectFit> &ranking, const std::map<std::string, EffectData> &data,
                                    const std::map<std::string, const Effect *> &effects, const Features &f);
 
+// Where a knot earns its cost: knot j's ensemble against the line through its two neighbours
+// (the model the fit would use were j not simulated), in the fit's weights at this data's
+// noise, the knots' own noise subtracted. At the baseline of a two-sided effect it tests
+// linear response through 0, i.e. whether one side could be the mirror of the other.
+// A knot whose bend^2 stays under the evidence margin changes no fit the data could tell
+// apart: at this noise its pours and pushes buy nothing (docs/gap.md, "Knots that earn their cost").
+struct KnotBend {
+  std::string effect;
+  double knot = 0, left = 0, right = 0;   // the knot and its neighbours (0: the baseline)
+  double bend2 = 0;        // squared standard deviations off the line, knot noise subtracted (may be < 0)
+  double noise2 = 0;       // the knot noise's part, subtracted: bend2's own expected size when flat
+  // bend2's standard deviation from the knots' noise (each term's d^2 of a normal d: 2 v^2 +
+  // 4 mu^2 v, features taken as independent, so a lower bound): where it is as large as the
+  // margin, the knots' noise hides whether the knot is needed
+  double bend2_sd = 0;
+  bool earns_cost = false; // bend2 >= EVIDENCE_MARGIN: the knot is needed at this noise
+  bool resolved = false;   // bend2 + 2 sd < EVIDENCE_MARGIN or bend2 - 2 sd >= it: the answer is not the knots' noise
+};
+
+// Every interior knot of the effect (knots with a neighbour on both sides, the baseline of a
+// two-sided effect included); none for an effect of fewer than two knots besides 0.
+std::vector<KnotBend> knot_bends(const EffectData &ed, const Target &t);
+
 struct NextMeasurement {
   std::string goal;                // "separate" (the top two) or "detect" (one undetected)
   std::vector<std::string> effects;

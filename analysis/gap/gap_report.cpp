@@ -143,6 +143,17 @@ Json look_alikes_json(const Diagnosis &d)
   return rows;
 }
 
+Json knot_bends_json(const Diagnosis &d)
+{
+  Json rows = Json::array();
+  for (const auto &b : d.knot_bends)
+    rows.push_back(Json{{"effect", b.effect}, {"knot", num(b.knot, "%.6g")}, {"left", num(b.left, "%.6g")},
+                        {"right", num(b.right, "%.6g")}, {"bend2", num(b.bend2, "%.3g")},
+                        {"noise2", num(b.noise2, "%.3g")}, {"bend2_sd", num(b.bend2_sd, "%.3g")},
+                        {"earns_cost", b.earns_cost}, {"resolved", b.resolved}});
+  return rows;
+}
+
 Json next_json(const std::optional<NextMeasurement> &m)
 {
   if (!m) return Json();
@@ -221,6 +232,7 @@ Json diagnosis_json(const Diagnosis &d)
   j["detection_limits"] = limits_json(d);
   j["false_alarms"] = false_alarms_json(d.false_alarms);
   j["look_alikes"] = look_alikes_json(d);
+  j["knot_bends"] = knot_bends_json(d);
   j["next_measurement"] = next_json(d.next);
   j["residual"] = residual_json(d.residual);
   j["notes"] = d.notes;

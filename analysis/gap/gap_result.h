@@ -87,6 +87,7 @@ struct Diagnosis {
   // and the verdicts of the null replicates
   std::vector<DetectionLimit> limits;
   std::vector<LookAlike> look_alikes;
+  std::vector<KnotBend> knot_bends;         // per interior knot: what it adds at this noise (cost design)
   std::optional<NextMeasurement> next;
   FalseAlarms false_alarms;
   std::optional<Residual> residual;          // what the gap left over (none for a `none`)

@@ -133,6 +133,8 @@ void how_blind(const std::vector<const Effect *> &effects, const std::map<std::s
     by_name[e->name] = e;
     const auto it = std::find_if(d.ranking.begin(), d.ranking.end(), [&](const EffectFit &x) { return x.name == e->name; });
     if (it != d.ranking.end()) d.limits.push_back(detection_limit(*e, data.at(e->name), *it, f));
+    if (data.count(e->name))
+      for (const KnotBend &b : knot_bends(data.at(e->name), f.target)) d.knot_bends.push_back(b);
   }
   d.look_alikes = look_alikes(d.ranking, data, by_name, f);
   d.next = next_measurement(d.ranking, data, f, d.verdict);

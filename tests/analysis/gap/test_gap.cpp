@@ -470,6 +470,65 @@ TEST(GapLimits, TwoPourLevelFitsShareTheSignatureBaselinesNoise)
   EXPECT_NEAR(signature_baseline_share(A, 0.5), 0.5, 1e-12);
 }
 
+TEST(GapLimits, AKnotOnTheLineThroughItsNeighboursEarnsNothing)
+{
+  // synthetic_effect's knots 0, 1, 2 lie on a line: the interior knot 1 departs by 0, so
+  // bend2 is minus the knot noise it would carry: err 0.5 on knot 1, (1/2)^2 0.5 on knot 2
+  // and (1/2)^2 0.5 on knot 0 (unpaired, no other reference: the baseline knot is B_sig)
+  // over 12 features with weights 0.25 + 0.5
+  EffectData A = synthetic_effect("A", {1, 1, 1, 0, 0, 0}, 0.5);
+  Target t;
+  for (int s = 0; s < 2; ++s) {
+    t.mean.push_back(std::vector<double>(6, 100.0));
+    t.err.push_back(std::vector<double>(6, 0.25));
+  }
+  auto b = knot_bends(A, t);
+  ASSERT_EQ(b.size(), 1u);
+  EXPECT_EQ(b[0].knot, 1.0);
+  EXPECT_EQ(b[0].left, 0.0);
+  EXPECT_EQ(b[0].right, 2.0);
+  const double noise = 12 * (0.5 + 0.25 * 0.5 + 0.25 * 0.5) / 0.75;
+  EXPECT_NEAR(b[0].noise2, noise, 1e-9);
+  EXPECT_NEAR(b[0].bend2, -noise, 1e-9);
+  EXPECT_FALSE(b[0].earns_cost);
+  // flat: sd = sqrt(sum 2 v^2 / w^2), v = 0.75 (the three knots' noise) and w = 0.75: sqrt(24)
+  EXPECT_NEAR(b[0].bend2_sd, std::sqrt(12 * 2.0), 1e-9);
+  EXPECT_TRUE(b[0].resolved);    // -12 + 2 sqrt(24) = -2.2 < 6: resolved as not needed
+
+  // bend knot 1 by +3 on feature 0 at both speeds: bend2 gains 2 x 9 / 0.75 = 24 (>= 6)
+  for (int s = 0; s < 2; ++s) A.mean[1][s][0] += 3.0;
+  b = knot_bends(A, t);
+  EXPECT_NEAR(b[0].bend2, 24.0 - noise, 1e-9);
+  EXPECT_TRUE(b[0].earns_cost);
+  // paired: the paired differences' noise of knots 1 and 2, none for the baseline's
+  A.paired = true;
+  b = knot_bends(A, t);
+  EXPECT_NEAR(b[0].noise2, 12 * (0.5 + 0.25 * 0.5) / 0.75, 1e-9);
+  // a two-sided effect (knots -1, 0, 1), no knot noise: the baseline is the interior knot,
+  // the test of linear response through 0. Knot 1 is 100 + (s + 1) on features 0-2; knot -1
+  // its mirror 100 - (s + 1): no departure
+  EffectData T = synthetic_effect("T", {1, 1, 1, 0, 0, 0}, 0.0);
+  T.knots = {-1.0, 0.0, 1.0};
+  for (int s = 0; s < 2; ++s)
+    for (int k = 0; k < 6; ++k) {
+      const double u = k < 3 ? (s + 1.0) : 0.0;
+      T.mean[0][s][k] = 100.0 - u;
+      T.mean[1][s][k] = 100.0;
+      T.mean[2][s][k] = 100.0 + u;
+    }
+  b = knot_bends(T, t);
+  ASSERT_EQ(b.size(), 1u);
+  EXPECT_EQ(b[0].knot, 0.0);
+  EXPECT_NEAR(b[0].bend2, 0.0, 1e-9);
+  // knot -1 flat at 100 instead (a response on one side only): the line from -1 to 1 passes 0
+  // at 100 + (s + 1) / 2, the baseline departs by (s + 1) / 2 on 3 features; weights 0.25:
+  // 3 (1/4 + 1) / 0.25 = 15
+  for (int s = 0; s < 2; ++s) T.mean[0][s] = std::vector<double>(6, 100.0);
+  b = knot_bends(T, t);
+  EXPECT_NEAR(b[0].bend2, 15.0, 1e-9);
+  EXPECT_TRUE(b[0].earns_cost);
+}
+
 TEST(GapFit, ChiSquareTail)
 {
   EXPECT_NEAR(chi2_sf(3.841459, 1), 0.05, 1e-5);

@@ -1208,7 +1208,7 @@ TEST(GapReport, DiagnosisJsonKeysAndValuesAsTheHandBuiltWriterWroteThem)
   std::vector<std::string> added;
   for (auto it = now.begin(); it != now.end(); ++it)
     if (!before.contains(it.key())) added.push_back(it.key());
-  EXPECT_EQ(added, (std::vector<std::string>{"detection_limits", "false_alarms", "gap_parts", "look_alikes",
+  EXPECT_EQ(added, (std::vector<std::string>{"detection_limits", "false_alarms", "gap_parts", "knot_bends", "look_alikes",
                                              "next_measurement", "residual", "tie"}));
   // written through the atomic writer: no temporary left beside it
   for (const auto &e : fs::directory_iterator(dir.path))
