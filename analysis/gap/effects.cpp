@@ -120,11 +120,14 @@ const std::vector<Effect> &effect_library()
        "friction coefficient minus 0.3", true, {0.15}, false, none, none, "", friction_mu, true},
       {"contact_stiffness", "contact stiffness kn = kt scaled (timestep scaled with the contact time)",
        "log10(k / 1e9 dyne/cm^2)", true, {-0.6, 0.6}, false, stiffness, none, "", nullptr},
-      // damp or fine grains: JKR pull-off 3 pi gamma R_eff; in bench a grain's weight is
-      // 98.6 dyne and R_eff 0.1 cm, so gamma = 10 and 50 are Bond numbers 0.1 and 0.5
-      // (a capillary bridge of water between two 4 mm beads: about 0.45)
-      {"cohesion", "damp or fine grains stick: pair granular's JKR cohesive normal law in the pour and the push",
-       "surface energy gamma, erg/cm^2 (pull-off 3 pi gamma R_eff)", true, {10, 50}, true, cohesion, none, "", nullptr},
+      // strongly cohesive grains: JKR pull-off 3 pi gamma R_eff. What the rod feels is
+      // pull-off against the contact forces it works against (a bench grain at 2-4 cm carries
+      // about rho_g g z d_g^2 = 1000-1900 dyne), not against a grain's weight (98.6 dyne): up to
+      // gamma = 300 (pull-off 280 dyne, Bond number 3) the bench force moves within two beds'
+      // noise; 1000 and 3000 (pull-off 940 and 2800 dyne) move it by up to 26% and 68% at
+      // 50 cm/s, and the beds still settle (docs/gap.md, "Cohesion at bench")
+      {"cohesion", "strongly cohesive grains stick (pull-off near the contact forces): pair granular's JKR cohesive normal law in the pour and the push",
+       "surface energy gamma, erg/cm^2 (pull-off 3 pi gamma R_eff)", true, {1000, 3000}, true, cohesion, none, "", nullptr},
       // the rod's surface is not the grains' material: steel on glass about 0.1-0.2, a rough
       // or coated rod up to 0.6; in the push only, so paired on the baseline's beds
       {"rod_friction", "rod-grain sliding friction other than the grain-grain one (its own pair coefficients)",

@@ -15,8 +15,10 @@
 //   kn s*1e9: grain noise *= s^0.5, and it decorrelates faster: corr = 0.6^(s^0.5) (see rho_g)
 //   ramp L: the peak moves deeper by (L - 0.5) / 2 once L > 0.5 (the rod is still slow)
 //   mount_k, mount_c, mount_m: the signal goes through the mount's spring-damper: the reading is k x + c x' (fix rod/drive mount)
-//   cohesion c: + 5e3 c exp(-z / 0.6) (a cohesive crust, at any speed); phi_0 -= 0.002 c
-//       (in the .info only: the crust stands for the cohesive bed's whole force)
+//   cohesion gamma, c = gamma / 60: + 5e3 c exp(-z / 0.6) (a cohesive crust, at any speed);
+//       phi_0 -= 1.2e-5 gamma (as bench's beds: -0.035 at gamma 3000; in the .info only: the
+//       crust stands for the cohesive bed's whole force). The scale 60 keeps the synthetic
+//       signature of the library's top knot (3000 now, 50 before) what it was
 //   dmu_rod m: P *= 1 + 1.5 m, k *= 1 + 0.5 m (the rod's own friction: the tip and the side)
 //   rho_g r (an effect outside the library; the headers say 3): k, P and the walls *= r / 3,
 //       and the grain noise as for kn s * 3 / r (see below)
@@ -77,7 +79,7 @@ int main(int argc, char **argv)
       if (k != "seed" && k != "out" && k != "inputs" && k != "checkpoint")
         for (char c : k + "=" + v + ";") key = (key ^ (unsigned char) c) * 1099511628211ul;
     std::ofstream(out + ".info") << "seed = " << var["seed"] << "\nfield = " << key % 1000003 << "\nmu = " << num("mu", 0.3)
-                                 << "\nz_s = 5.7\nphi_0 = " << phi_pour(num("mu", 0.3)) - 0.002 * num("cohesion", 0)
+                                 << "\nz_s = 5.7\nphi_0 = " << phi_pour(num("mu", 0.3)) - 1.2e-5 * num("cohesion", 0)
                                  << "\ngrains = 6300\nwall_seconds = 0\n";
     L << "granpen pour: bed " << out << ".restart\n";
     return 0;
@@ -96,7 +98,7 @@ int main(int argc, char **argv)
       else if (line.rfind("field = ", 0) == 0) field = std::atol(line.c_str() + 8);
   }
   const double v0 = num("v0", 100), depth = num("depth", 4.0), dt = 1e-4;
-  const double dmu_rod = num("dmu_rod", 0), coh = num("cohesion", 0);
+  const double dmu_rod = num("dmu_rod", 0), coh = num("cohesion", 0) / 60.0;
   // packing (the pour's phi_0): the quasi-static terms strongly, the inertial peak linearly;
   // grain density (rho_g against the headers' 3): both terms alike
   const double phi = phi_pour(mu_pour), quasi = 1 + 30 * (phi - 0.58), inertial = phi / 0.58;
