@@ -69,6 +69,10 @@ bool gap_shrinks(double before, double after);
 // The stage: for an explained verdict, simulates (through the sweep layer) and judges the
 // top effect, refines its magnitude when the runs call for it, and turns the verdict into
 // unexplained when they do not confirm it; with fit_only, marks the verdict provisional.
+// For an unexplained verdict with d.between_knots (gap_verdict.h) and a fitted magnitude
+// away from every knot, it simulates the top candidate there the same way: explained when
+// the runs confirm it and halve G_all both over all speeds and at the held-out speed (the
+// fits' own test of that speed failed or fell short), else unexplained, as before.
 // Returns the runs that are the "after" (aligned; empty when nothing was simulated).
 RunsBySpeed confirm_top_effect(const std::map<std::string, const Effect *> &by_name,
                         const std::map<std::string, EffectData> &data, const Features &f, const Alignment &al,

@@ -239,9 +239,10 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
 
   // confirm: the top effect on fresh seeds
   progress.say(GapProgress::STEP, "confirm",
-               d.verdict != "explained" ? "no effect to confirm"
-               : opt.fit_only           ? "not confirming (--fit-only)"
-                                        : "confirming " + d.top_effect + " on fresh seeds",
+               d.between_knots && !d.ranking.empty() ? "simulating " + d.ranking[0].name + " between its knots on fresh seeds"
+               : d.verdict != "explained"            ? "no effect to confirm"
+               : opt.fit_only                        ? "not confirming (--fit-only)"
+                                                     : "confirming " + d.top_effect + " on fresh seeds",
                4, 4);
   after_is_before(sims.fresh, d);
   const RunsBySpeed after = confirm_top_effect(by_name, data, f, al, SimContext{sc.name, measured.v0s, runner}, opt.fit_only, d);

@@ -34,26 +34,36 @@ std::size_t zero_knot(const EffectData &e)
 
 }    // namespace
 
+void knot_combination_var(const EffectData &e, const std::vector<double> &c, std::size_t s, bool with_reference,
+                          std::vector<double> &var)
+{
+  const std::size_t p = e.mean[0][s].size(), j0 = zero_knot(e);
+  const double sum = std::accumulate(c.begin(), c.end(), 0.0);
+  var.assign(p, 0.0);
+  for (std::size_t j = 0; j < c.size(); ++j) {
+    if (c[j] == 0.0 || j == j0) continue;
+    const Table &own = e.paired ? e.diff_err[j] : e.err[j];
+    for (std::size_t k = 0; k < p; ++k) var[k] += c[j] * c[j] * own[s][k];
+  }
+  const bool referenced = !e.paired && !e.ref_err.empty();
+  // the signature baseline B: mean[j] = R + K_j - B carries -B for every j != j0
+  if (referenced)
+    for (std::size_t k = 0; k < p; ++k) var[k] += (sum - c[j0]) * (sum - c[j0]) * e.ref_err[0][s][k];
+  if (!with_reference) return;
+  // the reference R: in every knot's mean (paired, or referenced) or in knot j0's alone
+  const double cr = e.paired || referenced ? sum : c[j0];
+  for (std::size_t k = 0; k < p; ++k) var[k] += cr * cr * e.err[j0][s][k];
+}
+
 void effect_predict(const EffectData &e, double a, std::size_t s, std::vector<double> &mean, std::vector<double> &var)
 {
   const auto w = weights(e.knots, a);
-  const std::size_t p = e.mean[0][s].size(), j0 = zero_knot(e);
+  const std::size_t p = e.mean[0][s].size();
   mean.assign(p, 0.0);
-  var.assign(p, 0.0);
-  for (std::size_t j = 0; j < w.size(); ++j) {
-    if (w[j] == 0.0) continue;
-    for (std::size_t k = 0; k < p; ++k) {
-      mean[k] += w[j] * e.mean[j][s][k];
-      if (!e.paired) var[k] += w[j] * w[j] * e.err[j][s][k];
-      else if (j != j0) var[k] += w[j] * w[j] * e.diff_err[j][s][k];
-    }
-  }
-  // paired: the baseline's own variance enters once (the weights sum to 1)
-  if (e.paired)
-    for (std::size_t k = 0; k < p; ++k) var[k] += e.err[j0][s][k];
-  // unpaired with another reference: the signature baseline subtracted with weight 1 - w0
-  else if (!e.ref_err.empty())
-    for (std::size_t k = 0; k < p; ++k) var[k] += (1.0 - w[j0]) * (1.0 - w[j0]) * e.ref_err[0][s][k];
+  for (std::size_t j = 0; j < w.size(); ++j)
+    if (w[j] != 0.0)
+      for (std::size_t k = 0; k < p; ++k) mean[k] += w[j] * e.mean[j][s][k];
+  knot_combination_var(e, w, s, true, var);
 }
 
 void effect_signature(const EffectData &e, double a, std::size_t s, std::vector<double> &u, std::vector<double> &var)
@@ -61,14 +71,12 @@ void effect_signature(const EffectData &e, double a, std::size_t s, std::vector<
   std::vector<double> m0, v0;
   effect_predict(e, a, s, u, var);
   effect_predict(e, 0.0, s, m0, v0);
-  const std::size_t j0 = zero_knot(e);
-  const double w0 = weights(e.knots, a)[j0];
-  for (std::size_t k = 0; k < u.size(); ++k) {
-    u[k] -= m0[k];
-    // effect_predict's variance less the reference's part: once for a paired effect, with
-    // weight w0^2 for an unpaired one
-    var[k] = std::max(0.0, var[k] - (e.paired ? 1.0 : w0 * w0) * e.err[j0][s][k]);
-  }
+  for (std::size_t k = 0; k < u.size(); ++k) u[k] -= m0[k];
+  // u = M(a) - M(0): the knots' weights less the reference at a = 0; the reference's own noise
+  // is in the fit's weights (the target is compared with it), not in the signature's
+  auto c = weights(e.knots, a);
+  c[zero_knot(e)] -= 1.0;
+  knot_combination_var(e, c, s, false, var);
 }
 
 double signature_baseline_share(const EffectData &e, double a)

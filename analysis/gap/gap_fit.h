@@ -46,6 +46,14 @@ struct Target {
 
 // chi^2 of the target against the model at magnitude a over the given speeds.
 double effect_chi2(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds);
+// Variance, per feature at speed s, of sum_j c[j] mean[j] over the effect's knots: each
+// knot's own noise (a paired knot's paired difference's), the signature baseline's that
+// every referenced knot carries, and with_reference the reference's (knot 0's ensemble), which
+// enters every paired or referenced knot's mean and only knot 0's otherwise. One bookkeeping
+// for a prediction (c: the interpolation weights), a signature (the weights less knot 0)
+// and a knot's bend (knot_bends: a three-point stencil).
+void knot_combination_var(const EffectData &e, const std::vector<double> &c, std::size_t s, bool with_reference,
+                          std::vector<double> &var);
 // Model prediction and its variance at magnitude a, speed s.
 void effect_predict(const EffectData &e, double a, std::size_t s, std::vector<double> &mean, std::vector<double> &var);
 

@@ -154,7 +154,7 @@ std::vector<LookAlike> look_alikes(const std::vector<EffectFit> &ranking, const 
 std::vector<KnotBend> knot_bends(const EffectData &ed, const Target &t)
 {
   std::vector<KnotBend> out;
-  const std::size_t j0 = zero_knot(ed), nk = ed.knots.size();
+  const std::size_t nk = ed.knots.size();
   const NoiseFactors now = ones(t);
   for (std::size_t j = 1; j + 1 < nk; ++j) {
     KnotBend b;
@@ -163,31 +163,21 @@ std::vector<KnotBend> knot_bends(const EffectData &ed, const Target &t)
     b.left = ed.knots[j - 1];
     b.right = ed.knots[j + 1];
     const double w = (b.knot - b.left) / (b.right - b.left);
-    // d = mean[j] - (1 - w) mean[j-1] - w mean[j+1]; the reference common to every knot's
-    // mean cancels (the coefficients sum to 0)
-    const std::size_t idx[3] = {j, j - 1, j + 1};
-    const double c[3] = {1.0, -(1.0 - w), -w};
-    double c0 = 0.0;    // the baseline knot's coefficient (the signature baseline enters with it)
-    for (int i = 0; i < 3; ++i)
-      if (idx[i] == j0) c0 = c[i];
-    for (std::size_t s = 0; s < t.mean.size(); ++s)
+    // d = mean[j] - (1 - w) mean[j-1] - w mean[j+1]; the coefficients sum to 0, so the
+    // reference common to a paired or referenced knot's mean cancels
+    std::vector<double> c(nk, 0.0), var;
+    c[j] = 1.0, c[j - 1] = -(1.0 - w), c[j + 1] = -w;
+    for (std::size_t s = 0; s < t.mean.size(); ++s) {
+      knot_combination_var(ed, c, s, true, var);
       for (std::size_t k = 0; k < t.mean[s].size(); ++k) {
-        double d = 0.0, var = 0.0;
-        for (int i = 0; i < 3; ++i) {
-          d += c[i] * ed.mean[idx[i]][s][k];
-          if (idx[i] == j0) continue;
-          // a paired knot's noise is its paired difference's; an unpaired one's its ensemble's
-          var += c[i] * c[i] * (ed.paired ? ed.diff_err[idx[i]][s][k] : ed.err[idx[i]][s][k]);
-        }
-        // unpaired: every knot is the reference plus (knot - signature baseline), so the
-        // signature baseline enters d with the baseline knot's coefficient (0 when it is not
-        // one of the three); without another reference, the baseline knot is it
-        if (!ed.paired) var += c0 * c0 * (ed.ref_err.empty() ? ed.err[j0][s][k] : ed.ref_err[0][s][k]);
+        double d = 0.0;
+        for (std::size_t i = j - 1; i <= j + 1; ++i) d += c[i] * ed.mean[i][s][k];
         const double wt = weight(ed, t, now, s, k);
-        b.bend2 += (d * d - var) / wt;
-        b.noise2 += var / wt;
-        b.bend2_sd += (2.0 * var * var + 4.0 * std::max(0.0, d * d - var) * var) / (wt * wt);
+        b.bend2 += (d * d - var[k]) / wt;
+        b.noise2 += var[k] / wt;
+        b.bend2_sd += (2.0 * var[k] * var[k] + 4.0 * std::max(0.0, d * d - var[k]) * var[k]) / (wt * wt);
       }
+    }
     b.bend2_sd = std::sqrt(b.bend2_sd);
     b.earns_cost = b.bend2 >= EVIDENCE_MARGIN;
     b.resolved = b.bend2 + 2.0 * b.bend2_sd < EVIDENCE_MARGIN || b.bend2 - 2.0 * b.bend2_sd >= EVIDENCE_MARGIN;

@@ -68,6 +68,13 @@ struct Diagnosis {
   // refinement: the confirming runs left >= 3 sigma along the signature, so the magnitude was
   // corrected from them (refined_from -> magnitude) and simulated on further fresh beds
   bool refined = false;
+  // an "unexplained" from the fits whose top candidate would be the answer but for its
+  // interpolated signature (detected, inside its range, alone by the evidence margin, no
+  // look-alike, explaining at least a quarter of the gap): the signature between two knots
+  // is a blend of theirs, and a response that bends between them (a ramp moving the peak, a
+  // cohesion that sets in) is not one. The confirmation then simulates the candidate at its
+  // fitted magnitude on fresh beds, and the verdict is what those runs say (gap_confirm.h).
+  bool between_knots = false;
   double refined_from = 0, gap_after_first = 0, proj_refined = 0;    // gap_after_first: G_all
   std::vector<Finding> where;
   std::vector<EffectFit> ranking;           // best first

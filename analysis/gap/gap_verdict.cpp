@@ -155,6 +155,14 @@ void decide_verdict(Diagnosis &d, const Separation2 &separation2)
                fmt(top->chi2, "%.1f") + " and " + fmt(second->chi2, "%.1f") + ")";
   }
   if (d.verdict == "tie") widen_tie(d, separation2);
+  // the fits' unexplained, where the top candidate falls short only in what its interpolated
+  // signature explains: its own runs at the fitted magnitude decide (confirm_top_effect)
+  d.between_knots = d.verdict == "unexplained" && top && top->detected && !top->at_edge && !look_alike &&
+                    top->explained >= BETWEEN_KNOTS_MIN_EXPLAINED && (top->explained < 0.5 || top->heldout_explained < 0.3) &&
+                    (!second || lr_evidence(*top) - lr_evidence(*second) >= margin);
+  if (d.between_knots)
+    why += " (its signature at that magnitude is interpolated between knots: it is simulated there on fresh beds "
+           "before the verdict stands)";
   if (!why.empty()) d.notes.push_back("verdict: " + why);
 
 }

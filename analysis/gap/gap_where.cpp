@@ -1,6 +1,8 @@
 // granpen gap, stage 6 (where): see gap_where.h.
 #include "gap_where.h"
 
+#include "text_util.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -109,6 +111,12 @@ void observable_findings(const Features &f, const RunsBySpeed &real, const Simul
       if (!oR.count(name) || !oB.count(name) || !pooled.count(name)) continue;
       if (name == "excess" && zt <= 0.35 * sc.D + grid.w) continue;    // no transient regime in range
       const double var1 = pooled[name].first / pooled[name].second;    // one run's variance
+      if (!(var1 > 0.0)) {
+        // every run gave the same value (t_star lands on the grid's bins): a z-score would divide by 0
+        d.notes.push_back("where: " + name + " at v0 = " + printf_number("%g", v) +
+                          " has no scatter over the simulated runs (all equal): no z-score");
+        continue;
+      }
       const std::vector<double> &xr = oR.at(name), &xb = oB.at(name);
       Finding w;
       w.regime = reg;

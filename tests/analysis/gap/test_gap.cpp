@@ -336,6 +336,44 @@ TEST(GapVerdict, TheTwoRoutesAndTheirConditions)
   EXPECT_EQ(d.top_effect, "b");
 }
 
+TEST(GapVerdict, ACandidateShortOnlyByItsInterpolationIsSimulatedBetweenItsKnots)
+{
+  // the selftest's ramp (explained 0.32, held out -0.25) and cohesion (0.54, held out 0.29):
+  // detected, alone by far more than the margin, inside their range: unexplained by the fits,
+  // and marked for runs at the fitted magnitude
+  Diagnosis d = significance(true, {candidate("ramp", 0.32, -0.25, 302, 320, 22.3), candidate("friction", 0.04, 0.02, 366, 239, 15.1)});
+  decide_verdict(d);
+  EXPECT_EQ(d.verdict, "unexplained");
+  EXPECT_TRUE(d.top_effect.empty());
+  EXPECT_TRUE(d.between_knots);
+  d = significance(true, {candidate("cohesion", 0.54, 0.29, 40, 136, 15.1), candidate("friction", 0.31, 0.28, 37, 119, 15.1)});
+  decide_verdict(d);
+  EXPECT_EQ(d.verdict, "unexplained");
+  EXPECT_TRUE(d.between_knots);
+  // not when the candidate explains less than a quarter, is not detected, sits at the edge of
+  // its range, or has a second within the margin
+  d = significance(true, {candidate("a", 0.2, 0.2, 302, 320, 22.3), candidate("b", 0.04, 0.02, 366, 239, 15.1)});
+  decide_verdict(d);
+  EXPECT_FALSE(d.between_knots);
+  d = significance(true, {candidate("a", 0.4, 0.4, 100, 14, 15.1), candidate("b", 0.04, 0.02, 366, 2, 15.1)});
+  decide_verdict(d);
+  EXPECT_EQ(d.verdict, "unexplained");
+  EXPECT_FALSE(d.between_knots);
+  auto edge = candidate("a", 0.4, 0.4, 100, 320, 15.1);
+  edge.at_edge = true;
+  d = significance(true, {edge, candidate("b", 0.04, 0.02, 366, 239, 15.1)});
+  decide_verdict(d);
+  EXPECT_FALSE(d.between_knots);
+  d = significance(true, {candidate("a", 0.4, 0.4, 100, 320, 15.1), candidate("b", 0.04, 0.02, 366, 317, 15.1)});
+  decide_verdict(d);
+  EXPECT_FALSE(d.between_knots);
+  // an explained verdict needs no such runs
+  d = significance(true, {candidate("a", 0.7, 0.6, 80, 320, 15.1), candidate("b", 0.04, 0.02, 366, 239, 15.1)});
+  decide_verdict(d);
+  EXPECT_EQ(d.verdict, "explained");
+  EXPECT_FALSE(d.between_knots);
+}
+
 TEST(GapVerdict, FitsWithinTheKnotsNoiseOfEachOtherAreATieWhateverTheirEvidence)
 {
   // b leads a by 10 in evidence (beyond the margin of 6), both explain the gap; the evidence
@@ -527,6 +565,59 @@ TEST(GapLimits, AKnotOnTheLineThroughItsNeighboursEarnsNothing)
   b = knot_bends(T, t);
   EXPECT_NEAR(b[0].bend2, 15.0, 1e-9);
   EXPECT_TRUE(b[0].earns_cost);
+}
+
+TEST(GapFit, KnotCombinationVarianceAgreesWithDrawnEnsembles)
+{
+  // The independent route: draw the ensembles a knot mean is built from (the reference R,
+  // the signature baseline B, each knot's own K_j or paired difference D_j, Gaussian with
+  // the variances the EffectData states), build mean[j] as gap_which does, and take the
+  // sample variance of sum_j c_j mean[j] over many draws. Three representations: unpaired
+  // referenced (mean[j] = R + K_j - B), unpaired with knot 0 its own signature baseline
+  // (mean[j] = K_j) and paired (mean[j] = R + D_j); three coefficient sets: a prediction
+  // (weights summing to 1), a signature (weights less knot 0) and a knot's bend (sum 0).
+  const std::vector<double> knots = {-1.0, 0.0, 1.0, 2.0};
+  const std::size_t j0 = 1, nk = knots.size();
+  const std::vector<double> own = {0.7, 0.3, 1.3, 0.9}, vR = {0.3}, vB = {0.5};
+  const std::vector<std::vector<double>> coefs = {
+      {0.0, 0.0, 0.6, 0.4}, {0.0, -1.0, 0.6, 0.4}, {0.0, -0.5, 1.0, -0.5}, {0.25, 0.75, 0.0, 0.0}};
+  std::mt19937 rng(7);
+  std::normal_distribution<double> g(0.0, 1.0);
+  for (int rep = 0; rep < 3; ++rep) {
+    EffectData e;
+    e.knots = knots;
+    e.paired = rep == 2;
+    for (std::size_t j = 0; j < nk; ++j) {
+      e.mean.push_back(Table(1, std::vector<double>(1, 0.0)));
+      e.err.push_back(Table(1, std::vector<double>(1, j == j0 ? vR[0] : own[j])));
+      e.diff_err.push_back(Table(1, std::vector<double>(1, j == j0 ? 0.0 : own[j])));
+    }
+    if (rep == 0) e.ref_err.assign(1, Table(1, vB));
+    for (const auto &c : coefs)
+      for (bool with_reference : {true, false}) {
+        std::vector<double> var;
+        knot_combination_var(e, c, 0, with_reference, var);
+        // 200000 draws: the sample variance's relative sd is sqrt(2 / 2e5) = 0.3%; 2% is
+        // about seven of them
+        const int n = 200000;
+        double s1 = 0.0, s2 = 0.0;
+        for (int i = 0; i < n; ++i) {
+          // without the reference, R is held fixed (its noise is counted elsewhere)
+          const double R = with_reference ? std::sqrt(vR[0]) * g(rng) : 0.0, B = std::sqrt(vB[0]) * g(rng);
+          double x = 0.0;
+          for (std::size_t j = 0; j < nk; ++j) {
+            const double mine = std::sqrt(own[j]) * g(rng);
+            const double m = j == j0 ? R : rep == 0 ? R + mine - B : rep == 1 ? mine : R + mine;
+            x += c[j] * m;
+          }
+          s1 += x, s2 += x * x;
+        }
+        const double sample = s2 / n - (s1 / n) * (s1 / n);
+        EXPECT_NEAR(var[0], sample, 0.02 * sample + 1e-12)
+            << "representation " << rep << ", coefficients " << c[0] << " " << c[1] << " " << c[2] << " " << c[3]
+            << (with_reference ? ", with" : ", without") << " the reference";
+      }
+  }
 }
 
 TEST(GapFit, ChiSquareTail)
