@@ -352,21 +352,20 @@ TEST(GapVerdict, ACandidateShortOnlyByItsInterpolationIsSimulatedBetweenItsKnots
   EXPECT_TRUE(d.between_knots);
   // not when the candidate explains less than a quarter, is not detected, sits at the edge of
   // its range, or has a second within the margin
-  d = significance(true, {candidate("a", 0.2, 0.2, 302, 320, 22.3), candidate("b", 0.04, 0.02, 366, 239, 15.1)});
-  decide_verdict(d);
-  EXPECT_FALSE(d.between_knots);
-  d = significance(true, {candidate("a", 0.4, 0.4, 100, 14, 15.1), candidate("b", 0.04, 0.02, 366, 2, 15.1)});
-  decide_verdict(d);
-  EXPECT_EQ(d.verdict, "unexplained");
-  EXPECT_FALSE(d.between_knots);
+  auto marked = [](EffectFit top, const EffectFit &second) {
+    Diagnosis d = significance(true, {std::move(top), second});
+    decide_verdict(d);
+    EXPECT_EQ(d.verdict, "unexplained");
+    return d.between_knots;
+  };
+  const EffectFit far = candidate("b", 0.04, 0.02, 366, 239, 15.1);
+  EXPECT_FALSE(marked(candidate("a", 0.2, 0.2, 302, 320, 22.3), far));
+  EXPECT_FALSE(marked(candidate("a", 0.4, 0.4, 100, 14, 15.1), candidate("b", 0.04, 0.02, 366, 2, 15.1)));
   auto edge = candidate("a", 0.4, 0.4, 100, 320, 15.1);
   edge.at_edge = true;
-  d = significance(true, {edge, candidate("b", 0.04, 0.02, 366, 239, 15.1)});
-  decide_verdict(d);
-  EXPECT_FALSE(d.between_knots);
-  d = significance(true, {candidate("a", 0.4, 0.4, 100, 320, 15.1), candidate("b", 0.04, 0.02, 366, 317, 15.1)});
-  decide_verdict(d);
-  EXPECT_FALSE(d.between_knots);
+  EXPECT_FALSE(marked(edge, far));
+  EXPECT_FALSE(marked(candidate("a", 0.4, 0.4, 100, 320, 15.1), candidate("b", 0.04, 0.02, 366, 317, 15.1)));
+  EXPECT_TRUE(marked(candidate("a", 0.4, 0.4, 100, 320, 15.1), far));    // the same, alone: marked
   // an explained verdict needs no such runs
   d = significance(true, {candidate("a", 0.7, 0.6, 80, 320, 15.1), candidate("b", 0.04, 0.02, 366, 239, 15.1)});
   decide_verdict(d);
