@@ -72,7 +72,9 @@ bool gap_shrinks(double before, double after);
 // For an unexplained verdict with d.between_knots (gap_verdict.h) and a fitted magnitude
 // away from every knot, it simulates the top candidate there the same way: explained when
 // the runs confirm it and halve G_all both over all speeds and at the held-out speed (the
-// fits' own test of that speed failed or fell short), else unexplained, as before.
+// fits' own test of that speed failed or fell short), else unexplained, as before. When
+// those first runs fall short, they become a knot, every speed is fitted again with it, and
+// the new magnitude is simulated once more on REFINE_SEEDS; those runs decide.
 // Returns the runs that are the "after" (aligned; empty when nothing was simulated).
 RunsBySpeed confirm_top_effect(const std::map<std::string, const Effect *> &by_name,
                         const std::map<std::string, EffectData> &data, const Features &f, const Alignment &al,
