@@ -4,8 +4,8 @@
 # own beds, plus its preparation part, the packing effect's signature at the matching pour
 # friction? Runs (granpen sweep, resumable) into OUT:
 #   baseline       bench, mu 0.3, seeds 1 2, v0 50 100 200 (the gap's signature beds)
-#   friction_0.15  poured and pushed with mu 0.45 (the direct knot)
-#   packing_0.3    poured with mu 0.6, pushed with 0.3 (the packing knot)
+#   friction_015  poured and pushed with mu 0.45 (the direct knot)
+#   packing_03    poured with mu 0.6, pushed with 0.3 (the packing knot)
 #   friction_push  the baseline's own beds pushed with mu 0.45 (friction_push.sweep)
 # then tests/support/superpose_agree per speed, with the diagnosis's kernels (onset
 # alignment, G of ../shared/formats/gap-metric.md): once with packing's weight linear in the
@@ -49,8 +49,8 @@ traces() { ls "$OUT/$1/traces/"*"_v$2_"*.csv | sort | paste -sd, -; }
 phi() { awk -F' = ' '$1 == "phi_0" { s += $2; n++ } END { printf "%.6f", s / n }' "$OUT/$1/beds/"*.info; }
 
 sweep baseline "mu = 0.3"
-sweep friction_0.15 "mu = 0.45" "mu_push = 0.45"
-sweep packing_0.3 "mu = 0.6" "mu_push = 0.3"
+sweep friction_015 "mu = 0.45" "mu_push = 0.45"
+sweep packing_03 "mu = 0.6" "mu_push = 0.3"
 # the push part on the baseline's own beds: linked, so the runner takes them as poured
 mkdir -p "$OUT/friction_push/beds"
 for f in "$OUT/baseline/beds/"*.restart "$OUT/baseline/beds/"*.info; do ln -f "$f" "$OUT/friction_push/beds/"; done
@@ -59,14 +59,14 @@ echo "gap_design2: sweep friction_push"
 "$CLI" sweep "$OUT/friction_push.sweep" --jobs "$JOBS" --out "$OUT" > "$OUT/friction_push.log" 2>&1 \
   || { echo "gap_design2/run.sh: sweep friction_push failed (see $OUT/friction_push.log)" >&2; exit 1; }
 
-p30=$(phi baseline) p45=$(phi friction_0.15) p60=$(phi packing_0.3)
+p30=$(phi baseline) p45=$(phi friction_015) p60=$(phi packing_03)
 wphi=$(awk -v a="$p30" -v b="$p45" -v c="$p60" 'BEGIN { printf "%.3f", (b - a) / (c - a) }')
 echo "phi_0 (mean of two beds): mu 0.3 $p30, 0.45 $p45, 0.6 $p60: packing's weight matched to phi_0 w = $wphi"
 for v in 50 100 200; do
   for w in 0.5 "$wphi"; do
     echo "== friction +0.15, w = $w"
-    "$AGREE" --v0 "$v" --base "$(traces baseline "$v")" --direct "$(traces friction_0.15 "$v")" \
-      --push "$(traces friction_push "$v")" --pack "$(traces packing_0.3 "$v")" --w "$w"
+    "$AGREE" --v0 "$v" --base "$(traces baseline "$v")" --direct "$(traces friction_015 "$v")" \
+      --push "$(traces friction_push "$v")" --pack "$(traces packing_03 "$v")" --w "$w"
   done
 done
 
