@@ -45,7 +45,8 @@ sweep() {    # NAME KEYS... : one sweep, keys as lines
   "$CLI" sweep "$OUT/$name.sweep" --jobs "$JOBS" --out "$OUT" > "$OUT/$name.log" 2>&1 \
     || { echo "gap_design2/run.sh: sweep $name failed (see $OUT/$name.log)" >&2; exit 1; }
 }
-traces() { ls "$OUT/$1/traces/"*"_v$2_"*.csv | sort | paste -sd, -; }
+# the traces of sweep $1 at v0 = $2 (run ids end in _vV, or go on with _g... where g or D vary)
+traces() { ls "$OUT/$1/traces/" | grep -E "_v$2(_.*)?\.csv$" | sort | sed "s#^#$OUT/$1/traces/#" | paste -sd, -; }
 phi() { awk -F' = ' '$1 == "phi_0" { s += $2; n++ } END { printf "%.6f", s / n }' "$OUT/$1/beds/"*.info; }
 
 sweep baseline "mu = 0.3"
