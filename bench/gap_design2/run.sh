@@ -74,7 +74,11 @@ done
 if [ "$COHESION" = yes ]; then
   for gamma in 50 300 1000 3000; do
     sweep "cohesion_$gamma" "set = cohesion=$gamma"
-    echo "== cohesion $gamma erg/cm^2: phi_0 $(phi "cohesion_$gamma")"
+    # the KE per grain the pour ended with (its last settling check): did the bed settle?
+    ke=$(for l in "$OUT/cohesion_$gamma/logs/"bed_*.log; do
+           grep -h "granpen pour: .*KE per grain" "$l" | tail -1 | sed 's/.*KE per grain \([^ ]*\) erg.*/\1/'
+         done | paste -sd' ' -)
+    echo "== cohesion $gamma erg/cm^2: phi_0 $(phi "cohesion_$gamma") (mean of two beds), KE per grain at the end of each pour: $ke erg"
     for v in 50 100 200; do
       "$AGREE" --v0 "$v" --base "$(traces baseline "$v")" --direct "$(traces "cohesion_$gamma" "$v")"
     done
