@@ -36,6 +36,41 @@ void run_or_throw(const std::vector<SimRequest> &req, const SimContext &sim, con
                      " (rerun to retry)");
 }
 
+// A second simulation of e at magnitude a2 on REFINE_SEEDS's fresh beds, after the first
+// runs fell short: its runs (into runs2) and their evaluation against the real traces.
+AfterRuns simulate_second_runs(const Effect &e, const EffectData &ed, double a2, const Features &f, const Alignment &al,
+                               const SimContext &sim, Diagnosis &d, RunsBySpeed &runs2, const char *what)
+{
+  run_or_throw(confirm_requests(sim.scenario, e, a2, sim.v0s, "refine", REFINE_SEEDS), sim, what);
+  runs2 = effect_runs(sim, e, a2, "refine", REFINE_SEEDS);
+  return evaluate_after(runs2, a2, ed, f, al, d);
+}
+
+// The second runs decide the confirmation: their chi^2, excess removed and projection
+// are the confirmation's numbers.
+bool second_runs_decide(const AfterRuns &second, Diagnosis &d)
+{
+  d.chi2_after = second.chi2;
+  d.confirmed_fraction = excess_removed(d, second.chi2);
+  d.proj_after = second.sigma();
+  return confirms(d, second.chi2, d.proj_after);
+}
+
+// The second runs at a2 become the "after" (gap, parts, corrected traces); the first runs'
+// magnitude and G_all are kept as refined_from and gap_after_first.
+void adopt_second_runs(const AfterRuns &second, RunsBySpeed &&runs2, double a2, double gap_first, Diagnosis &d,
+                       RunsBySpeed &after)
+{
+  d.refined = true;
+  d.refined_from = d.magnitude;
+  d.gap_after_first = gap_first;
+  d.proj_refined = second.sigma();
+  d.magnitude = a2;
+  d.gap_after = second.all();
+  d.parts_after = GapParts{second.G, second.G_spec, d.n_real_min, second.runs};
+  after = std::move(runs2);
+}
+
 // The confirming runs left a significant gap along the signature (|sigma| >= 3), and
 // either confirmed the effect or left more of it (c > 0: the magnitude fell short, as a
 // fit on noisy knots does): the magnitude corrected by linear response is simulated on
@@ -49,32 +84,20 @@ bool refine(const Effect &e, const EffectData &ed, const AfterRuns &first, bool 
   const auto [alo, ahi] = magnitude_range(ed);
   const double a2 = refined_magnitude(ed, d.magnitude, c);
   if (std::abs(a2 - d.magnitude) <= 0.05 * (ahi - alo)) return confirmed;
-  run_or_throw(confirm_requests(sim.scenario, e, a2, sim.v0s, "refine", REFINE_SEEDS), sim, "refining");
-  RunsBySpeed runs2 = effect_runs(sim, e, a2, "refine", REFINE_SEEDS);
-  const AfterRuns second = evaluate_after(runs2, a2, ed, f, al, d);
-  d.refined = true;
-  d.refined_from = d.magnitude;
-  d.gap_after_first = first.all();
-  d.proj_refined = second.sigma();
+  RunsBySpeed runs2;
+  const AfterRuns second = simulate_second_runs(e, ed, a2, f, al, sim, d, runs2, "refining");
   std::string how = "the confirming runs at " + fmt(d.magnitude) + " left " + fmt(d.proj_after, "%.2f") +
                     " sigma along the signature (chi^2 " + fmt(d.chi2_after, "%.1f") + ", G_all " + fmt(first.all(), "%.3f") +
                     (confirmed ? "" : ": not confirmed, the magnitude short") + "); linear response gives " + fmt(a2) +
                     ", simulated on " + std::to_string(REFINE_SEEDS.size()) + " more fresh beds: chi^2 " +
-                    fmt(second.chi2, "%.1f") + ", G_all " + fmt(second.all(), "%.3f") + ", " + fmt(d.proj_refined, "%.2f") +
+                    fmt(second.chi2, "%.1f") + ", G_all " + fmt(second.all(), "%.3f") + ", " + fmt(second.sigma(), "%.2f") +
                     " sigma; gap after and the corrected traces are these";
   if (!confirmed) {
-    // the second runs decide, and their numbers are the confirmation's
-    confirmed = confirms(d, second.chi2, second.sigma());
-    d.chi2_after = second.chi2;
-    d.confirmed_fraction = excess_removed(d, second.chi2);
-    d.proj_after = second.sigma();
+    confirmed = second_runs_decide(second, d);
     how += "; they decide the confirmation";
   }
   d.notes.push_back("magnitude refined: " + how);
-  d.magnitude = a2;
-  d.gap_after = second.all();
-  d.parts_after = GapParts{second.G, second.G_spec, d.n_real_min, second.runs};
-  after = std::move(runs2);
+  adopt_second_runs(second, std::move(runs2), a2, first.all(), d, after);
   return confirmed;
 }
 
@@ -225,12 +248,14 @@ RunsBySpeed confirm_top_effect(const std::map<std::string, const Effect *> &by_n
   RunsBySpeed held = own_heldout ? effect_runs(sim, e, d.heldout_magnitude, "heldout") : corr;
   d.proj_before = signature_sigma(ed, d.magnitude, f);
   const AfterRuns first = evaluate_after(corr, d.magnitude, ed, f, al, d);
-  {
+  // G_all at the held-out speed of the runs given (aligned to the real onset)
+  const auto heldout_gap = [&](RunsBySpeed &runs) {
     const double v = f.speeds[hs];
-    align_runs(held[v], al.onset.at(v));
-    d.heldout_after = gap_all(gap_metric(f.real[hs], ensemble_of(held[v], al.grid, v), 0, al.grid.nbins()),
-                              hs < f.spec_real.size() ? debiased_gap(f.spec_real[hs], spectrum_moments(held[v], al.grid)) : 0.0);
-  }
+    align_runs(runs[v], al.onset.at(v));
+    return gap_all(gap_metric(f.real[hs], ensemble_of(runs[v], al.grid, v), 0, al.grid.nbins()),
+                   hs < f.spec_real.size() ? debiased_gap(f.spec_real[hs], spectrum_moments(runs[v], al.grid)) : 0.0);
+  };
+  d.heldout_after = heldout_gap(held);
   d.gap_after = first.all();
   d.parts_after = GapParts{first.G, first.G_spec, d.n_real_min, first.runs};
   d.chi2_after = first.chi2;
@@ -243,34 +268,21 @@ RunsBySpeed confirm_top_effect(const std::map<std::string, const Effect *> &by_n
     const EffectFit refit = fit_effect(f.target, with_runs_as_knot(ed, d.magnitude, corr, f, al.grid));
     if (refit.magnitude != d.magnitude) {
       const double a2 = refit.magnitude;
-      run_or_throw(confirm_requests(sim.scenario, e, a2, sim.v0s, "refine", REFINE_SEEDS), sim, "refitting between knots");
-      RunsBySpeed runs2 = effect_runs(sim, e, a2, "refine", REFINE_SEEDS);
       const double g_first = d.gap_after, chi2_first = d.chi2_after;
-      const AfterRuns second = evaluate_after(runs2, a2, ed, f, al, d);
-      d.refined = true;
-      d.refined_from = d.magnitude;
-      d.gap_after_first = g_first;
-      d.proj_refined = second.sigma();
+      RunsBySpeed runs2;
+      const AfterRuns second = simulate_second_runs(e, ed, a2, f, al, sim, d, runs2, "refitting between knots");
       d.notes.push_back("magnitude refitted between knots: the runs at " + fmt(d.magnitude) + " (chi^2 " + fmt(chi2_first, "%.1f") +
                         ", G_all " + fmt(g_first, "%.3f") + ") taken as a knot, the fit gives " + fmt(a2) + ", simulated on " +
                         std::to_string(REFINE_SEEDS.size()) + " more fresh beds: chi^2 " + fmt(second.chi2, "%.1f") + ", G_all " +
                         fmt(second.all(), "%.3f") + "; they decide, and the gap after and the corrected traces are these");
-      d.magnitude = a2;
-      d.chi2_after = second.chi2;
-      d.confirmed_fraction = excess_removed(d, second.chi2);
-      d.proj_after = second.sigma();
-      d.gap_after = second.all();
-      d.parts_after = GapParts{second.G, second.G_spec, d.n_real_min, second.runs};
-      corr = std::move(runs2);
-      confirmed = confirms(d, second.chi2, d.proj_after);
+      confirmed = second_runs_decide(second, d);
+      adopt_second_runs(second, std::move(runs2), a2, g_first, d, corr);
     }
   }
   if (check && d.refined) {
     // the held-out speed judged by the runs that are now the "after"
-    const double v = f.speeds[hs];
     d.heldout_magnitude = d.magnitude;
-    d.heldout_after = gap_all(gap_metric(f.real[hs], ensemble_of(corr[v], al.grid, v), 0, al.grid.nbins()),
-                              hs < f.spec_real.size() ? debiased_gap(f.spec_real[hs], spectrum_moments(corr[v], al.grid)) : 0.0);
+    d.heldout_after = heldout_gap(corr);
   }
   // a transform effect's "after" is computed: the output writes its traces transformed
   if (by_transform(e, d.magnitude)) d.corrected_effect = e.name, d.corrected_magnitude = d.magnitude;

@@ -111,8 +111,10 @@ void observable_findings(const Features &f, const RunsBySpeed &real, const Simul
       if (!oR.count(name) || !oB.count(name) || !pooled.count(name)) continue;
       if (name == "excess" && zt <= 0.35 * sc.D + grid.w) continue;    // no transient regime in range
       const double var1 = pooled[name].first / pooled[name].second;    // one run's variance
-      if (!(var1 > 0.0)) {
-        // every run gave the same value (t_star lands on the grid's bins): a z-score would divide by 0
+      const double level = std::abs(mean_of(oB.at(name)));
+      if (!(var1 > 0.0) || std::sqrt(var1) <= 1e-9 * level) {
+        // every run gave the same value (t_star lands on the grid's bins): a z-score would
+        // divide by 0, or by the rounding of the mean (1e-16 of it) when the values are equal
         d.notes.push_back("where: " + name + " at v0 = " + printf_number("%g", v) +
                           " has no scatter over the simulated runs (all equal): no z-score");
         continue;

@@ -590,6 +590,69 @@ TEST(GapWhere, CurvesAndSignificanceOnAHandMadeFeatureSet)
   EXPECT_FALSE(d0.significant);
 }
 
+TEST(GapWhere, AnObservableWithoutScatterGetsANoteNotAZScore)
+{
+  // runs whose force is one shape times a factor: the forces scatter, but the crossover
+  // depth t_star (where the force's shape turns) is the same in every run, as t_star's
+  // grid-binned values often are in real ensembles. Its pooled variance is 0: a z-score
+  // would divide by 0 (it printed 1e150 before), so t_star gets a note and no finding.
+  Scenario sc;
+  sc.D = 0.5, sc.d_g = 0.1, sc.g = 981.0;
+  const double v = 100.0;
+  auto run = [&](double factor) {
+    TraceRun r;
+    r.v0 = v;
+    for (int i = 0; i <= 400; ++i) {
+      const double z = 0.0075 * i;
+      r.z.push_back(z);
+      r.t.push_back(z / v);
+      r.F.push_back(factor * (2e4 * z + 6e3 * (1.0 - std::exp(-z / 0.05))));
+    }
+    r.onset = 0.0;
+    return r;
+  };
+  GapGrid grid;
+  grid.zmax = 2.5;
+  Features f;
+  f.speeds = {v};
+  f.target_scale = {1.0};
+  RunsBySpeed real{{v, {run(1.3), run(1.35)}}};
+  SimulatedRuns sims;
+  sims.fresh[v] = {run(0.95), run(1.0), run(1.05)};
+  Diagnosis d;
+  d.speeds.resize(1);
+  regimes(f, sims.fresh, sc, grid, d);
+  observable_findings(f, real, sims, sc, grid, d);
+  // the independent route: t_star of each simulated run, straight from the kernel
+  std::vector<double> ts;
+  for (const auto &r : sims.fresh[v]) {
+    const auto o = run_observables(r.z, r.F, v, sc.D, sc.g, sc.d_g, grid, d.speeds[0].z_transient_end);
+    if (o.crossed) ts.push_back(o.t_star);
+  }
+  ASSERT_EQ(ts.size(), 3u) << "the shape must cross over, or the test checks nothing";
+  ASSERT_EQ(ts[0], ts[1]);
+  ASSERT_EQ(ts[1], ts[2]);
+  const auto noted = [&](const std::string &name) {
+    return std::any_of(d.notes.begin(), d.notes.end(),
+                       [&](const std::string &n) { return n.find("where: " + name + " at v0 = 100 has no scatter") == 0; });
+  };
+  EXPECT_TRUE(noted("t_star"));
+  EXPECT_FALSE(noted("peak_F"));
+  bool peak_found = false;
+  for (const auto &w : d.where) {
+    EXPECT_NE(w.observable, "t_star");
+    // every z-score a finite number of standard errors: at most |1.35 - 1| / (0.05 / sqrt 3)
+    // ~ 12 for a force, far below the 1e150 a zero variance gave
+    EXPECT_TRUE(std::isfinite(w.zscore)) << w.observable;
+    EXPECT_LT(std::abs(w.zscore), 1e3) << w.observable;
+    if (w.observable == "peak_F") {
+      peak_found = true;
+      EXPECT_GT(w.zscore, 3.0);
+    }
+  }
+  EXPECT_TRUE(peak_found);
+}
+
 TEST(GapWhich, TheVerdictOnAHandMadeFeatureSet)
 {
   HandMade h(0.5);
