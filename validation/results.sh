@@ -11,7 +11,8 @@
 #                with a note when missing)
 #   --dumps DIR  the mid sweep's traces folder with the dumps of its 90 cm/s, g = 981 push
 #                (runs/validation_mid/traces; dumps are not committed, they are 100s of MB;
-#                skipped with a note when missing: the flow rows then keep their last values)
+#                without them the flow rows are read from the tables they gave, committed in
+#                docs/results/mid: flow/, surface/, momentum/, window.txt)
 #   --out DIR    where numbers.txt and the figures go (default docs/results)
 #
 # numbers.txt: one line per measured quantity, "KEY = VALUE [+- ERROR] [n = N]  # how".
@@ -132,39 +133,39 @@ analyse_traces() {
 analyse_traces bench "$BENCH" 2
 if [ -d "$MID" ]; then analyse_traces mid "$MID" 3; else say "mid: $MID missing, skipped"; fi
 
+# the figures of one push's flow from validation/push_flow.sh's outputs in DIR
+plot_flow() {
+  "$CLI" plot flow "$1/flow" --out "$1/flow/fig" > /dev/null
+  "$CLI" plot flow "$1/surface" --out "$1/surface/fig" > /dev/null
+  "$CLI" plot momentum "$1/momentum" --out "$1/momentum/fig" > /dev/null
+}
+
+# the flow rows of one push (KEY.lambda_vz_D, ...) from validation/push_flow.sh's outputs in DIR
+flow_numbers() {
+  local key=$1 dir=$2 fj=$2/flow/flow.json mj=$2/momentum/momentum.json steps lam edge
+  steps=$(awk '{print $1 " (tip " $2 " to " $3 " cm deep)"}' "$dir/window.txt")
+  lam=$(grep -o '"lambda_vz": {[^}]*}' "$fj")
+  put "$key.lambda_vz_D = $(echo "$lam" | grep -o '"lambda_D": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$lam" | grep -o '"lambda_D_se": [-0-9.e+]*' | awk '{print $2}')  # granpen flow --steps $steps"
+  edge=$(grep -o '"edge": {"points"[^}]*}' "$fj")
+  put "$key.edge_phi_0 = $(echo "$edge" | grep -o '"phi_0": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$edge" | grep -o '"phi_0_se": [-0-9.e+]*' | awk '{print $2}')  # phi = phi_0 + b I at the rod edge"
+  put "$key.edge_slope = $(echo "$edge" | grep -o '"slope": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$edge" | grep -o '"slope_se": [-0-9.e+]*' | awk '{print $2}')"
+  put "$key.surface_flux_sign_change_t = $(grep -o '"crossing_t_tilde": [-0-9.e+a-z]*' "$dir/surface/flow.json" | awk '{print $2}')  # granpen flow: t~ where v_z of the strip's top grain layer (0.5-1.5 cm from the shaft) last turns from up to down"
+  put "$key.drag_over_mu_g_Mmove = $(grep -o '"k": [-0-9.e+]*' "$mj" | head -1 | awk '{print $2}') +- $(grep -o '"k_se": [-0-9.e+]*' "$mj" | head -1 | awk '{print $2}')  # F = k mu g M(v_z > v0/320), granpen momentum"
+}
+
 # the flow of one push (mid, 90 cm/s, g = 981, D = 2, seed 1) from its dumps
 push=mid_mu0.3_s1_v90_g981_D2.0
 if ls "$DUMPS/$push.csv".*.dump.gz > /dev/null 2>&1; then
-  o=$OUT/mid/flow
-  mkdir -p "$o"
-  dumps=("$DUMPS/$push.csv".*.dump.gz)
-  say "mid flow: ${#dumps[@]} frames (granpen flow, granpen momentum)"
-  # every frame without tessellation first: the tip's depth per frame, and the surface flux
-  # (v_z of the top grain layer 0.5-1.5 cm from the shaft) against t~ with its sign change
-  "$CLI" flow "${dumps[@]}" --trace "$DUMPS/$push.csv" --voronoi none --out "$OUT/mid/surface" > "$OUT/mid/surface.txt"
-  "$CLI" plot flow "$OUT/mid/surface" --out "$OUT/mid/surface/fig" > /dev/null
-  tips=$(grep -o '"timestep": [0-9]*, "where": "[^"]*", "grains": [0-9]*, "rod_atoms": [0-9]*, "tip": [-0-9.e+]*, "z_tip": [-0-9.e+]*' \
-         "$OUT/mid/surface/flow.json" | awk '{ gsub(/,/, ""); print $2, $12 }')
-  # the fields, the profile below the rod and the edge over the frames with the tip 1 to 4 cm
-  # deep: past the impact, and at least 4 cm (13 grains) above the floor, which would stop
-  # the flow below the rod and shorten its decay
-  steps=$(echo "$tips" | awk '$2 >= 1 && $2 <= 4 { if (!a) a = $1; b = $1 } END { print a ":" b }')
-  # --rod-cells: the rod's spheres bound the grains' Voronoi cells (phi at the rod edge)
-  "$CLI" flow "${dumps[@]}" --trace "$DUMPS/$push.csv" --rod-cells --steps "$steps" --out "$o" > "$o/flow.txt"
-  "$CLI" momentum "${dumps[@]}" --trace "$DUMPS/$push.csv" --out "$OUT/mid/momentum" > "$OUT/mid/momentum.txt"
-  "$CLI" plot flow "$o" --out "$o/fig" > /dev/null
-  "$CLI" plot momentum "$OUT/mid/momentum" --out "$OUT/mid/momentum/fig" > /dev/null
-  fj=$o/flow.json
-  lam=$(grep -o '"lambda_vz": {[^}]*}' "$fj")
-  put "mid.lambda_vz_D = $(echo "$lam" | grep -o '"lambda_D": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$lam" | grep -o '"lambda_D_se": [-0-9.e+]*' | awk '{print $2}')  # granpen flow --steps $steps (tip 1 to 4 cm deep)"
-  edge=$(grep -o '"edge": {"points"[^}]*}' "$fj")
-  put "mid.edge_phi_0 = $(echo "$edge" | grep -o '"phi_0": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$edge" | grep -o '"phi_0_se": [-0-9.e+]*' | awk '{print $2}')  # phi = phi_0 + b I at the rod edge"
-  put "mid.edge_slope = $(echo "$edge" | grep -o '"slope": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$edge" | grep -o '"slope_se": [-0-9.e+]*' | awk '{print $2}')"
-  put "mid.surface_flux_sign_change_t = $(grep -o '"crossing_t_tilde": [-0-9.e+a-z]*' "$OUT/mid/surface/flow.json" | awk '{print $2}')  # granpen flow: t~ where v_z of the strip's top grain layer (0.5-1.5 cm from the shaft) last turns from up to down"
-  mj=$OUT/mid/momentum/momentum.json
-  put "mid.drag_over_mu_g_Mmove = $(grep -o '"k": [-0-9.e+]*' "$mj" | head -1 | awk '{print $2}') +- $(grep -o '"k_se": [-0-9.e+]*' "$mj" | head -1 | awk '{print $2}')  # F = k mu g M(v_z > v0/320), granpen momentum"
+  say "mid flow: validation/push_flow.sh on the dumps of $push"
+  "$ROOT/validation/push_flow.sh" "$DUMPS/$push.csv" "$OUT/mid" --cli "$CLI" > /dev/null
+  plot_flow "$OUT/mid"
+  flow_numbers mid "$OUT/mid"
+elif [ -f "$ROOT/docs/results/mid/window.txt" ]; then
+  # without the dumps the rows come from the tables they gave, as committed
+  say "mid flow: no dumps of $push in $DUMPS: the rows from the committed tables in docs/results/mid"
+  flow_numbers mid "$ROOT/docs/results/mid"
 else
-  say "mid flow: no dumps of $push in $DUMPS, skipped"
+  say "mid flow: no dumps of $push in $DUMPS and no committed tables, skipped"
 fi
 mv "$NUM" "$OUT/numbers.txt"
 say "wrote $OUT/numbers.txt"
