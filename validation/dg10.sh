@@ -11,8 +11,9 @@
 #   a push  its trace goes to data/sims/dg10/SWEEP/ID.csv (SWEEP = dg10_peak, dg10_flow,
 #           dg10_D: inputs/sweeps/SWEEP.sweep); a push whose trace is there is never rerun.
 #           A dg10_flow push (dumps of every atom, hundreds of MB, not committed) is followed
-#           by `granpen flow` on its dumps, whose outputs (small) go to
-#           data/sims/dg10/dg10_flow/ID.flow/.
+#           by validation/push_flow.sh on its dumps (`granpen flow` and `granpen momentum`,
+#           as for the mid push of docs/results.md), whose tables (small) go to
+#           data/sims/dg10/dg10_flow/ID.flow/; such a push is done only when they are there.
 # Run it again in any session and it goes on with the first unit not committed. One run at
 # a time, niced, so that the machine's other core stays free. Units in order: the three beds
 # (dg10_peak's pours), then the pushes of dg10_peak, dg10_flow, dg10_D.
@@ -55,6 +56,8 @@ mkdir -p "$DATA/beds"
 # the planned runs of a sweep file: lines "K pour|push ID"
 plan() { "$CLI" sweep "$1" --plan --inputs "$ROOT/inputs" --out "$OUT" | awk '{print $1, $2, $3}'; }
 sweep_name() { awk -F= '$1 ~ /^name *$/ {gsub(/[ \t]/, "", $2); sub(/#.*/, "", $2); print $2}' "$1"; }
+# 1 when the sweep's pushes write dumps (observe = dump), else 0
+dumps_of() { awk -F= '$1 ~ /^observe *$/ {sub(/#.*/, "", $2); gsub(/[ \t]/, "", $2); d = ($2 == "dump")} END {print d + 0}' "$1"; }
 
 status() {
   local total=0 done=0 beds=0 nbeds=0
@@ -66,7 +69,9 @@ status() {
         seen="$seen $id"; nbeds=$((nbeds + 1))
         [ -f "$DATA/beds/$id.tile.data.gz" ] && beds=$((beds + 1))
       else
-        total=$((total + 1)); [ -f "$DATA/$name/$id.csv" ] && done=$((done + 1))
+        total=$((total + 1))
+        [ -f "$DATA/$name/$id.csv" ] && { [ "$(dumps_of "$f")" = 0 ] || [ -f "$DATA/$name/$id.flow/window.txt" ]; } &&
+          done=$((done + 1))
       fi
     done < <(plan "$f")
   done
@@ -119,18 +124,31 @@ for f in $SWEEPS; do
       cp "$dir/beds/$id.tile.data.gz" "$dir/beds/$id.tile.info" "$dir/beds/$id.info" "$DATA/beds/"
       ran=$((ran + 1)); commit "bed $id (its tile)"
     else
-      [ -f "$DATA/$name/$id.csv" ] && continue
-      budget_left || break
-      echo "dg10.sh: $name: push $id"
-      runner "$f" "$k"
-      [ -f "$dir/traces/$id.csv.done" ] || { echo "dg10.sh: the push $id did not finish (see $dir/logs/$id.log)" >&2; exit 1; }
-      if ls "$dir/traces/$id.csv".*.dump.gz >/dev/null 2>&1; then
-        "$CLI" flow "$dir/traces/$id.csv".*.dump.gz --trace "$dir/traces/$id.csv" --out "$DATA/$name/$id.flow" \
-          || echo "dg10.sh: granpen flow on the dumps of $id failed; its trace is kept, the dumps are in $dir/traces" >&2
+      # a push with dumps is done when the tables of its flow are here too: its dumps are
+      # not committed, so a push whose analysis was lost is pushed again
+      dumps=$(dumps_of "$f")
+      if [ -f "$DATA/$name/$id.csv" ] && { [ "$dumps" = 0 ] || [ -f "$DATA/$name/$id.flow/window.txt" ]; }; then continue; fi
+      if [ "$dumps" = 1 ] && [ -f "$dir/traces/$id.csv.done" ] && ls "$dir/traces/$id.csv".*.dump.gz >/dev/null 2>&1; then
+        echo "dg10.sh: $name: push $id done here, its flow not committed: analysing its dumps"
+      else
+        budget_left || break
+        echo "dg10.sh: $name: push $id"
+        runner "$f" "$k"
+        [ -f "$dir/traces/$id.csv.done" ] || { echo "dg10.sh: the push $id did not finish (see $dir/logs/$id.log)" >&2; exit 1; }
+        ran=$((ran + 1))
+      fi
+      if [ "$dumps" = 1 ]; then
+        # the same analysis as the mid push of docs/results.md (fields over the frames with
+        # the tip 1 to 4 cm deep, the surface flux, the momentum classes), into a scratch
+        # folder first: a failed analysis leaves nothing half-written in $DATA
+        rm -rf "$dir/traces/$id.flow.new"
+        GRANPEN_CLI=$CLI nice -n 19 "$ROOT/validation/push_flow.sh" "$dir/traces/$id.csv" "$dir/traces/$id.flow.new" > /dev/null \
+          || { echo "dg10.sh: the flow analysis of $id failed; its trace and dumps are in $dir/traces" >&2; exit 1; }
+        rm -rf "$DATA/$name/$id.flow"; cp -r "$dir/traces/$id.flow.new" "$DATA/$name/$id.flow"
       fi
       cp "$dir/traces/$id.csv" "$DATA/$name/$id.csv"
       cp "$dir/manifest.json" "$DATA/$name/manifest.json" 2>/dev/null || true
-      ran=$((ran + 1)); commit "push $id ($name)"
+      commit "push $id ($name)"
     fi
   done < <(plan "$f")
   budget_left || break
