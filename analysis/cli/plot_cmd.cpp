@@ -79,7 +79,8 @@ int granpen::cli::run_plot(const PlotOptions &po)
   else if (kind == "peak") plot_peak(inputs, run);
   else if (kind == "kz") plot_kz(inputs, run);
   else if (kind == "flow") plot_flow(inputs, run);
-  else plot_momentum(inputs, run);
+  else if (kind == "momentum") plot_momentum(inputs, run);
+  else plot_scaling(inputs, run);
 
   const int failed = report_figures(run);
   if (run.figures.empty()) {    // nothing is created for inputs that could not be read

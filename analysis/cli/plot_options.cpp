@@ -34,6 +34,12 @@ const char *HELP =
     "  momentum DIR   momentum_classes.csv (upward momentum and counts per speed class\n"
     "                 against t~) and momentum_drag.csv (F against mu g M(v_z > v0/320)\n"
     "                 with the 1:1 line).                -> momentum_classes, momentum_drag\n"
+    "  scaling TABLE  a CSV of quantities against the grain size ratio, columns quantity,\n"
+    "                 D_over_dg, value, error and optional paper, paper_error, unit: one\n"
+    "                 panel per quantity, the values with their error bars against D/d_g\n"
+    "                 and the paper's value; scaling.json gives each point's distance from\n"
+    "                 it in combined standard errors (an empty value: not measured, no\n"
+    "                 point).                                                   -> scaling\n"
     "--ensemble (force, ratio, peak, kz): the runs of each (v0, g, D) aligned at their force\n"
     "onsets and averaged (as granpen fit/collapse --ensemble): force draws each mean with\n"
     "its standard error over runs as a band; ratio the ensembles' F/F_z with that band; peak\n"
@@ -54,7 +60,7 @@ granpen::cli::PlotOptions granpen::cli::parse_plot(int argc, char **argv)
   figures::Options &o = po.figures;
   const std::string &kind = po.kind;
   auto &app = cmd.app;
-  app.add_option("kind", po.kind, "force, ratio, peak, kz, flow or momentum")->required();
+  app.add_option("kind", po.kind, "force, ratio, peak, kz, flow, momentum or scaling")->required();
   app.add_option("inputs", po.inputs, "traces or folders (flow, momentum: the tables' folder)");
   app.add_option("--out", o.out, "output folder (required; created)")->check(file_name())->type_name("DIR");
   bool no_run = false;
@@ -81,15 +87,17 @@ granpen::cli::PlotOptions granpen::cli::parse_plot(int argc, char **argv)
   check_ensemble_options(cmd, ens);
   o.ensemble = ens.on, o.ens = ens.mean, o.boot = ens.boot;
   if (ens.on && o.each) throw UsageError("give --ensemble or --each, not both");
-  static const char *kinds[] = {"force", "ratio", "peak", "kz", "flow", "momentum"};
+  static const char *kinds[] = {"force", "ratio", "peak", "kz", "flow", "momentum", "scaling"};
   if (std::find_if(std::begin(kinds), std::end(kinds), [&](const char *k) { return kind == k; }) == std::end(kinds))
-    throw UsageError("unknown kind '" + kind + "' (force, ratio, peak, kz, flow, momentum)");
+    throw UsageError("unknown kind '" + kind + "' (force, ratio, peak, kz, flow, momentum, scaling)");
   if (o.out.empty()) throw UsageError("--out DIR is required");
+  const bool tables = kind == "flow" || kind == "momentum" || kind == "scaling";
   if (po.inputs.empty())
-    throw UsageError(kind == "flow" || kind == "momentum" ? "give the folder of the tables" : "no trace given");
-  if ((kind == "flow" || kind == "momentum") && ens.on) throw UsageError("--ensemble is for force, ratio, peak and kz");
-  if ((kind == "flow" || kind == "momentum") && po.inputs.size() != 1)
-    throw UsageError(kind + " takes one folder, got " + std::to_string(po.inputs.size()) + " arguments");
+    throw UsageError(kind == "scaling" ? "give the table" : tables ? "give the folder of the tables" : "no trace given");
+  if (tables && ens.on) throw UsageError("--ensemble is for force, ratio, peak and kz");
+  if (tables && po.inputs.size() != 1)
+    throw UsageError(kind + " takes one " + (kind == "scaling" ? "table" : "folder") + ", got " +
+                     std::to_string(po.inputs.size()) + " arguments");
   if (!(o.kz_zmin < o.kz_zmax)) throw UsageError("--kz-zmin must be below --kz-zmax");
   o.run = !no_run;
   return po;

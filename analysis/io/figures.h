@@ -1,7 +1,7 @@
 // granpen analysis: the figure kinds of granpen plot, each a function from its inputs
 // (traces, or the tables of granpen flow and granpen momentum) to figures written by
 // io/plot_writer and the numbers drawn (figures_trace.cpp: force, ratio, peak, kz;
-// figures_flow.cpp: flow and momentum).
+// figures_flow.cpp: flow and momentum; figures_scaling.cpp: scaling).
 #ifndef GRANPEN_FIGURES_H
 #define GRANPEN_FIGURES_H
 
@@ -62,6 +62,7 @@ void plot_peak(const std::vector<std::string> &inputs, Run &run);
 void plot_kz(const std::vector<std::string> &inputs, Run &run);
 void plot_flow(const std::vector<std::string> &inputs, Run &run);
 void plot_momentum(const std::vector<std::string> &inputs, Run &run);
+void plot_scaling(const std::vector<std::string> &inputs, Run &run);
 
 // A power of ten for an axis of values up to maxabs: factor 10^e (e >= 3, else 1)
 // and the unit text, e.g. "10^{5} dyne".

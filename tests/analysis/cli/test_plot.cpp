@@ -382,6 +382,59 @@ TEST(PlotCli, FlowAndMomentumFitsAreTheLibrarys)
   EXPECT_LT(cls.find("intermediate: "), cls.find("slow: "));
 }
 
+// ---------------------------------------------------------------- scaling with D/d_g
+
+TEST(PlotCli, ScalingPointsInOrderWithTheirDistanceFromThePaper)
+{
+  const fs::path in = fresh("scaling_in"), out = fresh("scaling_out");
+  // rows out of order, a ratio not yet measured (empty value), a quantity without a paper value
+  write(in / "t.csv",
+        "# paper_D_over_dg = 10\n"
+        "quantity,D_over_dg,value,error,paper,paper_error\n"
+        "peak exponent,6.67,1.57,0.05,2,0\n"
+        "peak exponent,5,1.48,0.07,2,0\n"
+        "peak exponent,10,,,2,0\n"
+        "lambda_vz / D,6.67,0.40,0.01,0.98,0.15\n"
+        "phi_0,5,0.578,0,,\n");
+  const bool images = have_gnuplot();
+  std::vector<std::string> args = {"scaling", (in / "t.csv").string(), "--out", out.string()};
+  if (!images) args.push_back("--no-run");
+  const Outcome o = run_plot(args);
+  ASSERT_EQ(o.status, 0) << o.err;
+  if (images) EXPECT_TRUE(is_png((out / "scaling.png").string()));
+  // the peak exponent's block: its two measured points by D/d_g, with their error bars
+  const auto b = block(out / "scaling.dat", 0);
+  ASSERT_EQ(b.size(), 2u);
+  EXPECT_EQ(b[0][0], 5.0);
+  EXPECT_EQ(b[0][1], 1.48);
+  EXPECT_EQ(b[1][0], 6.67);
+  // distance from the paper in combined standard errors, by hand: (1.48 - 2) / 0.07 and
+  // (0.40 - 0.98) / sqrt(0.01^2 + 0.15^2); printed to 4 digits
+  const std::string j = slurp(out / "scaling.json");
+  EXPECT_NEAR(json_value(j, "sigmas_from_paper"), (1.48 - 2.0) / 0.07, 1e-3);
+  EXPECT_NEAR(json_value(j, "sigmas_from_paper", "lambda_vz"), (0.40 - 0.98) / std::sqrt(0.01 * 0.01 + 0.15 * 0.15), 1e-3);
+  // no paper value: no distance (null), a title that says so
+  EXPECT_NE(j.find("\"quantity\": \"phi_0\", \"paper\": null"), std::string::npos) << j;
+  const std::string gp = slurp(out / "scaling.gp");
+  EXPECT_NE(gp.find("phi\\\\_0   (no paper value)"), std::string::npos) << "the name's _ drawn literally";
+  EXPECT_NE(gp.find("paper: 0.98 ± 0.15"), std::string::npos);
+  // the paper's ratio is on every panel's x range: [4, 11] from ratios 5 to 10
+  EXPECT_NE(gp.find("set xrange [4:11]"), std::string::npos) << gp;
+
+  // a contradicting paper value is a problem named by file and line; the rest is drawn
+  write(in / "bad.csv", "quantity,D_over_dg,value,error,paper\nk,5,1,0.1,2\nk,6.67,1.1,0.1,3\nk,-1,1,0.1,2\n");
+  const Outcome bad = run_plot({"scaling", (in / "bad.csv").string(), "--out", fresh("scaling_bad").string(), "--no-run"});
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_NE(bad.err.find("bad.csv:3: paper value 3 of k differs from 2 given above"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("bad.csv:4: D_over_dg must be positive"), std::string::npos) << bad.err;
+  const Outcome none = run_plot({"scaling", (in / "nothing.csv").string(), "--out", fresh("scaling_none").string()});
+  EXPECT_EQ(none.status, 1);
+  EXPECT_NE(none.err.find("nothing.csv"), std::string::npos) << none.err;
+  const Outcome two = run_plot({"scaling", "a.csv", "b.csv", "--out", "o"});
+  EXPECT_EQ(two.status, 2);
+  EXPECT_NE(two.err.find("scaling takes one table, got 2 arguments"), std::string::npos) << two.err;
+}
+
 // ---------------------------------------------------------------- bad inputs
 
 TEST(PlotCli, UsageErrors)
