@@ -3,7 +3,7 @@
 # validation sweeps' traces and dumps, with granpen's own commands (fit, collapse, flow,
 # momentum, plot); awk only averages their outputs over beds.
 #
-#   validation/results.sh [--out DIR] [--bench DIR] [--mid DIR] [--dumps DIR] [--cli PATH]
+#   validation/results.sh [--out DIR] [--bench DIR] [--mid DIR] [--dumps DIR] [--dg10 DIR] [--cli PATH]
 #
 #   --bench DIR  traces and bed .info files of the bench validation sweep
 #                (default data/sims/validation_bench)
@@ -13,19 +13,24 @@
 #                (runs/validation_mid/traces; dumps are not committed, they are 100s of MB;
 #                without them the flow rows are read from the tables they gave, committed in
 #                docs/results/mid: flow/, surface/, momentum/, window.txt)
-#   --out DIR    where numbers.txt and the figures go (default docs/results)
+#   --dg10 DIR   the committed units of validation/dg10.sh (default data/sims/dg10): each
+#                part (dg10_peak, dg10_flow, dg10_D) is analysed once all its pushes are
+#                there, and skipped with a note before, so that the numbers of a part never
+#                change as its pushes arrive
+#   --out DIR    where numbers.txt, scaling.csv and the figures go (default docs/results)
 #
 # numbers.txt: one line per measured quantity, "KEY = VALUE [+- ERROR] [n = N]  # how".
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 OUT=$ROOT/docs/results BENCH=$ROOT/data/sims/validation_bench MID=$ROOT/data/sims/validation_mid
-DUMPS=$ROOT/runs/validation_mid/traces CLI=${GRANPEN_CLI:-$ROOT/build/analysis/granpen-cli}
+DUMPS=$ROOT/runs/validation_mid/traces CLI=${GRANPEN_CLI:-$ROOT/build/analysis/granpen-cli} DG10=$ROOT/data/sims/dg10
 while [ $# -gt 0 ]; do
   case $1 in
     --out) OUT=$2; shift 2 ;;
     --bench) BENCH=$2; shift 2 ;;
     --mid) MID=$2; shift 2 ;;
     --dumps) DUMPS=$2; shift 2 ;;
+    --dg10) DG10=$2; shift 2 ;;
     --cli) CLI=$2; shift 2 ;;
     *) echo "results.sh: unknown argument $1 (see the header of $0)" >&2; exit 2 ;;
   esac
@@ -133,11 +138,13 @@ analyse_traces() {
 analyse_traces bench "$BENCH" 2
 if [ -d "$MID" ]; then analyse_traces mid "$MID" 3; else say "mid: $MID missing, skipped"; fi
 
-# the figures of one push's flow from validation/push_flow.sh's outputs in DIR
+# the figures of one push's flow from validation/push_flow.sh's outputs in SRC, into
+# DEST/{flow,surface,momentum}/fig (default DEST = SRC)
 plot_flow() {
-  "$CLI" plot flow "$1/flow" --out "$1/flow/fig" > /dev/null
-  "$CLI" plot flow "$1/surface" --out "$1/surface/fig" > /dev/null
-  "$CLI" plot momentum "$1/momentum" --out "$1/momentum/fig" > /dev/null
+  local src=$1 dest=${2:-$1}
+  "$CLI" plot flow "$src/flow" --out "$dest/flow/fig" > /dev/null
+  "$CLI" plot flow "$src/surface" --out "$dest/surface/fig" > /dev/null
+  "$CLI" plot momentum "$src/momentum" --out "$dest/momentum/fig" > /dev/null
 }
 
 # the flow rows of one push (KEY.lambda_vz_D, ...) from validation/push_flow.sh's outputs in DIR
@@ -167,5 +174,120 @@ elif [ -f "$ROOT/docs/results/mid/window.txt" ]; then
 else
   say "mid flow: no dumps of $push in $DUMPS and no committed tables, skipped"
 fi
+# ---------------------------------------------------------------- D/d_g = 10
+# The committed units of validation/dg10.sh (docs/presets.md, "dg10"). Each part is analysed
+# once every push of it is committed, so that its numbers do not move as pushes arrive.
+# the value and the error (the number after +-) of KEY among the numbers so far; "" when
+# absent or undefined
+nval() { awk -v k="$1" '$1 == k && $3 != "undefined" { print $3; exit }' "$NUM"; }
+nerr() { awk -v k="$1" '$1 == k && $4 == "+-" { print $5; exit }' "$NUM"; }
+# peak positions (cm) of `granpen collapse`'s text output: "... peak F dyne at z = Z cm ..."
+peak_z() { grep -o 'dyne at z = [-0-9.e+]* cm' "$1" | awk '{print $5}'; }
+
+dg10_beds() {
+  local n; n=$(ls "$DG10"/beds/bed_dg10_mu0.3_s[123].info 2>/dev/null | wc -l)
+  [ "$n" = 3 ] || { say "dg10 beds: $n of 3 committed: skipped"; return 0; }
+  put "dg10.phi_0 = $(grep -h '^phi_0' "$DG10"/beds/bed_dg10_mu0.3_s[123].info | awk '{print $3}' | stats)  # bed .info files, mu = 0.3 (2 x 2 tiles)"
+}
+
+dg10_peak() {
+  local d=$DG10/dg10_peak o=$OUT/dg10 traces=() fast=() f n
+  for f in "$d"/dg10_mu0.3_s[123]_v*_g981_D2.0.csv; do [ -f "$f" ] && traces+=("$f"); done
+  n=${#traces[@]}
+  [ "$n" = 15 ] || { say "dg10 peak: $n of 15 pushes committed in $d: skipped until all are"; return 0; }
+  mkdir -p "$o"
+  say "dg10: the peak law on 3 beds x 5 speeds (granpen collapse)"
+  # --alpha: the paper's 35 for F/F_z (not reported from these 1.5 cm pushes); the peak
+  # (max F over z < 0.7 R) does not depend on it
+  "$CLI" collapse "${traces[@]}" --alpha 35 --tbin 0.25 --json "$o/collapse_peak.json" > "$o/collapse_peak.txt"
+  jget() { grep -o "\"$2\": [-0-9.e+]*" "$1" | head -1 | awk '{print $2}'; }
+  put "dg10.peak_exponent = $(jget "$o/collapse_peak.json" peak_exponent) +- $(jget "$o/collapse_peak.json" peak_exponent_ci95) (95%)  # granpen collapse, 15 traces: v0 = 20 to 200 cm/s (v_c to 10 v_c), 3 beds"
+  # from 2 v_c, the paper's range (40 to 240 cm/s): at v_c the largest force within 0.7 R is
+  # the depth term's, not an impact peak
+  for f in "${traces[@]}"; do case $f in *_v20_*) ;; *) fast+=("$f") ;; esac; done
+  "$CLI" collapse "${fast[@]}" --alpha 35 --tbin 0.25 --json "$o/collapse_peak_fast.json" > "$o/collapse_peak_fast.txt"
+  put "dg10.peak_exponent_from_2vc = $(jget "$o/collapse_peak_fast.json" peak_exponent) +- $(jget "$o/collapse_peak_fast.json" peak_exponent_ci95) (95%)  # granpen collapse, the 12 traces of 40 to 200 cm/s"
+  put "dg10.peak_z = $(peak_z "$o/collapse_peak_fast.txt" | stats)  # peak position over the 12 traces of 40 to 200 cm/s, cm"
+  say "dg10: figures of the peak pushes (granpen plot)"
+  "$CLI" plot force "${traces[@]}" --out "$o/fig" > /dev/null
+  "$CLI" plot peak "${traces[@]}" --alpha 35 --out "$o/fig" > /dev/null
+}
+
+dg10_flow() {
+  local d=$DG10/dg10_flow o=$OUT/dg10 v id missing=""
+  for v in 40 100 200; do
+    id=dg10_mu0.3_s1_v${v}_g981_D2.0
+    [ -f "$d/$id.csv" ] && [ -f "$d/$id.flow/window.txt" ] || missing="$missing $v"
+  done
+  [ -z "$missing" ] || { say "dg10 flow: the full pushes at$missing cm/s (with their flow tables) not all in $d: skipped"; return 0; }
+  mkdir -p "$o"
+  say "dg10: the full pushes at 40, 100, 200 cm/s (granpen fit, collapse) and their flow"
+  "$CLI" fit "$d"/dg10_mu0.3_s1_v*_g981_D2.0.csv --zmin 3 --csv "$o/fit_z3.csv" > "$o/fit_z3.txt"
+  for v in 40 100 200; do
+    put "dg10.alpha0_window.v$v.D2 = $(col "$o/fit_z3.csv" alpha0 v0 "$v" D 2 | stats)  # granpen fit --zmin 3: k_z0 / (mu rho_g g D^2), bed 1"
+  done
+  for v in 40 100 200; do
+    id=dg10_mu0.3_s1_v${v}_g981_D2.0
+    flow_numbers "dg10.v$v" "$d/$id.flow"
+    plot_flow "$d/$id.flow" "$o/flow_v$v"
+  done
+}
+
+dg10_D() {
+  local d=$DG10/dg10_D o=$OUT/dg10 D traces=() missing=""
+  for D in 1.0 3.0; do
+    [ -f "$d/dg10_mu0.3_s1_v100_g981_D$D.csv" ] && traces+=("$d/dg10_mu0.3_s1_v100_g981_D$D.csv") || missing="$missing $D"
+  done
+  [ -f "$DG10/dg10_flow/dg10_mu0.3_s1_v100_g981_D2.0.csv" ] || missing="$missing 2.0"
+  [ -z "$missing" ] || { say "dg10 D: the pushes of D =$missing cm at 100 cm/s not all committed: skipped"; return 0; }
+  mkdir -p "$o"
+  say "dg10: alpha against D at 100 cm/s (granpen fit)"
+  "$CLI" fit "${traces[@]}" "$DG10/dg10_flow/dg10_mu0.3_s1_v100_g981_D2.0.csv" --zmin 3 --csv "$o/fit_D.csv" > "$o/fit_D.txt"
+  for D in 1 2 3; do
+    put "dg10.alpha0_window.v100.D$D = $(col "$o/fit_D.csv" alpha0 D "$D" | stats)  # granpen fit --zmin 3, bed 1, v0 = 100"
+  done
+}
+
+if [ -d "$DG10" ]; then dg10_beds; dg10_peak; dg10_flow; dg10_D; else say "dg10: $DG10 missing, skipped"; fi
+
+# ---------------------------------------------------------------- against D/d_g
+# The rows that differ from the paper, at D/d_g = 5 (bench), 6.67 (mid) and 10 (dg10; empty
+# until measured): scaling.csv, drawn by granpen plot scaling. Errors: the peak exponent's
+# 95% half-width / 1.96; a ratio's the relative errors of its parts in quadrature (spread
+# over the beds); the flow rows' fit standard errors.
+say "against D/d_g: scaling.csv (granpen plot scaling)"
+# one row: QUANTITY RATIO VALUE ERROR PAPER PAPER_ERROR (VALUE "" when not measured)
+row() { printf '%s,%s,%s,%s,%s,%s\n' "$@"; }
+# KEY's value and error as a row; empty when not measured; SCALE divides the error
+row_of() { # QUANTITY RATIO KEY PAPER PAPER_ERROR [ERROR_DIVISOR]
+  local v e; v=$(nval "$3"); e=$(nerr "$3")
+  [ -n "$v" ] && e=$(awk -v e="${e:-0}" -v s="${6:-1}" 'BEGIN { printf "%.4g", e / s }')
+  row "$1" "$2" "$v" "${v:+$e}" "$4" "$5"
+}
+# the ratio of KEY1 to KEY2 with the relative errors in quadrature; empty when either is missing
+ratio_of() { # QUANTITY RATIO KEY1 KEY2 PAPER PAPER_ERROR
+  local a b ea eb; a=$(nval "$3") b=$(nval "$4") ea=$(nerr "$3") eb=$(nerr "$4")
+  if [ -n "$a" ] && [ -n "$b" ]; then
+    row "$1" "$2" $(awk -v a="$a" -v b="$b" -v ea="${ea:-0}" -v eb="${eb:-0}" \
+      'BEGIN { r = a / b; printf "%.4g %.3g", r, r * sqrt((ea / a) ^ 2 + (eb / b) ^ 2) }') "$5" "$6"
+  else row "$1" "$2" "" "" "$5" "$6"; fi
+}
+{
+  echo "# paper_D_over_dg = 10"
+  echo "quantity,D_over_dg,value,error,paper,paper_error"
+  row_of "phi_0" 5 bench.phi_0 0.61 ""; row_of "phi_0" 6.67 mid.phi_0 0.61 ""; row_of "phi_0" 10 dg10.phi_0 0.61 ""
+  row_of "peak exponent (v_c to 10 v_c)" 5 bench.peak_exponent 2 "" 1.96
+  row_of "peak exponent (v_c to 10 v_c)" 6.67 mid.peak_exponent 2 "" 1.96
+  row_of "peak exponent (v_c to 10 v_c)" 10 dg10.peak_exponent 2 "" 1.96
+  ratio_of "alpha(D = 1 cm) / alpha(D = 2 cm)" 5 bench.alpha0_window.v28.g981.D1 bench.alpha0_window.v28.g981.D2 1 ""
+  ratio_of "alpha(D = 1 cm) / alpha(D = 2 cm)" 6.67 mid.alpha0_window.v90.g981.D1 mid.alpha0_window.v90.g981.D2 1 ""
+  ratio_of "alpha(D = 1 cm) / alpha(D = 2 cm)" 10 dg10.alpha0_window.v100.D1 dg10.alpha0_window.v100.D2 1 ""
+  row_of "lambda_vz / D" 6.67 mid.lambda_vz_D 0.98 0.15; row_of "lambda_vz / D" 10 dg10.v100.lambda_vz_D 0.98 0.15
+  row_of "phi at r = R (I -> 0)" 6.67 mid.edge_phi_0 0.57 ""; row_of "phi at r = R (I -> 0)" 10 dg10.v100.edge_phi_0 0.57 ""
+  row_of "d phi / d I at r = R" 6.67 mid.edge_slope -0.35 ""; row_of "d phi / d I at r = R" 10 dg10.v100.edge_slope -0.35 ""
+  row_of "drag / (mu g M)" 6.67 mid.drag_over_mu_g_Mmove 1 ""; row_of "drag / (mu g M)" 10 dg10.v100.drag_over_mu_g_Mmove 1 ""
+} > "$OUT/scaling.csv.partial" && mv "$OUT/scaling.csv.partial" "$OUT/scaling.csv"
+"$CLI" plot scaling "$OUT/scaling.csv" --out "$OUT/scaling" > /dev/null
+
 mv "$NUM" "$OUT/numbers.txt"
 say "wrote $OUT/numbers.txt"

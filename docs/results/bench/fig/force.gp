@@ -1,6 +1,6 @@
 # force.gp, written by granpen. The data are in force.dat beside it.
 # granpen plot force: F against the tip depth z for each v0 (mean of the runs at each v0, band: their min..max), F in 10^{6} dyne;
-# beside it, enlarged: the transient peak region 0 < z < 0.7 R, dots at each run's peak.
+# beside it, enlarged: the transient peak region 0 < z < 0.7 R, dots at the peaks.
 # Run in this folder: `gnuplot force.gp` makes force.png and force.svg;
 # `gnuplot -e "formats='png'" force.gp` makes only the PNG.
 if (!exists("formats")) formats = "png svg"
@@ -25,10 +25,11 @@ do for [fmt in formats] {
   set grid lc rgb "#d0d0d0"
   set key at screen 0.65, screen 0.9 left top Left reverse
   set key spacing 1.25
+  set key title "lines: mean of the runs at each v_0\nbands: their range"
   set offsets 0, 0, graph 0.04, 0
+  set autoscale xfix
   set object 2 rectangle from first 0, graph 0 to first 0.7, graph 1 behind fillcolor rgb "#e8e8e8" fillstyle solid 1.0 noborder
   set label 2 "z < 0.7 R" at first 0.35, graph 0.975 center textcolor rgb "#606060"
-  set key title "lines: mean of the runs at each v_0\nbands: their range"
   set samples 400
   plot data index 0 using 1:3:4 with filledcurves fillcolor rgb "#1f77b4" fillstyle transparent solid 0.22 noborder notitle, \
        data index 1 using 1:3:4 with filledcurves fillcolor rgb "#d62728" fillstyle transparent solid 0.22 noborder notitle, \
@@ -45,8 +46,8 @@ do for [fmt in formats] {
   reset
   set encoding utf8
   set origin 0.655,0.04
-  set size 0.335,0.64
-  set object 1 rectangle from screen 0.655,0.04 to screen 0.99,0.68 behind fillcolor rgb "white" fillstyle solid 1.0 border lc rgb "#a0a0a0"
+  set size 0.335,0.59125
+  set object 1 rectangle from screen 0.655,0.04 to screen 0.99,0.63125 behind fillcolor rgb "white" fillstyle solid 1.0 border lc rgb "#a0a0a0"
   set tics font ",10"
   set title font ",10"
   set xlabel font ",10"
@@ -55,10 +56,9 @@ do for [fmt in formats] {
   set xlabel "z (cm)"
   set ylabel "F (10^{6} dyne)"
   set grid lc rgb "#d0d0d0"
-  set xrange [-0.1:0.7]
+  set xrange [-0.105:0.7]
   set yrange [0:*]
   unset key
-  set xtics 0.2
   set mxtics 2
   set tics font ",11"
   set title font ",11"

@@ -29,11 +29,11 @@ do for [fmt in formats] {
   set yrange [-4.524969882:*]
   set key outside right top Left reverse
   set key spacing 1.25
+  set key title "runs of one v_0 side by side"
   set object 10 rectangle from graph 0, first -1.136812086 to graph 1, first 1.703486174 behind fillcolor rgb "#606060" fillstyle transparent solid 0.18 noborder
   set xtics (28, 50, 100, 200, 280)
   set mxtics 10
   set offsets 0, 0, graph 0.1, 0
-  set key title "runs of one v_0 side by side"
   set xzeroaxis lt 1 lw 1 lc rgb "#606060"
   set samples 400
   plot keyentry with filledcurves fillcolor rgb "#606060" fillstyle transparent solid 0.36 noborder title "mean ± sd over the 10 traces", \

@@ -29,11 +29,11 @@ do for [fmt in formats] {
   set yrange [0:*]
   set key outside right top Left reverse
   set key spacing 1.25
+  set key title "runs of one v_0 side by side"
   set object 10 rectangle from graph 0, first 0.6620726883 to graph 1, first 1.560243469 behind fillcolor rgb "#606060" fillstyle transparent solid 0.18 noborder
   set xtics (30, 60, 90, 240)
   set mxtics 10
   set offsets 0, 0, graph 0.1, 0
-  set key title "runs of one v_0 side by side"
   set samples 400
   plot keyentry with filledcurves fillcolor rgb "#606060" fillstyle transparent solid 0.36 noborder title "mean ± sd over the 8 traces", \
        data index 0 using 1:2:3 with yerrorbars lw 1.5 dt 1 lc rgb "#1f77b4" pt 7 ps 1.4 title "v_0 = 30 cm/s (2 runs)", \

@@ -15,11 +15,11 @@ do for [fmt in formats] {
   set output "ratio." . fmt
   reset
   set encoding utf8
-  set multiplot title "F over its depth term F_z: t̃* = 1.10 ± 0.49 (5 of 14 traces; their mean: not reached), spread 0.689 against z, 0.214 against t̃" font ",14"
+  set multiplot title "F over its depth term F_z: t̃* = 1.1 ± 0.49 (5 of 14 traces; their mean: not reached), spread 0.689 against z, 0.214 against t̃" font ",14"
 
   # ---- panel 1: (a) against depth
   set origin 0,0
-  set size 0.4,0.94
+  set size 0.38,0.94
   set title "(a) against depth"
   set xlabel "rod tip depth z (cm)"
   set ylabel "F / F_z   (F_z = α μ ρ_g g D² z)"
@@ -30,6 +30,7 @@ do for [fmt in formats] {
   set object 10 rectangle from graph 0, first 0.8 to graph 1, first 1.2 behind fillcolor rgb "#808080" fillstyle transparent solid 0.18 noborder
   set ytics ("0.5" 0.5, "1" 1, "2" 2, "5" 5, "10" 10, "20" 20)
   set mytics 10
+  set autoscale xfix
   set samples 400
   plot data index 0 using 1:2 with lines lw 1.8 dt 1 lc rgb "#144d75" notitle, \
        data index 1 using 1:2 with lines lw 1.8 dt 1 lc rgb "#84b4d6" notitle, \
@@ -49,15 +50,15 @@ do for [fmt in formats] {
   # ---- panel 2: (b) against rescaled time
   reset
   set encoding utf8
-  set origin 0.4,0
-  set size 0.4,0.94
+  set origin 0.38,0
+  set size 0.38,0.94
   set title "(b) against rescaled time"
   set xlabel "t̃ = (z / v_0) √(g / D)"
   set ylabel "F / F_z   (F_z = α μ ρ_g g D² z)"
   set grid lc rgb "#d0d0d0"
   set logscale y
   set yrange [0.5:27.92944057]
-  set key at screen 0.81, screen 0.9 left top Left reverse
+  set key at screen 0.77, screen 0.9 left top Left reverse
   set key spacing 1.25
   set object 10 rectangle from graph 0, first 0.8 to graph 1, first 1.2 behind fillcolor rgb "#808080" fillstyle transparent solid 0.18 noborder
   set arrow 1 from first 1, graph 0 to first 1, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"

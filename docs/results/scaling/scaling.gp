@@ -1,0 +1,147 @@
+# scaling.gp, written by granpen. The data are in scaling.dat beside it.
+# granpen plot scaling: each quantity of /work/main/docs/results/scaling.csv against D/d_g with its error bars, and the paper's value (a red line, with its band when it has an error); the dotted line: the paper's own D/d_g.
+# Run in this folder: `gnuplot scaling.gp` makes scaling.png and scaling.svg;
+# `gnuplot -e "formats='png'" scaling.gp` makes only the PNG.
+if (!exists("formats")) formats = "png svg"
+data = "scaling.dat"
+do for [fmt in formats] {
+  if (fmt eq "png") {
+    set terminal pngcairo enhanced size 1300,1640 font "sans,12" background rgb "white"
+  } else {
+    if (fmt ne "svg") { print "unknown format ", fmt, " (png or svg)"; exit status 1 }
+    set terminal svg enhanced size 1300,1640 font "sans,12" background rgb "white"
+  }
+  set output "scaling." . fmt
+  reset
+  set encoding utf8
+  set multiplot title "Against the grain size ratio D/d_g: granpen (blue, ± its error), the paper's value (red; shaded: its error), the paper's D/d_g (dotted)" font ",14"
+
+  # ---- panel 1: phi\_0   (paper: 0.61)
+  set origin 0,0.705
+  set size 0.5,0.235
+  set title "phi\\_0   (paper: 0.61)"
+  set xlabel "D/d_g"
+  set ylabel "phi\\_0"
+  set grid lc rgb "#d0d0d0"
+  set xrange [4:11]
+  set yrange [0.575105848:0.612584752]
+  unset key
+  set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
+  set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
+  set samples 400
+  plot data index 0 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+       0.61 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 0.61"
+
+  # ---- panel 2: peak exponent (v\_c to 10 v\_c)   (paper: 2)
+  reset
+  set encoding utf8
+  set origin 0.5,0.705
+  set size 0.5,0.235
+  set title "peak exponent (v\\_c to 10 v\\_c)   (paper: 2)"
+  set xlabel "D/d_g"
+  set ylabel "peak exponent (v\\_c to 10 v\\_c)"
+  set grid lc rgb "#d0d0d0"
+  set xrange [4:11]
+  set yrange [1.3597544:2.0474256]
+  unset key
+  set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
+  set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
+  set samples 400
+  plot data index 1 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+       2 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 2"
+
+  # ---- panel 3: alpha(D = 1 cm) / alpha(D = 2 cm)   (paper: 1)
+  reset
+  set encoding utf8
+  set origin 0,0.47
+  set size 0.5,0.235
+  set title "alpha(D = 1 cm) / alpha(D = 2 cm)   (paper: 1)"
+  set xlabel "D/d_g"
+  set ylabel "alpha(D = 1 cm) / alpha(D = 2 cm)"
+  set grid lc rgb "#d0d0d0"
+  set xrange [4:11]
+  set yrange [0.9498408:1.6771492]
+  unset key
+  set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
+  set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
+  set samples 400
+  plot data index 2 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+       1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
+
+  # ---- panel 4: lambda\_vz / D   (paper: 0.98 ± 0.15)
+  reset
+  set encoding utf8
+  set origin 0.5,0.47
+  set size 0.5,0.235
+  set title "lambda\\_vz / D   (paper: 0.98 ± 0.15)"
+  set xlabel "D/d_g"
+  set ylabel "lambda\\_vz / D"
+  set grid lc rgb "#d0d0d0"
+  set xrange [4:11]
+  set yrange [0.3236572686:1.189729091]
+  unset key
+  set object 10 rectangle from graph 0, first 0.83 to graph 1, first 1.13 behind fillcolor rgb "#d62728" fillstyle transparent solid 0.18 noborder
+  set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
+  set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
+  set samples 400
+  plot keyentry with filledcurves fillcolor rgb "#d62728" fillstyle transparent solid 0.36 noborder title "paper: 0.98 ± 0.15", \
+       data index 3 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+       0.98 with lines lw 1.5 dt 2 lc rgb "#d62728" notitle
+
+  # ---- panel 5: phi at r = R (I -> 0)   (paper: 0.57)
+  reset
+  set encoding utf8
+  set origin 0,0.235
+  set size 0.5,0.235
+  set title "phi at r = R (I -> 0)   (paper: 0.57)"
+  set xlabel "D/d_g"
+  set ylabel "phi at r = R (I -> 0)"
+  set grid lc rgb "#d0d0d0"
+  set xrange [4:11]
+  set yrange [0.5207269602:0.5736498548]
+  unset key
+  set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
+  set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
+  set samples 400
+  plot data index 4 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+       0.57 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 0.57"
+
+  # ---- panel 6: d phi / d I at r = R   (paper: -0.35)
+  reset
+  set encoding utf8
+  set origin 0.5,0.235
+  set size 0.5,0.235
+  set title "d phi / d I at r = R   (paper: -0.35)"
+  set xlabel "D/d_g"
+  set ylabel "d phi / d I at r = R"
+  set grid lc rgb "#d0d0d0"
+  set xrange [4:11]
+  set yrange [-0.3734201804:-0.03382756443]
+  unset key
+  set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
+  set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
+  set samples 400
+  plot data index 5 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+       -0.35 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: -0.35"
+
+  # ---- panel 7: drag / (mu g M)   (paper: 1)
+  reset
+  set encoding utf8
+  set origin 0,0
+  set size 0.5,0.235
+  set title "drag / (mu g M)   (paper: 1)"
+  set xlabel "D/d_g"
+  set ylabel "drag / (mu g M)"
+  set grid lc rgb "#d0d0d0"
+  set xrange [4:11]
+  set yrange [0.940331708:1.805521942]
+  unset key
+  set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
+  set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
+  set samples 400
+  plot data index 6 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+       1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
+  unset multiplot
+  unset multiplot
+  set output
+}
