@@ -47,6 +47,24 @@ stats() { awk '{ s += $1; ss += $1 * $1; n++ }
         m = s / n; sd = n > 1 ? sqrt((ss - n * m * m) / (n - 1)) : 0
         printf "%.4g +- %.2g n = %d\n", m, sd, n }'; }
 
+# the peak law of granpen collapse --ensemble's JSON: "VALUE +- SE (fit; 95% over runs: CI)"
+ensemble_peak() {
+  grep -o '"peak_exponent": {[^}]*}' "$1" | head -1 |
+    awk '{ for (i = 1; i <= NF; i++) { k = $i; gsub(/[":,{]/, "", k); v = $(i + 1); gsub(/[,}]/, "", v); x[k] = v }
+           printf "%.4g +- %.2g (fit; 95%% over runs: %.2g)\n", x["value"], x["se"], x["ci95"] }'
+}
+
+# the local exponent of the peak law between successive speeds, from the mean peak over the
+# runs of each speed in granpen collapse's JSON: "V1-V2: E, ..." (does it approach 2 at speed?)
+local_peak_exponents() {
+  grep -o '"v0": [-0-9.e+]*, "k_z": [-0-9.e+]*, "peak": [-0-9.e+]*' "$1" | tr -d ',' |
+    awk '{ s[$2] += $6; n[$2]++ } END { k = 0; for (v in s) vs[++k] = v + 0
+           for (i = 1; i <= k; i++) for (j = i + 1; j <= k; j++) if (vs[j] < vs[i]) { t = vs[i]; vs[i] = vs[j]; vs[j] = t }
+           out = ""; for (i = 1; i < k; i++) { a = s[vs[i]] / n[vs[i]]; b = s[vs[i + 1]] / n[vs[i + 1]]
+             out = out (i > 1 ? ", " : "") sprintf("%g-%g: %.2f", vs[i], vs[i + 1], log(b / a) / log(vs[i + 1] / vs[i])) }
+           print out }'
+}
+
 # column NAME of a CSV with a header row, for the rows where column KEY equals VALUE (repeatable)
 col() { # col FILE NAME [KEY VALUE]...
   local f=$1 name=$2; shift 2
@@ -123,6 +141,12 @@ analyse_traces() {
   "$CLI" collapse "$dir" --alpha "$alpha" --tbin 0.25 --json "$o/collapse_all.json" > "$o/collapse_all.txt"
   jget() { grep -o "\"$2\": [-0-9.e+]*" "$1" | head -1 | awk '{print $2}'; }
   put "$preset.peak_exponent = $(jget "$o/collapse_v0.json" peak_exponent) +- $(jget "$o/collapse_v0.json" peak_exponent_ci95) (95%)  # granpen collapse, g = 981, D = 2, every v0"
+  # the peak of each speed's ensemble mean (beds aligned at their onsets, 0.02 cm bins, the
+  # 1e-4 s trace window at 200 cm/s): the largest of many noisy samples inflates the peak of a
+  # slow push, which samples its first 0.7 R more densely, and so lowers the per-trace exponent
+  "$CLI" collapse "${v0set[@]}" --alpha "$alpha" --tbin 0.25 --ensemble --ensemble-bin 0.02 --json "$o/collapse_v0_ensemble.json" > "$o/collapse_v0_ensemble.txt"
+  put "$preset.peak_exponent_ensemble = $(ensemble_peak "$o/collapse_v0_ensemble.json")  # granpen collapse --ensemble --ensemble-bin 0.02, g = 981, D = 2, every v0"
+  put "$preset.peak_exponent_local = $(local_peak_exponents "$o/collapse_v0.json")  # between successive v0, the beds' mean peaks"
   put "$preset.t_star = $(jget "$o/collapse_all.json" t_star_mean) +- $(jget "$o/collapse_all.json" t_star_sd) n = $(jget "$o/collapse_all.json" n_crossed) of $(ls "$dir"/*.csv | wc -l)  # granpen collapse --alpha $alpha, every v0, g, D"
   put "$preset.t_star_ensemble = $(jget "$o/collapse_all.json" t_star_ensemble) (crossed: $(grep -o '"ensemble_crossed": [a-z]*' "$o/collapse_all.json" | awk '{print $2}'))  # the mean of F/F_z over the traces"
   put "$preset.collapse_spread_z = $(jget "$o/collapse_all.json" spread_z)  # spread of F/F_z across traces against z"
@@ -206,6 +230,9 @@ dg10_peak() {
   # the depth term's, not an impact peak
   for f in "${traces[@]}"; do case $f in *_v20_*) ;; *) fast+=("$f") ;; esac; done
   "$CLI" collapse "${fast[@]}" --alpha 35 --tbin 0.25 --json "$o/collapse_peak_fast.json" > "$o/collapse_peak_fast.txt"
+  "$CLI" collapse "${traces[@]}" --alpha 35 --tbin 0.25 --ensemble --ensemble-bin 0.02 --json "$o/collapse_peak_ensemble.json" > "$o/collapse_peak_ensemble.txt"
+  put "dg10.peak_exponent_ensemble = $(ensemble_peak "$o/collapse_peak_ensemble.json")  # granpen collapse --ensemble --ensemble-bin 0.02, 3 beds x 5 speeds"
+  put "dg10.peak_exponent_local = $(local_peak_exponents "$o/collapse_peak.json")  # between successive v0, the beds' mean peaks"
   put "dg10.peak_exponent_from_2vc = $(jget "$o/collapse_peak_fast.json" peak_exponent) +- $(jget "$o/collapse_peak_fast.json" peak_exponent_ci95) (95%)  # granpen collapse, the 12 traces of 40 to 200 cm/s"
   put "dg10.peak_z = $(peak_z "$o/collapse_peak_fast.txt" | stats)  # peak position over the 12 traces of 40 to 200 cm/s, cm"
   say "dg10: figures of the peak pushes (granpen plot)"
@@ -279,6 +306,9 @@ ratio_of() { # QUANTITY RATIO KEY1 KEY2 PAPER PAPER_ERROR
   row_of "peak exponent (v_c to 10 v_c)" 5 bench.peak_exponent 2 "" 1.96
   row_of "peak exponent (v_c to 10 v_c)" 6.67 mid.peak_exponent 2 "" 1.96
   row_of "peak exponent (v_c to 10 v_c)" 10 dg10.peak_exponent 2 "" 1.96
+  row_of "peak exponent of the ensemble means" 5 bench.peak_exponent_ensemble 2 ""
+  row_of "peak exponent of the ensemble means" 6.67 mid.peak_exponent_ensemble 2 ""
+  row_of "peak exponent of the ensemble means" 10 dg10.peak_exponent_ensemble 2 ""
   ratio_of "alpha(D = 1 cm) / alpha(D = 2 cm)" 5 bench.alpha0_window.v28.g981.D1 bench.alpha0_window.v28.g981.D2 1 ""
   ratio_of "alpha(D = 1 cm) / alpha(D = 2 cm)" 6.67 mid.alpha0_window.v90.g981.D1 mid.alpha0_window.v90.g981.D2 1 ""
   ratio_of "alpha(D = 1 cm) / alpha(D = 2 cm)" 10 dg10.alpha0_window.v100.D1 dg10.alpha0_window.v100.D2 1 ""

@@ -50,10 +50,28 @@ do for [fmt in formats] {
   plot data index 1 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        2 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 2"
 
-  # ---- panel 3: alpha(D = 1 cm) / alpha(D = 2 cm)   (paper: 1)
+  # ---- panel 3: peak exponent of the ensemble means   (paper: 2)
   reset
   set encoding utf8
   set origin 0,0.47
+  set size 0.5,0.235
+  set title "peak exponent of the ensemble means   (paper: 2)"
+  set xlabel "D/d_g"
+  set ylabel "peak exponent of the ensemble means"
+  set grid lc rgb "#d0d0d0"
+  set xrange [4:11]
+  set yrange [1.49456:2.03744]
+  unset key
+  set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
+  set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
+  set samples 400
+  plot data index 2 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+       2 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 2"
+
+  # ---- panel 4: alpha(D = 1 cm) / alpha(D = 2 cm)   (paper: 1)
+  reset
+  set encoding utf8
+  set origin 0.5,0.47
   set size 0.5,0.235
   set title "alpha(D = 1 cm) / alpha(D = 2 cm)   (paper: 1)"
   set xlabel "D/d_g"
@@ -65,13 +83,13 @@ do for [fmt in formats] {
   set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
   set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
   set samples 400
-  plot data index 2 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+  plot data index 3 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
 
-  # ---- panel 4: lambda\_vz / D   (paper: 0.98 ± 0.15)
+  # ---- panel 5: lambda\_vz / D   (paper: 0.98 ± 0.15)
   reset
   set encoding utf8
-  set origin 0.5,0.47
+  set origin 0,0.235
   set size 0.5,0.235
   set title "lambda\\_vz / D   (paper: 0.98 ± 0.15)"
   set xlabel "D/d_g"
@@ -85,13 +103,13 @@ do for [fmt in formats] {
   set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
   set samples 400
   plot keyentry with filledcurves fillcolor rgb "#d62728" fillstyle transparent solid 0.36 noborder title "paper: 0.98 ± 0.15", \
-       data index 3 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+       data index 4 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        0.98 with lines lw 1.5 dt 2 lc rgb "#d62728" notitle
 
-  # ---- panel 5: phi at r = R (I -> 0)   (paper: 0.57)
+  # ---- panel 6: phi at r = R (I -> 0)   (paper: 0.57)
   reset
   set encoding utf8
-  set origin 0,0.235
+  set origin 0.5,0.235
   set size 0.5,0.235
   set title "phi at r = R (I -> 0)   (paper: 0.57)"
   set xlabel "D/d_g"
@@ -103,13 +121,13 @@ do for [fmt in formats] {
   set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
   set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
   set samples 400
-  plot data index 4 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+  plot data index 5 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        0.57 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 0.57"
 
-  # ---- panel 6: d phi / d I at r = R   (paper: -0.35)
+  # ---- panel 7: d phi / d I at r = R   (paper: -0.35)
   reset
   set encoding utf8
-  set origin 0.5,0.235
+  set origin 0,0
   set size 0.5,0.235
   set title "d phi / d I at r = R   (paper: -0.35)"
   set xlabel "D/d_g"
@@ -121,13 +139,13 @@ do for [fmt in formats] {
   set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
   set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
   set samples 400
-  plot data index 5 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+  plot data index 6 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        -0.35 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: -0.35"
 
-  # ---- panel 7: drag / (mu g M)   (paper: 1)
+  # ---- panel 8: drag / (mu g M)   (paper: 1)
   reset
   set encoding utf8
-  set origin 0,0
+  set origin 0.5,0
   set size 0.5,0.235
   set title "drag / (mu g M)   (paper: 1)"
   set xlabel "D/d_g"
@@ -139,7 +157,7 @@ do for [fmt in formats] {
   set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
   set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
   set samples 400
-  plot data index 6 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+  plot data index 7 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
   unset multiplot
   unset multiplot
