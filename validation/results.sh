@@ -47,6 +47,9 @@ stats() { awk '{ s += $1; ss += $1 * $1; n++ }
         m = s / n; sd = n > 1 ? sqrt((ss - n * m * m) / (n - 1)) : 0
         printf "%.4g +- %.2g n = %d\n", m, sd, n }'; }
 
+# the first number member KEY of a JSON file: jget FILE KEY
+jget() { grep -o "\"$2\": [-0-9.e+]*" "$1" | head -1 | awk '{print $2}'; }
+
 # the peak law of granpen collapse --ensemble's JSON: "VALUE +- SE (fit; 95% over runs: CI)"
 ensemble_peak() {
   grep -o '"peak_exponent": {[^}]*}' "$1" | head -1 |
@@ -139,7 +142,6 @@ analyse_traces() {
   # wavelength of the force's fluctuations
   "$CLI" collapse "${v0set[@]}" --alpha "$alpha" --tbin 0.25 --json "$o/collapse_v0.json" > "$o/collapse_v0.txt"
   "$CLI" collapse "$dir" --alpha "$alpha" --tbin 0.25 --json "$o/collapse_all.json" > "$o/collapse_all.txt"
-  jget() { grep -o "\"$2\": [-0-9.e+]*" "$1" | head -1 | awk '{print $2}'; }
   put "$preset.peak_exponent = $(jget "$o/collapse_v0.json" peak_exponent) +- $(jget "$o/collapse_v0.json" peak_exponent_ci95) (95%)  # granpen collapse, g = 981, D = 2, every v0"
   # the peak of each speed's ensemble mean (beds aligned at their onsets, 0.02 cm bins, the
   # 1e-4 s trace window at 200 cm/s): the largest of many noisy samples inflates the peak of a
@@ -214,30 +216,43 @@ dg10_beds() {
   put "dg10.phi_0 = $(grep -h '^phi_0' "$DG10"/beds/bed_dg10_mu0.3_s[123].info | awk '{print $3}' | stats)  # bed .info files, mu = 0.3 (2 x 2 tiles)"
 }
 
-dg10_peak() {
-  local d=$DG10/dg10_peak o=$OUT/dg10 traces=() fast=() f n
-  for f in "$d"/dg10_mu0.3_s[123]_v*_g981_D2.0.csv; do [ -f "$f" ] && traces+=("$f"); done
-  n=${#traces[@]}
-  [ "$n" = 15 ] || { say "dg10 peak: $n of 15 pushes committed in $d: skipped until all are"; return 0; }
+# The peak law of a set of short pushes (g = 981, D = 2): KEY OUTDIR SLOWEST TRACE... (SLOWEST:
+# the v0 at v_c, left out of the "from 2 v_c" fit). --alpha: the paper's 35, for F/F_z,
+# which these lines do not report; the peak (max F over z < 0.7 R) does not depend on it.
+peak_law() {
+  local key=$1 o=$2 slow=$3 f fast=(); shift 3
   mkdir -p "$o"
-  say "dg10: the peak law on 3 beds x 5 speeds (granpen collapse)"
-  # --alpha: the paper's 35 for F/F_z (not reported from these 1.5 cm pushes); the peak
-  # (max F over z < 0.7 R) does not depend on it
-  "$CLI" collapse "${traces[@]}" --alpha 35 --tbin 0.25 --json "$o/collapse_peak.json" > "$o/collapse_peak.txt"
-  jget() { grep -o "\"$2\": [-0-9.e+]*" "$1" | head -1 | awk '{print $2}'; }
-  put "dg10.peak_exponent = $(jget "$o/collapse_peak.json" peak_exponent) +- $(jget "$o/collapse_peak.json" peak_exponent_ci95) (95%)  # granpen collapse, 15 traces: v0 = 20 to 200 cm/s (v_c to 10 v_c), 3 beds"
+  "$CLI" collapse "$@" --alpha 35 --tbin 0.25 --json "$o/collapse_peak.json" > "$o/collapse_peak.txt"
+  put "$key.peak_exponent = $(jget "$o/collapse_peak.json" peak_exponent) +- $(jget "$o/collapse_peak.json" peak_exponent_ci95) (95%)  # granpen collapse, $# traces, every v0"
+  "$CLI" collapse "$@" --alpha 35 --tbin 0.25 --ensemble --ensemble-bin 0.02 --json "$o/collapse_peak_ensemble.json" > "$o/collapse_peak_ensemble.txt"
+  put "$key.peak_exponent_ensemble = $(ensemble_peak "$o/collapse_peak_ensemble.json")  # granpen collapse --ensemble --ensemble-bin 0.02"
+  put "$key.peak_exponent_local = $(local_peak_exponents "$o/collapse_peak.json")  # between successive v0, the beds' mean peaks"
   # from 2 v_c, the paper's range (40 to 240 cm/s): at v_c the largest force within 0.7 R is
   # the depth term's, not an impact peak
-  for f in "${traces[@]}"; do case $f in *_v20_*) ;; *) fast+=("$f") ;; esac; done
+  for f in "$@"; do case $f in *_v${slow}_*) ;; *) fast+=("$f") ;; esac; done
   "$CLI" collapse "${fast[@]}" --alpha 35 --tbin 0.25 --json "$o/collapse_peak_fast.json" > "$o/collapse_peak_fast.txt"
-  "$CLI" collapse "${traces[@]}" --alpha 35 --tbin 0.25 --ensemble --ensemble-bin 0.02 --json "$o/collapse_peak_ensemble.json" > "$o/collapse_peak_ensemble.txt"
-  put "dg10.peak_exponent_ensemble = $(ensemble_peak "$o/collapse_peak_ensemble.json")  # granpen collapse --ensemble --ensemble-bin 0.02, 3 beds x 5 speeds"
-  put "dg10.peak_exponent_local = $(local_peak_exponents "$o/collapse_peak.json")  # between successive v0, the beds' mean peaks"
-  put "dg10.peak_exponent_from_2vc = $(jget "$o/collapse_peak_fast.json" peak_exponent) +- $(jget "$o/collapse_peak_fast.json" peak_exponent_ci95) (95%)  # granpen collapse, the 12 traces of 40 to 200 cm/s"
-  put "dg10.peak_z = $(peak_z "$o/collapse_peak_fast.txt" | stats)  # peak position over the 12 traces of 40 to 200 cm/s, cm"
-  say "dg10: figures of the peak pushes (granpen plot)"
-  "$CLI" plot force "${traces[@]}" --out "$o/fig" > /dev/null
-  "$CLI" plot peak "${traces[@]}" --alpha 35 --out "$o/fig" > /dev/null
+  put "$key.peak_exponent_from_2vc = $(jget "$o/collapse_peak_fast.json" peak_exponent) +- $(jget "$o/collapse_peak_fast.json" peak_exponent_ci95) (95%)  # granpen collapse, the ${#fast[@]} traces above v0 = $slow"
+  put "$key.peak_z = $(peak_z "$o/collapse_peak_fast.txt" | stats)  # peak position over the ${#fast[@]} traces above v0 = $slow, cm"
+  "$CLI" plot force "$@" --out "$o/fig" > /dev/null
+  "$CLI" plot peak "$@" --alpha 35 --out "$o/fig" > /dev/null
+}
+
+dg10_peak() {
+  local d=$DG10/dg10_peak traces=() f
+  for f in "$d"/dg10_mu0.3_s[123]_v*_g981_D2.0.csv; do [ -f "$f" ] && traces+=("$f"); done
+  [ "${#traces[@]}" = 15 ] || { say "dg10 peak: ${#traces[@]} of 15 pushes committed in $d: skipped until all are"; return 0; }
+  say "dg10: the peak law on 3 beds x 5 speeds (granpen collapse, plot)"
+  peak_law dg10 "$OUT/dg10" 20 "${traces[@]}"
+}
+
+# the bench peak sweep with grains ten times stiffer (validation/peak_stiffness.sh)
+stiff_peak() {
+  local d=$ROOT/data/sims/peak_stiffness traces=() f
+  for f in "$d"/bench_mu0.3_s[12]_v*_g981_D2.0.csv; do [ -f "$f" ] && traces+=("$f"); done
+  [ "${#traces[@]}" = 10 ] || { say "stiffness: ${#traces[@]} of 10 pushes in $d: skipped (validation/peak_stiffness.sh)"; return 0; }
+  say "bench, k_n x 10: the peak law (granpen collapse, plot)"
+  put "bench_stiff.phi_0 = $(grep -h '^phi_0' "$d"/bed_*.info | awk '{print $3}' | stats)  # bed .info files, k_n = k_t = 1e10"
+  peak_law bench_stiff "$OUT/bench_stiff" 28 "${traces[@]}"
 }
 
 dg10_flow() {
@@ -275,6 +290,7 @@ dg10_D() {
   done
 }
 
+stiff_peak
 if [ -d "$DG10" ]; then dg10_beds; dg10_peak; dg10_flow; dg10_D; else say "dg10: $DG10 missing, skipped"; fi
 
 # ---------------------------------------------------------------- against D/d_g
