@@ -3,7 +3,8 @@
 # validation sweeps' traces and dumps, with granpen's own commands (fit, collapse, flow,
 # momentum, plot); awk only averages their outputs over beds.
 #
-#   validation/results.sh [--out DIR] [--bench DIR] [--mid DIR] [--dumps DIR] [--dg10 DIR] [--cli PATH]
+#   validation/results.sh [--out DIR] [--bench DIR] [--mid DIR] [--dumps DIR] [--dg10 DIR] [--stiff DIR]
+#                         [--cli PATH]
 #
 #   --bench DIR  traces and bed .info files of the bench validation sweep
 #                (default data/sims/validation_bench)
@@ -17,13 +18,15 @@
 #                part (dg10_peak, dg10_flow, dg10_D) is analysed once all its pushes are
 #                there, and skipped with a note before, so that the numbers of a part never
 #                change as its pushes arrive
+#   --stiff DIR  the traces of validation/peak_stiffness.sh (default data/sims/peak_stiffness;
+#                skipped with a note until all 10 are there)
 #   --out DIR    where numbers.txt, scaling.csv and the figures go (default docs/results)
 #
 # numbers.txt: one line per measured quantity, "KEY = VALUE [+- ERROR] [n = N]  # how".
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 OUT=$ROOT/docs/results BENCH=$ROOT/data/sims/validation_bench MID=$ROOT/data/sims/validation_mid
-DUMPS=$ROOT/runs/validation_mid/traces CLI=${GRANPEN_CLI:-$ROOT/build/analysis/granpen-cli} DG10=$ROOT/data/sims/dg10
+DUMPS=$ROOT/runs/validation_mid/traces CLI=${GRANPEN_CLI:-$ROOT/build/analysis/granpen-cli} DG10=$ROOT/data/sims/dg10 STIFF=$ROOT/data/sims/peak_stiffness
 while [ $# -gt 0 ]; do
   case $1 in
     --out) OUT=$2; shift 2 ;;
@@ -31,6 +34,7 @@ while [ $# -gt 0 ]; do
     --mid) MID=$2; shift 2 ;;
     --dumps) DUMPS=$2; shift 2 ;;
     --dg10) DG10=$2; shift 2 ;;
+    --stiff) STIFF=$2; shift 2 ;;
     --cli) CLI=$2; shift 2 ;;
     *) echo "results.sh: unknown argument $1 (see the header of $0)" >&2; exit 2 ;;
   esac
@@ -247,12 +251,19 @@ dg10_peak() {
 
 # the bench peak sweep with grains ten times stiffer (validation/peak_stiffness.sh)
 stiff_peak() {
-  local d=$ROOT/data/sims/peak_stiffness traces=() f
+  local d=$STIFF traces=() f
   for f in "$d"/bench_mu0.3_s[12]_v*_g981_D2.0.csv; do [ -f "$f" ] && traces+=("$f"); done
   [ "${#traces[@]}" = 10 ] || { say "stiffness: ${#traces[@]} of 10 pushes in $d: skipped (validation/peak_stiffness.sh)"; return 0; }
   say "bench, k_n x 10: the peak law (granpen collapse, plot)"
   put "bench_stiff.phi_0 = $(grep -h '^phi_0' "$d"/bed_*.info | awk '{print $3}' | stats)  # bed .info files, k_n = k_t = 1e10"
   peak_law bench_stiff "$OUT/bench_stiff" 28 "${traces[@]}"
+}
+
+# alpha through the origin of the one push of (V0, D) in a granpen fit CSV: "VALUE +- SE n = 1"
+one_alpha0() { # CSV V0 D
+  awk -F, -v v="$2" -v D="$3" 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next }
+    $i["v0"] + 0 == v + 0 && $i["D"] + 0 == D + 0 { n++; a = $i["alpha0"]; e = $i["alpha0_se"] }
+    END { if (n == 1) printf "%.4g +- %.2g n = 1\n", a, e; else print "undefined n = " n + 0 }' "$1"
 }
 
 dg10_flow() {
@@ -266,7 +277,7 @@ dg10_flow() {
   say "dg10: the full pushes at 40, 100, 200 cm/s (granpen fit, collapse) and their flow"
   "$CLI" fit "$d"/dg10_mu0.3_s1_v*_g981_D2.0.csv --zmin 3 --csv "$o/fit_z3.csv" > "$o/fit_z3.txt"
   for v in 40 100 200; do
-    put "dg10.alpha0_window.v$v.D2 = $(col "$o/fit_z3.csv" alpha0 v0 "$v" D 2 | stats)  # granpen fit --zmin 3: k_z0 / (mu rho_g g D^2), bed 1"
+    put "dg10.alpha0_window.v$v.D2 = $(one_alpha0 "$o/fit_z3.csv" "$v" 2)  # granpen fit --zmin 3: k_z0 / (mu rho_g g D^2), bed 1; the fit's standard error"
   done
   for v in 40 100 200; do
     id=dg10_mu0.3_s1_v${v}_g981_D2.0
@@ -285,8 +296,8 @@ dg10_D() {
   mkdir -p "$o"
   say "dg10: alpha against D at 100 cm/s (granpen fit)"
   "$CLI" fit "${traces[@]}" "$DG10/dg10_flow/dg10_mu0.3_s1_v100_g981_D2.0.csv" --zmin 3 --csv "$o/fit_D.csv" > "$o/fit_D.txt"
-  for D in 1 2 3; do
-    put "dg10.alpha0_window.v100.D$D = $(col "$o/fit_D.csv" alpha0 D "$D" | stats)  # granpen fit --zmin 3, bed 1, v0 = 100"
+  for D in 1 3; do    # D = 2: dg10_flow's push at 100 cm/s, above
+    put "dg10.alpha0_window.v100.D$D = $(one_alpha0 "$o/fit_D.csv" 100 "$D")  # granpen fit --zmin 3, bed 1, v0 = 100; the fit's standard error"
   done
 }
 

@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# validation/results.sh's parts that wait for runs still under way (the dg10 column: its
+# peak, flow and D parts; the bench sweep with stiffer grains), on stand-ins made of committed
+# traces and tables with the names those runs will have: every line of a part must be what
+# granpen gives on the same files directly (another route: the CLI called here, or the mid
+# push's own lines for the flow tables), and a part with a file missing must be skipped with
+# a note and add no line.
+#   results_parts.sh CLI OUT
+set -euo pipefail
+CLI=$1 OUT=$2
+ROOT=$(cd "$(dirname "$0")/../.." && pwd)
+rm -rf "$OUT"; mkdir -p "$OUT"
+fail() { echo "FAIL: $*"; exit 1; }
+BENCH=$ROOT/data/sims/validation_bench MID=$ROOT/data/sims/validation_mid
+# a trace copied with its header's v0 (and D) set as the run it stands for
+stand_in() { # SRC DEST V0 [D]
+  sed -e "s/^# v0 = .*/# v0 = $3/" -e "${4:+s/^# D = .*/# D = $4/}" "$1" > "$2"
+}
+
+# ---- dg10: 3 beds x 5 speeds of peak pushes (the bench's beds 1, 2 and 1 again), 3 flow
+# pushes (the mid push's tables), the D pushes
+DG=$OUT/dg10
+mkdir -p "$DG/beds" "$DG/dg10_peak" "$DG/dg10_flow" "$DG/dg10_D"
+for s in 1 2 3; do cp "$BENCH/bed_bench_mu0.3_s$(( s == 2 ? 2 : 1 )).info" "$DG/beds/bed_dg10_mu0.3_s$s.info"; done
+set -- 20:28 40:50 80:100 140:200 200:280
+for vv in "$@"; do
+  v=${vv%%:*} b=${vv##*:}
+  for s in 1 2 3; do
+    stand_in "$BENCH/bench_mu0.3_s$(( s == 2 ? 2 : 1 ))_v${b}_g981_D2.0.csv" "$DG/dg10_peak/dg10_mu0.3_s${s}_v${v}_g981_D2.0.csv" "$v"
+  done
+done
+for vv in 40:30 100:90 200:240; do
+  v=${vv%%:*} m=${vv##*:} id=dg10_mu0.3_s1_v${vv%%:*}_g981_D2.0
+  stand_in "$MID/mid_mu0.3_s1_v${m}_g981_D2.0.csv" "$DG/dg10_flow/$id.csv" "$v"
+  mkdir -p "$DG/dg10_flow/$id.flow"
+  cp -r "$ROOT/docs/results/mid/flow" "$ROOT/docs/results/mid/surface" "$ROOT/docs/results/mid/momentum" \
+    "$ROOT/docs/results/mid/window.txt" "$DG/dg10_flow/$id.flow/"
+done
+stand_in "$MID/mid_mu0.3_s1_v90_g981_D1.0.csv" "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D1.0.csv" 100
+stand_in "$MID/mid_mu0.3_s2_v90_g981_D1.0.csv" "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D3.0.csv" 100 3
+# ---- the stiffer bench: the bench's own traces (peak_law against analyse_traces)
+ST=$OUT/stiff
+mkdir -p "$ST"
+cp "$BENCH"/bench_mu0.3_s[12]_v*_g981_D2.0.csv "$BENCH"/bed_bench_mu0.3_s[12].info "$ST/"
+
+GRANPEN_CLI=$CLI "$ROOT/validation/results.sh" --out "$OUT/res" --dumps /nonexistent --dg10 "$DG" --stiff "$ST" \
+  > "$OUT/res.log" 2>&1 || { cat "$OUT/res.log"; fail "results.sh failed"; }
+N=$OUT/res/numbers.txt
+val() { awk -v k="$1" '$1 == k { sub(/  #.*/, ""); sub(/^[^=]*= /, ""); print; exit }' "$N"; }
+same() { [ "$(val "$1")" = "$2" ] || fail "$1 = '$(val "$1")', expected '$2'"; }
+num() { grep -o "\"$2\": [-0-9.e+]*" "$1" | head -1 | awk '{print $2}'; }
+
+# the peak law: granpen collapse on the 15 files directly
+"$CLI" collapse "$DG"/dg10_peak/*.csv --alpha 35 --tbin 0.25 --json "$OUT/direct.json" > /dev/null
+same dg10.peak_exponent "$(num "$OUT/direct.json" peak_exponent) +- $(num "$OUT/direct.json" peak_exponent_ci95) (95%)"
+"$CLI" collapse $(ls "$DG"/dg10_peak/*.csv | grep -v _v20_) --alpha 35 --tbin 0.25 --json "$OUT/fast.json" > /dev/null
+same dg10.peak_exponent_from_2vc "$(num "$OUT/fast.json" peak_exponent) +- $(num "$OUT/fast.json" peak_exponent_ci95) (95%)"
+same dg10.phi_0 "$(grep -h '^phi_0' "$DG"/beds/*.info | awk '{ s += $3; ss += $3 * $3; n++ } END { m = s / n
+  printf "%.4g +- %.2g n = %d\n", m, sqrt((ss - n * m * m) / (n - 1)), n }')"
+# the stiffer bench through peak_law gives the bench's own lines of analyse_traces
+for k in peak_exponent peak_exponent_ensemble peak_exponent_local; do same "bench_stiff.$k" "$(val "bench.$k")"; done
+# the flow rows of each dg10 speed: the mid push's, from the same tables
+for v in 40 100 200; do
+  for k in lambda_vz_D edge_phi_0 edge_slope surface_flux_sign_change_t drag_over_mu_g_Mmove; do
+    same "dg10.v$v.$k" "$(val "mid.$k")"
+  done
+done
+# alpha through the origin over z >= 3: granpen fit on each file directly
+alpha0() { "$CLI" fit "$1" --zmin 3 --csv "$OUT/a.csv" > /dev/null
+  awk -F, 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next } { printf "%.4g +- %.2g n = 1\n", $i["alpha0"], $i["alpha0_se"] }' "$OUT/a.csv"; }
+same dg10.alpha0_window.v100.D2 "$(alpha0 "$DG/dg10_flow/dg10_mu0.3_s1_v100_g981_D2.0.csv")"
+same dg10.alpha0_window.v40.D2 "$(alpha0 "$DG/dg10_flow/dg10_mu0.3_s1_v40_g981_D2.0.csv")"
+same dg10.alpha0_window.v100.D1 "$(alpha0 "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D1.0.csv")"
+same dg10.alpha0_window.v100.D3 "$(alpha0 "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D3.0.csv")"
+# every key once
+dup=$(sed 's/ = .*//' "$N" | sort | uniq -d)
+[ -z "$dup" ] || fail "keys given twice: $dup"
+# the scaling table holds the dg10 values, and its figure was made
+grep -q "^peak exponent (v_c to 10 v_c),10,$(val dg10.peak_exponent | awk '{print $1}')," "$OUT/res/scaling.csv" \
+  || fail "scaling.csv lacks dg10's peak exponent: $(grep '^peak exponent (v_c' "$OUT/res/scaling.csv")"
+[ -s "$OUT/res/scaling/scaling.gp" ] || fail "no scaling figure"
+
+# a part with one push missing adds no line and says so
+rm "$DG/dg10_flow/dg10_mu0.3_s1_v200_g981_D2.0.flow/window.txt" "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D3.0.csv"
+GRANPEN_CLI=$CLI "$ROOT/validation/results.sh" --out "$OUT/res2" --dumps /nonexistent --dg10 "$DG" --stiff "$ST" \
+  > "$OUT/res2.log" 2>&1 || { cat "$OUT/res2.log"; fail "results.sh failed with a part missing"; }
+! grep -q '^dg10\.v\|^dg10\.alpha0_window' "$OUT/res2/numbers.txt" || fail "a part with a push missing added lines"
+grep -q "dg10 flow: the full pushes at 200 cm/s" "$OUT/res2.log" || fail "no note of the missing flow push"
+grep -q "dg10 D: the pushes of D = 3.0 cm" "$OUT/res2.log" || fail "no note of the missing D push"
+grep -q '^dg10.peak_exponent = ' "$OUT/res2/numbers.txt" || fail "the complete peak part was dropped"
+echo "results.sh's waiting parts: every line as granpen gives it directly; incomplete parts skipped"
