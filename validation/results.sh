@@ -81,6 +81,31 @@ col() { # col FILE NAME [KEY VALUE]...
       if (ok) print $idx[name] }' "$f"
 }
 
+# peak positions (cm) of `granpen collapse`'s text output: "... peak F dyne at z = Z cm ..."
+peak_z() { grep -o 'dyne at z = [-0-9.e+]* cm' "$1" | awk '{print $5}'; }
+# the peak law above v_c, the paper's range from 2 v_c (40 to 240 cm/s): at v_c the largest
+# force within 0.7 R is the depth term's, not an impact peak. Per trace, of the ensemble means,
+# and as two terms, peak = c1 v0 + c2 v0^2 (granpen collapse): the inertial coefficient
+# c2 / (rho_g D^2) and the crossover speed c1 / c2 below which the linear term dominates.
+peak_above_vc() { # KEY OUTDIR SLOW_V0 ALPHA TRACE...
+  local key=$1 o=$2 slow=$3 alpha=$4 f fast=() rho D; shift 4
+  for f in "$@"; do case $f in *_v${slow}_*) ;; *) fast+=("$f") ;; esac; done
+  "$CLI" collapse "${fast[@]}" --alpha "$alpha" --tbin 0.25 --json "$o/collapse_peak_fast.json" > "$o/collapse_peak_fast.txt"
+  put "$key.peak_exponent_from_2vc = $(jget "$o/collapse_peak_fast.json" peak_exponent) +- $(jget "$o/collapse_peak_fast.json" peak_exponent_ci95) (95%)  # granpen collapse, the ${#fast[@]} traces above v0 = $slow"
+  put "$key.peak_z = $(peak_z "$o/collapse_peak_fast.txt" | stats)  # peak position over the ${#fast[@]} traces above v0 = $slow, cm"
+  "$CLI" collapse "${fast[@]}" --alpha "$alpha" --tbin 0.25 --ensemble --ensemble-bin 0.02 --json "$o/collapse_peak_fast_ensemble.json" > "$o/collapse_peak_fast_ensemble.txt"
+  put "$key.peak_exponent_ensemble_from_2vc = $(ensemble_peak "$o/collapse_peak_fast_ensemble.json")  # granpen collapse --ensemble --ensemble-bin 0.02, above v0 = $slow"
+  rho=$(awk '/^# rho_g = / { print $4; exit }' "${fast[0]}") D=$(awk '/^# D = / { print $4; exit }' "${fast[0]}")
+  put "$key.peak_inertial = $(two_term "$o/collapse_peak_fast.json" quadratic "$(awk -v r="$rho" -v d="$D" 'BEGIN { print r * d * d }')")  # granpen collapse: c2 / (rho_g D^2) of peak = c1 v0 + c2 v0^2 above v0 = $slow; standard error"
+  put "$key.peak_crossover_speed = $(two_term "$o/collapse_peak_fast.json" crossover_speed 1)  # granpen collapse: c1 / c2 (cm/s), where the linear term equals the inertial one"
+}
+# FIELD of granpen collapse's peak_two_term divided by DIVISOR: "VALUE +- SE"
+two_term() { # JSON FIELD DIVISOR
+  grep -o '"peak_two_term": {[^}]*}' "$1" | head -1 |
+    awk -v k="$2" -v s="$3" '{ for (i = 1; i <= NF; i++) { f = $i; gsub(/[":,{]/, "", f); v = $(i + 1); gsub(/[,}]/, "", v); x[f] = v }
+      if (!(k in x)) print "undefined"; else printf "%.4g +- %.2g\n", x[k] / s, x[k "_se"] / s }'
+}
+
 # one preset's traces: PRESET DIR ZMIN (k_z window start of the slow speed: the paper's 3 cm
 # where the push goes deep enough, else 2 cm)
 analyse_traces() {
@@ -153,6 +178,7 @@ analyse_traces() {
   "$CLI" collapse "${v0set[@]}" --alpha "$alpha" --tbin 0.25 --ensemble --ensemble-bin 0.02 --json "$o/collapse_v0_ensemble.json" > "$o/collapse_v0_ensemble.txt"
   put "$preset.peak_exponent_ensemble = $(ensemble_peak "$o/collapse_v0_ensemble.json")  # granpen collapse --ensemble --ensemble-bin 0.02, g = 981, D = 2, every v0"
   put "$preset.peak_exponent_local = $(local_peak_exponents "$o/collapse_v0.json")  # between successive v0, the beds' mean peaks"
+  peak_above_vc "$preset" "$o" "$vmin" "$alpha" "${v0set[@]}"
   put "$preset.t_star = $(jget "$o/collapse_all.json" t_star_mean) +- $(jget "$o/collapse_all.json" t_star_sd) n = $(jget "$o/collapse_all.json" n_crossed) of $(ls "$dir"/*.csv | wc -l)  # granpen collapse --alpha $alpha, every v0, g, D"
   put "$preset.t_star_ensemble = $(jget "$o/collapse_all.json" t_star_ensemble) (crossed: $(grep -o '"ensemble_crossed": [a-z]*' "$o/collapse_all.json" | awk '{print $2}'))  # the mean of F/F_z over the traces"
   put "$preset.collapse_spread_z = $(jget "$o/collapse_all.json" spread_z)  # spread of F/F_z across traces against z"
@@ -211,8 +237,6 @@ fi
 # absent or undefined
 nval() { awk -v k="$1" '$1 == k && $3 != "undefined" { print $3; exit }' "$NUM"; }
 nerr() { awk -v k="$1" '$1 == k && $4 == "+-" { print $5; exit }' "$NUM"; }
-# peak positions (cm) of `granpen collapse`'s text output: "... peak F dyne at z = Z cm ..."
-peak_z() { grep -o 'dyne at z = [-0-9.e+]* cm' "$1" | awk '{print $5}'; }
 
 dg10_beds() {
   local n; n=$(ls "$DG10"/beds/bed_dg10_mu0.3_s[123].info 2>/dev/null | wc -l)
@@ -224,19 +248,14 @@ dg10_beds() {
 # the v0 at v_c, left out of the "from 2 v_c" fit). --alpha: the paper's 35, for F/F_z,
 # which these lines do not report; the peak (max F over z < 0.7 R) does not depend on it.
 peak_law() {
-  local key=$1 o=$2 slow=$3 f fast=(); shift 3
+  local key=$1 o=$2 slow=$3; shift 3
   mkdir -p "$o"
   "$CLI" collapse "$@" --alpha 35 --tbin 0.25 --json "$o/collapse_peak.json" > "$o/collapse_peak.txt"
   put "$key.peak_exponent = $(jget "$o/collapse_peak.json" peak_exponent) +- $(jget "$o/collapse_peak.json" peak_exponent_ci95) (95%)  # granpen collapse, $# traces, every v0"
   "$CLI" collapse "$@" --alpha 35 --tbin 0.25 --ensemble --ensemble-bin 0.02 --json "$o/collapse_peak_ensemble.json" > "$o/collapse_peak_ensemble.txt"
   put "$key.peak_exponent_ensemble = $(ensemble_peak "$o/collapse_peak_ensemble.json")  # granpen collapse --ensemble --ensemble-bin 0.02"
   put "$key.peak_exponent_local = $(local_peak_exponents "$o/collapse_peak.json")  # between successive v0, the beds' mean peaks"
-  # from 2 v_c, the paper's range (40 to 240 cm/s): at v_c the largest force within 0.7 R is
-  # the depth term's, not an impact peak
-  for f in "$@"; do case $f in *_v${slow}_*) ;; *) fast+=("$f") ;; esac; done
-  "$CLI" collapse "${fast[@]}" --alpha 35 --tbin 0.25 --json "$o/collapse_peak_fast.json" > "$o/collapse_peak_fast.txt"
-  put "$key.peak_exponent_from_2vc = $(jget "$o/collapse_peak_fast.json" peak_exponent) +- $(jget "$o/collapse_peak_fast.json" peak_exponent_ci95) (95%)  # granpen collapse, the ${#fast[@]} traces above v0 = $slow"
-  put "$key.peak_z = $(peak_z "$o/collapse_peak_fast.txt" | stats)  # peak position over the ${#fast[@]} traces above v0 = $slow, cm"
+  peak_above_vc "$key" "$o" "$slow" 35 "$@"
   "$CLI" plot force "$@" --out "$o/fig" > /dev/null
   "$CLI" plot peak "$@" --alpha 35 --out "$o/fig" > /dev/null
 }
@@ -333,9 +352,16 @@ ratio_of() { # QUANTITY RATIO KEY1 KEY2 PAPER PAPER_ERROR
   row_of "peak exponent (v_c to 10 v_c)" 5 bench.peak_exponent 2 "" 1.96
   row_of "peak exponent (v_c to 10 v_c)" 6.67 mid.peak_exponent 2 "" 1.96
   row_of "peak exponent (v_c to 10 v_c)" 10 dg10.peak_exponent 2 "" 1.96
-  row_of "peak exponent of the ensemble means" 5 bench.peak_exponent_ensemble 2 ""
-  row_of "peak exponent of the ensemble means" 6.67 mid.peak_exponent_ensemble 2 ""
-  row_of "peak exponent of the ensemble means" 10 dg10.peak_exponent_ensemble 2 ""
+  for p in "bench 5" "mid 6.67" "dg10 10"; do set -- $p
+    row_of "peak exponent above v_c (ensemble means)" "$2" "$1.peak_exponent_ensemble_from_2vc" 2 ""
+  done
+  # the peak as c1 v0 + c2 v0^2: the paper gives no number for either (its v0^2 would be v_x -> 0)
+  for p in "bench 5" "mid 6.67" "dg10 10"; do set -- $p
+    row_of "peak = c1 v0 + c2 v0^2: c2 / (rho_g D^2)" "$2" "$1.peak_inertial" "" ""
+  done
+  for p in "bench 5" "mid 6.67" "dg10 10"; do set -- $p
+    row_of "peak = c1 v0 + c2 v0^2: c1 / c2 (cm/s)" "$2" "$1.peak_crossover_speed" "" ""
+  done
   ratio_of "alpha(D = 1 cm) / alpha(D = 2 cm)" 5 bench.alpha0_window.v28.g981.D1 bench.alpha0_window.v28.g981.D2 1 ""
   ratio_of "alpha(D = 1 cm) / alpha(D = 2 cm)" 6.67 mid.alpha0_window.v90.g981.D1 mid.alpha0_window.v90.g981.D2 1 ""
   ratio_of "alpha(D = 1 cm) / alpha(D = 2 cm)" 10 dg10.alpha0_window.v100.D1 dg10.alpha0_window.v100.D2 1 ""

@@ -53,7 +53,15 @@ void print_result(const CollapseResult &r, const CollapseParams &p)
   if (r.peak_ok)
     std::printf("peak law: peak ~ v0^%.2f +- %.2f (95%%; over %zu traces; paper: 2)\n", r.peak_exponent,
                 r.peak_exponent_ci95, r.peak_points);
-  else
+  if (r.peak_two_term_ok)
+    std::printf("peak law, two terms: peak = c1 v0 + c2 v0^2, c1 = %.4g +- %.2g, c2 = %.4g +- %.2g (standard errors); "
+                "crossover speed c1/c2 = %s\n",
+                r.peak_linear, r.peak_linear_se, r.peak_quadratic, r.peak_quadratic_se,
+                r.peak_crossover_ok ? (json_number("%.3g", r.peak_crossover_speed) + " +- " +
+                                       json_number("%.2g", r.peak_crossover_speed_se) + " cm/s")
+                                          .c_str()
+                                    : "none (c2 <= 0)");
+  if (!r.peak_ok)
     std::printf("peak law: needs at least 3 traces over 2 or more speeds\n");
 }
 
@@ -71,6 +79,11 @@ void peak_law_of_all(const std::vector<Trace> &traces, const CollapseParams &p, 
   r.peak_ok = law.peak_ok, r.peak_exponent = law.peak_exponent, r.peak_exponent_se = law.peak_exponent_se;
   r.peak_exponent_ci95 = law.peak_exponent_ci95, r.peak_prefactor = law.peak_prefactor;
   r.peak_v2_prefactor = law.peak_v2_prefactor, r.peak_points = law.peak_points;
+  r.peak_two_term_ok = law.peak_two_term_ok;
+  r.peak_linear = law.peak_linear, r.peak_linear_se = law.peak_linear_se;
+  r.peak_quadratic = law.peak_quadratic, r.peak_quadratic_se = law.peak_quadratic_se;
+  r.peak_crossover_ok = law.peak_crossover_ok;
+  r.peak_crossover_speed = law.peak_crossover_speed, r.peak_crossover_speed_se = law.peak_crossover_speed_se;
 }
 
 void print_ensembles(const std::vector<TraceGroup> &groups, const EnsembleCollapse &c, const CollapseParams &p)

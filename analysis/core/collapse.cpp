@@ -82,7 +82,7 @@ CollapseResult collapse(const std::vector<CollapseInput> &inputs, const Collapse
 {
   CollapseResult res;
   std::vector<std::map<long, std::pair<double, int>>> by_z, by_t;
-  std::vector<double> logv, logpeak;
+  std::vector<double> logv, logpeak, v_of_peak, peak_per_v;
   std::vector<double> stars;
   for (const auto &in : inputs) {
     if (!(in.v0 > 0 && in.D > 0 && in.g > 0 && in.k_z > 0))
@@ -110,6 +110,8 @@ CollapseResult collapse(const std::vector<CollapseInput> &inputs, const Collapse
     if (c.peak > 0.0) {
       logv.push_back(std::log(in.v0));
       logpeak.push_back(std::log(c.peak));
+      v_of_peak.push_back(in.v0);
+      peak_per_v.push_back(c.peak / in.v0);
     }
     by_z.push_back(bz);
     by_t.push_back(bt);
@@ -159,6 +161,22 @@ CollapseResult collapse(const std::vector<CollapseInput> &inputs, const Collapse
     for (std::size_t k = 0; k < logv.size(); ++k) mv += logv[k], mp += logpeak[k];
     mv /= (double) logv.size(), mp /= (double) logv.size();
     res.peak_v2_prefactor = std::exp(mp - 2 * mv);
+    const auto t = linear_fit(v_of_peak, peak_per_v);
+    res.peak_two_term_ok = true;
+    res.peak_linear = t.a, res.peak_linear_se = t.se_a;
+    res.peak_quadratic = t.b, res.peak_quadratic_se = t.se_b;
+    if (t.b > 0.0) {
+      double vbar = 0.0;
+      for (double v : v_of_peak) vbar += v;
+      vbar /= (double) v_of_peak.size();
+      // v_x = a / b: var = (var_a - 2 v_x cov_ab + v_x^2 var_b) / b^2, with cov(a, b) =
+      // -vbar se_b^2 for a straight line through the points
+      const double vx = t.a / t.b, cov = -vbar * t.se_b * t.se_b;
+      const double var = (t.se_a * t.se_a - 2.0 * vx * cov + vx * vx * t.se_b * t.se_b) / (t.b * t.b);
+      res.peak_crossover_ok = true;
+      res.peak_crossover_speed = vx;
+      res.peak_crossover_speed_se = std::sqrt(std::max(0.0, var));
+    }
   }
   res.peak_points = logv.size();
   return res;

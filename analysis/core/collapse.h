@@ -10,7 +10,10 @@
    - collapse quality: the spread of the curves (coefficient of variation across
      curves, averaged over bins) binned against z, and against t~;
    - the peak law: peak height (max F over 0 < z < 0.7 R) against v0 on log
-     axes, the exponent with its 95% confidence interval.
+     axes, the exponent with its 95% confidence interval; and the same peaks as
+     a linear plus an inertial term, peak = c1 v0 + c2 v0^2, whose crossover
+     speed c1 / c2 says where a power law fitted over a range of v0 lies between
+     1 and 2.
    Knows nothing of files.
 ------------------------------------------------------------------------- */
 
@@ -60,6 +63,15 @@ struct CollapseResult {
   double peak_prefactor = 0.0;              // peak = prefactor v0^exponent (the fit's exp(intercept))
   double peak_v2_prefactor = 0.0;           // the paper's peak ~ v0^2 through the points' mean (log-log)
   std::size_t peak_points = 0;              // curves with a positive peak, in the fit
+  // peak = c1 v0 + c2 v0^2, least squares of peak / v0 = c1 + c2 v0 over the curves (same
+  // points as the exponent); standard errors from the residuals; the crossover speed
+  // v_x = c1 / c2 (where the two terms are equal) with its error by the delta method,
+  // the covariance of c1 and c2 included; v_x only when c2 > 0
+  bool peak_two_term_ok = false;
+  double peak_linear = 0.0, peak_linear_se = 0.0;          // c1 (force / speed)
+  double peak_quadratic = 0.0, peak_quadratic_se = 0.0;    // c2 (force / speed^2)
+  bool peak_crossover_ok = false;
+  double peak_crossover_speed = 0.0, peak_crossover_speed_se = 0.0;
 };
 
 // Throws std::invalid_argument for an input with non-positive v0, D, g or k_z.

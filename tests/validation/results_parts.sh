@@ -55,10 +55,16 @@ num() { grep -o "\"$2\": [-0-9.e+]*" "$1" | head -1 | awk '{print $2}'; }
 same dg10.peak_exponent "$(num "$OUT/direct.json" peak_exponent) +- $(num "$OUT/direct.json" peak_exponent_ci95) (95%)"
 "$CLI" collapse $(ls "$DG"/dg10_peak/*.csv | grep -v _v20_) --alpha 35 --tbin 0.25 --json "$OUT/fast.json" > /dev/null
 same dg10.peak_exponent_from_2vc "$(num "$OUT/fast.json" peak_exponent) +- $(num "$OUT/fast.json" peak_exponent_ci95) (95%)"
+# the two-term peak law, c2 / (rho_g D^2) and c1 / c2 (the stand-ins' rho_g = 3, D = 2)
+same dg10.peak_inertial "$(awk -v c="$(num "$OUT/fast.json" quadratic)" -v e="$(num "$OUT/fast.json" quadratic_se)" \
+  'BEGIN { printf "%.4g +- %.2g\n", c / 12, e / 12 }')"
+same dg10.peak_crossover_speed "$(awk -v c="$(num "$OUT/fast.json" crossover_speed)" -v e="$(num "$OUT/fast.json" crossover_speed_se)" \
+  'BEGIN { printf "%.4g +- %.2g\n", c, e }')"
 same dg10.phi_0 "$(grep -h '^phi_0' "$DG"/beds/*.info | awk '{ s += $3; ss += $3 * $3; n++ } END { m = s / n
   printf "%.4g +- %.2g n = %d\n", m, sqrt((ss - n * m * m) / (n - 1)), n }')"
 # the stiffer bench through peak_law gives the bench's own lines of analyse_traces
-for k in peak_exponent peak_exponent_ensemble peak_exponent_local; do same "bench_stiff.$k" "$(val "bench.$k")"; done
+for k in peak_exponent peak_exponent_ensemble peak_exponent_local peak_exponent_from_2vc peak_z \
+  peak_exponent_ensemble_from_2vc peak_inertial peak_crossover_speed; do same "bench_stiff.$k" "$(val "bench.$k")"; done
 # the flow rows of each dg10 speed: the mid push's, from the same tables
 for v in 40 100 200; do
   for k in lambda_vz_D edge_phi_0 edge_slope surface_flux_sign_change_t drag_over_mu_g_Mmove; do

@@ -6,10 +6,10 @@ if (!exists("formats")) formats = "png svg"
 data = "scaling.dat"
 do for [fmt in formats] {
   if (fmt eq "png") {
-    set terminal pngcairo enhanced size 1300,1640 font "sans,12" background rgb "white"
+    set terminal pngcairo enhanced size 1300,2020 font "sans,12" background rgb "white"
   } else {
     if (fmt ne "svg") { print "unknown format ", fmt, " (png or svg)"; exit status 1 }
-    set terminal svg enhanced size 1300,1640 font "sans,12" background rgb "white"
+    set terminal svg enhanced size 1300,2020 font "sans,12" background rgb "white"
   }
   set output "scaling." . fmt
   reset
@@ -17,8 +17,8 @@ do for [fmt in formats] {
   set multiplot title "Against the grain size ratio D/d_g: granpen (blue, ± its error), the paper's value (red; shaded: its error), the paper's D/d_g (dotted)" font ",14"
 
   # ---- panel 1: phi\_0   (paper: 0.61)
-  set origin 0,0.705
-  set size 0.5,0.235
+  set origin 0,0.752
+  set size 0.5,0.188
   set title "phi\\_0   (paper: 0.61)"
   set xlabel "D/d_g"
   set ylabel "phi\\_0"
@@ -35,8 +35,8 @@ do for [fmt in formats] {
   # ---- panel 2: peak exponent (v\_c to 10 v\_c)   (paper: 2)
   reset
   set encoding utf8
-  set origin 0.5,0.705
-  set size 0.5,0.235
+  set origin 0.5,0.752
+  set size 0.5,0.188
   set title "peak exponent (v\\_c to 10 v\\_c)   (paper: 2)"
   set xlabel "D/d_g"
   set ylabel "peak exponent (v\\_c to 10 v\\_c)"
@@ -50,17 +50,17 @@ do for [fmt in formats] {
   plot data index 1 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        2 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 2"
 
-  # ---- panel 3: peak exponent of the ensemble means   (paper: 2)
+  # ---- panel 3: peak exponent above v\_c (ensemble means)   (paper: 2)
   reset
   set encoding utf8
-  set origin 0,0.47
-  set size 0.5,0.235
-  set title "peak exponent of the ensemble means   (paper: 2)"
+  set origin 0,0.564
+  set size 0.5,0.188
+  set title "peak exponent above v\\_c (ensemble means)   (paper: 2)"
   set xlabel "D/d_g"
-  set ylabel "peak exponent of the ensemble means"
+  set ylabel "peak exponent above v\\_c (ensemble means)"
   set grid lc rgb "#d0d0d0"
   set xrange [4:11]
-  set yrange [1.49456:2.03744]
+  set yrange [1.51508:2.03592]
   unset key
   set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
   set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
@@ -68,11 +68,45 @@ do for [fmt in formats] {
   plot data index 2 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        2 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 2"
 
-  # ---- panel 4: alpha(D = 1 cm) / alpha(D = 2 cm)   (paper: 1)
+  # ---- panel 4: peak = c1 v0 + c2 v0\^2: c2 / (rho\_g D\^2)   (no paper value)
   reset
   set encoding utf8
-  set origin 0.5,0.47
-  set size 0.5,0.235
+  set origin 0.5,0.564
+  set size 0.5,0.188
+  set title "peak = c1 v0 + c2 v0\\^2: c2 / (rho\\_g D\\^2)   (no paper value)"
+  set xlabel "D/d_g"
+  set ylabel "peak = c1 v0 + c2 v0\\^2: c2 / (rho\\_g D\\^2)"
+  set grid lc rgb "#d0d0d0"
+  set xrange [4:11]
+  set yrange [4.032:6.352]
+  unset key
+  set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
+  set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
+  set samples 400
+  plot data index 3 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen"
+
+  # ---- panel 5: peak = c1 v0 + c2 v0\^2: c1 / c2 (cm/s)   (no paper value)
+  reset
+  set encoding utf8
+  set origin 0,0.376
+  set size 0.5,0.188
+  set title "peak = c1 v0 + c2 v0\\^2: c1 / c2 (cm/s)   (no paper value)"
+  set xlabel "D/d_g"
+  set ylabel "peak = c1 v0 + c2 v0\\^2: c1 / c2 (cm/s)"
+  set grid lc rgb "#d0d0d0"
+  set xrange [4:11]
+  set yrange [28.0484:187.2816]
+  unset key
+  set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
+  set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
+  set samples 400
+  plot data index 4 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen"
+
+  # ---- panel 6: alpha(D = 1 cm) / alpha(D = 2 cm)   (paper: 1)
+  reset
+  set encoding utf8
+  set origin 0.5,0.376
+  set size 0.5,0.188
   set title "alpha(D = 1 cm) / alpha(D = 2 cm)   (paper: 1)"
   set xlabel "D/d_g"
   set ylabel "alpha(D = 1 cm) / alpha(D = 2 cm)"
@@ -83,14 +117,14 @@ do for [fmt in formats] {
   set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
   set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
   set samples 400
-  plot data index 3 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+  plot data index 5 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
 
-  # ---- panel 5: lambda\_vz / D   (paper: 0.98 ± 0.15)
+  # ---- panel 7: lambda\_vz / D   (paper: 0.98 ± 0.15)
   reset
   set encoding utf8
-  set origin 0,0.235
-  set size 0.5,0.235
+  set origin 0,0.188
+  set size 0.5,0.188
   set title "lambda\\_vz / D   (paper: 0.98 ± 0.15)"
   set xlabel "D/d_g"
   set ylabel "lambda\\_vz / D"
@@ -103,14 +137,14 @@ do for [fmt in formats] {
   set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
   set samples 400
   plot keyentry with filledcurves fillcolor rgb "#d62728" fillstyle transparent solid 0.36 noborder title "paper: 0.98 ± 0.15", \
-       data index 4 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+       data index 6 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        0.98 with lines lw 1.5 dt 2 lc rgb "#d62728" notitle
 
-  # ---- panel 6: phi at r = R (I -> 0)   (paper: 0.57)
+  # ---- panel 8: phi at r = R (I -> 0)   (paper: 0.57)
   reset
   set encoding utf8
-  set origin 0.5,0.235
-  set size 0.5,0.235
+  set origin 0.5,0.188
+  set size 0.5,0.188
   set title "phi at r = R (I -> 0)   (paper: 0.57)"
   set xlabel "D/d_g"
   set ylabel "phi at r = R (I -> 0)"
@@ -121,14 +155,14 @@ do for [fmt in formats] {
   set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
   set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
   set samples 400
-  plot data index 5 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+  plot data index 7 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        0.57 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 0.57"
 
-  # ---- panel 7: d phi / d I at r = R   (paper: -0.35)
+  # ---- panel 9: d phi / d I at r = R   (paper: -0.35)
   reset
   set encoding utf8
   set origin 0,0
-  set size 0.5,0.235
+  set size 0.5,0.188
   set title "d phi / d I at r = R   (paper: -0.35)"
   set xlabel "D/d_g"
   set ylabel "d phi / d I at r = R"
@@ -139,14 +173,14 @@ do for [fmt in formats] {
   set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
   set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
   set samples 400
-  plot data index 6 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+  plot data index 8 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        -0.35 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: -0.35"
 
-  # ---- panel 8: drag / (mu g M)   (paper: 1)
+  # ---- panel 10: drag / (mu g M)   (paper: 1)
   reset
   set encoding utf8
   set origin 0.5,0
-  set size 0.5,0.235
+  set size 0.5,0.188
   set title "drag / (mu g M)   (paper: 1)"
   set xlabel "D/d_g"
   set ylabel "drag / (mu g M)"
@@ -157,7 +191,7 @@ do for [fmt in formats] {
   set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
   set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
   set samples 400
-  plot data index 7 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+  plot data index 9 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
   unset multiplot
   unset multiplot
