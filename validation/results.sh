@@ -4,7 +4,7 @@
 # momentum, plot); awk only averages their outputs over beds.
 #
 #   validation/results.sh [--out DIR] [--bench DIR] [--mid DIR] [--dumps DIR] [--dg10 DIR] [--stiff DIR]
-#                         [--cli PATH]
+#                         [--damp DIR] [--cli PATH]
 #
 #   --bench DIR  traces and bed .info files of the bench validation sweep
 #                (default data/sims/validation_bench)
@@ -18,8 +18,9 @@
 #                part (dg10_peak, dg10_flow, dg10_D) is analysed once all its pushes are
 #                there, and skipped with a note before, so that the numbers of a part never
 #                change as its pushes arrive
-#   --stiff DIR  the traces of validation/peak_stiffness.sh (default data/sims/peak_stiffness;
-#                skipped with a note until all 10 are there)
+#   --stiff DIR  the traces of validation/peak_sweep.sh peak_stiffness (default
+#                data/sims/peak_stiffness; skipped with a note until all 10 are there)
+#   --damp DIR   the same of peak_damping (default data/sims/peak_damping)
 #   --out DIR    where numbers.txt, scaling.csv and the figures go (default docs/results)
 #
 # numbers.txt: one line per measured quantity, "KEY = VALUE [+- ERROR] [n = N]  # how".
@@ -27,6 +28,7 @@ set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 OUT=$ROOT/docs/results BENCH=$ROOT/data/sims/validation_bench MID=$ROOT/data/sims/validation_mid
 DUMPS=$ROOT/runs/validation_mid/traces CLI=${GRANPEN_CLI:-$ROOT/build/analysis/granpen-cli} DG10=$ROOT/data/sims/dg10 STIFF=$ROOT/data/sims/peak_stiffness
+DAMP=$ROOT/data/sims/peak_damping
 while [ $# -gt 0 ]; do
   case $1 in
     --out) OUT=$2; shift 2 ;;
@@ -35,6 +37,7 @@ while [ $# -gt 0 ]; do
     --dumps) DUMPS=$2; shift 2 ;;
     --dg10) DG10=$2; shift 2 ;;
     --stiff) STIFF=$2; shift 2 ;;
+    --damp) DAMP=$2; shift 2 ;;
     --cli) CLI=$2; shift 2 ;;
     *) echo "results.sh: unknown argument $1 (see the header of $0)" >&2; exit 2 ;;
   esac
@@ -268,14 +271,15 @@ dg10_peak() {
   peak_law dg10 "$OUT/dg10" 20 "${traces[@]}"
 }
 
-# the bench peak sweep with grains ten times stiffer (validation/peak_stiffness.sh)
-stiff_peak() {
-  local d=$STIFF traces=() f
+# a bench peak sweep with one contact parameter changed (validation/peak_sweep.sh NAME): its
+# peak law, beside the bench sweep's own lines (the same seeds, speeds, g = 981 and D = 2)
+variant_peak() { # KEY DIR WHAT
+  local key=$1 d=$2 what=$3 traces=() f
   for f in "$d"/bench_mu0.3_s[12]_v*_g981_D2.0.csv; do [ -f "$f" ] && traces+=("$f"); done
-  [ "${#traces[@]}" = 10 ] || { say "stiffness: ${#traces[@]} of 10 pushes in $d: skipped (validation/peak_stiffness.sh)"; return 0; }
-  say "bench, k_n x 10: the peak law (granpen collapse, plot)"
-  put "bench_stiff.phi_0 = $(grep -h '^phi_0' "$d"/bed_*.info | awk '{print $3}' | stats)  # bed .info files, k_n = k_t = 1e10"
-  peak_law bench_stiff "$OUT/bench_stiff" 28 "${traces[@]}"
+  [ "${#traces[@]}" = 10 ] || { say "$what: ${#traces[@]} of 10 pushes in $d: skipped (validation/peak_sweep.sh)"; return 0; }
+  say "bench, $what: the peak law (granpen collapse, plot)"
+  put "$key.phi_0 = $(grep -h '^phi_0' "$d"/bed_*.info | awk '{print $3}' | stats)  # bed .info files, $what"
+  peak_law "$key" "$OUT/$key" 28 "${traces[@]}"
 }
 
 # alpha through the origin of the one push of (V0, D) in a granpen fit CSV: "VALUE +- SE n = 1"
@@ -320,7 +324,8 @@ dg10_D() {
   done
 }
 
-stiff_peak
+variant_peak bench_stiff "$STIFF" "k_n = k_t = 1e10 (ten times stiffer)"
+variant_peak bench_damp "$DAMP" "gamma_n = gamma_t = 100 in the push (damping ten times weaker)"
 if [ -d "$DG10" ]; then dg10_beds; dg10_peak; dg10_flow; dg10_D; else say "dg10: $DG10 missing, skipped"; fi
 
 # ---------------------------------------------------------------- against D/d_g

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
 # validation/results.sh's parts that wait for runs still under way (the dg10 column: its
-# peak, flow and D parts; the bench sweep with stiffer grains), on stand-ins made of committed
-# traces and tables with the names those runs will have: every line of a part must be what
-# granpen gives on the same files directly (another route: the CLI called here, or the mid
-# push's own lines for the flow tables), and a part with a file missing must be skipped with
-# a note and add no line.
+# peak, flow and D parts; the bench sweeps with stiffer grains and weaker damping), on
+# stand-ins made of committed traces and tables with the names those runs will have: every
+# line of a part must be what granpen gives on the same files directly (another route: the
+# CLI called here, or the mid push's own lines for the flow tables), and a part with a file
+# missing must be skipped with a note and add no line.
 #   results_parts.sh CLI OUT
 set -euo pipefail
 CLI=$1 OUT=$2
@@ -38,12 +38,15 @@ for vv in 40:30 100:90 200:240; do
 done
 stand_in "$MID/mid_mu0.3_s1_v90_g981_D1.0.csv" "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D1.0.csv" 100
 stand_in "$MID/mid_mu0.3_s2_v90_g981_D1.0.csv" "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D3.0.csv" 100 3
-# ---- the stiffer bench: the bench's own traces (peak_law against analyse_traces)
+# ---- the stiffer bench: the bench's own traces (variant_peak against analyse_traces)
 ST=$OUT/stiff
 mkdir -p "$ST"
 cp "$BENCH"/bench_mu0.3_s[12]_v*_g981_D2.0.csv "$BENCH"/bed_bench_mu0.3_s[12].info "$ST/"
+# ---- the bench with weaker damping: the same stand-ins
+DA=$OUT/damp
+cp -r "$ST" "$DA"
 
-GRANPEN_CLI=$CLI "$ROOT/validation/results.sh" --out "$OUT/res" --dumps /nonexistent --dg10 "$DG" --stiff "$ST" \
+GRANPEN_CLI=$CLI "$ROOT/validation/results.sh" --out "$OUT/res" --dumps /nonexistent --dg10 "$DG" --stiff "$ST" --damp "$DA" \
   > "$OUT/res.log" 2>&1 || { cat "$OUT/res.log"; fail "results.sh failed"; }
 N=$OUT/res/numbers.txt
 val() { awk -v k="$1" '$1 == k { sub(/  #.*/, ""); sub(/^[^=]*= /, ""); print; exit }' "$N"; }
@@ -64,7 +67,10 @@ same dg10.phi_0 "$(grep -h '^phi_0' "$DG"/beds/*.info | awk '{ s += $3; ss += $3
   printf "%.4g +- %.2g n = %d\n", m, sqrt((ss - n * m * m) / (n - 1)), n }')"
 # the stiffer bench through peak_law gives the bench's own lines of analyse_traces
 for k in peak_exponent peak_exponent_ensemble peak_exponent_local peak_exponent_from_2vc peak_z \
-  peak_exponent_ensemble_from_2vc peak_inertial peak_crossover_speed; do same "bench_stiff.$k" "$(val "bench.$k")"; done
+  peak_exponent_ensemble_from_2vc peak_inertial peak_crossover_speed; do
+  same "bench_stiff.$k" "$(val "bench.$k")"
+  same "bench_damp.$k" "$(val "bench.$k")"
+done
 # the flow rows of each dg10 speed: the mid push's, from the same tables
 for v in 40 100 200; do
   for k in lambda_vz_D edge_phi_0 edge_slope surface_flux_sign_change_t drag_over_mu_g_Mmove; do
@@ -88,7 +94,7 @@ grep -q "^peak exponent (v_c to 10 v_c),10,$(val dg10.peak_exponent | awk '{prin
 
 # a part with one push missing adds no line and says so
 rm "$DG/dg10_flow/dg10_mu0.3_s1_v200_g981_D2.0.flow/window.txt" "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D3.0.csv"
-GRANPEN_CLI=$CLI "$ROOT/validation/results.sh" --out "$OUT/res2" --dumps /nonexistent --dg10 "$DG" --stiff "$ST" \
+GRANPEN_CLI=$CLI "$ROOT/validation/results.sh" --out "$OUT/res2" --dumps /nonexistent --dg10 "$DG" --stiff "$ST" --damp "$DA" \
   > "$OUT/res2.log" 2>&1 || { cat "$OUT/res2.log"; fail "results.sh failed with a part missing"; }
 ! grep -q '^dg10\.v\|^dg10\.alpha0_window' "$OUT/res2/numbers.txt" || fail "a part with a push missing added lines"
 grep -q "dg10 flow: the full pushes at 200 cm/s" "$OUT/res2.log" || fail "no note of the missing flow push"
