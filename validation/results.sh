@@ -280,6 +280,15 @@ variant_peak() { # KEY DIR WHAT
   say "bench, $what: the peak law (granpen collapse, plot)"
   put "$key.phi_0 = $(grep -h '^phi_0' "$d"/bed_*.info | awk '{print $3}' | stats)  # bed .info files, $what"
   peak_law "$key" "$OUT/$key" 28 "${traces[@]}"
+  # each push's peak over its bench twin's (the same seed and v0), above v_c
+  put "$key.peak_over_bench = $(peak_pairs "$OUT/$key/collapse_peak_fast.json" "$OUT/bench/collapse_peak_fast.json" | stats)  # granpen collapse: peak / the bench push's of the same seed and v0, above v0 = 28"
+}
+# "RATIO" per push of JSON1 whose file name is in JSON2 too: peak1 / peak2
+peak_pairs() { # JSON1 JSON2
+  local a; a=$(grep -o '"file": "[^"]*", "v0": [-0-9.e+]*, "k_z": [-0-9.e+]*, "peak": [-0-9.e+]*' "$2" | tr -d '",')
+  grep -o '"file": "[^"]*", "v0": [-0-9.e+]*, "k_z": [-0-9.e+]*, "peak": [-0-9.e+]*' "$1" | tr -d '",' |
+    awk -v other="$a" 'BEGIN { n = split(other, l, "\n"); for (i = 1; i <= n; i++) { split(l[i], f, " "); k = f[2]; sub(/.*\//, "", k); p[k] = f[8] } }
+      { k = $2; sub(/.*\//, "", k); if ((k in p) && p[k] > 0) print $8 / p[k] }'
 }
 
 # alpha through the origin of the one push of (V0, D) in a granpen fit CSV: "VALUE +- SE n = 1"

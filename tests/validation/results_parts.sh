@@ -71,6 +71,9 @@ for k in peak_exponent peak_exponent_ensemble peak_exponent_local peak_exponent_
   same "bench_stiff.$k" "$(val "bench.$k")"
   same "bench_damp.$k" "$(val "bench.$k")"
 done
+# each push paired with its bench twin: the stand-ins are the twins themselves
+same bench_stiff.peak_over_bench "1 +- 0 n = 8"
+same bench_damp.peak_over_bench "1 +- 0 n = 8"
 # the flow rows of each dg10 speed: the mid push's, from the same tables
 for v in 40 100 200; do
   for k in lambda_vz_D edge_phi_0 edge_slope surface_flux_sign_change_t drag_over_mu_g_Mmove; do
