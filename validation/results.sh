@@ -343,8 +343,17 @@ if [ -d "$DG10" ]; then dg10_beds; dg10_peak; dg10_flow; dg10_D; else say "dg10:
 # 95% half-width / 1.96; a ratio's the relative errors of its parts in quadrature (spread
 # over the beds); the flow rows' fit standard errors.
 say "against D/d_g: scaling.csv (granpen plot scaling)"
-# one row: QUANTITY RATIO VALUE ERROR PAPER PAPER_ERROR (VALUE "" when not measured)
-row() { printf '%s,%s,%s,%s,%s,%s\n' "$@"; }
+# one row: QUANTITY RATIO VALUE ERROR PAPER PAPER_ERROR (VALUE "" when not measured), then
+# the axis unit and a label in gnuplot's enhanced text where the name alone reads badly
+row() {
+  local unit="" label=""
+  case $1 in
+    "peak v0^2 coefficient c2/(rho_g D^2)") label="peak v_0^2 coefficient c_2/(ρ_g D^2)" ;;
+    "peak crossover speed c1/c2") unit="cm/s" label="peak crossover c_1/c_2" ;;
+    "peak exponent above v_c (ensemble means)") label="peak exponent (means above v_c)" ;;
+  esac
+  printf '%s,%s,%s,%s,%s,%s,%s,%s\n' "$1" "$2" "$3" "$4" "$5" "$6" "$unit" "$label"
+}
 # KEY's value and error as a row; empty when not measured; SCALE divides the error
 row_of() { # QUANTITY RATIO KEY PAPER PAPER_ERROR [ERROR_DIVISOR]
   local v e; v=$(nval "$3"); e=$(nerr "$3")
@@ -361,7 +370,7 @@ ratio_of() { # QUANTITY RATIO KEY1 KEY2 PAPER PAPER_ERROR
 }
 {
   echo "# paper_D_over_dg = 10"
-  echo "quantity,D_over_dg,value,error,paper,paper_error"
+  echo "quantity,D_over_dg,value,error,paper,paper_error,unit,label"
   row_of "phi_0" 5 bench.phi_0 0.61 ""; row_of "phi_0" 6.67 mid.phi_0 0.61 ""; row_of "phi_0" 10 dg10.phi_0 0.61 ""
   row_of "peak exponent (v_c to 10 v_c)" 5 bench.peak_exponent 2 "" 1.96
   row_of "peak exponent (v_c to 10 v_c)" 6.67 mid.peak_exponent 2 "" 1.96
@@ -371,10 +380,10 @@ ratio_of() { # QUANTITY RATIO KEY1 KEY2 PAPER PAPER_ERROR
   done
   # the peak as c1 v0 + c2 v0^2: the paper gives no number for either (its v0^2 would be v_x -> 0)
   for p in "bench 5" "mid 6.67" "dg10 10"; do set -- $p
-    row_of "peak = c1 v0 + c2 v0^2: c2 / (rho_g D^2)" "$2" "$1.peak_inertial" "" ""
+    row_of "peak v0^2 coefficient c2/(rho_g D^2)" "$2" "$1.peak_inertial" "" ""
   done
   for p in "bench 5" "mid 6.67" "dg10 10"; do set -- $p
-    row_of "peak = c1 v0 + c2 v0^2: c1 / c2 (cm/s)" "$2" "$1.peak_crossover_speed" "" ""
+    row_of "peak crossover speed c1/c2" "$2" "$1.peak_crossover_speed" "" ""
   done
   ratio_of "alpha(D = 1 cm) / alpha(D = 2 cm)" 5 bench.alpha0_window.v28.g981.D1 bench.alpha0_window.v28.g981.D2 1 ""
   ratio_of "alpha(D = 1 cm) / alpha(D = 2 cm)" 6.67 mid.alpha0_window.v90.g981.D1 mid.alpha0_window.v90.g981.D2 1 ""

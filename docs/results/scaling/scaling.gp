@@ -50,14 +50,14 @@ do for [fmt in formats] {
   plot data index 1 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        2 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 2"
 
-  # ---- panel 3: peak exponent above v\_c (ensemble means)   (paper: 2)
+  # ---- panel 3: peak exponent (means above v_c)   (paper: 2)
   reset
   set encoding utf8
   set origin 0,0.564
   set size 0.5,0.188
-  set title "peak exponent above v\\_c (ensemble means)   (paper: 2)"
+  set title "peak exponent (means above v_c)   (paper: 2)"
   set xlabel "D/d_g"
-  set ylabel "peak exponent above v\\_c (ensemble means)"
+  set ylabel "peak exponent (means above v_c)"
   set grid lc rgb "#d0d0d0"
   set xrange [4:11]
   set yrange [1.51508:2.03592]
@@ -68,14 +68,14 @@ do for [fmt in formats] {
   plot data index 2 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        2 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 2"
 
-  # ---- panel 4: peak = c1 v0 + c2 v0\^2: c2 / (rho\_g D\^2)   (no paper value)
+  # ---- panel 4: peak v_0^2 coefficient c_2/(ρ_g D^2)   (no paper value)
   reset
   set encoding utf8
   set origin 0.5,0.564
   set size 0.5,0.188
-  set title "peak = c1 v0 + c2 v0\\^2: c2 / (rho\\_g D\\^2)   (no paper value)"
+  set title "peak v_0^2 coefficient c_2/(ρ_g D^2)   (no paper value)"
   set xlabel "D/d_g"
-  set ylabel "peak = c1 v0 + c2 v0\\^2: c2 / (rho\\_g D\\^2)"
+  set ylabel "peak v_0^2 coefficient c_2/(ρ_g D^2)"
   set grid lc rgb "#d0d0d0"
   set xrange [4:11]
   set yrange [4.032:6.352]
@@ -85,14 +85,14 @@ do for [fmt in formats] {
   set samples 400
   plot data index 3 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen"
 
-  # ---- panel 5: peak = c1 v0 + c2 v0\^2: c1 / c2 (cm/s)   (no paper value)
+  # ---- panel 5: peak crossover c_1/c_2   (no paper value)
   reset
   set encoding utf8
   set origin 0,0.376
   set size 0.5,0.188
-  set title "peak = c1 v0 + c2 v0\\^2: c1 / c2 (cm/s)   (no paper value)"
+  set title "peak crossover c_1/c_2   (no paper value)"
   set xlabel "D/d_g"
-  set ylabel "peak = c1 v0 + c2 v0\\^2: c1 / c2 (cm/s)"
+  set ylabel "peak crossover c_1/c_2 (cm/s)"
   set grid lc rgb "#d0d0d0"
   set xrange [4:11]
   set yrange [28.0484:187.2816]
