@@ -64,11 +64,16 @@ ensemble_peak() {
            printf "%.4g +- %.2g (fit; 95%% over runs: %.2g)\n", x["value"], x["se"], x["ci95"] }'
 }
 
+# "FILE V0 PEAK" per trace of granpen collapse's JSON
+trace_peaks() {
+  grep -o '"file": "[^"]*", "v0": [-0-9.e+]*, "k_z": [-0-9.e+]*, "peak": [-0-9.e+]*' "$1" | tr -d '",' | awk '{ print $2, $4, $8 }'
+}
+
 # the local exponent of the peak law between successive speeds, from the mean peak over the
 # runs of each speed in granpen collapse's JSON: "V1-V2: E, ..." (does it approach 2 at speed?)
 local_peak_exponents() {
-  grep -o '"v0": [-0-9.e+]*, "k_z": [-0-9.e+]*, "peak": [-0-9.e+]*' "$1" | tr -d ',' |
-    awk '{ s[$2] += $6; n[$2]++ } END { k = 0; for (v in s) vs[++k] = v + 0
+  trace_peaks "$1" |
+    awk '{ s[$2] += $3; n[$2]++ } END { k = 0; for (v in s) vs[++k] = v + 0
            for (i = 1; i <= k; i++) for (j = i + 1; j <= k; j++) if (vs[j] < vs[i]) { t = vs[i]; vs[i] = vs[j]; vs[j] = t }
            out = ""; for (i = 1; i < k; i++) { a = s[vs[i]] / n[vs[i]]; b = s[vs[i + 1]] / n[vs[i + 1]]
              out = out (i > 1 ? ", " : "") sprintf("%g-%g: %.2f", vs[i], vs[i + 1], log(b / a) / log(vs[i + 1] / vs[i])) }
@@ -285,10 +290,8 @@ variant_peak() { # KEY DIR WHAT
 }
 # "RATIO" per push of JSON1 whose file name is in JSON2 too: peak1 / peak2
 peak_pairs() { # JSON1 JSON2
-  local a; a=$(grep -o '"file": "[^"]*", "v0": [-0-9.e+]*, "k_z": [-0-9.e+]*, "peak": [-0-9.e+]*' "$2" | tr -d '",')
-  grep -o '"file": "[^"]*", "v0": [-0-9.e+]*, "k_z": [-0-9.e+]*, "peak": [-0-9.e+]*' "$1" | tr -d '",' |
-    awk -v other="$a" 'BEGIN { n = split(other, l, "\n"); for (i = 1; i <= n; i++) { split(l[i], f, " "); k = f[2]; sub(/.*\//, "", k); p[k] = f[8] } }
-      { k = $2; sub(/.*\//, "", k); if ((k in p) && p[k] > 0) print $8 / p[k] }'
+  awk 'FNR == NR { k = $1; sub(/.*\//, "", k); p[k] = $3; next }
+       { k = $1; sub(/.*\//, "", k); if ((k in p) && p[k] > 0) print $3 / p[k] }' <(trace_peaks "$2") <(trace_peaks "$1")
 }
 
 # alpha through the origin of the one push of (V0, D) in a granpen fit CSV: "VALUE +- SE n = 1"
