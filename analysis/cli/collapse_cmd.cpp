@@ -34,6 +34,19 @@ std::string pm(const Estimate &e, const char *f)
 
 std::string percent(int k, int of) { return of > 0 ? json_number("%.0f", 100.0 * k / of) + "%" : "-"; }
 
+// The peak as c1 v0 + c2 v0^2 (what is fitted: "" for the traces, or a note in brackets).
+void print_two_term(const PeakLaw &law, const char *what)
+{
+  if (!law.two_term_ok) return;
+  std::printf("peak law, two terms%s: peak = c1 v0 + c2 v0^2, c1 = %.4g +- %.2g, c2 = %.4g +- %.2g (standard errors); "
+              "crossover speed c1/c2 = %s\n",
+              what, law.linear, law.linear_se, law.quadratic, law.quadratic_se,
+              law.crossover_ok ? (json_number("%.3g", law.crossover_speed) + " +- " +
+                                  json_number("%.2g", law.crossover_speed_se) + " cm/s")
+                                     .c_str()
+                               : "none (c2 <= 0)");
+}
+
 void print_result(const CollapseResult &r, const CollapseParams &p)
 {
   for (const auto &c : r.curves)
@@ -50,18 +63,11 @@ void print_result(const CollapseResult &r, const CollapseParams &p)
     std::printf("ensemble crossover: the mean of F/F_z over the traces does not stay within 1 +- %g\n", p.band);
   std::printf("collapse quality: spread of F/F_z across traces %.3f against z, %.3f against t~ (ratio %.2f)\n",
               r.spread_z, r.spread_t, r.spread_z > 0 ? r.spread_t / r.spread_z : 0.0);
-  if (r.peak_ok)
-    std::printf("peak law: peak ~ v0^%.2f +- %.2f (95%%; over %zu traces; paper: 2)\n", r.peak_exponent,
-                r.peak_exponent_ci95, r.peak_points);
-  if (r.peak_two_term_ok)
-    std::printf("peak law, two terms: peak = c1 v0 + c2 v0^2, c1 = %.4g +- %.2g, c2 = %.4g +- %.2g (standard errors); "
-                "crossover speed c1/c2 = %s\n",
-                r.peak_linear, r.peak_linear_se, r.peak_quadratic, r.peak_quadratic_se,
-                r.peak_crossover_ok ? (json_number("%.3g", r.peak_crossover_speed) + " +- " +
-                                       json_number("%.2g", r.peak_crossover_speed_se) + " cm/s")
-                                          .c_str()
-                                    : "none (c2 <= 0)");
-  if (!r.peak_ok)
+  if (r.peak_law.ok)
+    std::printf("peak law: peak ~ v0^%.2f +- %.2f (95%%; over %zu traces; paper: 2)\n", r.peak_law.exponent,
+                r.peak_law.exponent_ci95, r.peak_law.points);
+  print_two_term(r.peak_law, "");
+  if (!r.peak_law.ok)
     std::printf("peak law: needs at least 3 traces over 2 or more speeds\n");
 }
 
@@ -76,14 +82,7 @@ void peak_law_of_all(const std::vector<Trace> &traces, const CollapseParams &p, 
   }
   if (all.empty()) return;
   const CollapseResult law = granpen::collapse(all, p);
-  r.peak_ok = law.peak_ok, r.peak_exponent = law.peak_exponent, r.peak_exponent_se = law.peak_exponent_se;
-  r.peak_exponent_ci95 = law.peak_exponent_ci95, r.peak_prefactor = law.peak_prefactor;
-  r.peak_v2_prefactor = law.peak_v2_prefactor, r.peak_points = law.peak_points;
-  r.peak_two_term_ok = law.peak_two_term_ok;
-  r.peak_linear = law.peak_linear, r.peak_linear_se = law.peak_linear_se;
-  r.peak_quadratic = law.peak_quadratic, r.peak_quadratic_se = law.peak_quadratic_se;
-  r.peak_crossover_ok = law.peak_crossover_ok;
-  r.peak_crossover_speed = law.peak_crossover_speed, r.peak_crossover_speed_se = law.peak_crossover_speed_se;
+  r.peak_law = law.peak_law;
 }
 
 void print_ensembles(const std::vector<TraceGroup> &groups, const EnsembleCollapse &c, const CollapseParams &p)
@@ -114,9 +113,10 @@ void print_ensembles(const std::vector<TraceGroup> &groups, const EnsembleCollap
   if (c.peak_exponent.ok)
     std::printf("peak law: peak ~ v0^%s (95%%: +- %s, over runs; %zu ensembles; paper: 2)\n",
                 pm(c.peak_exponent, "%.2f").c_str(), json_number("%.2f", c.peak_exponent.ci95).c_str(),
-                r.peak_points);
+                r.peak_law.points);
   else
     std::printf("peak law: needs ensembles at 3 or more speeds\n");
+  print_two_term(r.peak_law, " (of the ensemble means, errors from their residuals)");
 }
 
 // The peak law of every ensemble (k_z = 1: the peaks need no depth term), into c.
@@ -132,11 +132,7 @@ void ensemble_peak_law(const std::vector<TraceGroup> &groups, const CollapsePara
   if (cases.empty()) return;
   const EnsembleCollapse law = collapse_ensembles(cases, p, ens.boot);
   c.peak_exponent = law.peak_exponent;
-  CollapseResult &r = c.result;
-  r.peak_ok = law.result.peak_ok, r.peak_exponent = law.result.peak_exponent;
-  r.peak_exponent_se = law.peak_exponent.se, r.peak_exponent_ci95 = law.peak_exponent.ci95;
-  r.peak_prefactor = law.result.peak_prefactor, r.peak_v2_prefactor = law.result.peak_v2_prefactor;
-  r.peak_points = law.result.peak_points;
+  c.result.peak_law = peak_law_of_means(law);
 }
 
 // --ensemble: groups averaged, their depth terms (an ensemble without a positive one is

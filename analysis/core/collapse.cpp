@@ -152,19 +152,19 @@ CollapseResult collapse(const std::vector<CollapseInput> &inputs, const Collapse
   distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
   if (logv.size() >= 3 && distinct.size() >= 2) {
     auto f = linear_fit(logv, logpeak);
-    res.peak_ok = true;
-    res.peak_exponent = f.b;
-    res.peak_exponent_se = f.se_b;
-    res.peak_exponent_ci95 = t95(static_cast<int>(f.n) - 2) * f.se_b;
-    res.peak_prefactor = std::exp(f.a);
+    res.peak_law.ok = true;
+    res.peak_law.exponent = f.b;
+    res.peak_law.exponent_se = f.se_b;
+    res.peak_law.exponent_ci95 = t95(static_cast<int>(f.n) - 2) * f.se_b;
+    res.peak_law.prefactor = std::exp(f.a);
     double mv = 0, mp = 0;
     for (std::size_t k = 0; k < logv.size(); ++k) mv += logv[k], mp += logpeak[k];
     mv /= (double) logv.size(), mp /= (double) logv.size();
-    res.peak_v2_prefactor = std::exp(mp - 2 * mv);
+    res.peak_law.v2_prefactor = std::exp(mp - 2 * mv);
     const auto t = linear_fit(v_of_peak, peak_per_v);
-    res.peak_two_term_ok = true;
-    res.peak_linear = t.a, res.peak_linear_se = t.se_a;
-    res.peak_quadratic = t.b, res.peak_quadratic_se = t.se_b;
+    res.peak_law.two_term_ok = true;
+    res.peak_law.linear = t.a, res.peak_law.linear_se = t.se_a;
+    res.peak_law.quadratic = t.b, res.peak_law.quadratic_se = t.se_b;
     if (t.b > 0.0) {
       double vbar = 0.0;
       for (double v : v_of_peak) vbar += v;
@@ -173,12 +173,12 @@ CollapseResult collapse(const std::vector<CollapseInput> &inputs, const Collapse
       // -vbar se_b^2 for a straight line through the points
       const double vx = t.a / t.b, cov = -vbar * t.se_b * t.se_b;
       const double var = (t.se_a * t.se_a - 2.0 * vx * cov + vx * vx * t.se_b * t.se_b) / (t.b * t.b);
-      res.peak_crossover_ok = true;
-      res.peak_crossover_speed = vx;
-      res.peak_crossover_speed_se = std::sqrt(std::max(0.0, var));
+      res.peak_law.crossover_ok = true;
+      res.peak_law.crossover_speed = vx;
+      res.peak_law.crossover_speed_se = std::sqrt(std::max(0.0, var));
     }
   }
-  res.peak_points = logv.size();
+  res.peak_law.points = logv.size();
   return res;
 }
 

@@ -49,6 +49,25 @@ struct CollapseCurve {
   double peak = 0.0, peak_z = 0.0;
 };
 
+// The peak law over a set of curves: one value, so that a front end adopts another set's
+// law (the ensemble means', the whole sweep's) by one assignment.
+struct PeakLaw {
+  bool ok = false;                     // at least 3 curves with distinct v0
+  double exponent = 0.0, exponent_se = 0.0, exponent_ci95 = 0.0;
+  double prefactor = 0.0;              // peak = prefactor v0^exponent (the fit's exp(intercept))
+  double v2_prefactor = 0.0;           // the paper's peak ~ v0^2 through the points' mean (log-log)
+  std::size_t points = 0;              // curves with a positive peak, in the fit
+  // peak = c1 v0 + c2 v0^2, least squares of peak / v0 = c1 + c2 v0 over the curves (same
+  // points as the exponent); standard errors from the residuals; the crossover speed
+  // v_x = c1 / c2 (where the two terms are equal) with its error by the delta method,
+  // the covariance of c1 and c2 included; v_x only when c2 > 0
+  bool two_term_ok = false;
+  double linear = 0.0, linear_se = 0.0;          // c1 (force / speed)
+  double quadratic = 0.0, quadratic_se = 0.0;    // c2 (force / speed^2)
+  bool crossover_ok = false;
+  double crossover_speed = 0.0, crossover_speed_se = 0.0;
+};
+
 struct CollapseResult {
   std::vector<CollapseCurve> curves;
   int n_crossed = 0;
@@ -58,20 +77,7 @@ struct CollapseResult {
   std::vector<int> ens_n;                          // curves in each bin
   bool ens_crossed = false;
   double t_star_ensemble = 0.0;
-  bool peak_ok = false;                     // at least 3 curves with distinct v0
-  double peak_exponent = 0.0, peak_exponent_se = 0.0, peak_exponent_ci95 = 0.0;
-  double peak_prefactor = 0.0;              // peak = prefactor v0^exponent (the fit's exp(intercept))
-  double peak_v2_prefactor = 0.0;           // the paper's peak ~ v0^2 through the points' mean (log-log)
-  std::size_t peak_points = 0;              // curves with a positive peak, in the fit
-  // peak = c1 v0 + c2 v0^2, least squares of peak / v0 = c1 + c2 v0 over the curves (same
-  // points as the exponent); standard errors from the residuals; the crossover speed
-  // v_x = c1 / c2 (where the two terms are equal) with its error by the delta method,
-  // the covariance of c1 and c2 included; v_x only when c2 > 0
-  bool peak_two_term_ok = false;
-  double peak_linear = 0.0, peak_linear_se = 0.0;          // c1 (force / speed)
-  double peak_quadratic = 0.0, peak_quadratic_se = 0.0;    // c2 (force / speed^2)
-  bool peak_crossover_ok = false;
-  double peak_crossover_speed = 0.0, peak_crossover_speed_se = 0.0;
+  PeakLaw peak_law;    // over the curves' peaks
 };
 
 // Throws std::invalid_argument for an input with non-positive v0, D, g or k_z.

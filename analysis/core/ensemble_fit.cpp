@@ -146,7 +146,7 @@ EnsembleCollapse collapse_ensembles(const std::vector<EnsembleCase> &cases, cons
     tmean.add(cr.n_crossed > 0, cr.t_star_mean);
     tens.add(cr.ens_crossed, cr.t_star_ensemble);
     sz.add(true, cr.spread_z), st.add(true, cr.spread_t);
-    pe.add(cr.peak_ok, cr.peak_exponent);
+    pe.add(cr.peak_law.ok, cr.peak_law.exponent);
   }
   const CollapseResult &R = out.result;
   for (std::size_t i = 0; i < nc; ++i) {
@@ -160,8 +160,15 @@ EnsembleCollapse collapse_ensembles(const std::vector<EnsembleCase> &cases, cons
   out.t_star_ensemble = tens.estimate(R.ens_crossed, R.t_star_ensemble, fewest);
   out.spread_z = sz.estimate(true, R.spread_z, fewest);
   out.spread_t = st.estimate(true, R.spread_t, fewest);
-  out.peak_exponent = pe.estimate(R.peak_ok, R.peak_exponent, fewest);
+  out.peak_exponent = pe.estimate(R.peak_law.ok, R.peak_law.exponent, fewest);
   return out;
+}
+
+PeakLaw peak_law_of_means(const EnsembleCollapse &c)
+{
+  PeakLaw law = c.result.peak_law;
+  law.exponent_se = c.peak_exponent.se, law.exponent_ci95 = c.peak_exponent.ci95;
+  return law;
 }
 
 }    // namespace granpen

@@ -75,6 +75,10 @@ struct EnsembleCollapse {
 EnsembleCollapse collapse_ensembles(const std::vector<EnsembleCase> &cases, const CollapseParams &p,
                                     const BootstrapParams &b = {});
 
+// The peak law of the ensemble means, its exponent's errors those over runs (the
+// bootstrap's), not those of the means' residuals.
+PeakLaw peak_law_of_means(const EnsembleCollapse &c);
+
 // k_z of a case's mean (k_z_fixed, or the fit over kz_fit's window); 0 when undefined.
 double ensemble_depth_term(const EnsembleCase &c);
 

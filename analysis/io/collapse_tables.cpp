@@ -72,15 +72,15 @@ Json collapse_json(const CollapseResult &r, const CollapseParams &p)
   j["spread_t"] = json_rounded("%.6g", r.spread_t);
   j["ensemble_crossed"] = r.ens_crossed;
   j["t_star_ensemble"] = json_rounded("%.6g", r.t_star_ensemble);
-  j["peak_exponent"] = json_rounded("%.6g", r.peak_exponent);
-  j["peak_exponent_ci95"] = json_rounded("%.6g", r.peak_exponent_ci95);
-  if (r.peak_two_term_ok) {
-    Json t{{"linear", json_rounded("%.6g", r.peak_linear)}, {"linear_se", json_rounded("%.6g", r.peak_linear_se)},
-           {"quadratic", json_rounded("%.6g", r.peak_quadratic)},
-           {"quadratic_se", json_rounded("%.6g", r.peak_quadratic_se)}};
-    if (r.peak_crossover_ok) {
-      t["crossover_speed"] = json_rounded("%.6g", r.peak_crossover_speed);
-      t["crossover_speed_se"] = json_rounded("%.6g", r.peak_crossover_speed_se);
+  j["peak_exponent"] = json_rounded("%.6g", r.peak_law.exponent);
+  j["peak_exponent_ci95"] = json_rounded("%.6g", r.peak_law.exponent_ci95);
+  if (r.peak_law.two_term_ok) {
+    Json t{{"linear", json_rounded("%.6g", r.peak_law.linear)}, {"linear_se", json_rounded("%.6g", r.peak_law.linear_se)},
+           {"quadratic", json_rounded("%.6g", r.peak_law.quadratic)},
+           {"quadratic_se", json_rounded("%.6g", r.peak_law.quadratic_se)}};
+    if (r.peak_law.crossover_ok) {
+      t["crossover_speed"] = json_rounded("%.6g", r.peak_law.crossover_speed);
+      t["crossover_speed_se"] = json_rounded("%.6g", r.peak_law.crossover_speed_se);
     }
     j["peak_two_term"] = t;
   }

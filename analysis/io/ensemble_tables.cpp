@@ -160,7 +160,7 @@ Json ensemble_collapse_json(const std::vector<TraceGroup> &groups, const Ensembl
   j["spread_z"] = estimate_json(c.spread_z);
   j["spread_t"] = estimate_json(c.spread_t);
   j["peak_exponent"] = estimate_json(c.peak_exponent);
-  j["peak_prefactor"] = n(c.result.peak_prefactor);
+  j["peak_prefactor"] = n(c.result.peak_law.prefactor);
   return j;
 }
 

@@ -827,10 +827,7 @@ void plot_peak(const std::vector<std::string> &inputs, Run &run)
   if (ens) {
     ensemble_peak_series(eg, ec, r, p);
     for (const auto &c : r.curves) points.rows.push_back({c.v0, c.peak, c.peak_z});
-    r.peak_ok = ec.result.peak_ok, r.peak_exponent = ec.result.peak_exponent;
-    r.peak_exponent_se = ec.peak_exponent.se, r.peak_exponent_ci95 = ec.peak_exponent.ci95;
-    r.peak_prefactor = ec.result.peak_prefactor, r.peak_v2_prefactor = ec.result.peak_v2_prefactor;
-    r.peak_points = ec.result.peak_points;
+    r.peak_law = peak_law_of_means(ec);
   }
   for (std::size_t gi = 0; gi < groups.size() && !ens; ++gi) {
     PlotSeries s;
@@ -849,22 +846,22 @@ void plot_peak(const std::vector<std::string> &inputs, Run &run)
                      : "peak law (granpen collapse): F_peak = prefactor * v0^exponent; exponent_ci95 = t95 * se";
   fitblk.columns = {"exponent", "exponent_se", "exponent_ci95", "prefactor", "n"};
   std::string title = "Transient peak against speed";
-  if (r.peak_ok) {
-    const double pref = r.peak_prefactor;
+  if (r.peak_law.ok) {
+    const double pref = r.peak_law.prefactor;
     PlotGuide fit;
-    fit.expression = gp_number(pref) + "*x**" + gp_number(r.peak_exponent);
-    fit.title = "fit: F_{peak} ∝ v_0^{" + fmt("%.2f", r.peak_exponent) + " ± " + fmt("%.2f", r.peak_exponent_ci95) + "} (95%" +
+    fit.expression = gp_number(pref) + "*x**" + gp_number(r.peak_law.exponent);
+    fit.title = "fit: F_{peak} ∝ v_0^{" + fmt("%.2f", r.peak_law.exponent) + " ± " + fmt("%.2f", r.peak_law.exponent_ci95) + "} (95%" +
                 (ens ? ", over runs)" : ")");
     fit.colour = "#000000", fit.dash = 1, fit.line_width = 2;
     PlotGuide sq;
-    sq.expression = gp_number(r.peak_v2_prefactor) + "*x**2";
+    sq.expression = gp_number(r.peak_law.v2_prefactor) + "*x**2";
     sq.title = "∝ v_0^2 guide (paper)";
     sq.colour = "#808080", sq.dash = 2;
     p.guides = {fit, sq};
-    fitblk.rows.push_back({r.peak_exponent, r.peak_exponent_se, r.peak_exponent_ci95, pref, (double) r.peak_points});
-    title += ": exponent " + fmt("%.2f", r.peak_exponent) + " ± " + fmt("%.2f", r.peak_exponent_ci95) + " (95%; paper: 2)";
-    law = {{"peak_ok", true}, {"exponent", num("%.10g", r.peak_exponent)}, {"exponent_se", num("%.10g", r.peak_exponent_se)},
-           {"exponent_ci95", num("%.10g", r.peak_exponent_ci95)}, {"prefactor", num("%.10g", pref)}, {"n", r.peak_points}};
+    fitblk.rows.push_back({r.peak_law.exponent, r.peak_law.exponent_se, r.peak_law.exponent_ci95, pref, (double) r.peak_law.points});
+    title += ": exponent " + fmt("%.2f", r.peak_law.exponent) + " ± " + fmt("%.2f", r.peak_law.exponent_ci95) + " (95%; paper: 2)";
+    law = {{"peak_ok", true}, {"exponent", num("%.10g", r.peak_law.exponent)}, {"exponent_se", num("%.10g", r.peak_law.exponent_se)},
+           {"exponent_ci95", num("%.10g", r.peak_law.exponent_ci95)}, {"prefactor", num("%.10g", pref)}, {"n", r.peak_law.points}};
   } else {
     run.notes.push_back("peak law: needs at least 3 peaks over 2 or more speeds; points only");
     title += " (too few speeds for a power law)";

@@ -111,7 +111,7 @@ set_tests_properties(cli_fit_ensemble_bench PROPERTIES LABELS cli
 add_test(NAME cli_collapse_ensemble_bench COMMAND granpen-cli collapse ${PROJECT_SOURCE_DIR}/data/sims/v0_bench
   ${PROJECT_SOURCE_DIR}/data/sims/v0_bench_ensemble --alpha 18.6 --ensemble --json ${CMAKE_CURRENT_BINARY_DIR}/collapse_ensemble.json)
 set_tests_properties(cli_collapse_ensemble_bench PROPERTIES LABELS cli
-  PASS_REGULAR_EXPRESSION "granpen collapse --ensemble: 3 ensembles of 15 runs.*collapse quality: spread of F/F_z across ensembles [0-9.]+ \\+- [0-9.]+ against z.*peak law: peak ~ v0\\^[0-9.]+ \\+- [0-9.]+ \\(95%: \\+- [0-9.]+, over runs")
+  PASS_REGULAR_EXPRESSION "granpen collapse --ensemble: 3 ensembles of 15 runs.*collapse quality: spread of F/F_z across ensembles [0-9.]+ \\+- [0-9.]+ against z.*peak law: peak ~ v0\\^[0-9.]+ \\+- [0-9.]+ \\(95%: \\+- [0-9.]+, over runs.*peak law, two terms \\(of the ensemble means[^\n]*crossover speed c1/c2 = ")
 add_test(NAME cli_fit_ensemble_options_need_ensemble COMMAND granpen-cli fit ${GRANPEN_FIT_DIR}/kz25300.csv --bootstrap 50)
 set_tests_properties(cli_fit_ensemble_options_need_ensemble PROPERTIES LABELS "unit;cli"
   PASS_REGULAR_EXPRESSION "--bootstrap needs --ensemble")

@@ -138,22 +138,22 @@ TEST(PlotCli, PeakExponentIsTheLibrarys)
     ci.push_back(c);
   }
   const CollapseResult r = collapse(ci, CollapseParams{});
-  ASSERT_TRUE(r.peak_ok);
-  EXPECT_NEAR(r.peak_exponent, 2.0, 0.05);    // the v0^2 law put in
+  ASSERT_TRUE(r.peak_law.ok);
+  EXPECT_NEAR(r.peak_law.exponent, 2.0, 0.05);    // the v0^2 law put in
   const std::string json = slurp(out / "peak.json");
-  EXPECT_NEAR(json_value(json, "exponent"), r.peak_exponent, 1e-9);
-  EXPECT_NEAR(json_value(json, "exponent_ci95"), r.peak_exponent_ci95, 1e-9);
+  EXPECT_NEAR(json_value(json, "exponent"), r.peak_law.exponent, 1e-9);
+  EXPECT_NEAR(json_value(json, "exponent_ci95"), r.peak_law.exponent_ci95, 1e-9);
   const int fb = block_with(out / "peak.dat", "peak law");
   ASSERT_GE(fb, 0);
   const auto fit = block(out / "peak.dat", fb);
   ASSERT_EQ(fit.size(), 1u);
-  EXPECT_NEAR(fit[0][0], r.peak_exponent, 1e-9);
+  EXPECT_NEAR(fit[0][0], r.peak_law.exponent, 1e-9);
   // the prefactor is the same least squares' intercept; the line is in the script
   std::vector<double> lv, lp;
   for (const auto &c : r.curves) lv.push_back(std::log(c.v0)), lp.push_back(std::log(c.peak));
   const LinearFit lf = linear_fit(lv, lp);
   EXPECT_NEAR(fit[0][3], std::exp(lf.a), 1e-8 * std::exp(lf.a));
-  EXPECT_NE(slurp(out / "peak.gp").find("*x**" + gp_number(r.peak_exponent)), std::string::npos);
+  EXPECT_NE(slurp(out / "peak.gp").find("*x**" + gp_number(r.peak_law.exponent)), std::string::npos);
   // every peak is drawn
   const int pb = block_with(out / "peak.dat", "peaks:");
   const auto pts = block(out / "peak.dat", pb);

@@ -49,20 +49,20 @@ TEST(Collapse, TwoTermPeakLawKnownAnswer)
   std::vector<CollapseInput> in;
   for (double v : {40.0, 80.0, 140.0, 200.0}) in.push_back(spike(v, c1 * v + c2 * v * v));
   const auto r = collapse(in, CollapseParams{});
-  ASSERT_TRUE(r.peak_two_term_ok);
-  ASSERT_TRUE(r.peak_crossover_ok);
-  EXPECT_NEAR(r.peak_linear, c1, 1e-9 * c1);
-  EXPECT_NEAR(r.peak_quadratic, c2, 1e-9 * c2);
-  EXPECT_NEAR(r.peak_crossover_speed, c1 / c2, 1e-9 * c1 / c2);
-  EXPECT_LT(r.peak_crossover_speed_se, 1e-6 * c1 / c2);
-  EXPECT_GT(r.peak_exponent, 1.0);
-  EXPECT_LT(r.peak_exponent, 2.0);
+  ASSERT_TRUE(r.peak_law.two_term_ok);
+  ASSERT_TRUE(r.peak_law.crossover_ok);
+  EXPECT_NEAR(r.peak_law.linear, c1, 1e-9 * c1);
+  EXPECT_NEAR(r.peak_law.quadratic, c2, 1e-9 * c2);
+  EXPECT_NEAR(r.peak_law.crossover_speed, c1 / c2, 1e-9 * c1 / c2);
+  EXPECT_LT(r.peak_law.crossover_speed_se, 1e-6 * c1 / c2);
+  EXPECT_GT(r.peak_law.exponent, 1.0);
+  EXPECT_LT(r.peak_law.exponent, 2.0);
   // without the linear term the exponent is 2 and the crossover speed 0
   std::vector<CollapseInput> pure;
   for (double v : {40.0, 80.0, 200.0}) pure.push_back(spike(v, c2 * v * v));
   const auto q = collapse(pure, CollapseParams{});
-  EXPECT_NEAR(q.peak_exponent, 2.0, 1e-9);
-  EXPECT_NEAR(q.peak_crossover_speed, 0.0, 1e-6);
+  EXPECT_NEAR(q.peak_law.exponent, 2.0, 1e-9);
+  EXPECT_NEAR(q.peak_law.crossover_speed, 0.0, 1e-6);
 }
 
 // The crossover speed's standard error (delta method, the covariance of c1 and c2 included)
@@ -89,9 +89,9 @@ TEST(Collapse, TwoTermCrossoverErrorMatchesNoisyDraws)
     for (double v : {40.0, 80.0, 140.0, 200.0})
       for (int bed = 0; bed < 3; ++bed) in.push_back(spike(v, (c1 * v + c2 * v * v) * (1.0 + 0.03 * gauss())));
     const auto r = collapse(in, CollapseParams{});
-    ASSERT_TRUE(r.peak_crossover_ok);
-    s += r.peak_crossover_speed, ss += r.peak_crossover_speed * r.peak_crossover_speed;
-    se_sum += r.peak_crossover_speed_se;
+    ASSERT_TRUE(r.peak_law.crossover_ok);
+    s += r.peak_law.crossover_speed, ss += r.peak_law.crossover_speed * r.peak_law.crossover_speed;
+    se_sum += r.peak_law.crossover_speed_se;
   }
   const double mean = s / draws, sd = std::sqrt((ss - draws * mean * mean) / (draws - 1));
   EXPECT_NEAR(mean, c1 / c2, 0.05 * c1 / c2);    // unbiased to first order
@@ -115,8 +115,8 @@ TEST(Collapse, KnownCrossoverCollapseAndPeakLaw)
   // the curves are one function of t~: binned against t~ they nearly coincide
   EXPECT_GT(r.spread_z, 0.05);    // most z bins hold curves already near 1
   EXPECT_LT(r.spread_t, 0.1 * r.spread_z);
-  ASSERT_TRUE(r.peak_ok);
-  EXPECT_NEAR(r.peak_exponent, 2.0, 0.05);
+  ASSERT_TRUE(r.peak_law.ok);
+  EXPECT_NEAR(r.peak_law.exponent, 2.0, 0.05);
 }
 
 TEST(Collapse, NoCrossoverWhenTheExcessNeverFades)
@@ -125,7 +125,7 @@ TEST(Collapse, NoCrossoverWhenTheExcessNeverFades)
   auto r = collapse(in, CollapseParams{});
   EXPECT_EQ(r.n_crossed, 0);
   EXPECT_FALSE(r.curves[0].crossed);
-  EXPECT_FALSE(r.peak_ok);    // one trace: no law
+  EXPECT_FALSE(r.peak_law.ok);    // one trace: no law
 }
 
 TEST(Collapse, EnsembleCrossoverSeesThroughRunNoise)
