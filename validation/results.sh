@@ -114,6 +114,29 @@ two_term() { # JSON FIELD DIVISOR
       if (!(k in x)) print "undefined"; else printf "%.4g +- %.2g\n", x[k] / s, x[k "_se"] / s }'
 }
 
+# k_z against v0 in the deep regime t~ >= 1, where the push reaches it (>= 0.5 cm of window
+# that starts at t~ = 1: fit shortens a window the data do not fill to the trace's deeper
+# half, which is not the deep regime), g = 981, D = 2: KEY FIT_CSV (granpen fit --tmin 1)
+deep_kz() {
+  local key=$1 csv=$2 v n
+  for v in $(col "$csv" v0 g 981 D 2 | sort -gu); do
+    n=$(awk -F, -v v="$v" 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next }
+      $i["v0"] + 0 == v && $i["g"] + 0 == 981 && $i["D"] + 0 == 2 && $i["z_last"] - $i["z_first"] >= 0.5 &&
+      $i["zlo"] >= $i["v0"] * sqrt($i["D"] / $i["g"]) * (1 - 1e-9)' "$csv" | wc -l)
+    [ "$n" -gt 0 ] || { put "$key.k_z_deep.v$v = undefined  # t~ >= 1 not reached by 0.5 cm before the push ends"; continue; }
+    put "$key.k_z_deep.v$v = $(col "$csv" k_z v0 "$v" g 981 D 2 | stats)  # granpen fit --tmin 1, g = 981, D = 2"
+  done
+}
+
+# the crossover and the collapse quality of granpen collapse's JSON over every trace:
+# KEY JSON NTRACES ALPHA
+collapse_numbers() {
+  put "$1.t_star = $(jget "$2" t_star_mean) +- $(jget "$2" t_star_sd) n = $(jget "$2" n_crossed) of $3  # granpen collapse --alpha $4, every v0, g, D"
+  put "$1.t_star_ensemble = $(jget "$2" t_star_ensemble) (crossed: $(grep -o '"ensemble_crossed": [a-z]*' "$2" | awk '{print $2}'))  # the mean of F/F_z over the traces"
+  put "$1.collapse_spread_z = $(jget "$2" spread_z)  # spread of F/F_z across traces against z"
+  put "$1.collapse_spread_t = $(jget "$2" spread_t)  # ... against t~"
+}
+
 # one preset's traces: PRESET DIR ZMIN (k_z window start of the slow speed: the paper's 3 cm
 # where the push goes deep enough, else 2 cm)
 analyse_traces() {
@@ -155,17 +178,7 @@ analyse_traces() {
     IFS=: read -r v g D <<< "$key"
     put "$preset.alpha0_window.v$v.g$g.D$D = $(col "$o/fit_z$zmin.csv" alpha0 v0 "$v" g "$g" D "$D" | stats)  # granpen fit --zmin $zmin: k_z0 / (mu rho_g g D^2)"
   done
-  # k_z against v0 in the deep regime t~ >= 1, where the push reaches it (>= 0.5 cm of window
-  # that starts at t~ = 1: fit shortens a window the data do not fill to the trace's deeper
-  # half, which is not the deep regime)
-  for v in $(col "$o/fit_deep.csv" v0 g 981 D 2 | sort -gu); do
-    local n
-    n=$(awk -F, -v v="$v" 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next }
-      $i["v0"] + 0 == v && $i["g"] + 0 == 981 && $i["D"] + 0 == 2 && $i["z_last"] - $i["z_first"] >= 0.5 &&
-      $i["zlo"] >= $i["v0"] * sqrt($i["D"] / $i["g"]) * (1 - 1e-9)' "$o/fit_deep.csv" | wc -l)
-    [ "$n" -gt 0 ] || { put "$preset.k_z_deep.v$v = undefined  # t~ >= 1 not reached by 0.5 cm before the push ends"; continue; }
-    put "$preset.k_z_deep.v$v = $(col "$o/fit_deep.csv" k_z v0 "$v" g 981 D 2 | stats)  # granpen fit --tmin 1, g = 981, D = 2"
-  done
+  deep_kz "$preset" "$o/fit_deep.csv"
 
   say "$preset: peak law and collapse (granpen collapse)"
   local v0set=() f
@@ -187,10 +200,7 @@ analyse_traces() {
   put "$preset.peak_exponent_ensemble = $(ensemble_peak "$o/collapse_v0_ensemble.json")  # granpen collapse --ensemble --ensemble-bin 0.02, g = 981, D = 2, every v0"
   put "$preset.peak_exponent_local = $(local_peak_exponents "$o/collapse_v0.json")  # between successive v0, the beds' mean peaks"
   peak_above_vc "$preset" "$o" "$vmin" "$alpha" "${v0set[@]}"
-  put "$preset.t_star = $(jget "$o/collapse_all.json" t_star_mean) +- $(jget "$o/collapse_all.json" t_star_sd) n = $(jget "$o/collapse_all.json" n_crossed) of $(ls "$dir"/*.csv | wc -l)  # granpen collapse --alpha $alpha, every v0, g, D"
-  put "$preset.t_star_ensemble = $(jget "$o/collapse_all.json" t_star_ensemble) (crossed: $(grep -o '"ensemble_crossed": [a-z]*' "$o/collapse_all.json" | awk '{print $2}'))  # the mean of F/F_z over the traces"
-  put "$preset.collapse_spread_z = $(jget "$o/collapse_all.json" spread_z)  # spread of F/F_z across traces against z"
-  put "$preset.collapse_spread_t = $(jget "$o/collapse_all.json" spread_t)  # ... against t~"
+  collapse_numbers "$preset" "$o/collapse_all.json" "$(ls "$dir"/*.csv | wc -l)" "$alpha"
 
   say "$preset: figures (granpen plot)"
   "$CLI" plot force "${v0set[@]}" --out "$o/fig" > /dev/null
@@ -294,12 +304,14 @@ peak_pairs() { # JSON1 JSON2
        { k = $1; sub(/.*\//, "", k); if ((k in p) && p[k] > 0) print $3 / p[k] }' <(trace_peaks "$2") <(trace_peaks "$1")
 }
 
-# alpha through the origin of the one push of (V0, D) in a granpen fit CSV: "VALUE +- SE n = 1"
-one_alpha0() { # CSV V0 D
-  awk -F, -v v="$2" -v D="$3" 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next }
-    $i["v0"] + 0 == v + 0 && $i["D"] + 0 == D + 0 { n++; a = $i["alpha0"]; e = $i["alpha0_se"] }
+# COLUMN (and COLUMN_se) of the one push of (V0, D) in a granpen fit CSV: "VALUE +- SE n = 1"
+one_fit() { # CSV COLUMN V0 D
+  awk -F, -v col="$2" -v v="$3" -v D="$4" 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next }
+    $i["v0"] + 0 == v + 0 && $i["D"] + 0 == D + 0 { n++; a = $i[col]; e = $i[col "_se"] }
     END { if (n == 1) printf "%.4g +- %.2g n = 1\n", a, e; else print "undefined n = " n + 0 }' "$1"
 }
+# alpha through the origin of the one push of (V0, D): one_alpha0 CSV V0 D
+one_alpha0() { one_fit "$1" alpha0 "$2" "$3"; }
 
 dg10_flow() {
   local d=$DG10/dg10_flow o=$OUT/dg10 v id missing=""
@@ -314,6 +326,9 @@ dg10_flow() {
   for v in 40 100 200; do
     put "dg10.alpha0_window.v$v.D2 = $(one_alpha0 "$o/fit_z3.csv" "$v" 2)  # granpen fit --zmin 3: k_z0 / (mu rho_g g D^2), bed 1; the fit's standard error"
   done
+  put "dg10.alpha.v40.D2 = $(one_fit "$o/fit_z3.csv" alpha 40 2)  # the same at the slowest speed as a straight line with an intercept"
+  "$CLI" fit "$d"/dg10_mu0.3_s1_v*_g981_D2.0.csv --tmin 1 --csv "$o/fit_deep.csv" > "$o/fit_deep.txt"
+  deep_kz dg10 "$o/fit_deep.csv"
   for v in 40 100 200; do
     id=dg10_mu0.3_s1_v${v}_g981_D2.0
     flow_numbers "dg10.v$v" "$d/$id.flow"
@@ -336,9 +351,23 @@ dg10_D() {
   done
 }
 
+# t~* and the collapse over the five full pushes (three speeds, three diameters), F_z from
+# the slowest speed's alpha through the origin, as for bench and mid
+dg10_collapse() {
+  local a o=$OUT/dg10 traces
+  a=$(nval dg10.alpha0_window.v40.D2)
+  [ -n "$a" ] && [ -n "$(nval dg10.alpha0_window.v100.D1)" ] ||
+    { say "dg10 collapse: waits for the flow and D parts: skipped"; return 0; }
+  traces=("$DG10"/dg10_flow/dg10_mu0.3_s1_v*_g981_D2.0.csv "$DG10"/dg10_D/dg10_mu0.3_s1_v100_g981_D[13].0.csv)
+  say "dg10: the collapse of the five full pushes (granpen collapse, plot ratio)"
+  "$CLI" collapse "${traces[@]}" --alpha "$a" --tbin 0.25 --json "$o/collapse_all.json" > "$o/collapse_all.txt"
+  collapse_numbers dg10 "$o/collapse_all.json" "${#traces[@]}" "$a"
+  "$CLI" plot ratio "${traces[@]}" --alpha "$a" --tbin 0.25 --out "$o/fig" > /dev/null
+}
+
 variant_peak bench_stiff "$STIFF" "k_n = k_t = 1e10 (ten times stiffer)"
 variant_peak bench_damp "$DAMP" "gamma_n = gamma_t = 100 in the push (damping ten times weaker)"
-if [ -d "$DG10" ]; then dg10_beds; dg10_peak; dg10_flow; dg10_D; else say "dg10: $DG10 missing, skipped"; fi
+if [ -d "$DG10" ]; then dg10_beds; dg10_peak; dg10_flow; dg10_D; dg10_collapse; else say "dg10: $DG10 missing, skipped"; fi
 
 # ---------------------------------------------------------------- against D/d_g
 # The rows that differ from the paper, at D/d_g = 5 (bench), 6.67 (mid) and 10 (dg10; empty
