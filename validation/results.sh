@@ -230,6 +230,8 @@ flow_numbers() {
   edge=$(grep -o '"edge": {"points"[^}]*}' "$fj")
   put "$key.edge_phi_0 = $(echo "$edge" | grep -o '"phi_0": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$edge" | grep -o '"phi_0_se": [-0-9.e+]*' | awk '{print $2}')  # phi = phi_0 + b I at the rod edge"
   put "$key.edge_slope = $(echo "$edge" | grep -o '"slope": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$edge" | grep -o '"slope_se": [-0-9.e+]*' | awk '{print $2}')"
+  put "$key.phi_below_far = $(awk -F, 'NR == 2 { printf "%.4g\n", $4 }' "$dir/flow/flow_profile_below.csv")  # phi on the axis below the rod, the bin farthest below the tip (about 4 cm)"
+  put "$key.phi_below_face = $(awk -F, 'NR > 1 { p = $4 } END { printf "%.4g\n", p }' "$dir/flow/flow_profile_below.csv")  # ... the bin nearest the tip (the rod's face)"
   put "$key.surface_flux_sign_change_t = $(grep -o '"crossing_t_tilde": [-0-9.e+a-z]*' "$dir/surface/flow.json" | awk '{print $2}')  # granpen flow: t~ where v_z of the strip's top grain layer (0.5-1.5 cm from the shaft) last turns from up to down"
   put "$key.drag_over_mu_g_Mmove = $(grep -o '"k": [-0-9.e+]*' "$mj" | head -1 | awk '{print $2}') +- $(grep -o '"k_se": [-0-9.e+]*' "$mj" | head -1 | awk '{print $2}')  # F = k mu g M(v_z > v0/320), granpen momentum"
 }
@@ -423,6 +425,8 @@ ratio_of() { # QUANTITY RATIO KEY1 KEY2 PAPER PAPER_ERROR
   row_of "lambda_vz / D" 6.67 mid.lambda_vz_D 0.98 0.15; row_of "lambda_vz / D" 10 dg10.v100.lambda_vz_D 0.98 0.15
   row_of "phi at r = R (I -> 0)" 6.67 mid.edge_phi_0 0.57 ""; row_of "phi at r = R (I -> 0)" 10 dg10.v100.edge_phi_0 0.57 ""
   row_of "d phi / d I at r = R" 6.67 mid.edge_slope -0.35 ""; row_of "d phi / d I at r = R" 10 dg10.v100.edge_slope -0.35 ""
+  ratio_of "phi at the face / far below" 6.67 mid.phi_below_face mid.phi_below_far 0.97 ""
+  ratio_of "phi at the face / far below" 10 dg10.v100.phi_below_face dg10.v100.phi_below_far 0.97 ""
   row_of "drag / (mu g M)" 6.67 mid.drag_over_mu_g_Mmove 1 ""; row_of "drag / (mu g M)" 10 dg10.v100.drag_over_mu_g_Mmove 1 ""
 } > "$OUT/scaling.csv.partial" && mv "$OUT/scaling.csv.partial" "$OUT/scaling.csv"
 "$CLI" plot scaling "$OUT/scaling.csv" --out "$OUT/scaling" > /dev/null

@@ -76,7 +76,7 @@ same bench_stiff.peak_over_bench "1 +- 0 n = 8"
 same bench_damp.peak_over_bench "1 +- 0 n = 8"
 # the flow rows of each dg10 speed: the mid push's, from the same tables
 for v in 40 100 200; do
-  for k in lambda_vz_D edge_phi_0 edge_slope surface_flux_sign_change_t drag_over_mu_g_Mmove; do
+  for k in lambda_vz_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove; do
     same "dg10.v$v.$k" "$(val "mid.$k")"
   done
 done

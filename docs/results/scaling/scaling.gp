@@ -6,10 +6,10 @@ if (!exists("formats")) formats = "png svg"
 data = "scaling.dat"
 do for [fmt in formats] {
   if (fmt eq "png") {
-    set terminal pngcairo enhanced size 1300,2020 font "sans,12" background rgb "white"
+    set terminal pngcairo enhanced size 1300,2400 font "sans,12" background rgb "white"
   } else {
     if (fmt ne "svg") { print "unknown format ", fmt, " (png or svg)"; exit status 1 }
-    set terminal svg enhanced size 1300,2020 font "sans,12" background rgb "white"
+    set terminal svg enhanced size 1300,2400 font "sans,12" background rgb "white"
   }
   set output "scaling." . fmt
   reset
@@ -17,8 +17,8 @@ do for [fmt in formats] {
   set multiplot title "Against the grain size ratio D/d_g: granpen (blue, ± its error), the paper's value (red; shaded: its error), the paper's D/d_g (dotted)" font ",14"
 
   # ---- panel 1: phi\_0   (paper: 0.61)
-  set origin 0,0.752
-  set size 0.5,0.188
+  set origin 0,0.7833333333
+  set size 0.5,0.1566666667
   set title "phi\\_0   (paper: 0.61)"
   set xlabel "D/d_g"
   set ylabel "phi\\_0"
@@ -35,8 +35,8 @@ do for [fmt in formats] {
   # ---- panel 2: peak exponent (v\_c to 10 v\_c)   (paper: 2)
   reset
   set encoding utf8
-  set origin 0.5,0.752
-  set size 0.5,0.188
+  set origin 0.5,0.7833333333
+  set size 0.5,0.1566666667
   set title "peak exponent (v\\_c to 10 v\\_c)   (paper: 2)"
   set xlabel "D/d_g"
   set ylabel "peak exponent (v\\_c to 10 v\\_c)"
@@ -53,8 +53,8 @@ do for [fmt in formats] {
   # ---- panel 3: peak exponent (means above v_c)   (paper: 2)
   reset
   set encoding utf8
-  set origin 0,0.564
-  set size 0.5,0.188
+  set origin 0,0.6266666667
+  set size 0.5,0.1566666667
   set title "peak exponent (means above v_c)   (paper: 2)"
   set xlabel "D/d_g"
   set ylabel "peak exponent (means above v_c)"
@@ -71,8 +71,8 @@ do for [fmt in formats] {
   # ---- panel 4: peak v_0^2 coefficient c_2/(ρ_g D^2)   (no paper value)
   reset
   set encoding utf8
-  set origin 0.5,0.564
-  set size 0.5,0.188
+  set origin 0.5,0.6266666667
+  set size 0.5,0.1566666667
   set title "peak v_0^2 coefficient c_2/(ρ_g D^2)   (no paper value)"
   set xlabel "D/d_g"
   set ylabel "peak v_0^2 coefficient c_2/(ρ_g D^2)"
@@ -88,8 +88,8 @@ do for [fmt in formats] {
   # ---- panel 5: peak crossover c_1/c_2   (no paper value)
   reset
   set encoding utf8
-  set origin 0,0.376
-  set size 0.5,0.188
+  set origin 0,0.47
+  set size 0.5,0.1566666667
   set title "peak crossover c_1/c_2   (no paper value)"
   set xlabel "D/d_g"
   set ylabel "peak crossover c_1/c_2 (cm/s)"
@@ -105,8 +105,8 @@ do for [fmt in formats] {
   # ---- panel 6: alpha(D = 1 cm) / alpha(D = 2 cm)   (paper: 1)
   reset
   set encoding utf8
-  set origin 0.5,0.376
-  set size 0.5,0.188
+  set origin 0.5,0.47
+  set size 0.5,0.1566666667
   set title "alpha(D = 1 cm) / alpha(D = 2 cm)   (paper: 1)"
   set xlabel "D/d_g"
   set ylabel "alpha(D = 1 cm) / alpha(D = 2 cm)"
@@ -123,8 +123,8 @@ do for [fmt in formats] {
   # ---- panel 7: lambda\_vz / D   (paper: 0.98 ± 0.15)
   reset
   set encoding utf8
-  set origin 0,0.188
-  set size 0.5,0.188
+  set origin 0,0.3133333333
+  set size 0.5,0.1566666667
   set title "lambda\\_vz / D   (paper: 0.98 ± 0.15)"
   set xlabel "D/d_g"
   set ylabel "lambda\\_vz / D"
@@ -143,8 +143,8 @@ do for [fmt in formats] {
   # ---- panel 8: phi at r = R (I -> 0)   (paper: 0.57)
   reset
   set encoding utf8
-  set origin 0.5,0.188
-  set size 0.5,0.188
+  set origin 0.5,0.3133333333
+  set size 0.5,0.1566666667
   set title "phi at r = R (I -> 0)   (paper: 0.57)"
   set xlabel "D/d_g"
   set ylabel "phi at r = R (I -> 0)"
@@ -161,8 +161,8 @@ do for [fmt in formats] {
   # ---- panel 9: d phi / d I at r = R   (paper: -0.35)
   reset
   set encoding utf8
-  set origin 0,0
-  set size 0.5,0.188
+  set origin 0,0.1566666667
+  set size 0.5,0.1566666667
   set title "d phi / d I at r = R   (paper: -0.35)"
   set xlabel "D/d_g"
   set ylabel "d phi / d I at r = R"
@@ -176,11 +176,29 @@ do for [fmt in formats] {
   plot data index 8 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        -0.35 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: -0.35"
 
-  # ---- panel 10: drag / (mu g M)   (paper: 1)
+  # ---- panel 10: phi at the face / far below   (paper: 0.97)
   reset
   set encoding utf8
-  set origin 0.5,0
-  set size 0.5,0.188
+  set origin 0.5,0.1566666667
+  set size 0.5,0.1566666667
+  set title "phi at the face / far below   (paper: 0.97)"
+  set xlabel "D/d_g"
+  set ylabel "phi at the face / far below"
+  set grid lc rgb "#d0d0d0"
+  set xrange [4:11]
+  set yrange [0.91168:0.97432]
+  unset key
+  set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
+  set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
+  set samples 400
+  plot data index 9 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+       0.97 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 0.97"
+
+  # ---- panel 11: drag / (mu g M)   (paper: 1)
+  reset
+  set encoding utf8
+  set origin 0,0
+  set size 0.5,0.1566666667
   set title "drag / (mu g M)   (paper: 1)"
   set xlabel "D/d_g"
   set ylabel "drag / (mu g M)"
@@ -191,7 +209,7 @@ do for [fmt in formats] {
   set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
   set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
   set samples 400
-  plot data index 9 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+  plot data index 10 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
   unset multiplot
   unset multiplot
