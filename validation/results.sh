@@ -340,7 +340,7 @@ dg10_flow() {
 
 dg10_D() {
   local d=$DG10/dg10_D o=$OUT/dg10 D traces=() missing=""
-  for D in 1.0 3.0; do
+  for D in 1.0; do    # D = 3 cm: not run (inputs/sweeps/dg10_D.sweep)
     [ -f "$d/dg10_mu0.3_s1_v100_g981_D$D.csv" ] && traces+=("$d/dg10_mu0.3_s1_v100_g981_D$D.csv") || missing="$missing $D"
   done
   [ -f "$DG10/dg10_flow/dg10_mu0.3_s1_v100_g981_D2.0.csv" ] || missing="$missing 2.0"
@@ -348,20 +348,20 @@ dg10_D() {
   mkdir -p "$o"
   say "dg10: alpha against D at 100 cm/s (granpen fit)"
   "$CLI" fit "${traces[@]}" "$DG10/dg10_flow/dg10_mu0.3_s1_v100_g981_D2.0.csv" --zmin 3 --csv "$o/fit_D.csv" > "$o/fit_D.txt"
-  for D in 1 3; do    # D = 2: dg10_flow's push at 100 cm/s, above
+  for D in 1; do    # D = 2: dg10_flow's push at 100 cm/s, above
     put "dg10.alpha0_window.v100.D$D = $(one_alpha0 "$o/fit_D.csv" 100 "$D")  # granpen fit --zmin 3, bed 1, v0 = 100; the fit's standard error"
   done
 }
 
-# t~* and the collapse over the five full pushes (three speeds, three diameters), F_z from
+# t~* and the collapse over the four full pushes (three speeds, two diameters), F_z from
 # the slowest speed's alpha through the origin, as for bench and mid
 dg10_collapse() {
   local a o=$OUT/dg10 traces
   a=$(nval dg10.alpha0_window.v40.D2)
   [ -n "$a" ] && [ -n "$(nval dg10.alpha0_window.v100.D1)" ] ||
     { say "dg10 collapse: waits for the flow and D parts: skipped"; return 0; }
-  traces=("$DG10"/dg10_flow/dg10_mu0.3_s1_v*_g981_D2.0.csv "$DG10"/dg10_D/dg10_mu0.3_s1_v100_g981_D[13].0.csv)
-  say "dg10: the collapse of the five full pushes (granpen collapse, plot ratio)"
+  traces=("$DG10"/dg10_flow/dg10_mu0.3_s1_v*_g981_D2.0.csv "$DG10"/dg10_D/dg10_mu0.3_s1_v100_g981_D1.0.csv)
+  say "dg10: the collapse of the four full pushes (granpen collapse, plot ratio)"
   "$CLI" collapse "${traces[@]}" --alpha "$a" --tbin 0.25 --json "$o/collapse_all.json" > "$o/collapse_all.txt"
   collapse_numbers dg10 "$o/collapse_all.json" "${#traces[@]}" "$a"
   "$CLI" plot ratio "${traces[@]}" --alpha "$a" --tbin 0.25 --out "$o/fig" > /dev/null

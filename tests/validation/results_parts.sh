@@ -37,7 +37,6 @@ for vv in 40:30 100:90 200:240; do
     "$ROOT/docs/results/mid/window.txt" "$DG/dg10_flow/$id.flow/"
 done
 stand_in "$MID/mid_mu0.3_s1_v90_g981_D1.0.csv" "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D1.0.csv" 100
-stand_in "$MID/mid_mu0.3_s2_v90_g981_D1.0.csv" "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D3.0.csv" 100 3
 # ---- the stiffer bench: the bench's own traces (variant_peak against analyse_traces)
 ST=$OUT/stiff
 mkdir -p "$ST"
@@ -86,7 +85,6 @@ alpha0() { "$CLI" fit "$1" --zmin 3 --csv "$OUT/a.csv" > /dev/null
 same dg10.alpha0_window.v100.D2 "$(alpha0 "$DG/dg10_flow/dg10_mu0.3_s1_v100_g981_D2.0.csv")"
 same dg10.alpha0_window.v40.D2 "$(alpha0 "$DG/dg10_flow/dg10_mu0.3_s1_v40_g981_D2.0.csv")"
 same dg10.alpha0_window.v100.D1 "$(alpha0 "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D1.0.csv")"
-same dg10.alpha0_window.v100.D3 "$(alpha0 "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D3.0.csv")"
 # ... and with an intercept at the slowest speed
 "$CLI" fit "$DG/dg10_flow/dg10_mu0.3_s1_v40_g981_D2.0.csv" --zmin 3 --csv "$OUT/a.csv" > /dev/null
 same dg10.alpha.v40.D2 "$(awk -F, 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next } { printf "%.4g +- %.2g n = 1\n", $i["alpha"], $i["alpha_se"] }' "$OUT/a.csv")"
@@ -95,11 +93,11 @@ same dg10.alpha.v40.D2 "$(awk -F, 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c
 "$CLI" fit "$DG/dg10_flow/dg10_mu0.3_s1_v40_g981_D2.0.csv" --tmin 1 --csv "$OUT/deep.csv" > /dev/null
 same dg10.k_z_deep.v40 "$(awk -F, 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next } { printf "%.4g +- 0 n = 1\n", $i["k_z"] }' "$OUT/deep.csv")"
 same dg10.k_z_deep.v200 "undefined"
-# the collapse of the five full pushes: granpen collapse on them directly, F_z from the
+# the collapse of the four full pushes: granpen collapse on them directly, F_z from the
 # alpha through the origin at 40 cm/s checked above
 a=$(val dg10.alpha0_window.v40.D2 | awk '{print $1}')
 "$CLI" collapse "$DG"/dg10_flow/*.csv "$DG"/dg10_D/*.csv --alpha "$a" --tbin 0.25 --json "$OUT/all.json" > /dev/null
-same dg10.t_star "$(num "$OUT/all.json" t_star_mean) +- $(num "$OUT/all.json" t_star_sd) n = $(num "$OUT/all.json" n_crossed) of 5"
+same dg10.t_star "$(num "$OUT/all.json" t_star_mean) +- $(num "$OUT/all.json" t_star_sd) n = $(num "$OUT/all.json" n_crossed) of 4"
 same dg10.collapse_spread_z "$(num "$OUT/all.json" spread_z)"
 same dg10.collapse_spread_t "$(num "$OUT/all.json" spread_t)"
 [ -s "$OUT/res/dg10/fig/ratio.gp" ] || [ -n "$(ls "$OUT"/res/dg10/fig/*ratio* 2>/dev/null)" ] || fail "no dg10 ratio figure"
@@ -112,12 +110,12 @@ grep -q "^peak exponent (v_c to 10 v_c),10,$(val dg10.peak_exponent | awk '{prin
 [ -s "$OUT/res/scaling/scaling.gp" ] || fail "no scaling figure"
 
 # a part with one push missing adds no line and says so
-rm "$DG/dg10_flow/dg10_mu0.3_s1_v200_g981_D2.0.flow/window.txt" "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D3.0.csv"
+rm "$DG/dg10_flow/dg10_mu0.3_s1_v200_g981_D2.0.flow/window.txt" "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D1.0.csv"
 GRANPEN_CLI=$CLI "$ROOT/validation/results.sh" --out "$OUT/res2" --dumps /nonexistent --dg10 "$DG" --stiff "$ST" --damp "$DA" \
   > "$OUT/res2.log" 2>&1 || { cat "$OUT/res2.log"; fail "results.sh failed with a part missing"; }
 ! grep -q '^dg10\.v\|^dg10\.alpha0_window\|^dg10\.alpha\.\|^dg10\.k_z_deep\|^dg10\.t_star\|^dg10\.collapse' "$OUT/res2/numbers.txt" ||
   fail "a part with a push missing added lines"
 grep -q "dg10 flow: the full pushes at 200 cm/s" "$OUT/res2.log" || fail "no note of the missing flow push"
-grep -q "dg10 D: the pushes of D = 3.0 cm" "$OUT/res2.log" || fail "no note of the missing D push"
+grep -q "dg10 D: the pushes of D = 1.0 cm" "$OUT/res2.log" || fail "no note of the missing D push"
 grep -q '^dg10.peak_exponent = ' "$OUT/res2/numbers.txt" || fail "the complete peak part was dropped"
 echo "results.sh's waiting parts: every line as granpen gives it directly; incomplete parts skipped"

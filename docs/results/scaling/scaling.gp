@@ -130,7 +130,7 @@ do for [fmt in formats] {
   set ylabel "lambda\\_vz / D"
   set grid lc rgb "#d0d0d0"
   set xrange [4:11]
-  set yrange [0.3236572686:1.189729091]
+  set yrange [0.3039475788:1.191189068]
   unset key
   set object 10 rectangle from graph 0, first 0.83 to graph 1, first 1.13 behind fillcolor rgb "#d62728" fillstyle transparent solid 0.18 noborder
   set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
@@ -150,7 +150,7 @@ do for [fmt in formats] {
   set ylabel "phi at r = R (I -> 0)"
   set grid lc rgb "#d0d0d0"
   set xrange [4:11]
-  set yrange [0.5207269602:0.5736498548]
+  set yrange [0.4923950775:0.5757485128]
   unset key
   set arrow 1 from first 10, graph 0 to first 10, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
   set label 1 "paper" at first 10, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
