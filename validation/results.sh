@@ -385,6 +385,12 @@ row() {
     "peak v0^2 coefficient c2/(rho_g D^2)") label="peak v_0^2 coefficient c_2/(ρ_g D^2)" ;;
     "peak crossover speed c1/c2") unit="cm/s" label="peak crossover c_1/c_2" ;;
     "peak exponent above v_c (ensemble means)") label="peak exponent (means above v_c)" ;;
+    # the flow rows: mid's push at 90 cm/s against dg10's at 100 (its 40 cm/s one: the table); no commas (CSV)
+    "lambda_vz / D") label="λ_{vz} / D (90 and 100 cm/s)" ;;
+    "phi at r = R (I -> 0)") label="φ at r = R for I → 0 (90 and 100 cm/s)" ;;
+    "d phi / d I at r = R") label="dφ/dI at r = R (90 and 100 cm/s)" ;;
+    "phi at the face / far below") label="φ at the face / far below (90 and 100 cm/s)" ;;
+    "drag / (mu g M)") label="drag / (μ g M) (90 and 100 cm/s)" ;;
   esac
   printf '%s,%s,%s,%s,%s,%s,%s,%s\n' "$1" "$2" "$3" "$4" "$5" "$6" "$unit" "$label"
 }

@@ -140,6 +140,18 @@ std::vector<std::vector<int>> by_speed(const std::vector<TraceIn> &t)
 
 std::string v0_text(double v0) { return "v_0 = " + fmt("%g", v0) + " cm/s"; }
 
+// What tells curve i from the others of its speed in a legend: its D and g where they differ
+// from another's (two pushes of one bed at one speed and two diameters are both "seed 1"),
+// then its run label.
+std::string run_text(const std::vector<CollapseCurve> &cs, const std::vector<int> &group, int i, const std::string &label)
+{
+  bool D_differs = false, g_differs = false;
+  for (int j : group) D_differs |= cs[j].D != cs[i].D, g_differs |= cs[j].g != cs[i].g;
+  std::string s = D_differs ? "D = " + fmt("%g", cs[i].D) + " cm, " : "";
+  if (g_differs) s += "g = " + fmt("%g", cs[i].g) + ", ";
+  return s + label;
+}
+
 // log-axis tics at the given values (and the minor tics gnuplot adds)
 std::string value_tics(const char *axis, std::vector<double> v)
 {
@@ -653,7 +665,7 @@ void plot_ratio(const std::vector<std::string> &inputs, Run &run)
         sb.title = v0_text(c.v0) + (kv.second.size() > 1 ? ", g = " + fmt("%g", c.g) + ", D = " + fmt("%g", c.D) : "") +
                    " (" + rc.label[i] + ")";
       else if (per_run)
-        sb.title = v0_text(c.v0) + (kv.second.size() > 1 ? ", " + rc.label[i] : "");
+        sb.title = v0_text(c.v0) + (kv.second.size() > 1 ? ", " + run_text(r.curves, kv.second, i, rc.label[i]) : "");
       else if (i == kv.second.front())
         sb.title = v0_text(c.v0) + " (" + std::to_string(kv.second.size()) + " runs)";
       sa.line_width = sb.line_width = 1.8;

@@ -120,14 +120,14 @@ do for [fmt in formats] {
   plot data index 5 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
 
-  # ---- panel 7: lambda\_vz / D   (paper: 0.98 ± 0.15)
+  # ---- panel 7: λ_{vz} / D (90 and 100 cm/s)   (paper: 0.98 ± 0.15)
   reset
   set encoding utf8
   set origin 0,0.3133333333
   set size 0.5,0.1566666667
-  set title "lambda\\_vz / D   (paper: 0.98 ± 0.15)"
+  set title "λ_{vz} / D (90 and 100 cm/s)   (paper: 0.98 ± 0.15)"
   set xlabel "D/d_g"
-  set ylabel "lambda\\_vz / D"
+  set ylabel "λ_{vz} / D (90 and 100 cm/s)"
   set grid lc rgb "#d0d0d0"
   set xrange [4:11]
   set yrange [0.3039475788:1.191189068]
@@ -140,14 +140,14 @@ do for [fmt in formats] {
        data index 6 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        0.98 with lines lw 1.5 dt 2 lc rgb "#d62728" notitle
 
-  # ---- panel 8: phi at r = R (I -> 0)   (paper: 0.57)
+  # ---- panel 8: φ at r = R for I → 0 (90 and 100 cm/s)   (paper: 0.57)
   reset
   set encoding utf8
   set origin 0.5,0.3133333333
   set size 0.5,0.1566666667
-  set title "phi at r = R (I -> 0)   (paper: 0.57)"
+  set title "φ at r = R for I → 0 (90 and 100 cm/s)   (paper: 0.57)"
   set xlabel "D/d_g"
-  set ylabel "phi at r = R (I -> 0)"
+  set ylabel "φ at r = R for I → 0 (90 and 100 cm/s)"
   set grid lc rgb "#d0d0d0"
   set xrange [4:11]
   set yrange [0.4923950775:0.5757485128]
@@ -158,14 +158,14 @@ do for [fmt in formats] {
   plot data index 7 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        0.57 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 0.57"
 
-  # ---- panel 9: d phi / d I at r = R   (paper: -0.35)
+  # ---- panel 9: dφ/dI at r = R (90 and 100 cm/s)   (paper: -0.35)
   reset
   set encoding utf8
   set origin 0,0.1566666667
   set size 0.5,0.1566666667
-  set title "d phi / d I at r = R   (paper: -0.35)"
+  set title "dφ/dI at r = R (90 and 100 cm/s)   (paper: -0.35)"
   set xlabel "D/d_g"
-  set ylabel "d phi / d I at r = R"
+  set ylabel "dφ/dI at r = R (90 and 100 cm/s)"
   set grid lc rgb "#d0d0d0"
   set xrange [4:11]
   set yrange [-0.3734201804:-0.03382756443]
@@ -176,14 +176,14 @@ do for [fmt in formats] {
   plot data index 8 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        -0.35 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: -0.35"
 
-  # ---- panel 10: phi at the face / far below   (paper: 0.97)
+  # ---- panel 10: φ at the face / far below (90 and 100 cm/s)   (paper: 0.97)
   reset
   set encoding utf8
   set origin 0.5,0.1566666667
   set size 0.5,0.1566666667
-  set title "phi at the face / far below   (paper: 0.97)"
+  set title "φ at the face / far below (90 and 100 cm/s)   (paper: 0.97)"
   set xlabel "D/d_g"
-  set ylabel "phi at the face / far below"
+  set ylabel "φ at the face / far below (90 and 100 cm/s)"
   set grid lc rgb "#d0d0d0"
   set xrange [4:11]
   set yrange [0.91168:0.97432]
@@ -194,14 +194,14 @@ do for [fmt in formats] {
   plot data index 9 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        0.97 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 0.97"
 
-  # ---- panel 11: drag / (mu g M)   (paper: 1)
+  # ---- panel 11: drag / (μ g M) (90 and 100 cm/s)   (paper: 1)
   reset
   set encoding utf8
   set origin 0,0
   set size 0.5,0.1566666667
-  set title "drag / (mu g M)   (paper: 1)"
+  set title "drag / (μ g M) (90 and 100 cm/s)   (paper: 1)"
   set xlabel "D/d_g"
-  set ylabel "drag / (mu g M)"
+  set ylabel "drag / (μ g M) (90 and 100 cm/s)"
   set grid lc rgb "#d0d0d0"
   set xrange [4:11]
   set yrange [0.940331708:1.805521942]

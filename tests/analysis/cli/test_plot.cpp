@@ -199,6 +199,25 @@ TEST(PlotCli, RatioCurvesAreCollapses)
   EXPECT_NE(slurp(out / "ratio.gp").find("first 0.8 to graph 1, first 1.2"), std::string::npos);    // the band
 }
 
+// Two pushes of one bed at one speed, D = 1 and 2 cm, are both "seed 1": the legend names
+// their diameters (it named them alike before, so a reader could not tell them apart).
+TEST(PlotCli, RatioLegendTellsDiametersApart)
+{
+  const fs::path in = fresh("ratio_D_in"), out = fresh("ratio_D_out");
+  for (int D : {1, 2}) {
+    std::string text = trace_text(100, 25300, 0, 0, 1);
+    const auto at = text.find("# D = 2\n");
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, 8, "# D = " + std::to_string(D) + "\n");
+    write(in / ("D" + std::to_string(D) + ".csv"), text);
+  }
+  const Outcome o = run_plot({"ratio", in.string(), "--out", out.string(), "--no-run", "--alpha", "30"});
+  ASSERT_EQ(o.status, 0) << o.err;
+  const std::string gp = slurp(out / "ratio.gp");
+  EXPECT_NE(gp.find("v_0 = 100 cm/s, D = 1 cm, seed 1"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("v_0 = 100 cm/s, D = 2 cm, seed 1"), std::string::npos) << gp;
+}
+
 TEST(PlotCli, KzWithTheFitsErrors)
 {
   const fs::path in = synthetic_traces("kz_in"), out = fresh("kz_out");

@@ -15,7 +15,7 @@ do for [fmt in formats] {
   set output "momentum_drag." . fmt
   reset
   set encoding utf8
-  set multiplot title "Drag against μ g M of the moving grains: k = 1.30 ± 0.09 (paper: about 1); mean F / μgM over the frames 5.99 ± 3.93" font ",14"
+  set multiplot title "Drag against μ g M of the moving grains: k = 1.30 ± 0.09 (paper: about 1)" font ",14"
 
   # ---- panel 1
   set origin 0,0

@@ -15,7 +15,7 @@ do for [fmt in formats] {
   set output "momentum_drag." . fmt
   reset
   set encoding utf8
-  set multiplot title "Drag against μ g M of the moving grains: k = 2.45 ± 0.36 (paper: about 1); mean F / μgM over the frames 61.41 ± 55.28" font ",14"
+  set multiplot title "Drag against μ g M of the moving grains: k = 2.45 ± 0.36 (paper: about 1)" font ",14"
 
   # ---- panel 1
   set origin 0,0

@@ -15,7 +15,7 @@ do for [fmt in formats] {
   set output "momentum_drag." . fmt
   reset
   set encoding utf8
-  set multiplot title "Drag against μ g M of the moving grains: k = 1.23 ± 0.03 (paper: about 1); mean F / μgM over the frames 1.50 ± 0.24" font ",14"
+  set multiplot title "Drag against μ g M of the moving grains: k = 1.23 ± 0.03 (paper: about 1)" font ",14"
 
   # ---- panel 1
   set origin 0,0
