@@ -334,6 +334,9 @@ dg10_flow() {
   for v in 40 100 200; do
     id=dg10_mu0.3_s1_v${v}_g981_D2.0
     flow_numbers "dg10.v$v" "$d/$id.flow"
+    [ -d "$d/$id.flow/lambda_checks" ] && for c in "$d/$id.flow"/lambda_checks/*/flow.json; do
+      put "dg10.v$v.lambda_vz_D.$(basename "$(dirname "$c")") = $(grep -o '"lambda_vz": {[^}]*}' "$c" | grep -o '"lambda_D": [-0-9.e+]*' | awk '{printf "%.3g", $2}') +- $(grep -o '"lambda_vz": {[^}]*}' "$c" | grep -o '"lambda_D_se": [-0-9.e+]*' | awk '{printf "%.2g\n", $2}')  # granpen flow on the dumps, read another way (lambda_checks/README.md)"
+    done
     plot_flow "$d/$id.flow" "$o/flow_v$v"
   done
 }
@@ -350,6 +353,14 @@ dg10_D() {
   "$CLI" fit "${traces[@]}" "$DG10/dg10_flow/dg10_mu0.3_s1_v100_g981_D2.0.csv" --zmin 3 --csv "$o/fit_D.csv" > "$o/fit_D.txt"
   for D in 1; do    # D = 2: dg10_flow's push at 100 cm/s, above
     put "dg10.alpha0_window.v100.D$D = $(one_alpha0 "$o/fit_D.csv" 100 "$D")  # granpen fit --zmin 3, bed 1, v0 = 100; the fit's standard error"
+  done
+  # the same ratio over 1 cm windows of the push: how it grows with depth
+  local w a1 a2
+  for w in 1:2 2:3 3:4 4:5; do
+    "$CLI" fit "${traces[@]}" "$DG10/dg10_flow/dg10_mu0.3_s1_v100_g981_D2.0.csv" --zmin "${w%%:*}" --zmax "${w##*:}" \
+      --csv "$o/fit_D_z$w.csv" > /dev/null
+    a1=$(one_alpha0 "$o/fit_D_z$w.csv" 100 1 | awk '{print $1}') a2=$(one_alpha0 "$o/fit_D_z$w.csv" 100 2 | awk '{print $1}')
+    put "dg10.alpha0_ratio_D1_D2.z${w/:/-} = $(awk -v a="$a1" -v b="$a2" 'BEGIN { printf "%.3g\n", a / b }')  # alpha through the origin, D = 1 over D = 2 cm, granpen fit --zmin ${w%%:*} --zmax ${w##*:}"
   done
 }
 

@@ -85,6 +85,12 @@ alpha0() { "$CLI" fit "$1" --zmin 3 --csv "$OUT/a.csv" > /dev/null
 same dg10.alpha0_window.v100.D2 "$(alpha0 "$DG/dg10_flow/dg10_mu0.3_s1_v100_g981_D2.0.csv")"
 same dg10.alpha0_window.v40.D2 "$(alpha0 "$DG/dg10_flow/dg10_mu0.3_s1_v40_g981_D2.0.csv")"
 same dg10.alpha0_window.v100.D1 "$(alpha0 "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D1.0.csv")"
+# the D ratio over a 1 cm window: granpen fit on the two files over that window directly
+a1=$("$CLI" fit "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D1.0.csv" --zmin 3 --zmax 4 --csv "$OUT/w.csv" > /dev/null
+  awk -F, 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next } { print $i["alpha0"] }' "$OUT/w.csv")
+a2=$("$CLI" fit "$DG/dg10_flow/dg10_mu0.3_s1_v100_g981_D2.0.csv" --zmin 3 --zmax 4 --csv "$OUT/w.csv" > /dev/null
+  awk -F, 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next } { print $i["alpha0"] }' "$OUT/w.csv")
+same dg10.alpha0_ratio_D1_D2.z3-4 "$(awk -v a="$a1" -v b="$a2" 'BEGIN { printf "%.3g\n", a / b }')"
 # ... and with an intercept at the slowest speed
 "$CLI" fit "$DG/dg10_flow/dg10_mu0.3_s1_v40_g981_D2.0.csv" --zmin 3 --csv "$OUT/a.csv" > /dev/null
 same dg10.alpha.v40.D2 "$(awk -F, 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next } { printf "%.4g +- %.2g n = 1\n", $i["alpha"], $i["alpha_se"] }' "$OUT/a.csv")"
