@@ -222,11 +222,15 @@ plot_flow() {
 }
 
 # the flow rows of one push (KEY.lambda_vz_D, ...) from validation/push_flow.sh's outputs in DIR
+# lambda_vz / D of granpen flow's JSON: "VALUE +- SE"
+lambda_D() {
+  local lam; lam=$(grep -o '"lambda_vz": {[^}]*}' "$1")
+  echo "$(echo "$lam" | grep -o '"lambda_D": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$lam" | grep -o '"lambda_D_se": [-0-9.e+]*' | awk '{print $2}')"
+}
 flow_numbers() {
-  local key=$1 dir=$2 fj=$2/flow/flow.json mj=$2/momentum/momentum.json steps lam edge
+  local key=$1 dir=$2 fj=$2/flow/flow.json mj=$2/momentum/momentum.json steps edge
   steps=$(awk '{print $1 " (tip " $2 " to " $3 " cm deep)"}' "$dir/window.txt")
-  lam=$(grep -o '"lambda_vz": {[^}]*}' "$fj")
-  put "$key.lambda_vz_D = $(echo "$lam" | grep -o '"lambda_D": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$lam" | grep -o '"lambda_D_se": [-0-9.e+]*' | awk '{print $2}')  # granpen flow --steps $steps"
+  put "$key.lambda_vz_D = $(lambda_D "$fj")  # granpen flow --steps $steps"
   edge=$(grep -o '"edge": {"points"[^}]*}' "$fj")
   put "$key.edge_phi_0 = $(echo "$edge" | grep -o '"phi_0": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$edge" | grep -o '"phi_0_se": [-0-9.e+]*' | awk '{print $2}')  # phi = phi_0 + b I at the rod edge"
   put "$key.edge_slope = $(echo "$edge" | grep -o '"slope": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$edge" | grep -o '"slope_se": [-0-9.e+]*' | awk '{print $2}')"
@@ -335,7 +339,7 @@ dg10_flow() {
     id=dg10_mu0.3_s1_v${v}_g981_D2.0
     flow_numbers "dg10.v$v" "$d/$id.flow"
     [ -d "$d/$id.flow/lambda_checks" ] && for c in "$d/$id.flow"/lambda_checks/*/flow.json; do
-      put "dg10.v$v.lambda_vz_D.$(basename "$(dirname "$c")") = $(grep -o '"lambda_vz": {[^}]*}' "$c" | grep -o '"lambda_D": [-0-9.e+]*' | awk '{printf "%.3g", $2}') +- $(grep -o '"lambda_vz": {[^}]*}' "$c" | grep -o '"lambda_D_se": [-0-9.e+]*' | awk '{printf "%.2g\n", $2}')  # granpen flow on the dumps, read another way (lambda_checks/README.md)"
+      put "dg10.v$v.lambda_vz_D.$(basename "$(dirname "$c")") = $(lambda_D "$c")  # granpen flow on the dumps, read another way (lambda_checks/README.md)"
     done
     plot_flow "$d/$id.flow" "$o/flow_v$v"
   done

@@ -86,18 +86,18 @@ same dg10.alpha0_window.v100.D2 "$(alpha0 "$DG/dg10_flow/dg10_mu0.3_s1_v100_g981
 same dg10.alpha0_window.v40.D2 "$(alpha0 "$DG/dg10_flow/dg10_mu0.3_s1_v40_g981_D2.0.csv")"
 same dg10.alpha0_window.v100.D1 "$(alpha0 "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D1.0.csv")"
 # the D ratio over a 1 cm window: granpen fit on the two files over that window directly
-a1=$("$CLI" fit "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D1.0.csv" --zmin 3 --zmax 4 --csv "$OUT/w.csv" > /dev/null
-  awk -F, 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next } { print $i["alpha0"] }' "$OUT/w.csv")
-a2=$("$CLI" fit "$DG/dg10_flow/dg10_mu0.3_s1_v100_g981_D2.0.csv" --zmin 3 --zmax 4 --csv "$OUT/w.csv" > /dev/null
-  awk -F, 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next } { print $i["alpha0"] }' "$OUT/w.csv")
+# COLUMN of granpen fit's CSV for one trace: fit_col TRACE COLUMN FIT_OPTION...
+fit_col() { "$CLI" fit "$1" "${@:3}" --csv "$OUT/w.csv" > /dev/null
+  awk -F, -v col="$2" 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next } { print $i[col] }' "$OUT/w.csv"; }
+a1=$(fit_col "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D1.0.csv" alpha0 --zmin 3 --zmax 4)
+a2=$(fit_col "$DG/dg10_flow/dg10_mu0.3_s1_v100_g981_D2.0.csv" alpha0 --zmin 3 --zmax 4)
 same dg10.alpha0_ratio_D1_D2.z3-4 "$(awk -v a="$a1" -v b="$a2" 'BEGIN { printf "%.3g\n", a / b }')"
 # ... and with an intercept at the slowest speed
 "$CLI" fit "$DG/dg10_flow/dg10_mu0.3_s1_v40_g981_D2.0.csv" --zmin 3 --csv "$OUT/a.csv" > /dev/null
 same dg10.alpha.v40.D2 "$(awk -F, 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next } { printf "%.4g +- %.2g n = 1\n", $i["alpha"], $i["alpha_se"] }' "$OUT/a.csv")"
 # k_z in the deep regime: granpen fit --tmin 1 on each flow push directly (the stand-in for
 # 40 cm/s reaches t~ = 1 early enough, the one for 200 cm/s does not)
-"$CLI" fit "$DG/dg10_flow/dg10_mu0.3_s1_v40_g981_D2.0.csv" --tmin 1 --csv "$OUT/deep.csv" > /dev/null
-same dg10.k_z_deep.v40 "$(awk -F, 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next } { printf "%.4g +- 0 n = 1\n", $i["k_z"] }' "$OUT/deep.csv")"
+same dg10.k_z_deep.v40 "$(printf "%.4g +- 0 n = 1" "$(fit_col "$DG/dg10_flow/dg10_mu0.3_s1_v40_g981_D2.0.csv" k_z --tmin 1)")"
 same dg10.k_z_deep.v200 "undefined"
 # the collapse of the four full pushes: granpen collapse on them directly, F_z from the
 # alpha through the origin at 40 cm/s checked above
