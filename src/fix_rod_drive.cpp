@@ -38,7 +38,7 @@ static constexpr int NVECTOR = 9;
 /* ---------------------------------------------------------------------- */
 
 FixRodDrive::FixRodDrive(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), grainbit(1), grain_group("all"), surface_auto(true), depth_max(-1.0),
+    Fix(lmp, narg, arg), grainbit(1), grain_group("all"), surface_auto(true), surface_grid(4), depth_max(-1.0),
     at_depth(AT_DEPTH_STOP), ramp(0.0), mount(false), kmount(0.0), cmount(0.0), mmount(0.0),
     rate(10000.0), g_user(-1.0), d_user(-1.0), elapsed(0.0), t_base(0.0), step_base(0), rod_disp(0.0), rod_vel(0.0),
     act_pos(0.0), act_vel(0.0), rod_acc(0.0), held_act(0.0), held(false), surface(0.0),
@@ -63,6 +63,13 @@ FixRodDrive::FixRodDrive(LAMMPS *lmp, int narg, char **arg) :
         surface = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
         surface_set = true;
       }
+      iarg += 2;
+    } else if (key == "surface_grid") {
+      gp::need_args(FLERR, "fix rod/drive surface_grid", iarg, 2, narg, lmp);
+      surface_grid = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (surface_grid < 1 || surface_grid > 1000)
+        error->all(FLERR, "Fix rod/drive surface_grid must be 1 to 1000 columns per side, got {}",
+                   arg[iarg + 1]);
       iarg += 2;
     } else if (key == "grains") {
       gp::need_args(FLERR, "fix rod/drive grains", iarg, 2, narg, lmp);
@@ -267,12 +274,13 @@ void FixRodDrive::setup(int /*vflag*/)
   if (!surface_set) {
     int nempty = 0;
     double top_max = 0.0;
-    surface = gp::bed_surface(lmp, grainbit, groupbit, 4, nempty, top_max);
+    surface = gp::bed_surface(lmp, grainbit, groupbit, surface_grid, nempty, top_max);
     if (std::isnan(surface))
       error->all(FLERR, "Fix rod/drive surface auto found no grains in group {} to define the bed "
                  "surface", grain_group);
     if (nempty > 0 && comm->me == 0)
-      error->warning(FLERR, "Fix rod/drive surface auto: {} of 16 columns hold no grains", nempty);
+      error->warning(FLERR, "Fix rod/drive surface auto: {} of {} columns hold no grains", nempty,
+                     surface_grid * surface_grid);
     surface_set = true;
   }
   gmag = g_user > 0.0 ? g_user : gp::gravity_magnitude(lmp);

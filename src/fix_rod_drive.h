@@ -70,6 +70,7 @@ class FixRodDrive : public Fix {
   int grainbit;
   std::string grain_group;
   bool surface_auto;
+  int surface_grid;    // columns per side of the box for surface auto (compute bed/surface grid)
   double depth_max;    // < 0: no limit
   enum { AT_DEPTH_STOP, AT_DEPTH_HALT } at_depth;
   double ramp;                      // actuator travel to reach v0 (0: step start)

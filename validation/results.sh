@@ -4,7 +4,7 @@
 # momentum, plot); awk only averages their outputs over beds.
 #
 #   validation/results.sh [--out DIR] [--bench DIR] [--mid DIR] [--dumps DIR] [--dg10 DIR] [--stiff DIR]
-#                         [--damp DIR] [--cli PATH]
+#                         [--damp DIR] [--box DIR] [--cli PATH]
 #
 #   --bench DIR  traces and bed .info files of the bench validation sweep
 #                (default data/sims/validation_bench)
@@ -21,6 +21,9 @@
 #   --stiff DIR  the traces of validation/peak_sweep.sh peak_stiffness (default
 #                data/sims/peak_stiffness; skipped with a note until all 10 are there)
 #   --damp DIR   the same of peak_damping (default data/sims/peak_damping)
+#   --box DIR    the committed units of validation/box.sh bench (default data/sims/box_bench):
+#                each box's peak law once its 10 pushes are there, its flow rows once its
+#                flow push and tables are
 #   --out DIR    where numbers.txt, scaling.csv and the figures go (default docs/results)
 #
 # numbers.txt: one line per measured quantity, "KEY = VALUE [+- ERROR] [n = N]  # how".
@@ -28,7 +31,7 @@ set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 OUT=$ROOT/docs/results BENCH=$ROOT/data/sims/validation_bench MID=$ROOT/data/sims/validation_mid
 DUMPS=$ROOT/runs/validation_mid/traces CLI=${GRANPEN_CLI:-$ROOT/build/analysis/granpen-cli} DG10=$ROOT/data/sims/dg10 STIFF=$ROOT/data/sims/peak_stiffness
-DAMP=$ROOT/data/sims/peak_damping
+DAMP=$ROOT/data/sims/peak_damping BOX=$ROOT/data/sims/box_bench
 while [ $# -gt 0 ]; do
   case $1 in
     --out) OUT=$2; shift 2 ;;
@@ -38,6 +41,7 @@ while [ $# -gt 0 ]; do
     --dg10) DG10=$2; shift 2 ;;
     --stiff) STIFF=$2; shift 2 ;;
     --damp) DAMP=$2; shift 2 ;;
+    --box) BOX=$2; shift 2 ;;
     --cli) CLI=$2; shift 2 ;;
     *) echo "results.sh: unknown argument $1 (see the header of $0)" >&2; exit 2 ;;
   esac
@@ -385,6 +389,33 @@ dg10_collapse() {
 variant_peak bench_stiff "$STIFF" "k_n = k_t = 1e10 (ten times stiffer)"
 variant_peak bench_damp "$DAMP" "gamma_n = gamma_t = 100 in the push (damping ten times weaker)"
 if [ -d "$DG10" ]; then dg10_beds; dg10_peak; dg10_flow; dg10_D; dg10_collapse; else say "dg10: $DG10 missing, skipped"; fi
+
+# ---------------------------------------------------------------- the box series
+# The committed units of validation/box.sh bench (docs/presets.md, "The paper's box"): bench
+# grains in boxes of 8 to 20 cm built from the same two tiles. Per box, once all its pushes
+# are in: the peak law (key bench_boxB), the flow rows of its 50 cm/s push, and each peak over
+# the 8 cm box's push of the same bed and speed (the first contact, which the box should not
+# change: against the spread over the two beds).
+box_bench() {
+  local b d traces f
+  for b in 8 12 16 20; do
+    d=$BOX/box_bench${b}_peak traces=()
+    for f in "$d"/bench_mu0.3_s1[12]_v*_g981_D2.0.csv; do [ -f "$f" ] && traces+=("$f"); done
+    if [ "${#traces[@]}" = 10 ]; then
+      say "box $b cm: the peak law on 2 beds x 5 speeds"
+      put "bench_box$b.phi_0 = $(grep -h '^phi_0' "$BOX/box_bench${b}_peak"/bed_*.info 2>/dev/null | awk '{print $3}' | stats)  # bed .info files, ${b} cm box of 4 cm tiles, 2 cm columns"
+      peak_law "bench_box$b" "$OUT/box_bench$b" 28 "${traces[@]}"
+      [ "$b" = 8 ] || [ ! -f "$OUT/box_bench8/collapse_peak.json" ] ||
+        put "bench_box$b.peak_over_box8 = $(peak_pairs "$OUT/box_bench$b/collapse_peak.json" "$OUT/box_bench8/collapse_peak.json" | stats)  # granpen collapse: peak / the 8 cm box's push of the same bed and v0, every v0"
+    else say "box $b cm: ${#traces[@]} of 10 peak pushes in $d: skipped until all are (validation/box.sh bench)"; fi
+    f=$BOX/box_bench${b}_flow/bench_mu0.3_s11_v50_g981_D2.0
+    if [ -f "$f.csv" ] && [ -f "$f.flow/window.txt" ]; then
+      say "box $b cm: the flow of its 50 cm/s push"
+      flow_numbers "bench_box$b.v50" "$f.flow"
+    else say "box $b cm: its flow push (with tables) not in $BOX/box_bench${b}_flow: skipped"; fi
+  done
+}
+if [ -d "$BOX" ]; then box_bench; else say "box series: $BOX missing, skipped"; fi
 
 # ---------------------------------------------------------------- against D/d_g
 # The rows that differ from the paper, at D/d_g = 5 (bench), 6.67 (mid) and 10 (dg10; empty

@@ -17,8 +17,17 @@
 #  3. the rebuild from the data file (from_tile) gives the poured bed's grains, z_s and
 #     phi_0 (NAME.info of each) to 1e-12 relative, for the same reason (both are built from
 #     the same file; this checks that from_tile reads the tile and its info as written).
-#  4. refusals: from_tile of another mu, and of a stem with no tile, end with a named
-#     ERROR and exit status 1, writing no bed.
+#  4. refusals: from_tile of another mu or preset, of a stem with no tile, into a box that is
+#     not a whole number of tiles, and with a tile count that does not make the box, end with
+#     a named ERROR and exit status 1, writing no bed.
+#  5. a wider box from the same tile (-var tile 4 -var box 12, issue: the paper's box): 16 x
+#     the tile's grains; on a 16 x 16 grid (the tile's columns again) z_s and phi_0 are the
+#     tile's, so the 4 x 4 bed and the 2 x 2 bed agree column for column (1e-12 relative, as
+#     in 2.); and its NAME.info, measured with -var surface_grid 8 (the 2 x 2 bed's column
+#     width, 1.5 cm, on the twice wider box), has the 2 x 2 bed's z_s and phi_0 (1e-12: the
+#     same columns, each four times). With the default grid (4, columns twice as wide) z_s
+#     comes out higher (the highest top of a wider column), which is why a wider box keeps
+#     the column width: checked too (it must differ by more than 1e-3 cm).
 #   tile_rebuild.sh LMP_GRANPEN INPUTS WORKDIR
 set -euo pipefail
 LMP=$1 INPUTS=$2 WORK=$3
@@ -74,8 +83,19 @@ set +e
 out=$("$LMP" -in "$INPUTS/in.pour" -var inputs "$INPUTS" -var preset tiny -var tile 2 -var from_tile tile \
   -var mu 0.5 -var out refused -log none 2>&1); st=$?
 set -e
-echo "$out" | grep -q "^ERROR: from_tile tile: the tile is of preset tiny, mu 0.3, tile 2; asked for preset tiny, mu 0.5, tile 2" && [ $st = 1 ] \
+echo "$out" | grep -q "^ERROR: from_tile tile: the tile is of preset tiny, mu 0.3; asked for preset tiny, mu 0.5" && [ $st = 1 ] \
   || fail "from_tile with another mu: exit status $st, not the named error"
+# refused: ARGS... then the message's pattern as the last argument
+refused() {
+  local pat=${*: -1} args=("${@:1:$#-1}") out st
+  set +e; out=$("$LMP" -in "$INPUTS/in.pour" -var inputs "$INPUTS" -var from_tile tile "${args[@]}" \
+    -var out refused -log none 2>&1); st=$?; set -e
+  echo "$out" | grep -q "$pat" && [ $st = 1 ] || fail "from_tile ${args[*]}: exit status $st, not the named error /$pat/"
+}
+refused -var preset bench -var tile 2 "^ERROR: from_tile tile: the tile is of preset tiny, mu 0.3; asked for preset bench, mu 0.3"
+refused -var preset tiny -var tile 3 -var box 10 "^ERROR: from_tile tile: box = 10 cm is not a whole number of its tiles of 3 cm"
+refused -var preset tiny -var tile 3 -var box 12 "^ERROR: from_tile tile: tile = 3 tiles of 3 cm do not make box = 12 cm (4 do)"
+refused -var preset tiny -var tile 4 "^ERROR: from_tile tile: tile = 4 tiles of 3 cm do not make box = 6.0 cm (2 do)"
 set +e
 out=$("$LMP" -in "$INPUTS/in.pour" -var inputs "$INPUTS" -var preset tiny -var tile 2 -var from_tile nothing \
   -var out refused -log none 2>&1); st=$?
@@ -83,4 +103,27 @@ set -e
 echo "$out" | grep -q "^ERROR: from_tile nothing: no tile nothing.tile.data.gz" && [ $st = 1 ] \
   || fail "from_tile of a missing tile: exit status $st, not the named error"
 [ ! -e refused.restart ] && [ ! -e refused.info ] || fail "a refused rebuild wrote a bed"
+
+# 5. a 4 x 4 bed of the same tile
+"$LMP" -in "$INPUTS/in.pour" -var inputs "$INPUTS" -var preset tiny -var tile 4 -var box 12 -var from_tile tile \
+  -var surface_grid 8 -var out wide -log wide.log -screen none >/dev/null || fail "the 4 x 4 rebuild failed (wide.log)"
+"$LMP" -in "$INPUTS/in.pour" -var inputs "$INPUTS" -var preset tiny -var tile 4 -var box 12 -var from_tile tile \
+  -var out wide4 -log wide4.log -screen none >/dev/null || fail "the 4 x 4 rebuild on the default grid failed (wide4.log)"
+echo "4 x 4: $(info wide.info grains) grains, z_s $(info wide.info z_s), phi_0 $(info wide.info phi_0), box $(info wide.info box)"
+[ "$(info wide.info grains)" = $((16 * tg)) ] || fail "the 4 x 4 bed has $(info wide.info grains) grains, not 16 x $tg"
+[ "$(info wide.info box)" = 12 ] && [ "$(info wide.info tile)" = 4 ] && [ "$(info wide.info tile_side)" = 3 ] \
+  || fail "wide.info lacks box = 12, tile = 4, tile_side = 3"
+sed 's/grid 8/grid 16/' check.lmp > check16.lmp
+"$LMP" -in check16.lmp -var bed wide.restart -log check16.log -screen none >/dev/null || fail "the check deck failed (check16.log)"
+read -r z16 p16 rho16 < <(awk '/^check: / {print $4, $7, $10}' check16.log)
+echo "4 x 4 bed on a 16 x 16 grid: z_s $z16, phi_0 $p16 (2 x 2 bed on 8 x 8: $z8, $p8)"
+close "$z16" "$z8" 1e-12 || fail "z_s of the 4 x 4 bed on the tile's columns $z16 is not the 2 x 2 bed's $z8"
+close "$p16" "$p8" 1e-12 || fail "phi_0 of the 4 x 4 bed on the tile's columns $p16 is not the 2 x 2 bed's $p8"
+close "$rho16" 3 1e-12 || fail "the 4 x 4 bed's mean density is $rho16, not rho_g = 3"
+for k in z_s phi_0; do
+  close "$(info wide.info $k)" "$(info tile.info $k)" 1e-12 || fail "the 4 x 4 bed's $k $(info wide.info $k) (surface_grid 8) is not the 2 x 2 bed's $(info tile.info $k)"
+done
+echo "4 x 4 bed on the default grid (3 cm columns): z_s $(info wide4.info z_s) against $(info wide.info z_s) on 1.5 cm columns"
+awk -v a="$(info wide4.info z_s)" -v b="$(info wide.info z_s)" 'BEGIN { exit !(a - b > 1e-3) }' \
+  || fail "z_s on 3 cm columns $(info wide4.info z_s) is not above z_s on 1.5 cm columns $(info wide.info z_s): surface_grid did not reach the measurement"
 echo "tile rebuild holds"

@@ -1,0 +1,173 @@
+#!/usr/bin/env bash
+# A campaign of long runs, resumable across sessions (validation/dg10.sh, validation/box.sh
+# name theirs). Every session gets a new machine and only what is committed to git survives,
+# so the work is cut into units that each fit a session, and each finished unit is copied
+# into the campaign's data folder at once, to be committed:
+#   a bed   the sweep's pour: a periodic tile (in.pour -var tile N) replicated into the bed.
+#           Its tile (beds/ID.tile.data.gz, a few MB, and ID.tile.info) and the bed's ID.info
+#           are copied to DATA/beds; a later session rebuilds the bed from them in seconds
+#           (in.pour -var from_tile) instead of pouring it again. A committed tile may serve
+#           a wider box: the sweep's `set` gives tile, box (and surface_grid), and the bed is
+#           rebuilt as tile x tile copies (in.pour checks that the box is tile x the tile's side).
+#   a push  its trace goes to DATA/SWEEP/ID.csv (SWEEP: the sweep file's name); a push whose
+#           trace is there is never rerun. A push of a sweep with observe = dump (dumps of
+#           every atom, hundreds of MB, not committed) is followed by validation/push_flow.sh
+#           on its dumps (`granpen flow` and `granpen momentum`, as for the mid push of
+#           docs/results.md), whose tables (small) go to DATA/SWEEP/ID.flow/; such a push is
+#           done only when they are there.
+# Run it again in any session and it goes on with the first unit not committed. One run at
+# a time, niced, so that the machine's other core stays free. Units in order: the beds of
+# each sweep file, then its pushes, sweep file by sweep file.
+#
+#   validation/campaign.sh --data DIR --sweeps "FILE..." [--out DIR] [--units N] [--ranks N]
+#                          [--tip "ZLO ZHI"] [--commit] [--status]
+#
+#   --data DIR    the committed folder of the campaign (DIR/beds, DIR/SWEEP); its name is
+#                 the campaign's in messages and commits
+#   --sweeps ...  the sweep files, run in this order
+#   --out DIR     scratch folder of the runs (default /work/granpen-runs; lost with the
+#                 machine): DIR/SWEEP/ is the sweep folder of SWEEP.sweep
+#   --units N     stop after N units of work have been run (default: all); a unit is a bed
+#                 poured or a push; rebuilding a bed from its committed tile is not one
+#   --ranks N     run each unit on N MPI ranks (mpirun; default 1)
+#   --tip "A B"   the tip's depth window of the flow analysis (push_flow.sh --tip; default 1 4)
+#   --commit      git-commit DIR after every unit (on the work tree's branch)
+#   --status      print what is committed and what is under way, and stop
+# The decks are copied into OUT/inputs at every start, so that editing inputs/ in the work
+# tree never changes a run under way (LAMMPS rereads a deck at every jump).
+set -euo pipefail
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+OUT=/work/granpen-runs UNITS=-1 RANKS=1 COMMIT=0 STATUS=0 DATA="" SWEEPS="" TIP="1 4"
+while [ $# -gt 0 ]; do
+  case $1 in
+    --out) OUT=$2; shift 2 ;;
+    --units) UNITS=$2; shift 2 ;;
+    --ranks) RANKS=$2; shift 2 ;;
+    --commit) COMMIT=1; shift ;;
+    --status) STATUS=1; shift ;;
+    --data) DATA=$2; shift 2 ;;
+    --sweeps) SWEEPS=$2; shift 2 ;;
+    --tip) TIP=$2; shift 2 ;;
+    *) echo "campaign.sh: unknown argument $1 (see the header of $0)" >&2; exit 2 ;;
+  esac
+done
+[ -n "$DATA" ] && [ -n "$SWEEPS" ] || { echo "campaign.sh: --data DIR and --sweeps \"FILE...\" are needed (see the header of $0)" >&2; exit 2; }
+CAMPAIGN=$(basename "$DATA")
+[[ $UNITS =~ ^(-1|[0-9]+)$ ]] || { echo "campaign.sh: --units $UNITS is not a whole number" >&2; exit 2; }
+[[ $RANKS =~ ^[1-9][0-9]*$ ]] || { echo "campaign.sh: --ranks $RANKS is not a whole number >= 1" >&2; exit 2; }
+LMP=${GRANPEN_LMP:-$ROOT/build/lmp_granpen} CLI=${GRANPEN_CLI:-$ROOT/build/analysis/granpen-cli}
+[ -x "$CLI" ] || { echo "campaign.sh: no granpen-cli at $CLI (build first, or set GRANPEN_CLI)" >&2; exit 2; }
+mkdir -p "$DATA/beds"
+
+# the planned runs of a sweep file: lines "K pour|push ID"
+plan() { "$CLI" sweep "$1" --plan --inputs "$ROOT/inputs" --out "$OUT" | awk '{print $1, $2, $3}'; }
+sweep_name() { awk -F= '$1 ~ /^name *$/ {gsub(/[ \t]/, "", $2); sub(/#.*/, "", $2); print $2}' "$1"; }
+# the `set` line's values of the names given, as "-var NAME VALUE" words
+set_vars() {
+  local f=$1; shift
+  awk -F= -v want=" $* " '$1 ~ /^set *$/ {sub(/#.*/, "", $0); sub(/^set *= */, "", $0); n = split($0, kv, /[ \t]+/)
+    for (i = 1; i <= n; i++) { split(kv[i], p, "="); if (p[1] != "" && index(want, " " p[1] " ")) printf "-var %s %s ", p[1], p[2] } }' "$f"
+}
+# 1 when the sweep's pushes write dumps (observe = dump), else 0
+dumps_of() { awk -F= '$1 ~ /^observe *$/ {sub(/#.*/, "", $2); gsub(/[ \t]/, "", $2); d = ($2 == "dump")} END {print d + 0}' "$1"; }
+
+status() {
+  local total=0 done=0 beds=0 nbeds=0
+  for f in $SWEEPS; do
+    local name; name=$(sweep_name "$f")
+    while read -r k kind id; do
+      if [ "$kind" = pour ]; then
+        case " $seen " in *" $id "*) continue ;; esac
+        seen="$seen $id"; nbeds=$((nbeds + 1))
+        [ -f "$DATA/beds/$id.tile.data.gz" ] && beds=$((beds + 1))
+      else
+        total=$((total + 1))
+        [ -f "$DATA/$name/$id.csv" ] && { [ "$(dumps_of "$f")" = 0 ] || [ -f "$DATA/$name/$id.flow/window.txt" ]; } &&
+          done=$((done + 1))
+      fi
+    done < <(plan "$f")
+  done
+  echo "$CAMPAIGN: $beds of $nbeds beds and $done of $total pushes committed ($DATA)"
+  for st in "$OUT"/*/beds/*.pour.state; do
+    [ -f "$st" ] || continue
+    echo "  under way here: ${st%.pour.state}: $(awk '$2 == "phase" {p=$4} $2 == "ichunk0" {c=$4} $2 == "irelax0" {r=$4} END {print p, (p == "settle" ? "chunk " c : "relaxation " r)}' "$st") next"
+  done
+  return 0
+}
+seen=""
+[ "$STATUS" = 1 ] && { status; exit 0; }
+[ -x "$LMP" ] || { echo "campaign.sh: no lmp_granpen at $LMP (build first, or set GRANPEN_LMP)" >&2; exit 2; }
+
+mkdir -p "$OUT"
+rm -rf "$OUT/inputs.new"; cp -r "$ROOT/inputs" "$OUT/inputs.new"; rm -rf "$OUT/inputs"; mv "$OUT/inputs.new" "$OUT/inputs"
+INPUTS=$OUT/inputs
+ran=0
+commit() {    # MESSAGE
+  [ "$COMMIT" = 1 ] || { echo "campaign.sh: $1: to be committed (git add $DATA)"; return 0; }
+  git -C "$ROOT" add "$DATA" && git -C "$ROOT" commit -q -m "$CAMPAIGN: $1" -- "$DATA" && echo "campaign.sh: committed: $1"
+}
+budget_left() { [ "$UNITS" -lt 0 ] || [ "$ran" -lt "$UNITS" ]; }
+runner() {    # SWEEP_FILE K: the sweep runner runs planned run K alone
+  local mpi=(); [ "$RANKS" -gt 1 ] && mpi=(--mpirun mpirun --ranks "$RANKS")
+  nice -n 19 "$CLI" sweep "$1" --jobs 1 --only "$2" --out "$OUT" --inputs "$INPUTS" --lmp "$LMP" "${mpi[@]}"
+}
+
+for f in $SWEEPS; do
+  name=$(sweep_name "$f") dir=$OUT/$(sweep_name "$f")
+  mkdir -p "$dir/beds" "$DATA/$name"
+  while read -r k kind id; do
+    if [ "$kind" = pour ]; then
+      [ -f "$dir/beds/$id.info" ] && continue
+      if [ -f "$DATA/beds/$id.tile.data.gz" ]; then
+        # the committed tile: the bed in seconds (preset, mu and tile checked by in.pour)
+        preset=$(awk -F' = ' '$1 == "preset" {print $2}' "$DATA/beds/$id.tile.info")
+        mu=$(awk -F' = ' '$1 == "mu" {print $2}' "$DATA/beds/$id.tile.info")
+        tile=$(awk -F' = ' '$1 == "tile" {print $2}' "$DATA/beds/$id.tile.info")
+        # the sweep's own tile count and box (a wider box of the same tile), else the tile's
+        read -r -a widen < <(set_vars "$f" tile box surface_grid)
+        [ "${#widen[@]}" -gt 0 ] || widen=(-var tile "$tile")
+        "$LMP" -in "$INPUTS/in.pour" -var inputs "$INPUTS" -var preset "$preset" -var mu "$mu" "${widen[@]}" \
+          -var from_tile "$DATA/beds/$id" -var out "$dir/beds/$id" -log "$dir/beds/$id.rebuild.log" -screen none >/dev/null \
+          || { echo "campaign.sh: rebuilding $id from its tile failed: $(grep -m1 '^ERROR' "$dir/beds/$id.rebuild.log") ($dir/beds/$id.rebuild.log)" >&2; exit 1; }
+        echo "campaign.sh: $name: bed $id rebuilt from $DATA/beds/$id.tile.data.gz"
+        # a wider box's bed has its own z_s and phi_0: its .info goes with the sweep's traces
+        [ "$(set_vars "$f" box)" = "" ] || cp "$dir/beds/$id.info" "$DATA/$name/$id.info"
+        continue
+      fi
+      budget_left || break
+      echo "campaign.sh: $name: pouring bed $id (a tile: docs/presets.md)"
+      runner "$f" "$k"
+      [ -f "$dir/beds/$id.tile.data.gz" ] && [ -f "$dir/beds/$id.info" ] || { echo "campaign.sh: the pour of $id left no tile" >&2; exit 1; }
+      cp "$dir/beds/$id.tile.data.gz" "$dir/beds/$id.tile.info" "$dir/beds/$id.info" "$DATA/beds/"
+      ran=$((ran + 1)); commit "bed $id (its tile)"
+    else
+      # a push with dumps is done when the tables of its flow are here too: its dumps are
+      # not committed, so a push whose analysis was lost is pushed again
+      dumps=$(dumps_of "$f")
+      if [ -f "$DATA/$name/$id.csv" ] && { [ "$dumps" = 0 ] || [ -f "$DATA/$name/$id.flow/window.txt" ]; }; then continue; fi
+      if [ "$dumps" = 1 ] && [ -f "$dir/traces/$id.csv.done" ] && ls "$dir/traces/$id.csv".*.dump.gz >/dev/null 2>&1; then
+        echo "campaign.sh: $name: push $id done here, its flow not committed: analysing its dumps"
+      else
+        budget_left || break
+        echo "campaign.sh: $name: push $id"
+        runner "$f" "$k"
+        [ -f "$dir/traces/$id.csv.done" ] || { echo "campaign.sh: the push $id did not finish (see $dir/logs/$id.log)" >&2; exit 1; }
+        ran=$((ran + 1))
+      fi
+      if [ "$dumps" = 1 ]; then
+        # the same analysis as the mid push of docs/results.md (fields over the frames with
+        # the tip 1 to 4 cm deep, the surface flux, the momentum classes), into a scratch
+        # folder first: a failed analysis leaves nothing half-written in $DATA
+        rm -rf "$dir/traces/$id.flow.new"
+        GRANPEN_CLI=$CLI nice -n 19 "$ROOT/validation/push_flow.sh" "$dir/traces/$id.csv" "$dir/traces/$id.flow.new" --tip "$TIP" > /dev/null \
+          || { echo "campaign.sh: the flow analysis of $id failed; its trace and dumps are in $dir/traces" >&2; exit 1; }
+        rm -rf "$DATA/$name/$id.flow"; cp -r "$dir/traces/$id.flow.new" "$DATA/$name/$id.flow"
+      fi
+      cp "$dir/traces/$id.csv" "$DATA/$name/$id.csv"
+      cp "$dir/manifest.json" "$DATA/$name/manifest.json" 2>/dev/null || true
+      commit "push $id ($name)"
+    fi
+  done < <(plan "$f")
+  budget_left || break
+done
+status
