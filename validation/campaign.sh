@@ -66,7 +66,8 @@ sweep_name() { awk -F= '$1 ~ /^name *$/ {gsub(/[ \t]/, "", $2); sub(/#.*/, "", $
 set_vars() {
   local f=$1; shift
   awk -F= -v want=" $* " '$1 ~ /^set *$/ {sub(/#.*/, "", $0); sub(/^set *= */, "", $0); n = split($0, kv, /[ \t]+/)
-    for (i = 1; i <= n; i++) { split(kv[i], p, "="); if (p[1] != "" && index(want, " " p[1] " ")) printf "-var %s %s ", p[1], p[2] } }' "$f"
+    for (i = 1; i <= n; i++) { split(kv[i], p, "="); if (p[1] != "" && index(want, " " p[1] " ")) printf "-var %s %s ", p[1], p[2] } }
+    END { print "" }' "$f"
 }
 # 1 when the sweep's pushes write dumps (observe = dump), else 0
 dumps_of() { awk -F= '$1 ~ /^observe *$/ {sub(/#.*/, "", $2); gsub(/[ \t]/, "", $2); d = ($2 == "dump")} END {print d + 0}' "$1"; }

@@ -1,6 +1,7 @@
 // granpen analysis: the figure of granpen plot scaling TABLE (figures.h): quantities
-// measured at several grain size ratios D/d_g, each in its own panel with the paper's value,
-// to show whether a difference from the paper closes, stays or grows with D/d_g.
+// measured at several grain size ratios D/d_g (or box widths), each in its own panel with the
+// paper's value, to show whether a difference from the paper closes, stays or grows with the
+// table's axis: its column D_over_dg, or box_cm for the box series.
 #include "figures.h"
 
 #include "csv_table.h"
@@ -16,6 +17,12 @@ namespace granpen {
 namespace figures {
 
 namespace {
+
+// the axes a table may have (its x column), with their axis labels
+struct Axis {
+  const char *column, *label;
+};
+constexpr Axis kAxes[] = {{"D_over_dg", "D/d_g"}, {"box_cm", "box width (cm)"}};
 
 struct Quantity {
   std::string name, label, unit;
@@ -40,10 +47,10 @@ Json num_or_null(const char *f, double v) { return std::isfinite(v) ? num(f, v) 
 
 // the quantities of the table in the order of their first row; a problem of the run (named
 // file:line) for a row that contradicts an earlier one's paper value
-std::vector<Quantity> quantities_of(const CsvTable &t, Run &run)
+std::vector<Quantity> quantities_of(const CsvTable &t, const Axis &axis, Run &run)
 {
   const auto names = t.text("quantity");
-  const auto ratio = t.numbers("D_over_dg", false), value = t.numbers("value"), error = t.numbers("error");
+  const auto ratio = t.numbers(axis.column, false), value = t.numbers("value"), error = t.numbers("error");
   const auto paper = t.has("paper") ? t.numbers("paper") : std::vector<double>(names.size(), NAN);
   const auto paper_err = t.has("paper_error") ? t.numbers("paper_error") : std::vector<double>(names.size(), NAN);
   const auto unit = t.has("unit") ? t.text("unit") : std::vector<std::string>(names.size());
@@ -57,7 +64,7 @@ std::vector<Quantity> quantities_of(const CsvTable &t, Run &run)
       continue;
     }
     if (!(ratio[i] > 0)) {
-      run.problems.push_back(where + ": D_over_dg must be positive");
+      run.problems.push_back(where + ": " + axis.column + " must be positive");
       continue;
     }
     auto it = at.find(names[i]);
@@ -87,23 +94,33 @@ void plot_scaling(const std::vector<std::string> &inputs, Run &run)
 {
   CsvTable t;
   std::vector<Quantity> qs;
+  Axis axis = kAxes[0];
   try {
-    t = read_csv_table(inputs[0], {"quantity", "D_over_dg", "value", "error"});
+    t = read_csv_table(inputs[0], {"quantity", "value", "error"});
+    const Axis *found = nullptr;
+    for (const Axis &a : kAxes)
+      if (t.has(a.column)) {
+        if (found) throw InputError(inputs[0] + ": both " + found->column + " and " + a.column + " columns: one axis per table");
+        found = &a;
+      }
+    if (!found) throw InputError(inputs[0] + ": no axis column (D_over_dg or box_cm)");
+    axis = *found;
     if (t.rows.empty()) {
       run.problems.push_back(inputs[0] + ": no rows");
       return;
     }
-    qs = quantities_of(t, run);
+    qs = quantities_of(t, axis, run);
   } catch (InputError &e) {
     run.problems.push_back(e.what());
     return;
   }
   std::vector<SeriesPanel> panels;
   Json numbers = Json::array();
-  // the paper's own ratio, marked on every panel when the table says it (# paper_D_over_dg = R)
+  // the paper's own ratio (or box), marked on every panel when the table says it
+  // (# paper_D_over_dg = R, # paper_box_cm = B)
   double paper_ratio = NAN;
   try {
-    paper_ratio = t.key_number("paper_D_over_dg", NAN);
+    paper_ratio = t.key_number(std::string("paper_") + axis.column, NAN);
   } catch (InputError &e) {
     run.problems.push_back(e.what());
   }
@@ -128,7 +145,7 @@ void plot_scaling(const std::vector<std::string> &inputs, Run &run)
       // distance from the paper's value in combined standard errors (NaN without one)
       const double sig = std::sqrt(q.error[i] * q.error[i] + q.paper_error * q.paper_error);
       const double z = std::isfinite(q.paper) && sig > 0 ? (q.value[i] - q.paper) / sig : NAN;
-      pts.push_back({{"D_over_dg", num("%.6g", q.ratio[i])}, {"value", num("%.6g", q.value[i])},
+      pts.push_back({{axis.column, num("%.6g", q.ratio[i])}, {"value", num("%.6g", q.value[i])},
                      {"error", num("%.6g", q.error[i])}, {"sigmas_from_paper", num_or_null("%.4g", z)}});
     }
     SeriesPanel p;
@@ -136,7 +153,7 @@ void plot_scaling(const std::vector<std::string> &inputs, Run &run)
     p.title = q.label + (std::isfinite(q.paper) ? "   (paper: " + fmt("%g", q.paper) +
                                                       (q.paper_error > 0 ? " ± " + fmt("%g", q.paper_error) : "") + ")"
                                                 : "   (no paper value)");
-    p.xlabel = "D/d_g";
+    p.xlabel = axis.label;
     p.ylabel = q.unit.empty() ? q.label : q.label + " (" + q.unit + ")";
     p.key = "off";
     // a margin of half a unit of D/d_g either side, so that no point sits on the frame

@@ -454,6 +454,39 @@ TEST(PlotCli, ScalingPointsInOrderWithTheirDistanceFromThePaper)
   EXPECT_NE(two.err.find("scaling takes one table, got 2 arguments"), std::string::npos) << two.err;
 }
 
+// the box series: the same figure against the box width (column box_cm), the paper's 20 cm
+// marked, the axis named; a table with both axes, or neither, is refused by name
+TEST(PlotCli, ScalingAgainstTheBoxWidth)
+{
+  const fs::path in = fresh("scaling_box_in"), out = fresh("scaling_box_out");
+  write(in / "box.csv",
+        "# paper_box_cm = 20\n"
+        "quantity,box_cm,value,error,paper,paper_error\n"
+        "peak exponent,16,1.8,0.1,2,0\n"
+        "peak exponent,8,1.7,0.1,2,0\n"
+        "peak exponent,12,,,2,0\n");
+  const Outcome o = run_plot({"scaling", (in / "box.csv").string(), "--out", out.string(), "--no-run"});
+  ASSERT_EQ(o.status, 0) << o.err;
+  const auto b = block(out / "scaling.dat", 0);
+  ASSERT_EQ(b.size(), 2u);
+  EXPECT_EQ(b[0][0], 8.0);    // in order of the box
+  EXPECT_EQ(b[1][0], 16.0);
+  const std::string gp = slurp(out / "scaling.gp");
+  EXPECT_NE(gp.find("box width (cm)"), std::string::npos) << gp;
+  EXPECT_EQ(gp.find("D/d_g"), std::string::npos) << "the D/d_g axis label on a box table";
+  // the x range holds every listed box and the paper's 20 cm: [7, 21]
+  EXPECT_NE(gp.find("set xrange [7:21]"), std::string::npos) << gp;
+  EXPECT_NE(slurp(out / "scaling.json").find("\"box_cm\": 8"), std::string::npos);
+  write(in / "both.csv", "quantity,D_over_dg,box_cm,value,error\nk,5,8,1,0.1\n");
+  const Outcome both = run_plot({"scaling", (in / "both.csv").string(), "--out", fresh("scaling_both").string(), "--no-run"});
+  EXPECT_EQ(both.status, 1);
+  EXPECT_NE(both.err.find("both D_over_dg and box_cm columns"), std::string::npos) << both.err;
+  write(in / "neither.csv", "quantity,value,error\nk,1,0.1\n");
+  const Outcome neither = run_plot({"scaling", (in / "neither.csv").string(), "--out", fresh("scaling_neither").string(), "--no-run"});
+  EXPECT_EQ(neither.status, 1);
+  EXPECT_NE(neither.err.find("no axis column (D_over_dg or box_cm)"), std::string::npos) << neither.err;
+}
+
 // ---------------------------------------------------------------- bad inputs
 
 TEST(PlotCli, UsageErrors)
