@@ -62,6 +62,11 @@ void CreateRod::command(int narg, char **arg)
     }
   }
 
+  // a rod as wide as the box would overlap its own periodic images (or stick out of walls)
+  for (int d = 0; d < 2; d++)
+    if (spec.diameter >= domain->boxhi[d] - domain->boxlo[d])
+      error->all(FLERR, "Create_rod: rod diameter {} is not below the box width {} in {}", spec.diameter,
+                 domain->boxhi[d] - domain->boxlo[d], "xy"[d]);
   std::vector<::granpen::RodSphere> spheres;
   try {
     spheres = ::granpen::build_rod(spec);
