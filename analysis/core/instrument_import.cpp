@@ -82,6 +82,26 @@ double block_speed(const ImportRow &first, const ImportRow &last, double v_sum, 
   return last.t > first.t ? (last.x - first.x) / (last.t - first.t) : NAN;
 }
 
+double DepthClock::next(double x, double v, long line)
+{
+  if (!std::isfinite(x) || !std::isfinite(v)) throw ImportRejected(line, "a value is not finite");
+  if (!started_) {
+    started_ = true;
+    x_ = x, v_ = v;
+    return t_;
+  }
+  const double dx = x - x_, vm = 0.5 * (v + v_);
+  if (!(dx > 0.0))
+    throw ImportRejected(line, "depth does not advance (" + num(x) + " after " + num(x_) +
+                                   "): t = the integral of dz / v needs a row per depth step, going down");
+  if (!(vm > 0.0))
+    throw ImportRejected(line, "speed " + num(v) + " after " + num(v_) +
+                                   ": t = the integral of dz / v needs a positive speed");
+  t_ += dx / vm;
+  x_ = x, v_ = v;
+  return t_;
+}
+
 // ---- pass 1
 void PushScan::add(const std::vector<ImportRow> &rows)
 {
@@ -207,16 +227,19 @@ void SpeedProfile::close_block()
       run_t_ = last_.t;
       run_depth_ = rules_.has_position ? last_.x - lim_.surface : rules_.v0 * (last_.t - lim_.surface);
     }
-    if (run_ >= 2) {
-      if (std::isnan(ramp_.ramp_t)) {
-        ramp_.ramp_t = run_t_;
-        ramp_.ramp_depth = run_depth_;
-      }
-      ramp_.cut_line = last_.line;
-      ramp_.cut_t = last_.t;
+    if (run_ >= 2 && std::isnan(ramp_.ramp_t)) {
+      ramp_.ramp_t = run_t_;
+      ramp_.ramp_depth = run_depth_;
     }
   } else {
     run_ = 0;
+  }
+  // still moving, once at speed: not below the mean by end_tolerance. The push ends after
+  // the last such block, so a deceleration (a fall that does not come back) is cut and a
+  // slow drift of a few percent is kept (and reported by the speed statistics)
+  if (std::isfinite(ramp_.ramp_t) && std::isfinite(s) && s >= (1.0 - rules_.end_tolerance) * std::fabs(ref)) {
+    ramp_.cut_line = last_.line;
+    ramp_.cut_t = last_.t;
   }
   n_ = 0;
   v_sum_ = 0.0;
@@ -245,7 +268,7 @@ TraceBuilder::TraceBuilder(const ImportRules &rules, const PushLimits &lim, cons
   }
   sum_.limits = lim;
   sum_.ramp = ramp;
-  sum_.speed.measured = rules.has_position || rules.has_speed;
+  sum_.speed.measured = (rules.has_position || rules.has_speed) && rules.has_time;
 }
 
 double TraceBuilder::depth(const ImportRow &r) const
