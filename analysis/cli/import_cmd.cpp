@@ -202,6 +202,16 @@ void report(const Imported &r, const granpen::ImportMapping &m, bool si, bool dr
     std::printf("  speed %.6g %s/s (%s), ripple %.3g%%, within %.3g%% of the mean from depth %.4g %s\n", s.speed.mean, L,
                 r.v0_measured ? "v0 = this mean" : ("nominal v0 " + num("%.6g", r.v0)).c_str(), 100.0 * s.speed.ripple,
                 100.0 * m.rules.speed_tolerance, s.ramp.ramp_depth, L);
+  if (dry && !s.speed.profile.empty() && std::isfinite(s.speed.mean)) {
+    // the speed against depth, to tell a drift from a stop at a glance
+    std::printf("  speed against depth (the push at speed in %zu equal times; each + or - is 1%% of the mean):\n",
+                s.speed.profile.size());
+    for (const auto &sg : s.speed.profile) {
+      const double off = 100.0 * (sg.speed - s.speed.mean) / s.speed.mean;
+      std::printf("    z %8.4g..%-8.4g %s %-10.6g %+6.2f%% %s\n", sg.z_from, sg.z_to, L, sg.speed, off,
+                  std::string(std::min(20, (int) std::lround(std::fabs(off))), off < 0 ? '-' : '+').c_str());
+    }
+  }
   if (dry) std::printf("%s  ... %zu rows\n", r.header.c_str(), s.points);
 }
 

@@ -372,6 +372,7 @@ ImportSummary TraceBuilder::finish(std::vector<TracePoint> &out)
     if (sg.n >= 2) {
       s.push_back(block_speed(sg.first, sg.last, sg.v_sum, sg.n, rules_.has_speed));
       line.push_back(sg.first.line);
+      st.profile.push_back({depth(sg.first), depth(sg.last), s.back()});
     }
   const double tol = rules_.speed_tolerance;
   st.worst = 0.0;

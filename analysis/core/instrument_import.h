@@ -154,6 +154,12 @@ struct SpeedStats {
   double ripple = NAN;            // standard deviation of the block speeds / mean
   double worst = NAN;             // largest |segment speed - mean| / mean
   bool constant = true;           // worst <= tolerance and ripple <= tolerance
+  // the speed against depth: each of the SEGMENTS equal times of the push at speed (those
+  // of at least two rows), its depth range and speed
+  struct Segment {
+    double z_from, z_to, speed;
+  };
+  std::vector<Segment> profile;
 };
 
 struct ImportSummary {

@@ -719,6 +719,11 @@ TEST(ImportEnsemble, FolderOfThreeNominalSpeedsByTable)
   ASSERT_NE(table, std::string::npos) << dry.out;
   EXPECT_GT(table, dry.out.rfind("granpen import: " + (d / "lab" / "S33.txt").string())) << "the table after the reports";
   EXPECT_TRUE(std::regex_search(dry.out, std::regex("\nS21\\.txt +560 +8 +[0-9]+ +2 n +1\\.9[0-9]* +1\\.[0-9]+% +0\n"))) << dry.out;
+  // and the speed against depth of each: S11's 2% drift about its mean, 16 lines of it
+  EXPECT_TRUE(std::regex_search(dry.out, std::regex("speed against depth \\(the push at speed in 16 equal times")))
+      << dry.out;
+  EXPECT_TRUE(std::regex_search(dry.out, std::regex("\n    z +[0-9.-]+\\.\\.[0-9.-]+ +cm [0-9.]+ +[+-][0-9]\\.[0-9]{2}% [+-]*\n")))
+      << dry.out;
   EXPECT_FALSE(fs::exists(d / "out"));
   const CliRun r = cli(d, args);
   ASSERT_EQ(r.status, 0) << r.err;
