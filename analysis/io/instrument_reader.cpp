@@ -228,12 +228,9 @@ std::string InstrumentReader::parse_fields(const std::string &line, ImportRow &r
   return why;
 }
 
-ImportRow InstrumentReader::to_row(const std::string &line, long line_no)
+ImportRow InstrumentReader::to_row(ImportRow r, long line_no)
 {
-  ImportRow r;
   r.line = line_no;
-  const std::string why = parse_fields(line, r);
-  if (!why.empty()) fail_at(path_, line_no, why);
   r.F *= m_.force_factor;
   r.x *= m_.position_factor;
   r.v *= m_.speed_factor;
@@ -259,7 +256,10 @@ bool InstrumentReader::next(std::vector<ImportRow> &rows, std::size_t max_rows)
 {
   rows.clear();
   if (!pending_.empty()) {
-    rows.push_back(to_row(pending_, pending_no_));
+    ImportRow raw;
+    const std::string why = parse_fields(pending_, raw);
+    if (!why.empty()) fail_at(path_, pending_no_, why);
+    rows.push_back(to_row(raw, pending_no_));
     pending_.clear();
   }
   std::string line;
@@ -281,7 +281,8 @@ bool InstrumentReader::next(std::vector<ImportRow> &rows, std::size_t max_rows)
       trailer_text_ = t.substr(0, 60);
       continue;
     }
-    rows.push_back(to_row(line, line_no_));
+    if (!why.empty()) fail_at(path_, line_no_, why);    // the first data row
+    rows.push_back(to_row(raw, line_no_));
   }
   return !rows.empty();
 }

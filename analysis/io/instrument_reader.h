@@ -50,7 +50,8 @@ class InstrumentReader {
   bool locate(const std::vector<std::string> &names, std::string &missing);
   bool parse_number(const std::string &field, double &v) const;
   bool numeric_row(const std::string &line, Delim d) const;
-  ImportRow to_row(const std::string &line, long line_no);
+  // the row's values (parse_fields) in the trace's units, with its t
+  ImportRow to_row(ImportRow raw, long line_no);
   // why the mapped columns of line are not all numbers ("" when they are), with the values
   // in r (raw: units not applied)
   std::string parse_fields(const std::string &line, ImportRow &r) const;
