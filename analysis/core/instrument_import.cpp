@@ -379,8 +379,10 @@ ImportSummary TraceBuilder::finish(std::vector<TracePoint> &out)
   for (double v : s) st.worst = std::max(st.worst, std::fabs(v - st.mean) / std::fabs(st.mean));
   // two speeds: the segments before segment j and those after it (j itself may hold the
   // change) each constant within the tolerance about their own means, and those means
-  // apart by more than it; each side at least two segments, so that what is left of a
-  // ramp or a deceleration is not a second speed
+  // apart by more than it, and so are the two segments beside j: a step, where a slow
+  // drift (a few percent over several segments) changes little from one segment to the
+  // next; each side at least two segments, so that what is left of a ramp or a
+  // deceleration is not a second speed
   for (std::size_t j = 2; j + 3 <= s.size() && st.worst > tol; ++j) {
     double a = 0.0, b = 0.0;
     for (std::size_t i = 0; i < s.size(); ++i)
@@ -390,7 +392,8 @@ ImportSummary TraceBuilder::finish(std::vector<TracePoint> &out)
     bool flat = true;
     for (std::size_t i = 0; i < s.size(); ++i)
       if (i != j) flat = flat && std::fabs(s[i] - (i < j ? a : b)) <= tol * std::fabs(i < j ? a : b);
-    if (flat && std::fabs(a - b) > tol * 0.5 * std::fabs(a + b))
+    const bool step = std::fabs(s[j + 1] - s[j - 1]) > tol * 0.5 * std::fabs(s[j + 1] + s[j - 1]);
+    if (flat && step && std::fabs(a - b) > tol * 0.5 * std::fabs(a + b))
       throw ImportRejected(line[j], "two speeds in one file: " + num(a) + " until about this line, " + num(b) +
                                         " after it (one push speed per trace)");
   }

@@ -227,3 +227,35 @@ TEST(ImportKernels, EndCutsDecelerationNotDrift)
   const auto tight = run_passes(rules, rows, out);
   EXPECT_GT(tight.rows_cut, 40u + rules.speed_rows);
 }
+
+// A slow monotone drift (the speed falls by 8% over the last third of the push, steadily)
+// is no second speed: imported, reported as not constant, nothing of it cut; a step of
+// the same size is two speeds
+TEST(ImportKernels, MonotoneDriftIsNotTwoSpeeds)
+{
+  granpen::ImportRules rules;
+  rules.has_position = true;
+  rules.tare_rows = 10;
+  rules.onset_force = 10.0;
+  rules.speed_rows = 20;
+  auto rows_with = [](const std::function<double(int)> &speed) {
+    std::vector<granpen::ImportRow> rows;
+    double x = -0.3;
+    for (int i = 0; i < 6000; ++i) {
+      granpen::ImportRow r;
+      r.t = i * 1e-5;
+      if (i) x += speed(i) * 1e-5;
+      r.x = x;
+      r.F = x > 0 ? 1000.0 * x : 0.0;
+      r.line = i + 2;
+      rows.push_back(r);
+    }
+    return rows;
+  };
+  std::vector<granpen::TracePoint> out;
+  const auto drift = run_passes(rules, rows_with([](int i) { return 100.0 * (1.0 - 0.08 * std::max(0, i - 4000) / 2000.0); }), out);
+  EXPECT_FALSE(drift.speed.constant);
+  EXPECT_LE(drift.rows_cut, rules.speed_rows) << "at most the last block's rows: the drift is kept";
+  out.clear();
+  EXPECT_THROW(run_passes(rules, rows_with([](int i) { return i < 4000 ? 100.0 : 92.0; }), out), granpen::ImportRejected);
+}
