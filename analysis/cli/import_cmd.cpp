@@ -77,6 +77,7 @@ struct Imported {
   long last_data_line = 0, trailer_line = 0;
   std::string trailer_text;
   std::vector<std::string> warnings;   // printed after every file's report and the table
+  granpen::ImportMapping mapping;      // the file's (a GEF file's own)
 };
 
 std::string header_text(const Imported &res, const granpen::ImportMapping &m, const Header &hd, int run)
@@ -114,6 +115,7 @@ Imported import_file(const std::string &in, const std::string &out, const granpe
   Imported res;
   res.in = in;
   res.out = out;
+  res.mapping = m;
   ImportRules rules = m.rules;
   rules.v0 = v0 > 0.0 ? v0 : m.v0 > 0.0 ? m.v0 : NAN;
   std::vector<ImportRow> rows;
@@ -289,18 +291,26 @@ int granpen::cli::run_import(const ImportOptions &o)
   Header hd;
   hd.si = o.si, hd.D = o.D, hd.g = o.g, hd.v0 = o.v0;
   hd.d_g = o.d_g, hd.rho_g = o.rho_g, hd.mu = o.mu;
-  ImportMapping m = read_import_mapping(mapping_path, hd.si);
-  if (o.window > 0.0) {
-    if (!m.rules.has_time) throw InputError(mapping_path + ": --window needs a time: no time column, sample_rate or speed column");
-    m.rules.window = o.window;
-  }
-  if (o.speed_tolerance > 0.0) m.rules.speed_tolerance = o.speed_tolerance;
-  if (o.end_tolerance > 0.0) m.rules.end_tolerance = o.end_tolerance;
+  // --mapping gef: a named layout, each file's mapping from its own GEF header
+  const bool gef = mapping_path == "gef" && !std::filesystem::exists(mapping_path);
+  const ImportMapping given = gef ? ImportMapping() : read_import_mapping(mapping_path, hd.si);
+  auto mapping_for = [&](const std::string &in) {
+    ImportMapping mm = gef ? parse_import_mapping(gef_mapping_text(in), in + " (its GEF header)", hd.si) : given;
+    if (gef) mm.path = "gef";
+    if (o.window > 0.0) {
+      if (!mm.rules.has_time)
+        throw InputError((gef ? in : mapping_path) + ": --window needs a time: no time column, sample_rate or speed column");
+      mm.rules.window = o.window;
+    }
+    if (o.speed_tolerance > 0.0) mm.rules.speed_tolerance = o.speed_tolerance;
+    if (o.end_tolerance > 0.0) mm.rules.end_tolerance = o.end_tolerance;
+    return mm;
+  };
   std::map<std::string, double> table;
   if (!o.v0_table.empty()) table = read_v0_table(o.v0_table, hd.si);
   const auto files = input_files(inputs);
   std::vector<std::string> all_inputs = files;
-  all_inputs.push_back(mapping_path);
+  if (!gef) all_inputs.push_back(mapping_path);
   if (!o.v0_table.empty()) all_inputs.push_back(o.v0_table);
   std::map<std::string, std::string> outputs;    // output -> its input
   struct Planned {
@@ -329,7 +339,7 @@ int granpen::cli::run_import(const ImportOptions &o)
   std::vector<Imported> done;
   int run = o.first_run;
   try {
-    for (const auto &p : plan) done.push_back(import_file(p.in, p.out, m, hd, p.v0, run++, dry));
+    for (const auto &p : plan) done.push_back(import_file(p.in, p.out, mapping_for(p.in), hd, p.v0, run++, dry));
   } catch (...) {
     done.clear();    // the staged traces' temporaries removed
     if (made_dir) std::filesystem::remove(out_dir, ec);    // the folder this run made, now empty
@@ -339,8 +349,8 @@ int granpen::cli::run_import(const ImportOptions &o)
   for (auto &r : done)
     if (r.staged) r.staged->rename();
   for (auto &r : done) {
-    r.warnings = speed_warnings(r, m.rules);
-    report(r, m, hd.si, dry);
+    r.warnings = speed_warnings(r, r.mapping.rules);
+    report(r, r.mapping, hd.si, dry);
   }
   if (done.size() > 1) print_summary_table(done, hd.si);
   if (!dry) write_file_atomic(summary_path, summary_csv(done));

@@ -36,7 +36,8 @@ granpen::cli::ImportOptions granpen::cli::parse_import(int argc, char **argv)
   std::string units = "cgs";
   auto &app = cmd.app;
   app.add_option("files", o.inputs, "instrument files, or folders of them")->required();
-  app.add_option("--mapping", o.mapping, "the mapping file (columns, units, signs, rules)")->required()->check(file_name())
+  app.add_option("--mapping", o.mapping, "the mapping file (columns, units, signs, rules), or gef: each file's own "
+                 "GEF-CPT header")->required()->check(file_name())
       ->type_name("MAP");
   app.add_option("--out", o.out_dir, "the folder the traces go to (made when missing)")->required()->check(file_name())
       ->type_name("DIR");

@@ -113,7 +113,8 @@ void PushScan::add(const std::vector<ImportRow> &rows)
       throw ImportRejected(r.line, "time does not increase (" + num(r.t) + " s after " + num(last_t_) + " s)");
     last_t_ = r.t;
     last_line_ = r.line;
-    if (tared_) {
+    if (tared_ || rules_.tare_rows == 0) {    // tare_rows = 0: no offset (tare stays 0)
+      tared_ = true;
       row(r);
       continue;
     }

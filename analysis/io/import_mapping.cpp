@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 
@@ -280,6 +281,44 @@ std::map<std::string, double> read_v0_table(const std::string &path, bool si)
   }
   if (table.empty()) throw InputError(path + ": no 'FILE V0' line in the v0 table");
   return table;
+}
+
+std::string gef_mapping_text(const std::string &path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot read: " + std::strerror(errno));
+  std::map<int, std::pair<int, std::string>> by_quantity;    // quantity -> (column, unit)
+  std::string separator = "whitespace", area, area_unit, line;
+  long n = 0, eoh = 0;
+  while (eoh == 0 && n < 10000 && std::getline(in, line)) {
+    ++n;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const auto eq = line.find('=');
+    if (line.empty() || line[0] != '#' || eq == std::string::npos) continue;
+    const std::string key = trim(line.substr(1, eq - 1));
+    std::vector<std::string> v = split(line.substr(eq + 1), ',');
+    for (auto &f : v) f = trim(f);
+    if (key == "EOH") eoh = n;
+    else if (key == "COLUMNSEPARATOR" && !v.empty())
+      separator = v[0] == ";" ? "semicolon" : v[0] == "," ? "comma" : v[0] == "\t" || v[0].empty() ? "tab" : "whitespace";
+    else if (key == "COLUMNINFO" && v.size() >= 4)
+      by_quantity[std::atoi(v[3].c_str())] = {std::atoi(v[0].c_str()), v[1]};
+    else if (key == "MEASUREMENTVAR" && v.size() >= 3 && std::atoi(v[0].c_str()) == 1)
+      area = v[1], area_unit = v[2];
+  }
+  if (!eoh) throw InputError(path + ": GEF: no '#EOH=' line ending the header (in the first 10000 lines)");
+  const int depth_q = by_quantity.count(11) ? 11 : 1;
+  if (!by_quantity.count(depth_q)) throw InputError(path + ": GEF: no column of quantity 1 (penetration length) or 11 (corrected depth)");
+  if (!by_quantity.count(2)) throw InputError(path + ": GEF: no column of quantity 2 (cone resistance)");
+  if (area.empty()) throw InputError(path + ": GEF: no #MEASUREMENTVAR= 1 (the cone's area): the force is the cone resistance times it");
+  std::string t = "# implied by the GEF header of " + path + "\ndelimiter = " + separator + "\nheader_lines = " +
+                  std::to_string(eoh) + "\ncolumn_names = no\ndepth = #" + std::to_string(by_quantity[depth_q].first) +
+                  "\nposition_unit = " + by_quantity[depth_q].second + "\nforce = #" + std::to_string(by_quantity[2].first) +
+                  "\nforce_unit = " + by_quantity[2].second + "\narea = " + area + "\narea_unit = " + area_unit +
+                  "\ntare_rows = 0\n";
+  if (by_quantity.count(12))
+    t += "time = #" + std::to_string(by_quantity[12].first) + "\ntime_unit = " + by_quantity[12].second + "\n";
+  return t;
 }
 
 double nominal_v0(const std::map<std::string, double> &table, const std::string &file)

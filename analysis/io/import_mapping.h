@@ -60,6 +60,15 @@ ImportMapping parse_import_mapping(const std::string &text, const std::string &p
 // come back in the traces' units. Throws InputError "PATH:LINE: ..." (a bad speed or unit,
 // a file given twice, a line of other shape) or "PATH: ..." (unreadable, empty).
 std::map<std::string, double> read_v0_table(const std::string &path, bool si);
+// GEF (the Geotechnical Exchange Format of cone penetration tests, GEF-CPT): the mapping
+// a GEF file's own header implies, as mapping text for parse_import_mapping. Read up to
+// "#EOH=": #COLUMNINFO (1 penetration length or 11 corrected depth -> depth, 2 cone
+// resistance -> force as a stress on the cone's area, #MEASUREMENTVAR 1 in mm2 or cm2;
+// 12 elapsed time -> time, else no time), #COLUMNSEPARATOR (default white space),
+// #RECORDSEPARATOR (a trailing field, ignored); tare_rows = 0 (the cone is in the ground
+// from the first row). Throws InputError "PATH: ..." (no #EOH=, no depth or cone
+// resistance column, no cone area, a unit not known).
+std::string gef_mapping_text(const std::string &path);
 // the table's speed for an input file (its name, else its stem); NaN when absent
 double nominal_v0(const std::map<std::string, double> &table, const std::string &file);
 

@@ -774,3 +774,36 @@ TEST(ImportEnsemble, MeasuredSpeedsGroupedWithinATolerance)
       v0[k] += granpen::read_trace((d / "out" / ("S" + std::to_string(k + 1) + std::to_string(j + 1) + ".csv")).string()).v0 / 3.0;
   expect_three_ensembles(fit.out, v0);
 }
+
+// A GEF-CPT file (the open exchange format of cone penetration tests) needs no mapping:
+// --mapping gef reads its header (columns by quantity number, units, separators, the
+// cone's area); depth in m, cone resistance in MPa on a 10 cm2 cone, elapsed time in s
+TEST(ImportRoundTrip, GefConePenetrationTestNeedsNoMapping)
+{
+  const fs::path d = fresh("gef");
+  std::size_t first = 0;
+  while (ORIG.z[first] <= 0.0) ++first;    // a sounding starts at the surface
+  std::string s = "#GEFID= 1, 1, 0\n#FILEOWNER= granpen lab\n#FILEDATE= 2026, 11, 20\n#PROJECTID= CPT, 4471\n"
+                  "#COLUMN= 4\n#COLUMNINFO= 1, m, penetration length, 1\n#COLUMNINFO= 2, MPa, cone resistance, 2\n"
+                  "#COLUMNINFO= 3, MPa, local friction, 3\n#COLUMNINFO= 4, s, elapsed time, 12\n#COLUMNSEPARATOR= ;\n"
+                  "#RECORDSEPARATOR= !\n#COLUMNVOID= 1, -9999.000000\n"
+                  "#MEASUREMENTVAR= 1, 1000, mm2, nom. surface area cone tip\n#EOH=\n";
+  for (std::size_t i = first; i < ORIG.t.size(); ++i)    // F dyne on 10 cm2: F * 1e-8 MPa
+    s += fmt("%.10g", ORIG.z[i] / 100.0) + ";" + fmt("%.12g", ORIG.F[i] * 1e-8) + ";0.001;" + fmt("%.6f", ORIG.t[i]) + ";!\n";
+  write(d / "CPT12.gef", s);
+  const CliRun r = cli(d, "import " + (d / "CPT12.gef").string() + " --mapping gef --out " + (d / "out").string() +
+                           " --D 2 --g 981");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto tr = granpen::read_trace((d / "out" / "CPT12.csv").string());
+  EXPECT_EQ(tr.keys.at("mapping"), "gef");
+  EXPECT_NEAR(tr.v0, 100.0, 1e-3) << "measured from the depth and the elapsed time";
+  // z: 10 digits of m; F: 12 digits of MPa; t from the sounding's first row
+  expect_equal(tr, first, ORIG.t[first], 1e-8, 1e-9, 0);
+  EXPECT_EQ(cli(d, "check " + (d / "out").string()).status, 0);
+  // without the cone's area there is no force: named
+  write(d / "noarea.gef", std::regex_replace(s, std::regex("#MEASUREMENTVAR= 1,[^\n]*\n"), ""));
+  const CliRun bad = cli(d, "import " + (d / "noarea.gef").string() + " --mapping gef --out " + (d / "out2").string() +
+                             " --D 2 --g 981");
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_NE(bad.err.find("noarea.gef: GEF: no #MEASUREMENTVAR= 1 (the cone's area)"), std::string::npos) << bad.err;
+}
