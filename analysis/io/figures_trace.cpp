@@ -337,7 +337,7 @@ void force_ensembles(const std::vector<TraceIn> &traces, double factor, double z
 {
   std::vector<Trace> tr;
   for (const auto &t : traces) tr.push_back(t.tr);
-  auto groups = group_traces(tr);
+  auto groups = group_traces(tr, run.opt.ens.v0_tolerance);
   average_groups(groups, run.opt.ens, run.problems);
   bool several_cases = false;
   for (const auto &g : groups) several_cases |= g.g != groups.front().g || g.D != groups.front().D;
@@ -562,7 +562,7 @@ bool ratio_curves(const std::vector<TraceIn> &traces, Run &run, RatioCurves &rc,
   }
   std::vector<Trace> tr;
   for (const auto &t : traces) tr.push_back(t.tr);
-  auto groups = group_traces(tr);
+  auto groups = group_traces(tr, run.opt.ens.v0_tolerance);
   average_groups(groups, o.ens, run.problems);
   DepthTerm dt;
   dt.kz_zmin = o.kz_zmin, dt.kz_zmax = o.kz_zmax, dt.alpha = o.alpha, dt.mu = o.mu, dt.rho_g = o.rho;
@@ -755,7 +755,7 @@ bool peak_ensembles(const std::vector<TraceIn> &traces, Run &run, std::vector<Tr
 {
   std::vector<Trace> tr;
   for (const auto &t : traces) tr.push_back(t.tr);
-  groups = group_traces(tr);
+  groups = group_traces(tr, run.opt.ens.v0_tolerance);
   average_groups(groups, run.opt.ens, run.problems);
   std::vector<EnsembleCase> cases;
   for (const auto &g : groups) {
@@ -912,7 +912,7 @@ void ensemble_kz(const std::vector<TraceIn> &traces, Run &run, std::vector<std::
 {
   std::vector<Trace> tr;
   for (const auto &t : traces) tr.push_back(t.tr);
-  auto groups = group_traces(tr);
+  auto groups = group_traces(tr, run.opt.ens.v0_tolerance);
   average_groups(groups, run.opt.ens, run.problems);
   for (const auto &g : groups) {
     TraceFitParams fp;
