@@ -3,7 +3,8 @@
    and the bed surface, on plain arrays (no files).
    - find_rod: the rod's atoms (one type): axis = mean x, y of their centres
      (nearest periodic images of the first), tip = lowest z - radius, diameter
-     D = 2 max(r_xy + radius), as fix rod/drive measures its rod;
+     D = 2 max(r_xy + radius): src/rod_shape.h, the kernel fix rod/drive measures
+     its rod with;
    - bed_surface: z_s as compute bed/surface and fix rod/drive's surface auto
      define it: the mean over an n x n grid of columns spanning the box of the
      highest grain top (z + radius) in each column (src/bed_surface.h);
