@@ -21,6 +21,7 @@
 #include "memory.h"
 #include "modify.h"
 #include "rod_bed_measure.h"
+#include "scaling_laws.h"
 #include "timer.h"
 #include "trace_writer.h"
 #include "update.h"
@@ -267,7 +268,7 @@ void FixRodDrive::setup(int /*vflag*/)
   if (!surface_set) {
     int nempty = 0;
     double top_max = 0.0;
-    surface = gp::bed_surface(lmp, grainbit, groupbit, 4, nempty, top_max);
+    surface = gp::bed_surface(lmp, grainbit, groupbit, granpen::SURFACE_COLUMNS, nempty, top_max);
     if (std::isnan(surface))
       error->all(FLERR, "Fix rod/drive surface auto found no grains in group {} to define the bed "
                  "surface", grain_group);

@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <vector>
 
 namespace granpen {
@@ -57,13 +56,6 @@ double bed_surface(const double *x, const double *y, const double *z, const doub
   }
   column_max_tops(grid, gx.data(), gy.data(), top.data(), gx.size(), colmax);
   return surface_from_columns(colmax, nempty);
-}
-
-double t_tilde(double z, double v0, double g, double D)
-{
-  if (!(v0 > 0.0 && g > 0.0 && D > 0.0) || !std::isfinite(v0) || !std::isfinite(g) || !std::isfinite(D))
-    return std::numeric_limits<double>::quiet_NaN();
-  return z / v0 * std::sqrt(g / D);
 }
 
 }    // namespace granpen
