@@ -12,6 +12,7 @@
 #include "error.h"
 #include "granpen_compat.h"
 #include "rod_bed_measure.h"
+#include "scaling_laws.h"
 #include "update.h"
 
 #include <cmath>
@@ -22,7 +23,7 @@ using namespace LAMMPS_NS;
 static constexpr int NVECTOR = 5;
 
 ComputeBedSurface::ComputeBedSurface(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), ngrid(4), floor_z(0.0)
+    Compute(lmp, narg, arg), ngrid(granpen::SURFACE_COLUMNS), floor_z(0.0)
 {
   int iarg = 3;
   while (iarg < narg) {

@@ -21,6 +21,7 @@
 #include "memory.h"
 #include "modify.h"
 #include "rod_bed_measure.h"
+#include "scaling_laws.h"
 #include "timer.h"
 #include "trace_writer.h"
 #include "update.h"
@@ -38,7 +39,7 @@ static constexpr int NVECTOR = 9;
 /* ---------------------------------------------------------------------- */
 
 FixRodDrive::FixRodDrive(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), grainbit(1), grain_group("all"), surface_auto(true), surface_grid(4), depth_max(-1.0),
+    Fix(lmp, narg, arg), grainbit(1), grain_group("all"), surface_auto(true), surface_grid(granpen::SURFACE_COLUMNS), depth_max(-1.0),
     at_depth(AT_DEPTH_STOP), ramp(0.0), mount(false), kmount(0.0), cmount(0.0), mmount(0.0),
     rate(10000.0), g_user(-1.0), d_user(-1.0), elapsed(0.0), t_base(0.0), step_base(0), rod_disp(0.0), rod_vel(0.0),
     act_pos(0.0), act_vel(0.0), rod_acc(0.0), held_act(0.0), held(false), surface(0.0),

@@ -103,6 +103,17 @@ struct FlowBin {
   }
 };
 
+// The volume of a ring r1 <= r < r2 of height dz: pi (r2^2 - r1^2) dz.
+double ring_volume(double r1, double r2, double dz);
+
+// The moments of one ring of volume `volume` from its FLOW_NSUM sums pooled over `frames`
+// frames: count, mass and phi_centre means per frame; phi_voronoi when `voronoi`; v_r, v_z,
+// v_theta and T mass-weighted (0 for an empty ring); p and sigma_zz means over the
+// stress_frames that had stress (0 without); rbar, zbar mass-weighted (row.r and row.z,
+// set by the caller, when empty). gammadot and I are left as they are.
+void bin_moments(const double *sums, double volume, double frames, double stress_frames, bool voronoi,
+                 FlowBin &row);
+
 // The bins' moments from sums pooled over `frames` frames (grid.bins() * FLOW_NSUM
 // doubles): counts, mass, phi and p are means per frame (p over the stress_frames that
 // had stress; 0 without), velocities and T mass-weighted over every sample; phi_voronoi

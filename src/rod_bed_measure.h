@@ -15,7 +15,7 @@ namespace gp {
 
   struct RodShape {
     bigint count = 0;
-    double xc = 0.0, yc = 0.0;    // axis: centroid of the sphere centres in x, y
+    double xc = 0.0, yc = 0.0;    // axis: centroid of the sphere centres in x, y (nearest images)
     double D = 0.0;               // outer diameter: 2 max(r_xy + radius)
     double ztip = 0.0;            // lowest point: min(z - radius)
   };

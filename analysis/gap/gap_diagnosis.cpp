@@ -4,6 +4,7 @@
 
 #include "effects.h"
 #include "gap_align.h"
+#include "scaling_laws.h"
 #include "gap_confirm.h"
 #include "gap_errors.h"
 #include "gap_features.h"
@@ -211,7 +212,7 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   d.notes = measured.notes;
   d.notes.insert(d.notes.end(), al.notes.begin(), al.notes.end());
   d.grid = al.grid;
-  d.peak_end = 0.35 * sc.D;
+  d.peak_end = peak_regime_end(sc.D);
   const Features f = build_features(measured.runs, sims, effects, al.grid, measured.files.size());
   d.notes.insert(d.notes.end(), f.notes.begin(), f.notes.end());
   d.n_reference = f.n_reference;

@@ -578,7 +578,7 @@ void write_gap_report(const Diagnosis &d, const std::string &dir)
   write_file_atomic(dir + "/report.md", report_markdown(d, figures, failures));
 }
 
-void gap_by_regime(const GapGrid &grid, double D, Diagnosis &d)
+void gap_by_regime(const GapGrid &grid, double /*D: the peak ends at d.peak_end*/, Diagnosis &d)
 {
   const std::size_t nb = grid.nbins();
   for (const char *reg : {"peak", "transient", "linear"}) {
@@ -588,7 +588,7 @@ void gap_by_regime(const GapGrid &grid, double D, Diagnosis &d)
       std::size_t b0 = 0, b1 = 0;
       for (std::size_t b = 0; b < nb; ++b) {
         const double z = grid.centre(b);
-        const std::string r = z <= 0.35 * D ? "peak" : (z <= c.z_transient_end ? "transient" : "linear");
+        const std::string r = z <= d.peak_end ? "peak" : (z <= c.z_transient_end ? "transient" : "linear");
         if (r == reg) {
           if (b1 == 0) b0 = b;
           b1 = b + 1;

@@ -1,5 +1,6 @@
 // granpen gap, stage 6 (where): see gap_where.h.
 #include "gap_where.h"
+#include "scaling_laws.h"
 
 #include "text_util.h"
 
@@ -80,8 +81,8 @@ void regimes(const Features &f, const RunsBySpeed &fresh, const Scenario &sc, co
       const auto o = run_observables(r.z, r.F, v, sc.D, sc.g, sc.d_g, grid, grid.zmax);
       if (o.crossed) ts.push_back(o.t_star);
     }
-    const double zc = ts.size() == runs.size() && !ts.empty() ? mean_of(ts) * v * std::sqrt(sc.D / sc.g) : grid.zmax;
-    d.speeds[s].z_transient_end = std::clamp(zc, 0.35 * sc.D, grid.zmax);
+    const double zc = ts.size() == runs.size() && !ts.empty() ? depth_at_t_tilde(mean_of(ts), v, sc.g, sc.D) : grid.zmax;
+    d.speeds[s].z_transient_end = std::clamp(zc, peak_regime_end(sc.D), grid.zmax);
   }
 }
 
@@ -109,7 +110,7 @@ void observable_findings(const Features &f, const RunsBySpeed &real, const Simul
     const double scale = f.target_scale[s];
     for (const auto &[name, reg] : regime) {
       if (!oR.count(name) || !oB.count(name) || !pooled.count(name)) continue;
-      if (name == "excess" && zt <= 0.35 * sc.D + grid.w) continue;    // no transient regime in range
+      if (name == "excess" && zt <= peak_regime_end(sc.D) + grid.w) continue;    // no transient regime in range
       const double var1 = pooled[name].first / pooled[name].second;    // one run's variance
       const double level = std::abs(mean_of(oB.at(name)));
       if (!(var1 > 0.0) || std::sqrt(var1) <= 1e-9 * level) {

@@ -10,6 +10,7 @@
 #include "gap_features.h"
 #include "gap_inputs.h"
 #include "gap_plan.h"
+#include "gap_report.h"
 #include "gap_sims.h"
 #include "sensor_response.h"
 #include "gap_where.h"
@@ -1276,4 +1277,28 @@ TEST(GapReport, DiagnosisJsonKeysAndValuesAsTheHandBuiltWriterWroteThem)
   // written through the atomic writer: no temporary left beside it
   for (const auto &e : fs::directory_iterator(dir.path))
     EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+}
+
+// The gap per regime splits the bins where the diagnosis says the peak regime ends
+// (d.peak_end), as the residual's description does, not at a depth of its own: a gap in a
+// bin beyond peak_end is the transient's.
+TEST(GapReport, GapByRegimeEndsThePeakAtTheDiagnosisPeakEnd)
+{
+  Diagnosis d;
+  GapGrid grid;
+  grid.zmax = 2.0;    // 8 bins of 0.25: centres 0.125, 0.375, 0.625, ...
+  d.peak_end = 0.5;   // bins 0 and 1 are the peak regime, bin 2 (0.625) the transient
+  SpeedCurves c;
+  c.v0 = 100;
+  c.z_transient_end = 1.5;
+  c.base.assign(grid.nbins(), 100.0);
+  c.corr = c.base;
+  c.real = c.base;
+  c.real[2] += 10;    // the only gap: in the transient regime
+  d.speeds = {c};
+  gap_by_regime(grid, 2.0, d);    // D = 2: 0.35 D = 0.7 would put bin 2 in the peak
+  ASSERT_TRUE(d.gap_by_regime.count("peak"));
+  ASSERT_TRUE(d.gap_by_regime.count("transient"));
+  EXPECT_EQ(d.gap_by_regime["peak"].first, 0.0);
+  EXPECT_GT(d.gap_by_regime["transient"].first, 0.0);
 }
