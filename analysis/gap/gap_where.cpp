@@ -159,7 +159,37 @@ void gap_significance(const Features &f, const GapGrid &grid, Diagnosis &d)
   d.chi2_0 = omnibus_chi2(f.target, f);
   d.nfeatures = f.nspeeds() * grid.nfeatures();
   d.p_value = chi2_sf(d.chi2_0, (double) d.nfeatures);
-  d.significant = d.p_value < 1e-3;
+  d.significant = d.p_value < GapThresholds::significance_p;
+}
+
+RegimeGaps gap_by_regime(const GapGrid &grid, double peak_end, const std::vector<SpeedCurves> &speeds)
+{
+  const std::size_t nb = grid.nbins();
+  RegimeGaps out;
+  for (const char *reg : {"peak", "transient", "linear"}) {
+    double sb = 0, sa = 0;
+    int n = 0;
+    for (const auto &c : speeds) {
+      std::size_t b0 = 0, b1 = 0;
+      for (std::size_t b = 0; b < nb; ++b) {
+        const double z = grid.centre(b);
+        const std::string r = z <= peak_end ? "peak" : (z <= c.z_transient_end ? "transient" : "linear");
+        if (r == reg) {
+          if (b1 == 0) b0 = b;
+          b1 = b + 1;
+        }
+      }
+      if (b1 == 0) continue;
+      Ensemble R, B, C;
+      R.mean = c.real, B.mean = c.base, C.mean = c.corr;
+      R.runs.resize(1), B.runs.resize(1), C.runs.resize(1);    // the debiasing is in the overall G
+      sb += gap_metric(R, B, b0, b1);
+      sa += gap_metric(R, C, b0, b1);
+      ++n;
+    }
+    if (n) out[reg] = {sb / n, sa / n};
+  }
+  return out;
 }
 
 }    // namespace granpen
