@@ -23,8 +23,8 @@
    MPI_MAX, then surface_from_columns() takes the mean.
 ------------------------------------------------------------------------- */
 
-#ifndef GRANPEN_BED_SURFACE_H
-#define GRANPEN_BED_SURFACE_H
+#ifndef LMP_BED_SURFACE_H
+#define LMP_BED_SURFACE_H
 
 #include <cstddef>
 #include <vector>

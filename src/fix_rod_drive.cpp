@@ -244,8 +244,8 @@ void FixRodDrive::init()
                  other->id, other->style);
     if (comm->me == 0)
       error->warning(FLERR,
-                     "Fix {} applies gravity to {} rod atoms: fix rod/drive's force then "
-                     "includes their weight",
+                     "Fix rod/drive: fix {} applies gravity to {} rod atoms, so the "
+                     "measured force includes their weight",
                      other->id, nboth);
   }
 

@@ -38,8 +38,8 @@
    C++11, like the rest of src/ (the package route compiles it into LAMMPS).
 ------------------------------------------------------------------------- */
 
-#ifndef GRANPEN_FLOW_BINS_H
-#define GRANPEN_FLOW_BINS_H
+#ifndef LMP_FLOW_BINS_H
+#define LMP_FLOW_BINS_H
 
 #include <cstddef>
 #include <vector>

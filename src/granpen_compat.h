@@ -141,9 +141,9 @@ inline bool sphere_atoms(const Atom *atom)
 // (commit 8b89c330, LAMMPS PR #4037, merged 15 Jan 2024). For a future
 // `dof_t dof(int) override;` -- no GRANPEN fix overrides dof() today.
 #if LAMMPS_VERSION_NUMBER >= 20240207
-using dof_t = bigint;
+typedef bigint dof_t;
 #else
-using dof_t = int;
+typedef int dof_t;
 #endif
 
 

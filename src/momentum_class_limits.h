@@ -29,8 +29,8 @@
    logbins keyword live here too. C++11, like the rest of src/.
 ------------------------------------------------------------------------- */
 
-#ifndef GRANPEN_MOMENTUM_CLASS_LIMITS_H
-#define GRANPEN_MOMENTUM_CLASS_LIMITS_H
+#ifndef LMP_MOMENTUM_CLASS_LIMITS_H
+#define LMP_MOMENTUM_CLASS_LIMITS_H
 
 #include <vector>
 

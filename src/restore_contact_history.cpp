@@ -98,7 +98,7 @@ void RestoreContactHistory::command(int narg, char ** /*arg*/)
     return;
   }
   if (pending.size() > fresh.size())
-    error->all(FLERR, "restore_contact_history: the restart holds {} gran/hertz/history contact histories but "
+    error->all(FLERR, "Restore_contact_history: the restart holds {} gran/hertz/history contact histories but "
                       "the pair style defines {} (a restart of another contact law?)",
                pending.size(), fresh.size());
   for (size_t k = 0; k < pending.size(); ++k) {

@@ -21,8 +21,8 @@
    reduces over owned atoms and combines across ranks over world.
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_GRANPEN_ROD_BED_MEASURE_H
-#define LMP_GRANPEN_ROD_BED_MEASURE_H
+#ifndef LMP_ROD_BED_MEASURE_H
+#define LMP_ROD_BED_MEASURE_H
 
 #include "lmptype.h"
 

@@ -20,8 +20,8 @@
    Pure C++ (no LAMMPS types), so it is unit-tested on its own.
 ------------------------------------------------------------------------- */
 
-#ifndef GRANPEN_ROD_GEOMETRY_H
-#define GRANPEN_ROD_GEOMETRY_H
+#ifndef LMP_ROD_GEOMETRY_H
+#define LMP_ROD_GEOMETRY_H
 
 #include <vector>
 

@@ -21,8 +21,8 @@
    decides which rank writes.
 ------------------------------------------------------------------------- */
 
-#ifndef GRANPEN_TRACE_WRITER_H
-#define GRANPEN_TRACE_WRITER_H
+#ifndef LMP_TRACE_WRITER_H
+#define LMP_TRACE_WRITER_H
 
 #include <cstdio>
 #include <string>

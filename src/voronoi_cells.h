@@ -31,8 +31,8 @@
    and the volumes are exact. C++11, like the rest of src/.
 ------------------------------------------------------------------------- */
 
-#ifndef GRANPEN_VORONOI_CELLS_H
-#define GRANPEN_VORONOI_CELLS_H
+#ifndef LMP_VORONOI_CELLS_H
+#define LMP_VORONOI_CELLS_H
 
 #include <cstddef>
 
