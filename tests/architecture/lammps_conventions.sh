@@ -6,6 +6,8 @@
 #     lower case letters, digits and slashes (a command's: and underscores, as create_atoms);
 #   - every header has the include guard LMP_<FILE NAME>_H;
 #   - no header has a using statement (namespace, declaration or alias);
+#   - a style's header includes no library header (only C++ standard headers in <>, as
+#     <vector>): a library (Voro++) is used through the implementation file (PIMPL);
 #   - every error->all/one/warning message of a style's .cpp starts the LAMMPS way: "Fix
 #     some/name ...", "Compute some/name ...", "Some_name ..." for a command, or "Illegal
 #     <style> command" / "Unknown <style> keyword".
@@ -60,6 +62,8 @@ run() {    # DIR: 0 when src/ there follows the conventions
       while read -r l; do echo "$l"; done | grep . && fails=$((fails + 1))
     styles=$(sed -n -E 's/^(Fix|Compute|Command)Style\(([^,]+),([A-Za-z0-9_]+)\);.*/\1 \2 \3/p' "$h")
     [ -n "$styles" ] || continue
+    libs=$(grep -nE '^[[:space:]]*#[[:space:]]*include[[:space:]]*<[^>]*[./+][^>]*>' "$h")
+    [ -z "$libs" ] || { echo "$libs" | sed "s|^|$h:|; s|\$|  (a library header in a style's header)|"; fails=$((fails + 1)); }
     echo "$styles" | {
       bad=0
       while read -r kind name class; do
@@ -108,17 +112,17 @@ if [ "$self_test" = yes ]; then
   printf 'void f() {\n  error->all(FLERR,\n    "fix c/d: bad");\n}\n' > "$t/bad/fix_c_d.cpp"
   style_h "$t/bad/fix_wrong.h" Fix e/f FixEF LMP_FIX_WRONG_H
   printf 'void f() { error->all(FLERR, "Fix e/f ok"); }\n' > "$t/bad/fix_wrong.cpp"
-  style_h "$t/bad/compute_g.h" Compute G ComputeG LMP_COMPUTE_G_H
+  style_h "$t/bad/compute_g.h" Compute G ComputeG LMP_COMPUTE_G_H '#include <voro++.hh>'
   printf 'void f() { error->all(FLERR, "Compute G ok"); }\n' > "$t/bad/compute_g.cpp"
   printf '#ifndef GRANPEN_HELPER_H\n#define GRANPEN_HELPER_H\nusing namespace std;\n#endif\n' > "$t/bad/helper.h"
   printf '#ifndef LMP_ALIAS_H\n#define LMP_ALIAS_H\n  using real = double;\n#endif\n' > "$t/bad/alias.h"
   out=$(run "$t/bad") && { echo "SELF-TEST FAILED: bad files accepted"; exit 1; }
   for want in "fix_c_d.h: fix c/d's class is FixCd, not FixCD" "fix_c_d.cpp:2: error message \"fix c/d: bad" \
       "fix_wrong.h: fix e/f belongs in fix_e_f.h" "style name G is not lower case" "compute_g.h: compute G belongs" \
-      "helper.h: include guard is not LMP_HELPER_H" "helper.h:3:using namespace std;" "alias.h:3:  using real"; do
+      "helper.h: include guard is not LMP_HELPER_H" "helper.h:3:using namespace std;" "alias.h:3:  using real" "compute_g.h:6:#include <voro++.hh>"; do
     case "$out" in *"$want"*) ;; *) echo "SELF-TEST FAILED: \"$want\" not reported in: $out"; exit 1 ;; esac
   done
-  echo "self-test passed: 8 breaches reported, 2 good styles and a helper accepted"
+  echo "self-test passed: 9 breaches reported, 2 good styles and a helper accepted"
   exit 0
 fi
 
