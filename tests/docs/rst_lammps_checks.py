@@ -7,7 +7,9 @@ package's .rst pages (docs/*.rst and docs/lammps/*.rst):
    as failures): docutils, with Sphinx's and LAMMPS's roles and directives stood in for
    by inert ones, so that what is checked is the reStructuredText itself (sections, lists,
    tables, inline markup, targets).
-3. Spelling against LAMMPS's word list. `make spelling` (sphinxcontrib-spelling with an
+3. Every :doc:`...` link names a page of the tree's doc/src or one of the package's pages
+   (Sphinx's reference check).
+4. Spelling against LAMMPS's word list. `make spelling` (sphinxcontrib-spelling with an
    en_US dictionary) is not installed here, so the dictionary is stood in for by the words
    of LAMMPS's own manual (TREE/doc/src/*.rst, which passes LAMMPS's spell check) plus its
    false-positive list (TREE/doc/utils/sphinx-config/false_positives.txt); a word of the
@@ -103,7 +105,20 @@ def known_words(tree, extra_lists):
     return words
 
 
-def check_page(path, known):
+DOC_LINK = re.compile(r":doc:`(?:[^`<]*<([^>`]+)>|([^`<]+))`")
+
+
+def check_links(path, text, pages):
+    findings = []
+    for n, line in enumerate(text.split("\n"), 1):
+        for m in DOC_LINK.finditer(line):
+            target = (m.group(1) or m.group(2)).strip()
+            if target not in pages:
+                findings.append(f"{path}:{n}: :doc: link to '{target}', which is no page of LAMMPS or the package")
+    return findings
+
+
+def check_page(path, known, pages):
     findings = []
     raw = open(path, "rb").read()
     for n, line in enumerate(raw.split(b"\n"), 1):
@@ -111,6 +126,7 @@ def check_page(path, known):
         if bad:
             findings.append(f"{path}:{n}: not ASCII: {line.decode('utf-8', 'replace').strip()[:60]}")
     text = raw.decode("utf-8", "replace")
+    findings += check_links(path, text, pages)
     warnings = io.StringIO()
     doctree = docutils.core.publish_doctree(
         text, source_path=path,
@@ -139,15 +155,17 @@ def run(tree, pages, extra_lists):
     if len(known) < 1000:
         print(f"rst_lammps_checks: {tree}/doc/src gives only {len(known)} words: not a LAMMPS tree")
         return 2
+    doc_pages = {os.path.basename(p)[:-4] for p in glob.glob(os.path.join(tree, "doc", "src", "*.rst"))}
+    doc_pages |= {os.path.basename(p)[:-4] for p in pages}
     findings = []
     for page in pages:
-        findings += check_page(page, known)
+        findings += check_page(page, known, doc_pages)
     for f in findings:
         print(f)
     if findings:
         print(f"rst_lammps_checks: {len(findings)} findings in {len(pages)} pages")
         return 1
-    print(f"ok: {len(pages)} pages are ASCII, parse without warnings and spell with LAMMPS's word list")
+    print(f"ok: {len(pages)} pages are ASCII, parse without warnings, link to existing pages and spell with LAMMPS's word list")
     return 0
 
 
@@ -164,13 +182,17 @@ def self_test(tree):
         utf = os.path.join(d, "utf.rst")
         with open(utf, "w", encoding="utf-8") as f:
             f.write("Title\n=====\n\nThe force \u2248 zero.\n")
+        link = os.path.join(d, "link.rst")
+        with open(link, "w") as f:
+            f.write("Title\n=====\n\nSee :doc:`the fix <fix_rod_drove>`.\n")
         broken = os.path.join(d, "broken.rst")
         with open(broken, "w") as f:
             f.write("Title\n=====\n\n* a list\nwithout a blank line after it\n\n`unclosed\n")
         if run(tree, [good], []) != 0:
             print("SELF-TEST FAILED: a good page has findings")
             return 1
-        for page, want in ((typo, "unknown word 'forse'"), (utf, "not ASCII"), (broken, "WARNING")):
+        for page, want in ((typo, "unknown word 'forse'"), (utf, "not ASCII"), (broken, "WARNING"),
+                            (link, "link to 'fix_rod_drove'")):
             out = io.StringIO()
             stdout, sys.stdout = sys.stdout, out
             try:
@@ -180,7 +202,7 @@ def self_test(tree):
             if rc != 1 or want not in out.getvalue():
                 print(f"SELF-TEST FAILED: {os.path.basename(page)}: no '{want}' in:\n{out.getvalue()}")
                 return 1
-    print("self-test passed: a typo, a non-ASCII character and broken markup found, a good page passes")
+    print("self-test passed: a typo, a non-ASCII character, broken markup and a broken link found, a good page passes")
     return 0
 
 
