@@ -6,6 +6,7 @@
 #     lower case letters, digits and slashes (a command's: and underscores, as create_atoms);
 #   - every header has the include guard LMP_<FILE NAME>_H;
 #   - no header has a using statement (namespace, declaration or alias);
+#   - no file uses iostreams (<iostream>, <fstream>, <sstream>, ...): I/O is C stdio;
 #   - a style's header includes no library header (only C++ standard headers in <>, as
 #     <vector>): a library (Voro++) is used through the implementation file (PIMPL);
 #   - every error->all/one/warning message of a style's .cpp starts the LAMMPS way: "Fix
@@ -52,6 +53,9 @@ bad_messages() {    # FILE PREFIXES
 run() {    # DIR: 0 when src/ there follows the conventions
   dir=$1 fails=0 nstyles=0
   report() { echo "$*"; fails=$((fails + 1)); }
+  ios=$(grep -nE '^[[:space:]]*#[[:space:]]*include[[:space:]]*<(iostream|fstream|sstream|ostream|istream|iomanip)>' \
+    "$dir"/*.cpp "$dir"/*.h 2>/dev/null)
+  [ -z "$ios" ] || { echo "$ios" | sed 's|$|  (iostreams: LAMMPS does I/O with C stdio)|'; fails=$((fails + 1)); }
   for h in "$dir"/*.h; do
     [ -f "$h" ] || continue
     base=$(basename "$h" .h)
@@ -113,16 +117,16 @@ if [ "$self_test" = yes ]; then
   style_h "$t/bad/fix_wrong.h" Fix e/f FixEF LMP_FIX_WRONG_H
   printf 'void f() { error->all(FLERR, "Fix e/f ok"); }\n' > "$t/bad/fix_wrong.cpp"
   style_h "$t/bad/compute_g.h" Compute G ComputeG LMP_COMPUTE_G_H '#include <voro++.hh>'
-  printf 'void f() { error->all(FLERR, "Compute G ok"); }\n' > "$t/bad/compute_g.cpp"
+  printf '#include <sstream>\nvoid f() { error->all(FLERR, "Compute G ok"); }\n' > "$t/bad/compute_g.cpp"
   printf '#ifndef GRANPEN_HELPER_H\n#define GRANPEN_HELPER_H\nusing namespace std;\n#endif\n' > "$t/bad/helper.h"
   printf '#ifndef LMP_ALIAS_H\n#define LMP_ALIAS_H\n  using real = double;\n#endif\n' > "$t/bad/alias.h"
   out=$(run "$t/bad") && { echo "SELF-TEST FAILED: bad files accepted"; exit 1; }
   for want in "fix_c_d.h: fix c/d's class is FixCd, not FixCD" "fix_c_d.cpp:2: error message \"fix c/d: bad" \
       "fix_wrong.h: fix e/f belongs in fix_e_f.h" "style name G is not lower case" "compute_g.h: compute G belongs" \
-      "helper.h: include guard is not LMP_HELPER_H" "helper.h:3:using namespace std;" "alias.h:3:  using real" "compute_g.h:6:#include <voro++.hh>"; do
+      "helper.h: include guard is not LMP_HELPER_H" "helper.h:3:using namespace std;" "alias.h:3:  using real" "compute_g.h:6:#include <voro++.hh>" "compute_g.cpp:1:#include <sstream>"; do
     case "$out" in *"$want"*) ;; *) echo "SELF-TEST FAILED: \"$want\" not reported in: $out"; exit 1 ;; esac
   done
-  echo "self-test passed: 9 breaches reported, 2 good styles and a helper accepted"
+  echo "self-test passed: 10 breaches reported, 2 good styles and a helper accepted"
   exit 0
 fi
 
