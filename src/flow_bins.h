@@ -1,4 +1,21 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: granpen developers
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANPEN package: the flow fields about the rod, binned in (r, z), as pure
    kernels (no LAMMPS type, no I/O). Written once, called by compute
    flow/azimuthal (one frame, sums reduced over MPI ranks) and by the
@@ -21,8 +38,8 @@
    C++11, like the rest of src/ (the package route compiles it into LAMMPS).
 ------------------------------------------------------------------------- */
 
-#ifndef GRANPEN_FLOW_BINS_H
-#define GRANPEN_FLOW_BINS_H
+#ifndef LMP_FLOW_BINS_H
+#define LMP_FLOW_BINS_H
 
 #include <cstddef>
 #include <vector>

@@ -118,5 +118,5 @@ restore_contact_history
     COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${np} $<TARGET_FILE:lmp_granpen> -in ${deck} -log none)
   set_tests_properties(error_restore_history_too_many_np${np} PROPERTIES ENVIRONMENT "${GRANPEN_TEST_ENV}"
     LABELS "lammps;errors" PROCESSORS ${np} PASS_REGULAR_EXPRESSION
-    "ERROR.*restore_contact_history: the restart holds 2 gran/hertz/history contact histories but the pair style defines 1")
+    "ERROR.*Restore_contact_history: the restart holds 2 gran/hertz/history contact histories but the pair style defines 1")
 endforeach()
