@@ -1,4 +1,21 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: granpen developers
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANPEN package: the bed surface height z_s, as defined by the bench
    scenario: the mean, over an N x N grid of columns spanning the box in
    x and y, of the highest grain top (z + radius) in each column.
@@ -6,8 +23,8 @@
    MPI_MAX, then surface_from_columns() takes the mean.
 ------------------------------------------------------------------------- */
 
-#ifndef GRANPEN_BED_SURFACE_H
-#define GRANPEN_BED_SURFACE_H
+#ifndef LMP_BED_SURFACE_H
+#define LMP_BED_SURFACE_H
 
 #include <cstddef>
 #include <vector>

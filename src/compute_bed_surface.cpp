@@ -1,4 +1,21 @@
 /* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: granpen developers
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANPEN package: compute bed/surface
 
    z_s: mean over an N x N grid of columns spanning the box in x, y of the
@@ -12,6 +29,7 @@
 #include "error.h"
 #include "granpen_compat.h"
 #include "rod_bed_measure.h"
+#include "scaling_laws.h"
 #include "update.h"
 
 #include <cmath>
@@ -22,7 +40,7 @@ using namespace LAMMPS_NS;
 static constexpr int NVECTOR = 5;
 
 ComputeBedSurface::ComputeBedSurface(LAMMPS *lmp, int narg, char **arg) :
-    Compute(lmp, narg, arg), ngrid(4), floor_z(0.0)
+    Compute(lmp, narg, arg), ngrid(granpen::SURFACE_COLUMNS), floor_z(0.0)
 {
   int iarg = 3;
   while (iarg < narg) {

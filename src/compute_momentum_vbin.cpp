@@ -1,4 +1,21 @@
 /* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: granpen developers
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANPEN package: compute momentum/vbin
 
    Global array: for the grains of the group in a selection (outside a
@@ -22,6 +39,7 @@
 #include "momentum_class_limits.h"
 #include "region.h"
 #include "rod_bed_measure.h"
+#include "scaling_laws.h"
 #include "update.h"
 
 #include <algorithm>
@@ -39,7 +57,7 @@ static constexpr int NDEFAULT = granpen::MOMENTUM_NCLASS;
 ComputeMomentumVbin::ComputeMomentumVbin(LAMMPS *lmp, int narg, char **arg) :
     Compute(lmp, narg, arg), v0(0.0), drive(nullptr), region(nullptr), have_axis(false),
     have_rmin(false), axis_user{0.0, 0.0}, rmin_user(0.0), xaxis(0.0), yaxis(0.0), rmin(0.0),
-    cylinder(false), logbins(false), nclass(NDEFAULT), mu(0.3), g_user(-1.0),
+    cylinder(false), logbins(false), nclass(NDEFAULT), mu(granpen::DEFAULT_MU), g_user(-1.0),
     gmag(0.0), tally_step(-1), mmove(0.0)
 {
   if (narg < 4) error->all(FLERR, "Illegal compute momentum/vbin command: missing v0");

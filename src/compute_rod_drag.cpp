@@ -1,4 +1,21 @@
 /* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: granpen developers
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANPEN package: compute rod/drag
 
    Global vector: the grains' force on a rod (z, x, y), the number of
@@ -18,6 +35,7 @@
 #include "neigh_list.h"
 #include "pair.h"
 #include "rod_bed_measure.h"
+#include "scaling_laws.h"
 #include "update.h"
 
 #include <cmath>
@@ -31,7 +49,7 @@ static constexpr int NVECTOR = 7;
 
 ComputeRodDrag::ComputeRodDrag(LAMMPS *lmp, int narg, char **arg) :
     Compute(lmp, narg, arg), drive(nullptr), grainbit(1), surface(0.0), v0(0.0), diameter(-1.0),
-    g_user(-1.0), have_surface(false), have_v0(false), alpha(35.0), mu(0.3), rho_g(-1.0),
+    g_user(-1.0), have_surface(false), have_v0(false), alpha(35.0), mu(granpen::DEFAULT_MU), rho_g(-1.0),
     gmag(0.0)
 {
   int iarg = 3;
@@ -136,8 +154,9 @@ void ComputeRodDrag::compute_vector()
   vector[2] = sum[1];
   vector[3] = sum[3];
   vector[4] = depth;
-  vector[5] = (g > 0.0) ? depth / speed * std::sqrt(g / dia) : 0.0;
-  const double fz = alpha * mu * rho_g * g * dia * dia * depth;
+  const double t = granpen::t_tilde(depth, speed, g, dia);
+  vector[5] = std::isfinite(t) ? t : 0.0;
+  const double fz = granpen::k_z_from_alpha(alpha, mu, rho_g, g, dia) * depth;
   vector[6] = (depth > 0.0 && fz > 0.0) ? sum[2] / fz : 0.0;
 }
 

@@ -1,4 +1,21 @@
 /* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: granpen developers
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANPEN package: create_rod command
 
    create_rod type D length sphere spacing x y ztip shell|filled [density rho]
@@ -62,6 +79,11 @@ void CreateRod::command(int narg, char **arg)
     }
   }
 
+  // a rod as wide as the box would overlap its own periodic images (or stick out of walls)
+  for (int d = 0; d < 2; d++)
+    if (spec.diameter >= domain->boxhi[d] - domain->boxlo[d])
+      error->all(FLERR, "Create_rod: rod diameter {} is not below the box width {} in {}", spec.diameter,
+                 domain->boxhi[d] - domain->boxlo[d], "xy"[d]);
   std::vector<::granpen::RodSphere> spheres;
   try {
     spheres = ::granpen::build_rod(spec);

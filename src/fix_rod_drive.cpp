@@ -1,4 +1,21 @@
 /* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: granpen developers
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANPEN package: fix rod/drive
 
    Moves the atoms of a rod rigidly downward at speed v0 (optionally after a
@@ -21,6 +38,7 @@
 #include "memory.h"
 #include "modify.h"
 #include "rod_bed_measure.h"
+#include "scaling_laws.h"
 #include "timer.h"
 #include "trace_writer.h"
 #include "update.h"
@@ -38,7 +56,7 @@ static constexpr int NVECTOR = 9;
 /* ---------------------------------------------------------------------- */
 
 FixRodDrive::FixRodDrive(LAMMPS *lmp, int narg, char **arg) :
-    Fix(lmp, narg, arg), grainbit(1), grain_group("all"), surface_auto(true), surface_grid(4), depth_max(-1.0),
+    Fix(lmp, narg, arg), grainbit(1), grain_group("all"), surface_auto(true), surface_grid(granpen::SURFACE_COLUMNS), depth_max(-1.0),
     at_depth(AT_DEPTH_STOP), ramp(0.0), mount(false), kmount(0.0), cmount(0.0), mmount(0.0),
     rate(10000.0), g_user(-1.0), d_user(-1.0), elapsed(0.0), t_base(0.0), step_base(0), rod_disp(0.0), rod_vel(0.0),
     act_pos(0.0), act_vel(0.0), rod_acc(0.0), held_act(0.0), held(false), surface(0.0),
@@ -234,8 +252,8 @@ void FixRodDrive::init()
                  other->id, other->style);
     if (comm->me == 0)
       error->warning(FLERR,
-                     "Fix {} applies gravity to {} rod atoms: fix rod/drive's force then "
-                     "includes their weight",
+                     "Fix rod/drive: fix {} applies gravity to {} rod atoms, so the "
+                     "measured force includes their weight",
                      other->id, nboth);
   }
 

@@ -1,4 +1,21 @@
 /* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: granpen developers
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANPEN package: flow fields binned in (r, z) (flow_bins.h).
 ------------------------------------------------------------------------- */
 
@@ -130,34 +147,40 @@ double inertial_number(double gammadot, double p, double d_g, double rho_g)
   return p > 0.0 ? gammadot * d_g / std::sqrt(p / rho_g) : 0.0;
 }
 
+double ring_volume(double r1, double r2, double dz) { return PI * (r2 * r2 - r1 * r1) * dz; }
+
+void bin_moments(const double *g, double vbin, double frames, double stress_frames, bool voronoi, FlowBin &row)
+{
+  const double nf = frames > 0.0 ? frames : 1.0;
+  const double nfs = stress_frames > 0.0 ? stress_frames : 1.0;
+  const double M = g[FS_MASS];
+  row.count = g[FS_COUNT] / nf;
+  row.mass = M / nf;
+  row.phi_centre = g[FS_VOL] / (vbin * nf);
+  row.phi_voronoi = (voronoi && g[FS_VOR] > 0.0) ? g[FS_VOL_VOR] / g[FS_VOR] : 0.0;
+  row.vr = M > 0.0 ? g[FS_MVR] / M : 0.0;
+  row.vz = M > 0.0 ? g[FS_MVZ] / M : 0.0;
+  row.vtheta = M > 0.0 ? g[FS_MVT] / M : 0.0;
+  row.T = granular_temperature(g[FS_MV2], M, row.vr, row.vz, row.vtheta);
+  row.p = stress_frames > 0.0 ? -g[FS_TRS] / (3.0 * vbin * nfs) : 0.0;
+  row.sigma_zz = stress_frames > 0.0 ? -g[FS_SZZ] / (vbin * nfs) : 0.0;
+  row.rbar = M > 0.0 ? g[FS_MR] / M : row.r;
+  row.zbar = M > 0.0 ? g[FS_MZ] / M : row.z;
+}
+
 std::vector<FlowBin> flow_bins_from_sums(const FlowGrid &G, const double *sums, double frames,
                                          double stress_frames, bool voronoi, double d_g, double rho_g)
 {
   std::vector<FlowBin> bins((std::size_t) G.bins());
-  const double nf = frames > 0.0 ? frames : 1.0;
-  const double nfs = stress_frames > 0.0 ? stress_frames : 1.0;
   for (int iz = 0; iz < G.nz; ++iz)
     for (int ir = 0; ir < G.nr; ++ir) {
       const std::size_t b = (std::size_t) iz * G.nr + ir;
       const double *g = &sums[b * FLOW_NSUM];
       FlowBin &row = bins[b];
       const double r1 = G.rmin + ir * G.dr, r2 = r1 + G.dr;
-      const double vbin = PI * (r2 * r2 - r1 * r1) * G.dz;
-      const double M = g[FS_MASS];
       row.r = 0.5 * (r1 + r2);
       row.z = G.zlo + (iz + 0.5) * G.dz;
-      row.count = g[FS_COUNT] / nf;
-      row.mass = M / nf;
-      row.phi_centre = g[FS_VOL] / (vbin * nf);
-      row.phi_voronoi = (voronoi && g[FS_VOR] > 0.0) ? g[FS_VOL_VOR] / g[FS_VOR] : 0.0;
-      row.vr = M > 0.0 ? g[FS_MVR] / M : 0.0;
-      row.vz = M > 0.0 ? g[FS_MVZ] / M : 0.0;
-      row.vtheta = M > 0.0 ? g[FS_MVT] / M : 0.0;
-      row.T = granular_temperature(g[FS_MV2], M, row.vr, row.vz, row.vtheta);
-      row.p = stress_frames > 0.0 ? -g[FS_TRS] / (3.0 * vbin * nfs) : 0.0;
-      row.sigma_zz = stress_frames > 0.0 ? -g[FS_SZZ] / (vbin * nfs) : 0.0;
-      row.rbar = M > 0.0 ? g[FS_MR] / M : row.r;
-      row.zbar = M > 0.0 ? g[FS_MZ] / M : row.z;
+      bin_moments(g, ring_volume(r1, r2, G.dz), frames, stress_frames, voronoi, row);
     }
   shear_rate_and_inertial_number(G, bins, d_g, rho_g);
   return bins;

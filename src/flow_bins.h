@@ -1,4 +1,21 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: granpen developers
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANPEN package: the flow fields about the rod, binned in (r, z), as pure
    kernels (no LAMMPS type, no I/O). Written once, called by compute
    flow/azimuthal (one frame, sums reduced over MPI ranks) and by the
@@ -21,8 +38,8 @@
    C++11, like the rest of src/ (the package route compiles it into LAMMPS).
 ------------------------------------------------------------------------- */
 
-#ifndef GRANPEN_FLOW_BINS_H
-#define GRANPEN_FLOW_BINS_H
+#ifndef LMP_FLOW_BINS_H
+#define LMP_FLOW_BINS_H
 
 #include <cstddef>
 #include <vector>
@@ -102,6 +119,17 @@ struct FlowBin {
   {
   }
 };
+
+// The volume of a ring r1 <= r < r2 of height dz: pi (r2^2 - r1^2) dz.
+double ring_volume(double r1, double r2, double dz);
+
+// The moments of one ring of volume `volume` from its FLOW_NSUM sums pooled over `frames`
+// frames: count, mass and phi_centre means per frame; phi_voronoi when `voronoi`; v_r, v_z,
+// v_theta and T mass-weighted (0 for an empty ring); p and sigma_zz means over the
+// stress_frames that had stress (0 without); rbar, zbar mass-weighted (row.r and row.z,
+// set by the caller, when empty). gammadot and I are left as they are.
+void bin_moments(const double *sums, double volume, double frames, double stress_frames, bool voronoi,
+                 FlowBin &row);
 
 // The bins' moments from sums pooled over `frames` frames (grid.bins() * FLOW_NSUM
 // doubles): counts, mass, phi and p are means per frame (p over the stress_frames that

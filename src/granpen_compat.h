@@ -1,4 +1,21 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: granpen developers
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANPEN package: every difference between the LAMMPS versions granpen
    builds against lives here, keyed on LAMMPS_VERSION_NUMBER (yyyymmdd),
    which CMake derives from the LAMMPS it compiles against (see
@@ -124,9 +141,9 @@ inline bool sphere_atoms(const Atom *atom)
 // (commit 8b89c330, LAMMPS PR #4037, merged 15 Jan 2024). For a future
 // `dof_t dof(int) override;` -- no GRANPEN fix overrides dof() today.
 #if LAMMPS_VERSION_NUMBER >= 20240207
-using dof_t = bigint;
+typedef bigint dof_t;
 #else
-using dof_t = int;
+typedef int dof_t;
 #endif
 
 

@@ -1,4 +1,21 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: granpen developers
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANPEN package: the vertical-speed classes of the paper's "Temporal
    Flows" section, as pure kernels (no LAMMPS type, no I/O). Written once,
    called by compute momentum/vbin and by the post-processor's
@@ -12,8 +29,8 @@
    logbins keyword live here too. C++11, like the rest of src/.
 ------------------------------------------------------------------------- */
 
-#ifndef GRANPEN_MOMENTUM_CLASS_LIMITS_H
-#define GRANPEN_MOMENTUM_CLASS_LIMITS_H
+#ifndef LMP_MOMENTUM_CLASS_LIMITS_H
+#define LMP_MOMENTUM_CLASS_LIMITS_H
 
 #include <vector>
 

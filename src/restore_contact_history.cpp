@@ -1,4 +1,21 @@
 /* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: granpen developers
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANPEN package: restore_contact_history command
 
    restore_contact_history
@@ -81,7 +98,7 @@ void RestoreContactHistory::command(int narg, char ** /*arg*/)
     return;
   }
   if (pending.size() > fresh.size())
-    error->all(FLERR, "restore_contact_history: the restart holds {} gran/hertz/history contact histories but "
+    error->all(FLERR, "Restore_contact_history: the restart holds {} gran/hertz/history contact histories but "
                       "the pair style defines {} (a restart of another contact law?)",
                pending.size(), fresh.size());
   for (size_t k = 0; k < pending.size(); ++k) {

@@ -1,4 +1,21 @@
 /* ----------------------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: granpen developers
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANPEN package: rod and bed measurements shared by the styles.
 ------------------------------------------------------------------------- */
 
@@ -6,11 +23,13 @@
 
 #include "atom.h"
 #include "bed_surface.h"
+#include "comm.h"
 #include "domain.h"
 #include "fix.h"
 #include "granpen_compat.h"
 #include "lammps.h"
 #include "modify.h"
+#include "rod_shape.h"
 
 #include <cmath>
 #include <cstring>
@@ -25,38 +44,48 @@ static constexpr double FOUR_THIRDS_PI = 4.18879020478639098;
 gp::RodShape gp::measure_rod(LAMMPS *lmp, int groupbit)
 {
   Atom *atom = lmp->atom;
+  Domain *domain = lmp->domain;
   double **x = atom->x;
   double *radius = atom->radius;
   int *mask = atom->mask;
   const int nlocal = atom->nlocal;
 
-  double local[3] = {0.0, 0.0, 0.0}, sum[3];
-  for (int i = 0; i < nlocal; i++)
-    if (mask[i] & groupbit) {
-      local[0] += 1.0;
-      local[1] += x[i][0];
-      local[2] += x[i][1];
-    }
-  MPI_Allreduce(local, sum, 3, MPI_DOUBLE, MPI_SUM, lmp->world);
-
+  // the reference atom: the first of the group on the lowest rank that has one, so that
+  // every rank takes the offsets from the same point (a rod across a periodic boundary)
+  int first = -1;
+  for (int i = 0; i < nlocal && first < 0; i++)
+    if (mask[i] & groupbit) first = i;
+  struct {
+    double missing;
+    int rank;
+  } mine = {first < 0 ? 1.0 : 0.0, lmp->comm->me}, owner;
+  MPI_Allreduce(&mine, &owner, 1, MPI_DOUBLE_INT, MPI_MINLOC, lmp->world);
   RodShape s;
-  s.count = static_cast<bigint>(sum[0]);
-  if (s.count == 0) return s;
-  s.xc = sum[1] / sum[0];
-  s.yc = sum[2] / sum[0];
+  if (owner.missing > 0.5) return s;
+  double ref[2] = {first >= 0 ? x[first][0] : 0.0, first >= 0 ? x[first][1] : 0.0};
+  MPI_Bcast(ref, 2, MPI_DOUBLE, owner.rank, lmp->world);
+  const ::granpen::RodImageFrame frame{ref[0], ref[1], domain->xperiodic ? domain->xprd : 0.0,
+                                       domain->yperiodic ? domain->yprd : 0.0};
 
-  // one MAX reduction: outer radius and -(lowest point)
-  double lmax[2] = {0.0, -std::numeric_limits<double>::max()}, gmax[2];
+  ::granpen::RodAxisSums local = ::granpen::rod_axis_start(), sums;
   for (int i = 0; i < nlocal; i++)
-    if (mask[i] & groupbit) {
-      double rad = radius ? radius[i] : 0.0;
-      double r = std::hypot(x[i][0] - s.xc, x[i][1] - s.yc) + rad;
-      if (r > lmax[0]) lmax[0] = r;
-      if (-(x[i][2] - rad) > lmax[1]) lmax[1] = -(x[i][2] - rad);
-    }
-  MPI_Allreduce(lmax, gmax, 2, MPI_DOUBLE, MPI_MAX, lmp->world);
-  s.D = 2.0 * gmax[0];
-  s.ztip = -gmax[1];
+    if (mask[i] & groupbit) ::granpen::rod_axis_add(local, frame, x[i][0], x[i][1]);
+  MPI_Allreduce(local.v, sums.v, 3, MPI_DOUBLE, MPI_SUM, lmp->world);
+  double axis_x, axis_y;
+  ::granpen::rod_axis(sums, frame, axis_x, axis_y);
+
+  ::granpen::RodExtent lext = ::granpen::rod_extent_start(), ext;
+  for (int i = 0; i < nlocal; i++)
+    if (mask[i] & groupbit)
+      ::granpen::rod_extent_add(lext, frame, axis_x, axis_y, x[i][0], x[i][1], x[i][2], radius ? radius[i] : 0.0);
+  MPI_Allreduce(lext.v, ext.v, 2, MPI_DOUBLE, MPI_MAX, lmp->world);
+
+  const ::granpen::RodShapeXY shape = ::granpen::rod_shape(sums, ext, frame);
+  s.count = static_cast<bigint>(shape.count);
+  s.xc = shape.axis_x;
+  s.yc = shape.axis_y;
+  s.D = shape.diameter;
+  s.ztip = shape.tip;
   return s;
 }
 

@@ -1,11 +1,28 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: granpen developers
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANPEN package: measurements of the rod and the bed shared by
    fix rod/drive, compute rod/drag and compute bed/surface. Each sums or
    reduces over owned atoms and combines across ranks over world.
 ------------------------------------------------------------------------- */
 
-#ifndef LMP_GRANPEN_ROD_BED_MEASURE_H
-#define LMP_GRANPEN_ROD_BED_MEASURE_H
+#ifndef LMP_ROD_BED_MEASURE_H
+#define LMP_ROD_BED_MEASURE_H
 
 #include "lmptype.h"
 
@@ -15,7 +32,7 @@ namespace gp {
 
   struct RodShape {
     bigint count = 0;
-    double xc = 0.0, yc = 0.0;    // axis: centroid of the sphere centres in x, y
+    double xc = 0.0, yc = 0.0;    // axis: centroid of the sphere centres in x, y (nearest images)
     double D = 0.0;               // outer diameter: 2 max(r_xy + radius)
     double ztip = 0.0;            // lowest point: min(z - radius)
   };

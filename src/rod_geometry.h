@@ -1,10 +1,27 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: granpen developers
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANPEN package: geometry of a rod built from overlapping spheres.
    Pure C++ (no LAMMPS types), so it is unit-tested on its own.
 ------------------------------------------------------------------------- */
 
-#ifndef GRANPEN_ROD_GEOMETRY_H
-#define GRANPEN_ROD_GEOMETRY_H
+#ifndef LMP_ROD_GEOMETRY_H
+#define LMP_ROD_GEOMETRY_H
 
 #include <vector>
 
@@ -29,11 +46,20 @@ int ring_count(double r, double spacing);
 // Radii of the rings in one disc layer, from the axis out, ending just inside rshell.
 std::vector<double> disc_radii(double rshell, double spacing);
 
+// A rod of more spheres than this is refused (a mistyped spacing or diameter would otherwise
+// allocate without bound): the paper's rod of D = 2 cm is about 1200, a filled 10 cm rod
+// of 0.2 cm spheres about 2e5.
+constexpr double MAX_ROD_SPHERES = 1.0e7;
+
+// The number of spheres build_rod would make, without making them (in double, so that any
+// spec gives a finite count). Throws std::invalid_argument as build_rod does.
+double rod_sphere_count(const RodSpec &spec);
+
 // Sphere centres of the rod. Shell rings sit at radius D/2 - sphere/2, every
 // `spacing` in z from z = sphere/2, alternate rings rotated by half a spacing.
 // The shell is closed by a disc (rings at 0, spacing, 2 spacing, ...) in the
 // lowest layer, or in every layer when filled. Throws std::invalid_argument
-// for a spec that cannot be built.
+// for a spec that cannot be built, or of more than MAX_ROD_SPHERES spheres.
 std::vector<RodSphere> build_rod(const RodSpec &spec);
 
 }    // namespace granpen

@@ -1,11 +1,28 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: granpen developers
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANPEN package: writer of force traces in the granpen-trace v1 CSV
    format (shared/formats/trace-csv.md). Pure C++ and stdio; the caller
    decides which rank writes.
 ------------------------------------------------------------------------- */
 
-#ifndef GRANPEN_TRACE_WRITER_H
-#define GRANPEN_TRACE_WRITER_H
+#ifndef LMP_TRACE_WRITER_H
+#define LMP_TRACE_WRITER_H
 
 #include <cstdio>
 #include <string>

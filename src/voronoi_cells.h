@@ -1,4 +1,21 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: granpen developers
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANPEN package: the Voronoi cell volume of each grain, as a pure kernel
    (no LAMMPS type, no I/O; Voro++). Written once, called by compute
    flow/azimuthal ("voronoi voro++": the owned and ghost atoms of a rank, in
@@ -14,8 +31,8 @@
    and the volumes are exact. C++11, like the rest of src/.
 ------------------------------------------------------------------------- */
 
-#ifndef GRANPEN_VORONOI_CELLS_H
-#define GRANPEN_VORONOI_CELLS_H
+#ifndef LMP_VORONOI_CELLS_H
+#define LMP_VORONOI_CELLS_H
 
 #include <cstddef>
 

@@ -1,6 +1,6 @@
 // granpen subcommands: the argument helpers they share: the reading of numbers, and (for
 // flow and momentum, whose many options are read as numbers by name) an option table
-// parsed by the one parser (command.h) into ParsedArgs.
+// parsed by the one parser (subcommand.h) into ParsedArgs.
 #ifndef GRANPEN_CLI_ARGS_H
 #define GRANPEN_CLI_ARGS_H
 

@@ -141,7 +141,7 @@ bool collapse_ensembled(const std::vector<Trace> &traces, const DepthTerm &dt, c
                         const cli::EnsembleOptions &ens, std::vector<TraceGroup> &groups, EnsembleCollapse &out)
 {
   std::vector<std::string> left;
-  groups = group_traces(traces);
+  groups = group_traces(traces, ens.mean.v0_tolerance);
   average_groups(groups, ens.mean, left);
   std::vector<EnsembleCase> cases;
   std::vector<TraceGroup> kept;

@@ -3,6 +3,7 @@
 
 #include "atomic_file.h"
 #include "rod_frame.h"
+#include "scaling_laws.h"
 
 #include <cmath>
 #include <cstdio>
@@ -39,7 +40,7 @@ double frame_bed_surface(const DumpFrame &frame, const GrainFrame &g)
   const std::vector<double> &X = frame.col("x"), &Y = frame.col("y"), &Z = frame.col("z"), &R = frame.col("radius");
   int nempty = 0;
   return bed_surface(X.data(), Y.data(), Z.data(), R.data(), g.is_rod.data(), X.size(), frame.lo[0], frame.hi[0],
-                     frame.lo[1], frame.hi[1], 4, nempty);
+                     frame.lo[1], frame.hi[1], SURFACE_COLUMNS, nempty);
 }
 
 bool write_outputs(const std::string &dir, const std::vector<std::pair<std::string, std::string>> &files,

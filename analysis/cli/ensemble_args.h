@@ -16,11 +16,11 @@ namespace cli {
 // defaults (0, 1000).
 struct EnsembleOptions {
   bool on = false;          // --ensemble
-  EnsembleParams mean;      // --ensemble-bin
+  EnsembleParams mean;      // --ensemble-bin, --ensemble-v0-tolerance
   BootstrapParams boot;     // --bootstrap
 };
 
-// Adds --ensemble, --ensemble-bin and --bootstrap to cmd, bound to o.
+// Adds --ensemble, --ensemble-bin, --ensemble-v0-tolerance and --bootstrap to cmd, bound to o.
 void add_ensemble_options(Command &cmd, EnsembleOptions &o);
 // After cmd.parse: UsageError when --ensemble-bin or --bootstrap came without --ensemble.
 void check_ensemble_options(const Command &cmd, const EnsembleOptions &o);

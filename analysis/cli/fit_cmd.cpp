@@ -104,7 +104,7 @@ std::vector<granpen::TraceGroup> fit_ensembles(const std::vector<FitResult> &res
   std::vector<std::string> files, problems;
   std::map<std::string, const FitResult *> by_file;
   for (const auto &r : results) files.push_back(r.file), by_file[r.file] = &r;
-  auto groups = group_traces(read_traces(files, problems));
+  auto groups = group_traces(read_traces(files, problems), ens.mean.v0_tolerance);
   average_groups(groups, ens.mean, problems);
   for (const auto &p : problems) std::printf("granpen fit: %s\n", p.c_str());
   for (const auto &g : groups) {

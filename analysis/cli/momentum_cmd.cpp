@@ -8,6 +8,7 @@
 #include "momentum_study.h"
 #include "momentum_tables.h"
 #include "rod_frame.h"
+#include "scaling_laws.h"
 #include "subcommands.h"
 
 #include <cmath>
@@ -59,7 +60,7 @@ MomentumStudyParams resolve_parameters(const MomentumOptions &o, const PushTrace
   else if (th.have_mu) p.mu = th.mu, how.mu_source = "trace";
   p.D = tr.D, how.D_source = "trace";
   if (args.number("--D", p.D)) how.D_source = "option";
-  how.rho_g = 3.0, how.rho_g_source = "default";
+  how.rho_g = DEFAULT_RHO_G, how.rho_g_source = "default";
   if (args.number("--rho", how.rho_g)) how.rho_g_source = "option";
   else if (th.have_rho) how.rho_g = th.rho_g, how.rho_g_source = "trace";
   p.by_time = args.has("--push-step");

@@ -161,6 +161,8 @@ struct ImportOptions : ParsedCommand {
   std::string mapping, out_dir;
   bool si = false;
   double D = 0.0, g = 0.0, v0 = 0.0, window = 0.0;
+  std::string v0_table;                                // file -> nominal v0 ("" none)
+  double speed_tolerance = 0.0, end_tolerance = 0.0;   // 0: the mapping's
   std::string d_g, rho_g, mu;
   int first_run = 1;
   bool dry_run = false;

@@ -5,6 +5,7 @@
 #include "collapse.h"
 
 #include "linear_fit.h"
+#include "scaling_laws.h"
 
 #include <algorithm>
 #include <cmath>
@@ -90,14 +91,13 @@ CollapseResult collapse(const std::vector<CollapseInput> &inputs, const Collapse
     CollapseCurve c;
     c.name = in.name;
     c.v0 = in.v0, c.D = in.D, c.g = in.g, c.k_z = in.k_z;
-    const double scale = std::sqrt(in.g / in.D) / in.v0;
     std::vector<double> zs, ts, rs;
     for (std::size_t i = 0; i < in.z.size(); ++i) {
       const double z = in.z[i];
-      if (z > 0.0 && z < 0.35 * in.D && in.F[i] > c.peak) c.peak = in.F[i], c.peak_z = z;
+      if (z > 0.0 && z < peak_regime_end(in.D) && in.F[i] > c.peak) c.peak = in.F[i], c.peak_z = z;
       if (z < p.zmin) continue;
       zs.push_back(z);
-      ts.push_back(z * scale);
+      ts.push_back(t_tilde(z, in.v0, in.g, in.D));
       rs.push_back(in.F[i] / (in.k_z * z));
     }
     auto bz = binned(zs, rs, p.zbin), bt = binned(ts, rs, p.tbin);

@@ -23,6 +23,10 @@ namespace granpen {
 struct EnsembleParams {
   double bin = 0.0;      // bin width, cm; <= 0: the largest median depth step of the runs
   bool align = true;     // shift the runs to their mean force onset first
+  // grouping (io/ensemble_tables): > 0: runs whose v0 lie within this fraction of the
+  // slowest of their group are one case (a lab's measured speeds about one nominal);
+  // 0: v0 equal to 6 digits
+  double v0_tolerance = 0.0;
 };
 
 struct EnsembleMean {

@@ -18,7 +18,6 @@ namespace granpen {
 
 namespace {
 
-constexpr double PI = 3.14159265358979323846;
 // a slice's sums: the flow sums of its bin, then m v_z^2 (for the standard error of v_z)
 constexpr int S_MVZ2 = FLOW_NSUM, NSACC = FLOW_NSUM + 1;
 
@@ -125,22 +124,20 @@ void SliceAccumulator::add(const GrainArrays &g, const AxisFrame &a)
 std::vector<SliceBin> SliceAccumulator::bins() const
 {
   std::vector<SliceBin> out((std::size_t) nz_);
-  const double nf = frames_ > 0 ? (double) frames_ : 1.0;
-  const double ring = PI * (spec_.r2 * spec_.r2 - spec_.r1 * spec_.r1) * spec_.dz;
+  const double ring = ring_volume(spec_.r1, spec_.r2, spec_.dz);
   for (int iz = 0; iz < nz_; ++iz) {
     const double *g = &acc_[(std::size_t) iz * NSACC];
     SliceBin &b = out[(std::size_t) iz];
     const double M = g[FS_MASS], n = g[FS_COUNT];
-    b.z = spec_.zlo + (iz + 0.5) * spec_.dz;
+    FlowBin m;    // the ring's moments, as the flow bins' (no stress in a slice)
+    m.z = b.z = spec_.zlo + (iz + 0.5) * spec_.dz;
+    bin_moments(g, ring, (double) frames_, 0.0, have_voronoi(), m);
     b.samples = n;
-    b.count = n / nf;
-    b.phi_centre = g[FS_VOL] / (ring * nf);
-    b.phi_voronoi = (have_voronoi() && g[FS_VOR] > 0.0) ? g[FS_VOL_VOR] / g[FS_VOR] : 0.0;
+    b.count = m.count;
+    b.phi_centre = m.phi_centre;
+    b.phi_voronoi = m.phi_voronoi;
+    b.vr = m.vr, b.vz = m.vz, b.vtheta = m.vtheta, b.T = m.T;
     if (!(M > 0.0)) continue;
-    b.vr = g[FS_MVR] / M;
-    b.vz = g[FS_MVZ] / M;
-    b.vtheta = g[FS_MVT] / M;
-    b.T = granular_temperature(g[FS_MV2], M, b.vr, b.vz, b.vtheta);
     const double var = std::max(0.0, g[S_MVZ2] / M - b.vz * b.vz);
     b.vz_se = n >= 2.0 ? std::sqrt(var / (n - 1.0)) : 0.0;
   }

@@ -2,6 +2,7 @@
 #include "flow_study.h"
 
 #include "rod_frame.h"
+#include "scaling_laws.h"
 
 #include <algorithm>
 #include <cmath>
@@ -51,7 +52,7 @@ double given_or(double v, double otherwise) { return std::isfinite(v) ? v : othe
 
 double flow_grain_density(const FlowParamChoice &rho_g, std::string &origin)
 {
-  return pick(rho_g, 3.0, "default", origin);
+  return pick(rho_g, DEFAULT_RHO_G, "default", origin);
 }
 
 FlowStudyParams flow_study_params(const FlowParamSources &s, FlowParamOrigins &from)

@@ -82,6 +82,26 @@ double block_speed(const ImportRow &first, const ImportRow &last, double v_sum, 
   return last.t > first.t ? (last.x - first.x) / (last.t - first.t) : NAN;
 }
 
+double DepthClock::next(double x, double v, long line)
+{
+  if (!std::isfinite(x) || !std::isfinite(v)) throw ImportRejected(line, "a value is not finite");
+  if (!started_) {
+    started_ = true;
+    x_ = x, v_ = v;
+    return t_;
+  }
+  const double dx = x - x_, vm = 0.5 * (v + v_);
+  if (!(dx > 0.0))
+    throw ImportRejected(line, "depth does not advance (" + num(x) + " after " + num(x_) +
+                                   "): t = the integral of dz / v needs a row per depth step, going down");
+  if (!(vm > 0.0))
+    throw ImportRejected(line, "speed " + num(v) + " after " + num(v_) +
+                                   ": t = the integral of dz / v needs a positive speed");
+  t_ += dx / vm;
+  x_ = x, v_ = v;
+  return t_;
+}
+
 // ---- pass 1
 void PushScan::add(const std::vector<ImportRow> &rows)
 {
@@ -93,7 +113,8 @@ void PushScan::add(const std::vector<ImportRow> &rows)
       throw ImportRejected(r.line, "time does not increase (" + num(r.t) + " s after " + num(last_t_) + " s)");
     last_t_ = r.t;
     last_line_ = r.line;
-    if (tared_) {
+    if (tared_ || rules_.tare_rows == 0) {    // tare_rows = 0: no offset (tare stays 0)
+      tared_ = true;
       row(r);
       continue;
     }
@@ -207,16 +228,19 @@ void SpeedProfile::close_block()
       run_t_ = last_.t;
       run_depth_ = rules_.has_position ? last_.x - lim_.surface : rules_.v0 * (last_.t - lim_.surface);
     }
-    if (run_ >= 2) {
-      if (std::isnan(ramp_.ramp_t)) {
-        ramp_.ramp_t = run_t_;
-        ramp_.ramp_depth = run_depth_;
-      }
-      ramp_.cut_line = last_.line;
-      ramp_.cut_t = last_.t;
+    if (run_ >= 2 && std::isnan(ramp_.ramp_t)) {
+      ramp_.ramp_t = run_t_;
+      ramp_.ramp_depth = run_depth_;
     }
   } else {
     run_ = 0;
+  }
+  // still moving, once at speed: not below the mean by end_tolerance. The push ends after
+  // the last such block, so a deceleration (a fall that does not come back) is cut and a
+  // slow drift of a few percent is kept (and reported by the speed statistics)
+  if (std::isfinite(ramp_.ramp_t) && std::isfinite(s) && s >= (1.0 - rules_.end_tolerance) * std::fabs(ref)) {
+    ramp_.cut_line = last_.line;
+    ramp_.cut_t = last_.t;
   }
   n_ = 0;
   v_sum_ = 0.0;
@@ -245,7 +269,7 @@ TraceBuilder::TraceBuilder(const ImportRules &rules, const PushLimits &lim, cons
   }
   sum_.limits = lim;
   sum_.ramp = ramp;
-  sum_.speed.measured = rules.has_position || rules.has_speed;
+  sum_.speed.measured = (rules.has_position || rules.has_speed) && rules.has_time;
 }
 
 double TraceBuilder::depth(const ImportRow &r) const
@@ -349,14 +373,17 @@ ImportSummary TraceBuilder::finish(std::vector<TracePoint> &out)
     if (sg.n >= 2) {
       s.push_back(block_speed(sg.first, sg.last, sg.v_sum, sg.n, rules_.has_speed));
       line.push_back(sg.first.line);
+      st.profile.push_back({depth(sg.first), depth(sg.last), s.back()});
     }
   const double tol = rules_.speed_tolerance;
   st.worst = 0.0;
   for (double v : s) st.worst = std::max(st.worst, std::fabs(v - st.mean) / std::fabs(st.mean));
   // two speeds: the segments before segment j and those after it (j itself may hold the
   // change) each constant within the tolerance about their own means, and those means
-  // apart by more than it; each side at least two segments, so that what is left of a
-  // ramp or a deceleration is not a second speed
+  // apart by more than it, and so are the two segments beside j: a step, where a slow
+  // drift (a few percent over several segments) changes little from one segment to the
+  // next; each side at least two segments, so that what is left of a ramp or a
+  // deceleration is not a second speed
   for (std::size_t j = 2; j + 3 <= s.size() && st.worst > tol; ++j) {
     double a = 0.0, b = 0.0;
     for (std::size_t i = 0; i < s.size(); ++i)
@@ -366,7 +393,8 @@ ImportSummary TraceBuilder::finish(std::vector<TracePoint> &out)
     bool flat = true;
     for (std::size_t i = 0; i < s.size(); ++i)
       if (i != j) flat = flat && std::fabs(s[i] - (i < j ? a : b)) <= tol * std::fabs(i < j ? a : b);
-    if (flat && std::fabs(a - b) > tol * 0.5 * std::fabs(a + b))
+    const bool step = std::fabs(s[j + 1] - s[j - 1]) > tol * 0.5 * std::fabs(s[j + 1] + s[j - 1]);
+    if (flat && step && std::fabs(a - b) > tol * 0.5 * std::fabs(a + b))
       throw ImportRejected(line[j], "two speeds in one file: " + num(a) + " until about this line, " + num(b) +
                                         " after it (one push speed per trace)");
   }

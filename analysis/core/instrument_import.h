@@ -44,10 +44,26 @@ struct ImportRow {
   long line = 0;
 };
 
+// t of a depth-sampled log (a row per depth step, a measured speed, no time): the
+// integral of dz / v over the rows, each step at the mean speed of its two rows,
+// t_i = t_(i-1) + (x_i - x_(i-1)) / ((v_i + v_(i-1)) / 2); t = 0 at the first row. The
+// mean of the two speeds keeps a step finite when one of its rows stands still.
+class DepthClock {
+ public:
+  // the row's t; throws ImportRejected(line) when the depth does not advance or the
+  // step's mean speed is not positive
+  double next(double x, double v, long line);
+
+ private:
+  bool started_ = false;
+  double x_ = 0.0, v_ = 0.0, t_ = 0.0;
+};
+
 // How a push is read (all in the trace's units).
 struct ImportRules {
   bool has_position = false;      // a displacement/depth column (else depth = v0 (t - t_surface))
   bool has_speed = false;         // a measured-speed column
+  bool has_time = true;           // false: t is the row index (ordering only), no speed is measured
   std::size_t tare_rows = 50;     // force offset = mean force of the first tare_rows rows (0: none)
   double onset_force = NAN;       // contact: first row with tared F >= this (> 0)
   bool surface_given = false;     // surface: the position (or, without one, the time) below
@@ -57,6 +73,7 @@ struct ImportRules {
   double end_time = NAN;          // rows after this raw time are cut (NaN: by the rule)
   std::size_t speed_rows = 50;    // rows per block of the speed profile
   double speed_tolerance = 0.05;  // relative: speed constant within this
+  double end_tolerance = 0.15;    // relative: a block this far below the mean is stopping (the end cut)
   double window = 0.0;            // > 0: average into windows of this length (s)
 };
 
@@ -100,7 +117,8 @@ class PushScan {
 struct SpeedRamp {
   double ramp_depth = NAN;        // depth at the end of the first of two blocks at speed (NaN: never)
   double ramp_t = NAN;            // raw time there
-  long cut_line = 0;              // last row kept: the end of the last block at speed (after one) <= end_line
+  long cut_line = 0;              // last row kept: the end of the last block still moving (within
+                                  // end_tolerance of the mean) after the ramp, <= end_line
   double cut_t = NAN;             // raw time of that row
   std::size_t blocks = 0;
 };
@@ -136,6 +154,12 @@ struct SpeedStats {
   double ripple = NAN;            // standard deviation of the block speeds / mean
   double worst = NAN;             // largest |segment speed - mean| / mean
   bool constant = true;           // worst <= tolerance and ripple <= tolerance
+  // the speed against depth: each of the SEGMENTS equal times of the push at speed (those
+  // of at least two rows), its depth range and speed
+  struct Segment {
+    double z_from, z_to, speed;
+  };
+  std::vector<Segment> profile;
 };
 
 struct ImportSummary {

@@ -2,6 +2,7 @@
 #include "momentum_study.h"
 
 #include "rod_frame.h"
+#include "scaling_laws.h"
 
 #include <cmath>
 

@@ -6,6 +6,7 @@
 #define GRANPEN_MOMENTUM_STUDY_H
 
 #include "momentum_classes.h"
+#include "scaling_laws.h"
 
 #include <string>
 #include <vector>
@@ -15,7 +16,7 @@ namespace granpen {
 struct MomentumStudyParams {
   MomentumClasses classes;
   double v0 = 0.0, g = 0.0, D = 0.0;    // the trace's v0 and g, the rod diameter
-  double mu = 0.3;                      // friction for mu g M
+  double mu = DEFAULT_MU;               // friction for mu g M
   double z_s = 0.0;                     // bed surface: z_tip = z_s - tip
   bool by_time = false;                 // F at t = (timestep - push_step) dt, else at the depth
   long long push_step = 0;

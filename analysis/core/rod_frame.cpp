@@ -5,47 +5,36 @@
 #include "rod_frame.h"
 
 #include "bed_surface.h"
+#include "rod_shape.h"
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <vector>
 
 namespace granpen {
-
-namespace {
-double nearest(double d, double period)
-{
-  return period > 0.0 ? d - period * std::round(d / period) : d;
-}
-}    // namespace
 
 RodPosition find_rod(const double *x, const double *y, const double *z, const double *radius,
                      const double *type, std::size_t n, int rod_type, double period_x, double period_y)
 {
   RodPosition rod;
-  double x0 = 0.0, y0 = 0.0, sx = 0.0, sy = 0.0;
   std::vector<std::size_t> atoms;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (std::lround(type[i]) != rod_type) continue;
-    if (atoms.empty()) x0 = x[i], y0 = y[i];
-    atoms.push_back(i);
-    sx += nearest(x[i] - x0, period_x);
-    sy += nearest(y[i] - y0, period_y);
-  }
+  for (std::size_t i = 0; i < n; ++i)
+    if (std::lround(type[i]) == rod_type) atoms.push_back(i);
   if (atoms.empty()) return rod;
+  const RodImageFrame frame{x[atoms[0]], y[atoms[0]], period_x, period_y};
+  RodAxisSums sums = rod_axis_start();
+  for (std::size_t i : atoms) rod_axis_add(sums, frame, x[i], y[i]);
+  double axis_x, axis_y;
+  rod_axis(sums, frame, axis_x, axis_y);
+  RodExtent extent = rod_extent_start();
+  for (std::size_t i : atoms) rod_extent_add(extent, frame, axis_x, axis_y, x[i], y[i], z[i], radius[i]);
+  const RodShapeXY shape = rod_shape(sums, extent, frame);
   rod.found = true;
   rod.atoms = atoms.size();
-  rod.axis_x = x0 + sx / (double) atoms.size();
-  rod.axis_y = y0 + sy / (double) atoms.size();
-  rod.tip = std::numeric_limits<double>::infinity();
-  double rmax = 0.0;
-  for (std::size_t i : atoms) {
-    rod.tip = std::min(rod.tip, z[i] - radius[i]);
-    const double dx = nearest(x[i] - rod.axis_x, period_x), dy = nearest(y[i] - rod.axis_y, period_y);
-    rmax = std::max(rmax, std::sqrt(dx * dx + dy * dy) + radius[i]);
-  }
-  rod.diameter = 2.0 * rmax;
+  rod.axis_x = shape.axis_x;
+  rod.axis_y = shape.axis_y;
+  rod.tip = shape.tip;
+  rod.diameter = shape.diameter;
   return rod;
 }
 
@@ -67,13 +56,6 @@ double bed_surface(const double *x, const double *y, const double *z, const doub
   }
   column_max_tops(grid, gx.data(), gy.data(), top.data(), gx.size(), colmax);
   return surface_from_columns(colmax, nempty);
-}
-
-double t_tilde(double z, double v0, double g, double D)
-{
-  if (!(v0 > 0.0 && g > 0.0 && D > 0.0) || !std::isfinite(v0) || !std::isfinite(g) || !std::isfinite(D))
-    return std::numeric_limits<double>::quiet_NaN();
-  return z / v0 * std::sqrt(g / D);
 }
 
 }    // namespace granpen

@@ -3,11 +3,12 @@
    and the bed surface, on plain arrays (no files).
    - find_rod: the rod's atoms (one type): axis = mean x, y of their centres
      (nearest periodic images of the first), tip = lowest z - radius, diameter
-     D = 2 max(r_xy + radius), as fix rod/drive measures its rod;
+     D = 2 max(r_xy + radius): src/rod_shape.h, the kernel fix rod/drive measures
+     its rod with;
    - bed_surface: z_s as compute bed/surface and fix rod/drive's surface auto
      define it: the mean over an n x n grid of columns spanning the box of the
-     highest grain top (z + radius) in each column (src/bed_surface.h);
-   - t_tilde: the paper's scaled time (z / v0) sqrt(g / D).
+     highest grain top (z + radius) in each column (src/bed_surface.h).
+   t~ and the other scaling relations: src/scaling_laws.h.
 ------------------------------------------------------------------------- */
 
 #ifndef GRANPEN_ROD_FRAME_H
@@ -36,9 +37,6 @@ RodPosition find_rod(const double *x, const double *y, const double *z, const do
 double bed_surface(const double *x, const double *y, const double *z, const double *radius,
                    const char *skip, std::size_t n, double xlo, double xhi, double ylo, double yhi,
                    int ncolumns, int &nempty);
-
-// (z / v0) sqrt(g / D); NaN unless v0, g and D are positive and finite.
-double t_tilde(double z, double v0, double g, double D);
 
 }    // namespace granpen
 

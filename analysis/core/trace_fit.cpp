@@ -5,6 +5,7 @@
 #include "trace_fit.h"
 
 #include "linear_fit.h"
+#include "scaling_laws.h"
 
 #include <unsupported/Eigen/FFT>
 
@@ -233,8 +234,8 @@ TraceFit fit_trace(const std::vector<double> &z, const std::vector<double> &F, c
                       " cm (at least 3 at distinct depths needed; deepest z = " + fmt(zdeep) + " cm)");
   }
 
-  // alpha = k_z / (mu rho_g g D^2)
-  const double scale = p.mu * p.rho_g * p.g * p.D * p.D;
+  // alpha = k_z / (mu rho_g g D^2): k_z's scale at alpha = 1
+  const double scale = k_z_from_alpha(1.0, p.mu, p.rho_g, p.g, p.D);
   if (r.slope_ok && scale > 0.0 && std::isfinite(scale)) {
     r.alpha_ok = true;
     r.alpha = r.k_z / scale;

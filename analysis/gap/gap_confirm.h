@@ -1,8 +1,10 @@
-// granpen gap, stage 8 (confirm): the top effect simulated at its fitted magnitude on
-// fresh beds no fit has seen, the gap after, the verdict kept only when those runs remove
-// the gap (docs/gap.md, "Verdict", "How far it shrinks"), and the refinement of a
-// magnitude the confirming runs show to be off. Without an explained verdict (or with
-// --fit-only) the "after" is the "before".
+// granpen gap, stage 9 (confirm): the top effect simulated at its fitted magnitude on fresh
+// beds no fit has seen, and what those runs say: the gap after, whether they confirm the
+// effect, and the refinement of a magnitude they show to be off. The stage decides no
+// verdict (gap_verdict.h reads its ConfirmationResult) and launches no simulation: it
+// returns the runs it needs (RunsNeeded) and is called again with them, the simulate stage
+// (gap_sims.h, simulate_needed) running them between the calls. docs/gap.md, "Verdict",
+// "How far it shrinks".
 #ifndef GRANPEN_GAP_CONFIRM_H
 #define GRANPEN_GAP_CONFIRM_H
 
@@ -12,20 +14,14 @@
 #include "gap_fit.h"
 #include "gap_result.h"
 #include "gap_sims.h"
+#include "gap_verdict.h"
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace granpen {
-
-// What the confirmation simulates with: the scenario (a preset name), the measured speeds
-// as the decks get them, the runner (out_root: the scenario's cache).
-struct SimContext {
-  std::string scenario;
-  std::vector<std::string> v0s;
-  RunnerOptions runner;
-};
 
 // The "after" set to the "before" (the corrected curves the baseline's, G_all and its parts
 // after = before), the reference runs as the baseline files, and the held-out speed: the one
@@ -35,50 +31,84 @@ void after_is_before(const RunsBySpeed &fresh, Diagnosis &d);
 // Fresh runs at magnitude a against the measurement: G and G_spec after (means over speeds;
 // runs: the fewest per speed), chi^2 over every feature, and the gap along the effect's
 // signature u = M(a) - M(0), num / sqrt(uu) standard deviations (num / uu: the leftover's
-// coefficient on u).
+// coefficient on u); per speed the corrected curve on the grid's bins, and the runs' files.
+struct SpeedAfter {
+  int n = 0;
+  std::vector<double> mean, se;     // per bin
+  double G = 0, G_spec = 0;
+};
 struct AfterRuns {
   double G = 0, G_spec = 0, chi2 = 0, num = 0, uu = 0;
   int runs = 0;
+  std::vector<SpeedAfter> speeds;
+  std::vector<std::string> files;
   double sigma() const;
   double all() const { return gap_all(G, G_spec); }
 };
 
-// Aligns the runs (at the measured speeds' onsets), sets the corrected curves, G and G_spec
-// after per speed and d.corrected_files; throws InputError when a speed has no runs.
-AfterRuns evaluate_after(RunsBySpeed &runs, double a, const EffectData &ed, const Features &f, const Alignment &al,
-                         Diagnosis &d);
+// Aligns the runs (at the measured speeds' onsets) and evaluates them; throws InputError
+// when a speed has no runs.
+AfterRuns evaluate_after(RunsBySpeed &runs, double a, const EffectData &ed, const Features &f, const Alignment &al);
 
 // The gap along e's signature at magnitude a against the reference, in standard deviations.
 double signature_sigma(const EffectData &ed, double a, const Features &f);
 
 // Whether runs with chi^2 chi2a (and proj_a sigma along the signature) confirm the effect:
-// omnibus route: chi^2 drops by more than 3 sigma of its noise and by a quarter of the
-// excess; targeted route: the squared projection drops by at least 9 and chi^2 does not
-// grow beyond its noise.
-bool confirms(const Diagnosis &d, double chi2a, double proj_a);
+// omnibus route: chi^2 drops by more than chi2_noise_sigmas of its noise and by
+// confirm_excess_removed of the excess; targeted route: the squared projection drops by at
+// least confirm_projection_drop2 and chi^2 does not grow beyond its noise (gap_thresholds.h).
+// The numbers: the route (targeted), chi^2 before over nfeatures, the projection before.
+bool confirms(bool targeted, double chi2_0, std::size_t nfeatures, double proj_before, double chi2a, double proj_a);
+bool confirms(const Diagnosis &d, double chi2a, double proj_a);    // the numbers of d
 
-// Whether confirming runs with G_all after `after` shrink the measured gap `before` to at
-// most half (issue 21's "how far it shrinks"). A confirmation by chi^2 or along the
-// signature whose G_all does not shrink so is the mark of a confident wrong answer (the
-// effect's own signature noise fitted, or a look-alike's part of the gap: the synthetic
-// friction case named polydispersity, G_all 0.088 -> 0.074), so the stage keeps
-// `explained` only when this holds.
-constexpr double GAP_SHRINK_EXPLAINED = 0.5;
-bool gap_shrinks(double before, double after);
+// A second simulation after the first runs fell short (the record its note is made from):
+// refine (the first runs left a significant part along the signature: linear response) or
+// refit (between knots, the first runs taken as a knot).
+struct SecondRuns {
+  enum class Why { refine, refit } why = Why::refine;
+  double first_magnitude = 0, second_magnitude = 0;
+  double first_proj = 0, first_chi2 = 0, first_gap = 0;
+  bool first_confirmed = false;
+  bool decides = false;          // these runs decide the confirmation
+  AfterRuns second;
+};
 
-// The stage: for an explained verdict, simulates (through the sweep layer) and judges the
-// top effect, refines its magnitude when the runs call for it, and turns the verdict into
-// unexplained when they do not confirm it; with fit_only, marks the verdict provisional.
-// For an unexplained verdict with d.between_knots (gap_verdict.h) and a fitted magnitude
-// away from every knot, it simulates the top candidate there the same way: explained when
-// the runs confirm it and halve G_all both over all speeds and at the held-out speed (the
-// fits' own test of that speed failed or fell short), else unexplained, as before. When
-// those first runs fall short, they become a knot, every speed is fitted again with it, and
-// the new magnitude is simulated once more on REFINE_SEEDS; those runs decide.
-// Returns the runs that are the "after" (aligned; empty when nothing was simulated).
-RunsBySpeed confirm_top_effect(const std::map<std::string, const Effect *> &by_name,
-                        const std::map<std::string, EffectData> &data, const Features &f, const Alignment &al,
-                        const SimContext &sim, bool fit_only, Diagnosis &d);
+// The stage's result: what the verdict reads, and the "after" it leaves.
+struct Confirmation {
+  ConfirmationResult outcome;
+  std::string effect, unit;      // the effect named at a magnitude ("" when none is)
+  double magnitude = 0;          // final (refined) magnitude
+  std::string tested_effect;     // simulated on fresh beds
+  double heldout_magnitude = 0, heldout_after = 0;
+  double confirmed_fraction = 0;
+  std::optional<SecondRuns> second;
+  AfterRuns after;               // the runs adopted as the "after"
+  RunsBySpeed after_runs;        // ... aligned (empty when nothing was simulated)
+  std::string corrected_effect;  // a transform effect's "after": the output transforms its traces
+  double corrected_magnitude = 0;
+};
+
+// One call of the stage: either the runs it needs next, or (need empty) its result.
+struct ConfirmStep {
+  std::optional<RunsNeeded> need;
+  Confirmation done;
+};
+
+// For an explained verdict, judges the top effect on its fresh runs (refining its magnitude
+// when they call for it); with fit_only, simulates nothing (the verdict is then
+// provisional). For the fits' unexplained that is between_knots (gap_verdict.h) at a fitted
+// magnitude away from every knot, judges the top candidate there the same way; when those
+// first runs do not explain the gap they become a knot, every speed is fitted again with
+// them, and the new magnitude is simulated once more on REFINE_SEEDS; those runs decide.
+// d: the fits' state (ranking, verdict, the gap before); given: the runs simulated so far
+// for earlier steps (by tag).
+ConfirmStep confirm_top_effect(const std::map<std::string, const Effect *> &by_name,
+                               const std::map<std::string, EffectData> &data, const Features &f, const Alignment &al,
+                               bool fit_only, const Diagnosis &d, const StageRuns &given);
+
+// The confirmation's numbers into the diagnosis (magnitude, gap after, corrected curves and
+// files, the refinement, its note); not the verdict (gap_verdict.h, record_verdict).
+void record_confirmation(const Confirmation &c, Diagnosis &d);
 
 }    // namespace granpen
 

@@ -2,6 +2,7 @@
 
 #include "collapse.h"
 #include "gap_metric.h"
+#include "scaling_laws.h"
 #include "linear_fit.h"
 #include "trace_fit.h"
 
@@ -164,7 +165,7 @@ RunObservables run_observables(const std::vector<double> &z, const std::vector<d
   if (rf.ok)
     for (std::size_t b = 0; b < grid.nbins(); ++b) {
       const double zc = grid.centre(b);
-      if (zc > 0.35 * D && zc <= z_transient_end) o.excess += (rf.x[b] - o.k_z * zc) * grid.w;
+      if (zc > peak_regime_end(D) && zc <= z_transient_end) o.excess += (rf.x[b] - o.k_z * zc) * grid.w;
     }
   if (o.k_z > 0.0) {
     CollapseInput in;

@@ -4,6 +4,7 @@
 
 #include "effects.h"
 #include "gap_align.h"
+#include "scaling_laws.h"
 #include "gap_confirm.h"
 #include "gap_errors.h"
 #include "gap_features.h"
@@ -146,6 +147,24 @@ int run_array_task(const std::vector<SimRequest> &req, RunnerOptions runner, int
   return run_sweeps({req[t.request]}, runner) == 0 ? 0 : 1;
 }
 
+// The confirmation and the verdict that stands: the confirmation asks for its runs, the
+// simulate stage runs them, and it is asked again until it needs none; then the verdict from
+// the fits' evidence and the confirmation's result.
+Confirmation confirm_and_decide(const std::map<std::string, const Effect *> &by_name, const FittedCandidates &fitted,
+                                const Features &f, const Alignment &al, const SimContext &sim, bool fit_only, Diagnosis &d)
+{
+  StageRuns simulated;
+  ConfirmStep step = confirm_top_effect(by_name, fitted.data, f, al, fit_only, d, simulated);
+  while (step.need) {
+    simulate_needed(*step.need, *by_name.at(step.need->effect), sim, simulated);
+    step = confirm_top_effect(by_name, fitted.data, f, al, fit_only, d, simulated);
+  }
+  record_confirmation(step.done, d);
+  const VerdictDecision verdict = decide_verdict(fitted.evidence, &step.done.outcome);
+  record_verdict(verdict, confirmation_verdict_notes(verdict, fitted.evidence, step.done.outcome), d);
+  return std::move(step.done);
+}
+
 }    // namespace
 
 int run_gap(const GapOptions &given, const GapProgressFn &fn)
@@ -211,7 +230,7 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   d.notes = measured.notes;
   d.notes.insert(d.notes.end(), al.notes.begin(), al.notes.end());
   d.grid = al.grid;
-  d.peak_end = 0.35 * sc.D;
+  d.peak_end = peak_regime_end(sc.D);
   const Features f = build_features(measured.runs, sims, effects, al.grid, measured.files.size());
   d.notes.insert(d.notes.end(), f.notes.begin(), f.notes.end());
   d.n_reference = f.n_reference;
@@ -227,7 +246,8 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   progress.say(GapProgress::STEP, "which", format_text("fitting %zu candidate effects", effects.size()), 3, 4);
   std::map<std::string, const Effect *> by_name;
   for (const Effect *e : effects) by_name[e->name] = e;
-  const auto data = fit_candidates(effects, f, [&](const std::string &sweep) { return mean_phi0(cache, sweep); }, d);
+  const FittedCandidates fitted = fit_candidates(effects, f, [&](const std::string &sweep) { return mean_phi0(cache, sweep); }, d);
+  const auto &data = fitted.data;
   for (std::size_t i = 0; i < d.ranking.size(); ++i) {
     const EffectFit &r = d.ranking[i];
     progress.say(GapProgress::DETAIL, "which",
@@ -240,21 +260,23 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   // confirm: the top effect on fresh seeds
   progress.say(GapProgress::STEP, "confirm",
                d.between_knots && !d.ranking.empty() ? "simulating " + d.ranking[0].name + " between its knots on fresh seeds"
-               : d.verdict != "explained"            ? "no effect to confirm"
+               : d.verdict != Verdict::explained     ? "no effect to confirm"
                : opt.fit_only                        ? "not confirming (--fit-only)"
                                                      : "confirming " + d.top_effect + " on fresh seeds",
                4, 4);
   after_is_before(sims.fresh, d);
-  const RunsBySpeed after = confirm_top_effect(by_name, data, f, al, SimContext{sc.name, measured.v0s, runner}, opt.fit_only, d);
+  const Confirmation confirmation =
+      confirm_and_decide(by_name, fitted, f, al, SimContext{sc.name, measured.v0s, runner}, opt.fit_only, d);
+  const RunsBySpeed &after = confirmation.after_runs;
   how_blind(effects, data, f, d);    // after the confirmation: the next measurement follows the final verdict
 
   // report: what the gap left over, G per regime, the output
   residual_stage(f, measured.runs, sims.fresh, after, data, al.grid, d);
-  gap_by_regime(al.grid, sc.D, d);
+  d.gap_by_regime = gap_by_regime(al.grid, d.peak_end, d.speeds);
   write_gap_output(d, opt.out);
   progress.say(GapProgress::INFO, "report",
                format_text("verdict %s%s; G_all %.3f -> %.3f (%d measured runs per speed at least, %d simulated); %s",
-                      d.verdict.c_str(),
+                      verdict_name(d.verdict),
                       !d.tie.empty() ? (" (" + tie_names(d.tie) + ")").c_str()
                       : d.top_effect.empty() ? ""
                                              : (" (" + d.top_effect + ", magnitude " + printf_number("%.4g", d.magnitude) + ")").c_str(),

@@ -1,12 +1,16 @@
 // granpen gap: the diagnosis from measured traces and the simulation cache to OUT/
 // (diagnosis.json, report.md, baseline/, corrected/), as a sequence of stages with typed
-// results, each in its own file:
-//   validate (gap_inputs.h)  -> plan (gap_plan.h) -> simulate (gap_sims.h, through the
-//   sweep layer) -> align and bin (gap_align.h) -> features and noise model
-//   (gap_features.h) -> where (gap_where.h) -> which: fit, verdict (gap_which.h,
-//   gap_verdict.h) -> confirm (gap_confirm.h) -> report (gap_report.h).
-// The numerics are in gap_data.h and gap_fit.h. Progress goes through a callback
-// (gap_progress.h): the library prints nothing.
+// results, each in its own file, numbered in the order they run (docs/gap.md, "Stages"):
+//    1 validate (gap_inputs.h)        2 plan (gap_plan.h)
+//    3 simulate (gap_sims.h: through the sweep layer; also the runs later stages ask for)
+//    4 align and bin (gap_align.h)    5 features and noise model (gap_features.h)
+//    6 where (gap_where.h)            7 which: the fits (gap_which.h)
+//    8 verdict (gap_verdict.h: the one owner; on the fits, then with the confirmation)
+//    9 confirm (gap_confirm.h: asks 3 for its runs, returns a typed result to 8)
+//   10 limits (gap_limits.h)         11 residual (gap_residual.h)
+//   12 report (gap_report.h)
+// The thresholds are one table (gap_thresholds.h); the numerics are in gap_data.h and
+// gap_fit.h. Progress goes through a callback (gap_progress.h): the library prints nothing.
 #ifndef GRANPEN_GAP_DIAGNOSIS_H
 #define GRANPEN_GAP_DIAGNOSIS_H
 

@@ -148,7 +148,7 @@ double explained_fraction(double w0, double w, double n)
 {
   if (!(w0 > 0.0)) return 0.0;
   if (!(n > 0.0)) return 1.0 - w / w0;
-  const double excess = std::max(w0 - n, 3.0 * std::sqrt(2.0 * n));
+  const double excess = std::max(w0 - n, GapThresholds::chi2_noise_sigmas * std::sqrt(2.0 * n));
   return std::min(1.0, (w0 - w) / excess);
 }
 
@@ -245,7 +245,7 @@ EffectFit fit_effect(const Target &t, const EffectData &e)
     const double c0 = effect_chi2(t, e, 0.0, {h});
     // a speed counts when its own gap stands out of the noise (chi^2 above p + 3 sigma)
     double ex_h = std::numeric_limits<double>::quiet_NaN();
-    if (c0 - p > 3.0 * std::sqrt(2.0 * p)) {
+    if (c0 - p > GapThresholds::chi2_noise_sigmas * std::sqrt(2.0 * p)) {
       ex_h = explained_fraction(weighted_residual(t, e, 0.0, {h}), weighted_residual(t, e, a, {h}), noise_of(e, {h}));
     }
     f.loso_explained.push_back(ex_h);
@@ -272,7 +272,7 @@ std::vector<double> noise_residual(const std::vector<Target> &nulls, const Effec
   return n;
 }
 
-double lr_threshold(double lr_null_mean) { return std::max(1.0, lr_null_mean) * LR_CHI2_1_P1E4; }
+double lr_threshold(double lr_null_mean) { return std::max(1.0, lr_null_mean) * GapThresholds::lr_chi2_1_p1e4; }
 
 double chi2_sf(double x, double k)
 {

@@ -10,6 +10,8 @@
 #ifndef GRANPEN_GAP_FIT_H
 #define GRANPEN_GAP_FIT_H
 
+#include "gap_thresholds.h"
+
 #include <limits>
 #include <string>
 #include <utility>
@@ -109,9 +111,8 @@ double refined_magnitude(const EffectData &e, double a, double c);
 double effect_lr(const Target &t, const EffectData &e);
 
 // The targeted test's threshold: an effect is detected when its lr exceeds
-// max(1, lr_null_mean) times the chi^2(1) quantile of p = 1e-4 (15.14; over about 7 effects
-// a family-wise 1e-3, as the omnibus test).
-constexpr double LR_CHI2_1_P1E4 = 15.137;
+// max(1, lr_null_mean) times the chi^2(1) quantile of p = 1e-4 (GapThresholds::lr_chi2_1_p1e4,
+// 15.14; over about 7 effects a family-wise 1e-3, as the omnibus test).
 double lr_threshold(double lr_null_mean);
 
 // The likelihood ratio beyond what noise gives along the effect's signature (the null mean's
@@ -119,8 +120,7 @@ double lr_threshold(double lr_null_mean);
 // part of any noise, and this is the evidence two candidates are compared by.
 inline double lr_evidence(const EffectFit &f) { return f.lr - (f.lr_null_mean > 1.0 ? f.lr_null_mean - 1.0 : 0.0); }
 
-// Two candidates are told apart by an evidence margin of 6 (a likelihood ratio of e^3 = 20).
-constexpr double EVIDENCE_MARGIN = 6.0;
+// Two candidates are told apart by an evidence margin (GapThresholds::evidence_margin).
 
 // Per speed, the mean over null replicates (measurements without any effect) of the
 // weighted squared residual at magnitude 0: for EffectData::noise_r2.

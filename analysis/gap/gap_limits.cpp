@@ -1,4 +1,4 @@
-// granpen gap, stage 7b (limits): see gap_limits.h.
+// granpen gap, stage 10 (limits): see gap_limits.h.
 #include "gap_limits.h"
 
 #include <algorithm>
@@ -144,7 +144,7 @@ std::vector<LookAlike> look_alikes(const std::vector<EffectFit> &ranking, const 
         // the one at its reference stands |u| sin(angle) off the other's best multiple
         l.separation = std::sqrt(std::min(aa, bb) * (1.0 - c * c));
       }
-      l.look_alike = l.separation * l.separation < EVIDENCE_MARGIN;
+      l.look_alike = l.separation * l.separation < GapThresholds::evidence_margin;
       l.fit_separation = std::sqrt(prediction_separation2(A, ranking[i].magnitude, B, ranking[j].magnitude, f.target, now));
       out.push_back(l);
     }
@@ -179,8 +179,8 @@ std::vector<KnotBend> knot_bends(const EffectData &ed, const Target &t)
       }
     }
     b.bend2_sd = std::sqrt(b.bend2_sd);
-    b.earns_cost = b.bend2 >= EVIDENCE_MARGIN;
-    b.resolved = b.bend2 + 2.0 * b.bend2_sd < EVIDENCE_MARGIN || b.bend2 - 2.0 * b.bend2_sd >= EVIDENCE_MARGIN;
+    b.earns_cost = b.bend2 >= GapThresholds::evidence_margin;
+    b.resolved = b.bend2 + 2.0 * b.bend2_sd < GapThresholds::evidence_margin || b.bend2 - 2.0 * b.bend2_sd >= GapThresholds::evidence_margin;
     out.push_back(b);
   }
   return out;
@@ -226,19 +226,19 @@ NextMeasurement best_runs(const Features &f, double target, Value value)
 
 std::optional<NextMeasurement> next_measurement(const std::vector<EffectFit> &ranking,
                                                 const std::map<std::string, EffectData> &data, const Features &f,
-                                                const std::string &verdict)
+                                                Verdict verdict)
 {
-  if (ranking.empty() || f.nspeeds() == 0 || verdict == "explained") return std::nullopt;
+  if (ranking.empty() || f.nspeeds() == 0 || verdict == Verdict::explained) return std::nullopt;
   const EffectFit &top = ranking[0];
   if (ranking.size() > 1) {
     const EffectFit &second = ranking[1];
     const EffectData &A = data.at(top.name), &B = data.at(second.name);
-    const bool contest = verdict == "tie" || top.detected || second.detected;
+    const bool contest = verdict == Verdict::tie || top.detected || second.detected;
     auto sep = [&](const NoiseFactors &fac) {
       return prediction_separation2(A, top.magnitude, B, second.magnitude, f.target, fac);
     };
-    if (contest && sep(ones(f.target)) < EVIDENCE_MARGIN) {
-      NextMeasurement m = best_runs(f, EVIDENCE_MARGIN, sep);
+    if (contest && sep(ones(f.target)) < GapThresholds::evidence_margin) {
+      NextMeasurement m = best_runs(f, GapThresholds::evidence_margin, sep);
       m.goal = "separate";
       m.effects = {top.name, second.name};
       return m;

@@ -1,4 +1,4 @@
-// granpen gap, stage 7b (limits): how blind the diagnosis was, and what would see more.
+// granpen gap, stage 10 (limits): how blind the diagnosis was, and what would see more.
 // From the signatures already simulated (the knots) and the measured data's noise, no new
 // simulation:
 // - detection limits: per candidate, the smallest magnitude whose signature the targeted
@@ -17,6 +17,7 @@
 #include "effects.h"
 #include "gap_features.h"
 #include "gap_fit.h"
+#include "gap_verdict.h"
 
 #include <map>
 #include <optional>
@@ -85,8 +86,8 @@ struct KnotBend {
   // 4 mu^2 v, features taken as independent, so a lower bound): where it is as large as the
   // margin, the knots' noise hides whether the knot is needed
   double bend2_sd = 0;
-  bool earns_cost = false; // bend2 >= EVIDENCE_MARGIN: the knot is needed at this noise
-  bool resolved = false;   // bend2 + 2 sd < EVIDENCE_MARGIN or bend2 - 2 sd >= it: the answer is not the knots' noise
+  bool earns_cost = false; // bend2 >= GapThresholds::evidence_margin: the knot is needed at this noise
+  bool resolved = false;   // bend2 + 2 sd < GapThresholds::evidence_margin or bend2 - 2 sd >= it: the answer is not the knots' noise
 };
 
 // Every interior knot of the effect (knots with a neighbour on both sides, the baseline of a
@@ -106,13 +107,13 @@ struct NextMeasurement {
 
 // The next measurement after a verdict: nothing after `explained`; after a `tie`, or an
 // `unexplained` whose top two contend (either detected), the runs that bring their fitted
-// predictions EVIDENCE_MARGIN apart; else (`none`, or no contest) for the undetected
+// predictions GapThresholds::evidence_margin apart; else (`none`, or no contest) for the undetected
 // candidate nearest its threshold (the largest lr / threshold) the runs that would detect
 // it at the magnitude its likelihood ratio now says (the signature whose expected ratio is
 // the measured one). None when there is no such candidate.
 std::optional<NextMeasurement> next_measurement(const std::vector<EffectFit> &ranking,
                                                 const std::map<std::string, EffectData> &data, const Features &f,
-                                                const std::string &verdict);
+                                                Verdict verdict);
 
 }    // namespace granpen
 

@@ -4,6 +4,7 @@
 
 #include "effects.h"
 #include "gap_plan.h"
+#include "gap_thresholds.h"
 #include "atomic_file.h"
 #include "json_writer.h"
 #include "plot_writer.h"
@@ -190,7 +191,7 @@ Json residual_json(const std::optional<Residual> &r)
 Json diagnosis_json(const Diagnosis &d)
 {
   Json j;
-  j["verdict"] = d.verdict;
+  j["verdict"] = verdict_name(d.verdict);
   j["top_effect"] = str_or_null(d.top_effect);
   j["magnitude"] = d.top_effect.empty() ? Json() : num(d.magnitude);
   j["magnitude_unit"] = str_or_null(d.magnitude_unit);
@@ -210,7 +211,7 @@ Json diagnosis_json(const Diagnosis &d)
                            {"significant", d.significant},
                            {"route", !d.significant ? Json() : Json(d.targeted ? "targeted" : "omnibus")},
                            {"null_replicates", d.n_null}};
-  j["confirmed"] = d.verdict != "explained" ? Json() : Json(!d.provisional);
+  j["confirmed"] = d.verdict != Verdict::explained ? Json() : Json(!d.provisional);
   j["confirmation"] = confirmation_json(d);
   j["refinement"] = !d.refined ? Json()
                                : Json{{"from", num(d.refined_from)},
@@ -236,6 +237,10 @@ Json diagnosis_json(const Diagnosis &d)
   j["next_measurement"] = next_json(d.next);
   j["residual"] = residual_json(d.residual);
   j["notes"] = d.notes;
+  // the rules' thresholds the verdict was decided by (gap_thresholds.h)
+  Json thresholds = Json::object();
+  for (const auto &[name, value] : gap_threshold_table()) thresholds[name] = num(value, "%.6g");
+  j["thresholds"] = thresholds;
   return j;
 }
 
@@ -400,7 +405,7 @@ std::string md_summary(const Diagnosis &d)
                             : d.top_effect.empty()
                                 ? ""
                                 : " — " + d.top_effect + " at magnitude " + f3(d.magnitude, "%.4g") + " (" + d.magnitude_unit + ")";
-  md += format_text("**Verdict: %s%s**%s.  \n", d.verdict.c_str(), d.provisional ? " (provisional: not confirmed, --fit-only)" : "",
+  md += format_text("**Verdict: %s%s**%s.  \n", verdict_name(d.verdict), d.provisional ? " (provisional: not confirmed, --fit-only)" : "",
                     named.c_str());
   const GapParts &b = d.parts_before, &a = d.parts_after;
   md += format_text("Overall gap G_all (shared/formats/gap-metric.md v2): %.3f before, %.3f after%s; its parts: G (bin "
@@ -464,7 +469,7 @@ std::string md_which(const Diagnosis &d)
                   "least 1. Bold: above it. Evidence: the likelihood ratio less the null mean's excess over 1 (what "
                   "a noisy signature fits of any noise); candidates are ranked by it and told apart by a margin of "
                   "6.\n",
-               d.n_reference, LR_CHI2_1_P1E4, d.n_null);
+               d.n_reference, GapThresholds::lr_chi2_1_p1e4, d.n_null);
   return md;
 }
 
@@ -503,7 +508,7 @@ std::string md_blind(const Diagnosis &d)
                       "at its reference value stands off the other's best multiple, the smaller way round; below "
                       "sqrt(%g) the evidence cannot tell them apart (a look-alike). Separation of the fits: between the "
                       "two fitted predictions.\n",
-                      EVIDENCE_MARGIN);
+                      GapThresholds::evidence_margin);
   }
   if (d.next && d.next->goal == "separate" && !(d.next->after > 0)) {
     md += format_text("\n**Next measurement**: no number of measured runs separates %s from %s: their fitted "
@@ -578,55 +583,6 @@ void write_gap_report(const Diagnosis &d, const std::string &dir)
   write_file_atomic(dir + "/report.md", report_markdown(d, figures, failures));
 }
 
-void gap_by_regime(const GapGrid &grid, double D, Diagnosis &d)
-{
-  const std::size_t nb = grid.nbins();
-  for (const char *reg : {"peak", "transient", "linear"}) {
-    double sb = 0, sa = 0;
-    int n = 0;
-    for (const auto &c : d.speeds) {
-      std::size_t b0 = 0, b1 = 0;
-      for (std::size_t b = 0; b < nb; ++b) {
-        const double z = grid.centre(b);
-        const std::string r = z <= 0.35 * D ? "peak" : (z <= c.z_transient_end ? "transient" : "linear");
-        if (r == reg) {
-          if (b1 == 0) b0 = b;
-          b1 = b + 1;
-        }
-      }
-      if (b1 == 0) continue;
-      Ensemble R, B, C;
-      R.mean = c.real, B.mean = c.base, C.mean = c.corr;
-      R.runs.resize(1), B.runs.resize(1), C.runs.resize(1);    // the debiasing is in the overall G
-      sb += gap_metric(R, B, b0, b1);
-      sa += gap_metric(R, C, b0, b1);
-      ++n;
-    }
-    if (n) d.gap_by_regime[reg] = {sb / n, sa / n};
-  }
-}
-
-namespace {
-
-// A transform effect's corrected run as a trace file: the source's header (a line `derived`
-// said), t and z, its F transformed (in the file's units: the transform is linear)
-std::string transformed_trace_text(const std::string &path, const Effect &e, double a)
-{
-  const Trace t = read_trace(path);
-  TraceHeader h;
-  h.units = t.units, h.v0 = t.v0, h.D = t.D, h.g = t.g;
-  for (const auto &[k, v] : t.keys)
-    if (k != "units" && k != "v0" && k != "D" && k != "g") h.extra.emplace_back(k, v);
-  h.extra.emplace_back("derived", e.name + " " + deck_number(a) + ": F transformed by granpen gap (analysis/gap/effects.cpp)");
-  const double dt = t.t.size() > 1 ? (t.t.back() - t.t.front()) / (double) (t.t.size() - 1) : 1.0;
-  const std::vector<double> F = e.transform(t.F, dt, a);
-  std::string text = format_trace_header(h);
-  for (std::size_t i = 0; i < F.size(); ++i) text += format_trace_row({t.t[i], t.z[i], F[i]});
-  return text;
-}
-
-}    // namespace
-
 void write_gap_output(const Diagnosis &d, const std::string &out_dir)
 {
   const fs::path out = out_dir, part = fs::path(out_dir + ".partial");
@@ -643,11 +599,9 @@ void write_gap_output(const Diagnosis &d, const std::string &out_dir)
     fs::create_directories(part / "baseline");
     fs::create_directories(part / "corrected");
     copy_all(d.baseline_files, part / "baseline");
-    const Effect *derived = d.corrected_effect.empty() ? nullptr : find_effect(d.corrected_effect);
-    if (derived && derived->transform && !d.corrected_files.empty())
-      for (const auto &f : d.corrected_files)
-        write_file_atomic((part / "corrected" / (sweep_of_trace(f) + "_" + fs::path(f).filename().string())).string(),
-                          transformed_trace_text(f, *derived, d.corrected_magnitude));
+    // a transform effect's corrected runs were computed by the confirmation (corrected_traces)
+    if (!d.corrected_traces.empty())
+      for (const auto &[name, text] : d.corrected_traces) write_file_atomic((part / "corrected" / name).string(), text);
     else
       copy_all(d.corrected_files.empty() ? d.baseline_files : d.corrected_files, part / "corrected");
     write_gap_report(d, part.string());

@@ -1,4 +1,4 @@
-// granpen gap, stage 9 (residual): see gap_residual.h.
+// granpen gap, stage 11 (residual): see gap_residual.h.
 #include "gap_residual.h"
 
 #include "gap_features.h"
@@ -127,11 +127,13 @@ std::string why_rejected(const EffectFit &fit, const ResidualContext &ctx)
   std::vector<std::string> why;
   if (!fit.detected)
     why.push_back("its likelihood ratio " + fmt(fit.lr, "%.1f") + " is below its threshold " + fmt(fit.lr_threshold, "%.1f"));
-  if (fit.explained < 0.5) why.push_back("it explains " + fmt(fit.explained, "%.2f") + " of the gap (0.5 needed)");
-  if (fit.heldout_explained < 0.3)
-    why.push_back("it does not predict the speeds left out (" + fmt(fit.heldout_explained, "%.2f") + ", 0.3 needed)");
+  if (fit.explained < GapThresholds::explained_min)
+    why.push_back("it explains " + fmt(fit.explained, "%.2f") + " of the gap (" + fmt(GapThresholds::explained_min, "%g") + " needed)");
+  if (fit.heldout_explained < GapThresholds::heldout_explained_min)
+    why.push_back("it does not predict the speeds left out (" + fmt(fit.heldout_explained, "%.2f") + ", " +
+                  fmt(GapThresholds::heldout_explained_min, "%g") + " needed)");
   if (fit.at_edge) why.push_back("it needs a magnitude beyond its simulated range");
-  if (fit.name == ctx.tested_effect && ctx.verdict != "explained")
+  if (fit.name == ctx.tested_effect && ctx.verdict != Verdict::explained)
     why.push_back("simulated at its fitted magnitude on fresh beds, it did not shrink the gap");
   for (const auto &r : ctx.ranking) {
     if (r.name == fit.name) break;
@@ -206,7 +208,7 @@ Residual describe_residual(const ResidualSide &R, const ResidualSide &M, const G
   residual_chi2(R, M, grid, ctx, out, band_chi2, band_ratio);
   out.p_means = out.dof_means ? chi2_sf(out.chi2_means, out.dof_means) : 1.0;
   out.p_fluct = out.dof_fluct ? chi2_sf(out.chi2_fluct, out.dof_fluct) : 1.0;
-  const bool means = out.p_means < 1e-3, spec = out.p_fluct < 1e-3;
+  const bool means = out.p_means < GapThresholds::significance_p, spec = out.p_fluct < GapThresholds::significance_p;
   out.moves = means && spec ? "both" : means ? "bin means" : spec ? "spectrum" : "neither";
   if (spec && !band_chi2.empty()) {
     const std::size_t k = (std::size_t) (std::max_element(band_chi2.begin(), band_chi2.end()) - band_chi2.begin());
@@ -223,7 +225,7 @@ Residual describe_residual(const ResidualSide &R, const ResidualSide &M, const G
   // the nearest candidate: the one that explains most (after an explained verdict, of the others)
   const EffectFit *near = nullptr;
   for (const auto &r : ctx.ranking)
-    if (!(ctx.verdict == "explained" && r.name == ctx.top_effect) && (!near || r.explained > near->explained)) near = &r;
+    if (!(ctx.verdict == Verdict::explained && r.name == ctx.top_effect) && (!near || r.explained > near->explained)) near = &r;
   if (near) out.nearest = near->name, out.why_rejected = why_rejected(*near, ctx);
   return out;
 }
@@ -246,15 +248,11 @@ std::vector<const TraceRun *> pointers(const std::vector<TraceRun> &runs)
 void residual_stage(const Features &f, const RunsBySpeed &real, const RunsBySpeed &fresh, const RunsBySpeed &after,
                     const std::map<std::string, EffectData> &data, const GapGrid &grid, Diagnosis &d)
 {
-  if (d.verdict == "none") return;
-  ResidualContext ctx;
-  ctx.speeds = f.speeds;
-  for (const auto &c : d.speeds) ctx.z_transient_end.push_back(c.z_transient_end);
-  ctx.peak_end = d.peak_end;
-  ctx.verdict = d.verdict, ctx.top_effect = d.top_effect, ctx.tested_effect = d.tested_effect;
-  ctx.ranking = d.ranking;
-  ctx.n_null = d.n_null;
-  const bool explained = d.verdict == "explained";
+  if (d.verdict == Verdict::none) return;
+  std::vector<double> z_transient_end;
+  for (const auto &c : d.speeds) z_transient_end.push_back(c.z_transient_end);
+  const bool explained = d.verdict == Verdict::explained;
+  ResidualContext ctx{f.speeds, z_transient_end, d.peak_end, "", d.verdict, d.top_effect, d.tested_effect, d.ranking, d.n_null};
   const bool fitted = explained && after.empty() && data.count(d.top_effect);
   ctx.against = explained && !after.empty() ? "corrected" : fitted ? "fitted" : "baseline";
   ResidualSide R, M;

@@ -1,4 +1,4 @@
-// granpen gap, stage 9 (residual): what the gap left over looks like, so that a user can
+// granpen gap, stage 11 (residual): what the gap left over looks like, so that a user can
 // guess its cause and design the next run. Against the model the verdict leaves (the
 // confirming runs after an `explained`, the baseline on the reference beds otherwise): the
 // regimes and depth range where the bin means differ beyond 2 standard errors; whether it
@@ -13,6 +13,7 @@
 #include "gap_data.h"
 #include "gap_fit.h"
 #include "gap_runs.h"
+#include "gap_verdict.h"
 
 #include <map>
 #include <string>
@@ -76,7 +77,9 @@ std::string line_scaling(const std::vector<SpectralLine> &lines);
 struct ResidualContext {
   std::vector<double> speeds, z_transient_end;
   double peak_end = 0;
-  std::string against, verdict, top_effect, tested_effect;
+  std::string against;
+  Verdict verdict = Verdict::none;
+  std::string top_effect, tested_effect;
   std::vector<EffectFit> ranking;
   int n_null = 0;
 };

@@ -6,6 +6,7 @@
 #include "gap_fit.h"
 #include "gap_limits.h"
 #include "gap_residual.h"
+#include "gap_verdict.h"
 
 #include <map>
 #include <optional>
@@ -56,6 +57,9 @@ struct Diagnosis {
   // transform effect, effects.h: the baseline's traces filtered); "": the files as they are
   std::string corrected_effect;
   double corrected_magnitude = 0;
+  // ... and those transformed runs as the files of OUT/corrected/ (name, text; computed by
+  // the confirmation's record, so that the report only writes them)
+  std::vector<std::pair<std::string, std::string>> corrected_traces;
   double chi2_0 = 0, p_value = 1;
   double chi2_after = 0, confirmed_fraction = 0;    // the fresh runs of the tested effect
   std::size_t nfeatures = 0;
@@ -79,7 +83,8 @@ struct Diagnosis {
   std::vector<Finding> where;
   std::vector<EffectFit> ranking;           // best first
   std::map<std::string, std::string> magnitude_note;    // effect -> e.g. "phi_0 shift -0.012"
-  std::string verdict = "none", top_effect;  // top_effect "" = null; verdict "tie": see tie
+  Verdict verdict = Verdict::none;           // set by gap_verdict.cpp alone (record_verdict)
+  std::string top_effect;                    // "" = null; verdict tie: see tie
   std::vector<std::string> tie;              // "tie": the candidates (two or more) that cannot be told apart
   std::string tested_effect;                 // simulated for confirmation (even when downgraded)
   double magnitude = 0;

@@ -12,6 +12,7 @@ double speed_key(double v0) { return std::round(v0 * 1e6) / 1e6; }
 
 TraceRun run_of_trace(const Trace &trace)
 {
+  require_t(trace, "granpen gap (its fluctuation bands are in time)");
   const Trace t = to_cgs(trace);
   TraceRun r;
   r.path = trace.path;

@@ -1,10 +1,15 @@
 #include "gap_sims.h"
 
 #include "bed_info.h"
+#include "gap_plan.h"
 #include "onset_alignment.h"
 #include "sweep_cache.h"
+#include "trace_reader.h"
+#include "trace_writer.h"
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 
 namespace granpen {
 
@@ -72,6 +77,36 @@ RunsBySpeed transformed_runs(const Effect &e, double a, const RunsBySpeed &runs)
   return out;
 }
 
+namespace {
+
+// A transform effect's corrected run as a trace file: the source's header (a line `derived`
+// said), t and z, its F transformed (in the file's units: the transform is linear)
+std::string transformed_trace_text(const std::string &path, const Effect &e, double a)
+{
+  const Trace t = read_trace(path);
+  TraceHeader h;
+  h.units = t.units, h.v0 = t.v0, h.D = t.D, h.g = t.g;
+  for (const auto &[k, v] : t.keys)
+    if (k != "units" && k != "v0" && k != "D" && k != "g") h.extra.emplace_back(k, v);
+  h.extra.emplace_back("derived", e.name + " " + deck_number(a) + ": F transformed by granpen gap (analysis/gap/effects.cpp)");
+  const double dt = t.t.size() > 1 ? (t.t.back() - t.t.front()) / (double) (t.t.size() - 1) : 1.0;
+  const std::vector<double> F = e.transform(t.F, dt, a);
+  std::string text = format_trace_header(h);
+  for (std::size_t i = 0; i < F.size(); ++i) text += format_trace_row({t.t[i], t.z[i], F[i]});
+  return text;
+}
+
+}    // namespace
+
+std::vector<std::pair<std::string, std::string>> transformed_trace_files(const std::vector<std::string> &paths,
+                                                                        const Effect &e, double a)
+{
+  std::vector<std::pair<std::string, std::string>> out;
+  for (const auto &f : paths)
+    out.emplace_back(sweep_of_trace(f) + "_" + std::filesystem::path(f).filename().string(), transformed_trace_text(f, e, a));
+  return out;
+}
+
 SimulatedRuns load_simulations(const std::string &cache, const std::vector<const Effect *> &effects)
 {
   SimulatedRuns s;
@@ -90,6 +125,23 @@ double mean_phi0(const std::string &cache, const std::string &sweep)
   int n = 0;
   for (const auto &p : bed_info_files(cache, sweep)) s += read_bed_info(p).phi_0, ++n;
   return n ? s / n : NAN;
+}
+
+void simulate_needed(const RunsNeeded &need, const Effect &e, const SimContext &sim, StageRuns &given)
+{
+  std::vector<SimRequest> req;
+  for (const RunSet &set : need.sets) {
+    const std::size_t earlier = req.size();
+    for (auto &r : confirm_requests(sim.scenario, e, set.magnitude, set.speeds.empty() ? sim.v0s : set.speeds, set.tag, set.seeds))
+      if (std::none_of(req.begin(), req.begin() + (long) earlier, [&](const SimRequest &q) { return q.spec.name == r.spec.name; }))
+        req.push_back(r);
+  }
+  if (run_requests(req, sim.runner) != 0)
+    throw InputError(need.what + " simulations failed: see the manifests under " + sim.runner.out_root + " (rerun to retry)");
+  for (const RunSet &set : need.sets) {
+    RunsBySpeed runs = load_sweep_runs(sim.runner.out_root, confirm_sweep(e, set.magnitude, set.tag, set.seeds));
+    given[set.tag] = by_transform(e, set.magnitude) ? transformed_runs(e, set.magnitude, runs) : runs;
+  }
 }
 
 }    // namespace granpen

@@ -56,6 +56,12 @@ RunsBySpeed load_sweep_runs(const std::string &cache, const std::string &sweep);
 TraceRun transformed_run(const Effect &e, double a, const TraceRun &run);
 RunsBySpeed transformed_runs(const Effect &e, double a, const RunsBySpeed &runs);
 
+// A transform effect's runs as trace files (for OUT/corrected/): per file, SWEEP_FILE and
+// the text: the source's header (a line `derived` said), t and z, its F transformed (in the
+// file's units: the transform is linear). Throws InputError for a trace that cannot be read.
+std::vector<std::pair<std::string, std::string>> transformed_trace_files(const std::vector<std::string> &paths,
+                                                                        const Effect &e, double a);
+
 // What the fits compare against: the baseline on the signature beds, on the reference
 // beds, and every effect knot (sweep name -> runs; the knots a transform realises from the
 // baseline's runs).
@@ -67,6 +73,36 @@ SimulatedRuns load_simulations(const std::string &cache, const std::vector<const
 
 // The mean phi_0 of a sweep's beds (NaN without any).
 double mean_phi0(const std::string &cache, const std::string &sweep);
+
+// What the later stages simulate with: the scenario (a preset name), the measured speeds
+// as the decks get them, the runner (out_root: the scenario's cache).
+struct SimContext {
+  std::string scenario;
+  std::vector<std::string> v0s;
+  RunnerOptions runner;
+};
+
+// Runs a stage asks for (the confirmation, gap_confirm.h): effect runs at a magnitude on
+// fresh seeds, under a tag (confirm, heldout, refine); speeds empty: every measured speed.
+struct RunSet {
+  std::string tag;
+  double magnitude = 0;
+  std::vector<std::string> speeds;
+  std::vector<std::string> seeds;
+};
+struct RunsNeeded {
+  std::string effect;    // the effect simulated
+  std::string what;      // what for, as an error says it ("confirming", "refining", ...)
+  std::vector<RunSet> sets;
+};
+// The runs given back, by tag, as loaded (not aligned; a transform effect's transformed).
+using StageRuns = std::map<std::string, RunsBySpeed>;
+
+// The simulate stage for a later stage's request: the sets' sweeps (gap_plan.h,
+// confirm_requests; a sweep that an earlier set already asks for, as a push-only effect's
+// shared fresh beds, once) run as one pool, then loaded into `given` by tag; throws
+// InputError when a simulation failed.
+void simulate_needed(const RunsNeeded &need, const Effect &e, const SimContext &sim, StageRuns &given);
 
 }    // namespace granpen
 

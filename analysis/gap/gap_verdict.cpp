@@ -1,14 +1,18 @@
-// granpen gap: the verdict from the fitted candidates (see gap_verdict.h).
+// granpen gap, stage 8 (verdict): every rule of the verdict (see gap_verdict.h).
 #include "gap_verdict.h"
 
+#include "gap_result.h"
 #include "text_util.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 namespace granpen {
 
 namespace {
+
+using TH = GapThresholds;
 
 std::string fmt(double v, const char *f = "%.4g") { return printf_number(f, v); }
 
@@ -19,27 +23,22 @@ std::string fmt(double v, const char *f = "%.4g") { return printf_number(f, v); 
 // noisy signature's fit of it is more than noise)
 bool explains(const EffectFit &f)
 {
-  return f.explained >= 0.5 && f.heldout_explained >= 0.3 && !f.at_edge && f.detected;
+  return f.explained >= TH::explained_min && f.heldout_explained >= TH::heldout_explained_min && !f.at_edge && f.detected;
+}
+
+bool in_tie(const VerdictDecision &v, const std::string &name)
+{
+  return std::find(v.tie.begin(), v.tie.end(), name) != v.tie.end();
 }
 
 // the top two both explain the gap and are not told apart: the answer names both. sep2 >= 0:
 // their fitted predictions differ by sep2 only (said when their evidence is the margin apart)
-void tie(const EffectFit &top, const EffectFit &second, Diagnosis &d, double sep2 = -1)
+void tie(const EffectFit &top, const EffectFit &second, VerdictRule rule, double sep2, VerdictDecision &v)
 {
-  d.verdict = "tie";
-  d.tie = {top.name, second.name};
-  const bool by_margin = sep2 < 0 || lr_evidence(top) - lr_evidence(second) < EVIDENCE_MARGIN;
-  const std::string why =
-      by_margin ? "their evidence differs by " + fmt(lr_evidence(top) - lr_evidence(second), "%.1f") +
-                     ", less than the margin of " + fmt(EVIDENCE_MARGIN, "%g")
-               : "their evidence differs by " + fmt(lr_evidence(top) - lr_evidence(second), "%.1f") +
-                     ", but their fitted predictions only by " + fmt(sep2, "%.1f") +
-                     " squared standard deviations beyond their knots' noise, less than the margin of " +
-                     fmt(EVIDENCE_MARGIN, "%g") + " (the difference in evidence is the knots' noise)";
-  d.notes.push_back("verdict: a tie between " + top.name + " and " + second.name + ": each explains the gap (" +
-                    fmt(top.explained, "%.2f") + " and " + fmt(second.explained, "%.2f") + ", held out " +
-                    fmt(top.heldout_explained, "%.2f") + " and " + fmt(second.heldout_explained, "%.2f") + ") and " + why +
-                    ": at this noise they look alike (next_measurement says what would separate them)");
+  v.verdict = Verdict::tie;
+  v.rule = rule;
+  v.tie = {top.name, second.name};
+  v.tie_record = {{top.name, 0.0, -1.0}, {second.name, lr_evidence(top) - lr_evidence(second), sep2}};
 }
 
 // Once the top ties, every further candidate that the data cannot tell from the top
@@ -48,123 +47,284 @@ void tie(const EffectFit &top, const EffectFit &second, Diagnosis &d, double sep
 // naming two of three look-alikes would drop one the data allow as much (a noiseless
 // transform signature, as force_scale's, outranks two noisy pour-level ones that fit the
 // data better).
-void widen_tie(Diagnosis &d, const Separation2 &separation2)
+void widen_tie(const FitEvidence &fits, VerdictDecision &v)
 {
-  const EffectFit &top = d.ranking[0];
-  for (const auto &c : d.ranking) {
-    if (std::find(d.tie.begin(), d.tie.end(), c.name) != d.tie.end() || !explains(c)) continue;
+  const auto &ranking = fits.ranking;
+  const EffectFit &top = ranking[0];
+  for (std::size_t i = 0; i < ranking.size(); ++i) {
+    const EffectFit &c = ranking[i];
+    if (in_tie(v, c.name) || !explains(c)) continue;
     const double gap = lr_evidence(top) - lr_evidence(c);
-    const double sep2 = gap < EVIDENCE_MARGIN || !separation2 ? -1 : separation2(top, c);
-    if (gap >= EVIDENCE_MARGIN && !(sep2 >= 0 && sep2 < EVIDENCE_MARGIN)) continue;
-    d.tie.push_back(c.name);
-    d.notes.push_back("verdict: " + c.name + " joins the tie: it explains the gap (" + fmt(c.explained, "%.2f") + ", held out " +
-                      fmt(c.heldout_explained, "%.2f") + ") and " +
-                      (gap < EVIDENCE_MARGIN ? "its evidence is " + fmt(gap, "%.1f") + " below " + top.name + "'s, within the margin"
-                                             : "its fitted prediction lies " + fmt(sep2, "%.1f") + " squared standard deviations from " +
-                                                   top.name + "'s beyond their knots' noise"));
+    const double known = fits.separation2_to_top[i];
+    const double sep2 = gap < TH::evidence_margin || std::isnan(known) ? -1 : known;
+    if (gap >= TH::evidence_margin && !(sep2 >= 0 && sep2 < TH::evidence_margin)) continue;
+    v.tie.push_back(c.name);
+    v.tie_record.push_back({c.name, gap, sep2});
   }
   // best first, as the ranking
   std::vector<std::string> ordered;
-  for (const auto &c : d.ranking)
-    if (std::find(d.tie.begin(), d.tie.end(), c.name) != d.tie.end()) ordered.push_back(c.name);
-  d.tie = ordered;
+  for (const auto &c : ranking)
+    if (in_tie(v, c.name)) ordered.push_back(c.name);
+  v.tie = ordered;
 }
 
-}    // namespace
-
-void decide_verdict(Diagnosis &d, const Separation2 &separation2)
+// The fits' rules (gap_verdict.h): the verdict before any confirming run.
+VerdictDecision decide_from_fits(const FitEvidence &fits)
 {
-  // two routes to a finding: the omnibus chi^2 over every feature (a gap spread over many
-  // features), or one candidate's likelihood ratio above its null-calibrated threshold (a
-  // gap too small for the omnibus test that lies along an effect's signature)
-  const bool omnibus = d.significant;
-  d.targeted = !omnibus && std::any_of(d.ranking.begin(), d.ranking.end(), [](const EffectFit &f) { return f.detected; });
-  d.significant = omnibus || d.targeted;
-  // candidates compared by their likelihood ratio beyond what noise gives along their
-  // signatures (on both routes: the null mean's excess is what a noisier signature fits of
-  // any noise, an additive share)
-  std::sort(d.ranking.begin(), d.ranking.end(),
-            [&](const EffectFit &a, const EffectFit &b) { return lr_evidence(a) > lr_evidence(b); });
-  const double margin = EVIDENCE_MARGIN;
-  const EffectFit *top = d.ranking.empty() ? nullptr : &d.ranking[0];
-  const EffectFit *second = d.ranking.size() > 1 ? &d.ranking[1] : nullptr;
+  VerdictDecision v;
+  const auto &ranking = fits.ranking;
+  const bool omnibus = fits.omnibus;
+  v.targeted = !omnibus && std::any_of(ranking.begin(), ranking.end(), [](const EffectFit &f) { return f.detected; });
+  v.significant = omnibus || v.targeted;
+  const double margin = TH::evidence_margin;
+  const EffectFit *top = ranking.empty() ? nullptr : &ranking[0];
+  const EffectFit *second = ranking.size() > 1 ? &ranking[1] : nullptr;
   // a second that would explain the gap on its own, with a fitted prediction within the
   // knots' noise of the top's: the two are not told apart by the evidence margin alone
   // (the first such in the ranking, not only the second: a further candidate ranked in
   // between, as a new effect in the library may be, must not hide a look-alike of the top)
   double sep2 = -1;
   const EffectFit *alike = nullptr;
-  for (std::size_t i = 1; separation2 && top && !alike && i < d.ranking.size(); ++i) {
-    if (!explains(d.ranking[i])) continue;
-    sep2 = separation2(*top, d.ranking[i]);
+  for (std::size_t i = 1; top && !alike && i < ranking.size(); ++i) {
+    if (!explains(ranking[i]) || std::isnan(fits.separation2_to_top[i])) continue;
+    sep2 = fits.separation2_to_top[i];
     if (sep2 >= margin) sep2 = -1;
-    else alike = &d.ranking[i];
+    else alike = &ranking[i];
   }
   const bool look_alike = sep2 >= 0 && explains(*top);
-  std::string why;
-  if (d.targeted) {
+  const bool top_leads = top && (!second || lr_evidence(*top) - lr_evidence(*second) >= margin);
+  if (v.targeted) {
     // one candidate's signature stands out: it must stand out alone (a second detected one
     // at least the margin behind) and, as on the omnibus route, explain at least half of the
     // gap and predict the speeds left out
     const bool alone = (!second || !second->detected || lr_evidence(*top) - lr_evidence(*second) >= margin) && !look_alike;
-    if (look_alike) {
-      tie(*top, *alike, d, sep2);
-    } else if (alone && top->detected && top->explained >= 0.5 && top->heldout_explained >= 0.3) {
-      d.verdict = "explained";
-      d.top_effect = top->name;
-      d.notes.push_back("the gap is within the noise over all features (chi^2 " + fmt(d.chi2_0, "%.1f") + " over " +
-                        std::to_string(d.nfeatures) + ", p = " + fmt(d.p_value, "%.2g") + ") but lies along " +
-                        top->name + "'s signature: likelihood ratio " + fmt(top->lr, "%.1f") + " against a threshold of " +
-                        fmt(top->lr_threshold, "%.1f") + " (" + std::to_string(d.n_null) + " null replicates on the reference beds)");
-    } else if (!alone && explains(*top) && explains(*second)) {
-      tie(*top, *second, d);
-    } else if (alone) {
-      d.verdict = "unexplained";
-      why = "a gap along " + top->name + "'s signature (likelihood ratio " + fmt(top->lr, "%.1f") + " against " +
-            fmt(top->lr_threshold, "%.1f") + "), but it explains only " + fmt(top->explained, "%.2f") +
-            " of the gap (held out " + fmt(top->heldout_explained, "%.2f") + ")";
-    } else {
-      d.verdict = "unexplained";
-      why = "a gap along the signatures of " + top->name + " and " + second->name + " (likelihood ratios " +
-            fmt(top->lr, "%.1f") + " and " + fmt(second->lr, "%.1f") + ", thresholds " + fmt(top->lr_threshold, "%.1f") +
-            " and " + fmt(second->lr_threshold, "%.1f") + "): too close to tell apart";
-    }
-  } else if (!d.significant) {
-    d.verdict = "none";
-    why = "the gap is within the noise (chi^2 " + fmt(d.chi2_0, "%.1f") + " over " + std::to_string(d.nfeatures) +
-          " features, p = " + fmt(d.p_value, "%.2g") + "; no candidate's likelihood ratio above its threshold)";
+    if (look_alike) tie(*top, *alike, VerdictRule::look_alike, sep2, v);
+    else if (alone && top->detected && top->explained >= TH::explained_min && top->heldout_explained >= TH::heldout_explained_min)
+      v.verdict = Verdict::explained, v.rule = VerdictRule::targeted_explained;
+    else if (!alone && explains(*top) && explains(*second)) tie(*top, *second, VerdictRule::tie_by_margin, -1, v);
+    else v.verdict = Verdict::unexplained, v.rule = alone ? VerdictRule::targeted_weak : VerdictRule::targeted_close;
+  } else if (!v.significant) {
+    v.verdict = Verdict::none, v.rule = VerdictRule::within_noise;
   } else if (look_alike) {
-    tie(*top, *alike, d, sep2);
-  } else if (top && explains(*top) && (!second || lr_evidence(*top) - lr_evidence(*second) >= margin)) {
-    d.verdict = "explained";
-    d.top_effect = top->name;
-  } else if (top && second && explains(*top) && explains(*second) && lr_evidence(*top) - lr_evidence(*second) < margin) {
-    tie(*top, *second, d);
+    tie(*top, *alike, VerdictRule::look_alike, sep2, v);
+  } else if (top && explains(*top) && top_leads) {
+    v.verdict = Verdict::explained, v.rule = VerdictRule::omnibus_explained;
+  } else if (top && second && explains(*top) && explains(*second) && !top_leads) {
+    tie(*top, *second, VerdictRule::tie_by_margin, -1, v);
   } else {
-    d.verdict = "unexplained";
-    if (!top) why = "no candidate effects";
-    else if (top->explained < 0.5) why = "the best candidate (" + top->name + ") explains " + fmt(top->explained, "%.2f") + " of the gap";
-    else if (top->heldout_explained < 0.3) why = top->name + " fits but does not predict the speeds left out (" + fmt(top->heldout_explained, "%.2f") + ")";
-    else if (top->at_edge) why = top->name + " needs a magnitude beyond its simulated range";
-    else if (!top->detected)
-      why = "the best candidate (" + top->name + ") explains " + fmt(top->explained, "%.2f") + " of the gap, but its likelihood ratio " +
-            fmt(top->lr, "%.1f") + " is below its threshold " + fmt(top->lr_threshold, "%.1f") +
-            " (what its signature fits of pure noise): not told from noise fitting";
-    else why = top->name + " and " + second->name + " explain the gap about equally well (likelihood ratios beyond the noise's " +
-               fmt(lr_evidence(*top), "%.1f") + " and " + fmt(lr_evidence(*second), "%.1f") + ", chi^2 at the fits " +
-               fmt(top->chi2, "%.1f") + " and " + fmt(second->chi2, "%.1f") + ")";
+    v.verdict = Verdict::unexplained;
+    v.rule = !top                                                    ? VerdictRule::no_candidates
+             : top->explained < TH::explained_min                    ? VerdictRule::explains_too_little
+             : top->heldout_explained < TH::heldout_explained_min    ? VerdictRule::heldout_too_little
+             : top->at_edge                                          ? VerdictRule::at_edge
+             : !top->detected                                        ? VerdictRule::not_detected
+                                                                     : VerdictRule::too_close;
   }
-  if (d.verdict == "tie") widen_tie(d, separation2);
+  if (v.verdict == Verdict::explained) v.top_effect = top->name;
+  if (v.verdict == Verdict::tie) widen_tie(fits, v);
   // the fits' unexplained, where the top candidate falls short only in what its interpolated
-  // signature explains: its own runs at the fitted magnitude decide (confirm_top_effect)
-  d.between_knots = d.verdict == "unexplained" && top && top->detected && !top->at_edge && !look_alike &&
-                    top->explained >= BETWEEN_KNOTS_MIN_EXPLAINED && (top->explained < 0.5 || top->heldout_explained < 0.3) &&
-                    (!second || lr_evidence(*top) - lr_evidence(*second) >= margin);
-  if (d.between_knots)
+  // signature explains: its own runs at the fitted magnitude decide (the confirmation)
+  v.between_knots = v.verdict == Verdict::unexplained && top && top->detected && !top->at_edge && !look_alike &&
+                    top->explained >= TH::between_knots_min_explained &&
+                    (top->explained < TH::explained_min || top->heldout_explained < TH::heldout_explained_min) && top_leads;
+  return v;
+}
+
+}    // namespace
+
+const char *verdict_name(Verdict v)
+{
+  switch (v) {
+  case Verdict::none: return "none";
+  case Verdict::explained: return "explained";
+  case Verdict::tie: return "tie";
+  case Verdict::unexplained: return "unexplained";
+  }
+  return "none";
+}
+
+void rank_by_evidence(std::vector<EffectFit> &ranking)
+{
+  // candidates compared by their likelihood ratio beyond what noise gives along their
+  // signatures (on both routes: the null mean's excess is what a noisier signature fits of
+  // any noise, an additive share)
+  std::sort(ranking.begin(), ranking.end(), [&](const EffectFit &a, const EffectFit &b) { return lr_evidence(a) > lr_evidence(b); });
+}
+
+FitEvidence fit_evidence(bool omnibus, std::vector<EffectFit> ranking, const Separation2 &separation2)
+{
+  FitEvidence ev;
+  ev.omnibus = omnibus;
+  rank_by_evidence(ranking);
+  ev.ranking = std::move(ranking);
+  // the separation matters only for a candidate that explains the gap on its own
+  ev.separation2_to_top.assign(ev.ranking.size(), std::nan(""));
+  for (std::size_t i = 1; separation2 && i < ev.ranking.size(); ++i)
+    if (explains(ev.ranking[i])) ev.separation2_to_top[i] = separation2(ev.ranking[0], ev.ranking[i]);
+  return ev;
+}
+
+bool gap_shrinks(double before, double after) { return std::isfinite(after) && after <= TH::gap_shrink_explained * before; }
+
+bool between_knots_explains(bool confirmed, double gap_before, double gap_after, double heldout_before, double heldout_after)
+{
+  return confirmed && gap_shrinks(gap_before, gap_after) && gap_shrinks(heldout_before, heldout_after);
+}
+
+VerdictDecision decide_verdict(const FitEvidence &fits, const ConfirmationResult *c)
+{
+  VerdictDecision v = decide_from_fits(fits);
+  if (!c) return v;
+  using Kind = ConfirmationResult::Kind;
+  if (v.between_knots) {
+    // at (or next to) a knot the interpolated signature is the simulated one: the fits' verdict
+    if (c->kind == Kind::at_knot) v.between_knots = false;
+    else if (c->kind == Kind::fit_only) v.confirmation = ConfirmationRule::between_knots_fit_only;
+    else if (c->kind == Kind::simulated) {
+      const bool explained = between_knots_explains(c->confirmed, c->gap_before, c->gap_after, c->heldout_before, c->heldout_after);
+      v.confirmation = explained ? ConfirmationRule::between_knots_explained : ConfirmationRule::between_knots_short;
+      if (explained) v.verdict = Verdict::explained, v.top_effect = fits.ranking[0].name;
+    }
+  } else if (v.verdict == Verdict::explained && c->kind == Kind::fit_only) {
+    v.provisional = true;
+    v.confirmation = ConfirmationRule::provisional;
+  } else if (v.verdict == Verdict::explained && c->kind == Kind::simulated) {
+    // kept only when the fresh runs confirm it and halve G_all
+    v.confirmation = !c->confirmed                            ? ConfirmationRule::not_confirmed
+                     : !gap_shrinks(c->gap_before, c->gap_after) ? ConfirmationRule::not_halved
+                                                               : ConfirmationRule::confirmed;
+    if (v.confirmation != ConfirmationRule::confirmed) v.verdict = Verdict::unexplained, v.top_effect.clear();
+  }
+  return v;
+}
+
+std::vector<std::string> fits_verdict_notes(const VerdictDecision &v, const FitEvidence &fits)
+{
+  std::vector<std::string> notes;
+  const auto &ranking = fits.ranking;
+  const EffectFit *top = ranking.empty() ? nullptr : &ranking[0];
+  const EffectFit *second = ranking.size() > 1 ? &ranking[1] : nullptr;
+  const auto fit_of = [&](const std::string &name) -> const EffectFit & {
+    return *std::find_if(ranking.begin(), ranking.end(), [&](const EffectFit &f) { return f.name == name; });
+  };
+  if (v.verdict == Verdict::tie) {
+    const EffectFit &b = fit_of(v.tie_record[1].name);
+    const double gap = v.tie_record[1].evidence_gap, sep2 = v.tie_record[1].separation2;
+    const bool by_margin = sep2 < 0 || gap < TH::evidence_margin;
+    const std::string why =
+        by_margin ? "their evidence differs by " + fmt(gap, "%.1f") + ", less than the margin of " + fmt(TH::evidence_margin, "%g")
+                  : "their evidence differs by " + fmt(gap, "%.1f") + ", but their fitted predictions only by " + fmt(sep2, "%.1f") +
+                        " squared standard deviations beyond their knots' noise, less than the margin of " +
+                        fmt(TH::evidence_margin, "%g") + " (the difference in evidence is the knots' noise)";
+    notes.push_back("verdict: a tie between " + top->name + " and " + b.name + ": each explains the gap (" +
+                    fmt(top->explained, "%.2f") + " and " + fmt(b.explained, "%.2f") + ", held out " +
+                    fmt(top->heldout_explained, "%.2f") + " and " + fmt(b.heldout_explained, "%.2f") + ") and " + why +
+                    ": at this noise they look alike (next_measurement says what would separate them)");
+    for (std::size_t i = 2; i < v.tie_record.size(); ++i) {
+      const TieMember &m = v.tie_record[i];
+      const EffectFit &c = fit_of(m.name);
+      notes.push_back("verdict: " + c.name + " joins the tie: it explains the gap (" + fmt(c.explained, "%.2f") + ", held out " +
+                      fmt(c.heldout_explained, "%.2f") + ") and " +
+                      (m.evidence_gap < TH::evidence_margin
+                           ? "its evidence is " + fmt(m.evidence_gap, "%.1f") + " below " + top->name + "'s, within the margin"
+                           : "its fitted prediction lies " + fmt(m.separation2, "%.1f") + " squared standard deviations from " +
+                                 top->name + "'s beyond their knots' noise"));
+    }
+    return notes;
+  }
+  std::string why;
+  switch (v.rule) {
+  case VerdictRule::targeted_explained:
+    notes.push_back("the gap is within the noise over all features (chi^2 " + fmt(fits.chi2_0, "%.1f") + " over " +
+                    std::to_string(fits.nfeatures) + ", p = " + fmt(fits.p_value, "%.2g") + ") but lies along " + top->name +
+                    "'s signature: likelihood ratio " + fmt(top->lr, "%.1f") + " against a threshold of " +
+                    fmt(top->lr_threshold, "%.1f") + " (" + std::to_string(fits.n_null) + " null replicates on the reference beds)");
+    return notes;
+  case VerdictRule::omnibus_explained: return notes;
+  case VerdictRule::targeted_weak:
+    why = "a gap along " + top->name + "'s signature (likelihood ratio " + fmt(top->lr, "%.1f") + " against " +
+          fmt(top->lr_threshold, "%.1f") + "), but it explains only " + fmt(top->explained, "%.2f") + " of the gap (held out " +
+          fmt(top->heldout_explained, "%.2f") + ")";
+    break;
+  case VerdictRule::targeted_close:
+    why = "a gap along the signatures of " + top->name + " and " + second->name + " (likelihood ratios " + fmt(top->lr, "%.1f") +
+          " and " + fmt(second->lr, "%.1f") + ", thresholds " + fmt(top->lr_threshold, "%.1f") + " and " +
+          fmt(second->lr_threshold, "%.1f") + "): too close to tell apart";
+    break;
+  case VerdictRule::within_noise:
+    why = "the gap is within the noise (chi^2 " + fmt(fits.chi2_0, "%.1f") + " over " + std::to_string(fits.nfeatures) +
+          " features, p = " + fmt(fits.p_value, "%.2g") + "; no candidate's likelihood ratio above its threshold)";
+    break;
+  case VerdictRule::no_candidates: why = "no candidate effects"; break;
+  case VerdictRule::explains_too_little:
+    why = "the best candidate (" + top->name + ") explains " + fmt(top->explained, "%.2f") + " of the gap";
+    break;
+  case VerdictRule::heldout_too_little:
+    why = top->name + " fits but does not predict the speeds left out (" + fmt(top->heldout_explained, "%.2f") + ")";
+    break;
+  case VerdictRule::at_edge: why = top->name + " needs a magnitude beyond its simulated range"; break;
+  case VerdictRule::not_detected:
+    why = "the best candidate (" + top->name + ") explains " + fmt(top->explained, "%.2f") + " of the gap, but its likelihood ratio " +
+          fmt(top->lr, "%.1f") + " is below its threshold " + fmt(top->lr_threshold, "%.1f") +
+          " (what its signature fits of pure noise): not told from noise fitting";
+    break;
+  default:
+    why = top->name + " and " + second->name + " explain the gap about equally well (likelihood ratios beyond the noise's " +
+          fmt(lr_evidence(*top), "%.1f") + " and " + fmt(lr_evidence(*second), "%.1f") + ", chi^2 at the fits " +
+          fmt(top->chi2, "%.1f") + " and " + fmt(second->chi2, "%.1f") + ")";
+  }
+  if (v.between_knots)
     why += " (its signature at that magnitude is interpolated between knots: it is simulated there on fresh beds "
            "before the verdict stands)";
-  if (!why.empty()) d.notes.push_back("verdict: " + why);
+  notes.push_back("verdict: " + why);
+  return notes;
+}
 
+std::vector<std::string> confirmation_verdict_notes(const VerdictDecision &v, const FitEvidence &fits,
+                                                    const ConfirmationResult &c)
+{
+  if (v.confirmation == ConfirmationRule::none || v.confirmation == ConfirmationRule::confirmed) return {};
+  const EffectFit &top = fits.ranking[0];
+  const std::string gaps = "G_all " + fmt(c.gap_before, "%.3f") + " -> " + fmt(c.gap_after, "%.3f");
+  const std::string heldout = ", at the held-out speed " + fmt(c.heldout_before, "%.3f") + " -> " + fmt(c.heldout_after, "%.3f");
+  switch (v.confirmation) {
+  case ConfirmationRule::between_knots_fit_only:
+    return {"verdict provisional (--fit-only): " + top.name + " at " + fmt(top.magnitude) +
+            " would be simulated between its knots on fresh seeds; without those runs it stays unexplained"};
+  case ConfirmationRule::provisional:
+    return {"verdict provisional (--fit-only): " + top.name + " was not simulated on fresh seeds, "
+            "so the gap after is the gap before"};
+  case ConfirmationRule::between_knots_explained:
+    return {"verdict: explained by " + top.name + " simulated between its knots at " + fmt(c.magnitude) +
+            " on fresh seeds (its interpolated signature explained " + fmt(top.explained, "%.2f") + ", held out " +
+            fmt(top.heldout_explained, "%.2f") + "): chi^2 " + fmt(fits.chi2_0, "%.1f") + " -> " + fmt(c.chi2_after, "%.1f") +
+            ", " + gaps + heldout + " (the runs at the magnitude fitted on every speed: the held-out fit rests on the interpolation)"};
+  case ConfirmationRule::between_knots_short:
+    return {"verdict: " + top.name + " simulated between its knots at " + fmt(c.magnitude) + " on fresh seeds did not explain the gap (" +
+            (c.confirmed ? "confirmed by chi^2, " : "not confirmed by chi^2, ") + gaps + heldout + "; both must halve): unexplained"};
+  case ConfirmationRule::not_halved:
+    return {"verdict: " + top.name + " at magnitude " + fmt(c.magnitude) + " passed the chi^2 test on fresh seeds (" +
+            fmt(fits.chi2_0, "%.1f") + " -> " + fmt(c.chi2_after, "%.1f") + ") but G_all did not shrink to half (" +
+            fmt(c.gap_before, "%.3f") + " -> " + fmt(c.gap_after, "%.3f") +
+            "): the fit followed noise or a look-alike's part of the gap, not the gap: unexplained"};
+  default:    // not_confirmed
+    return {"verdict: " + top.name + " at magnitude " + fmt(c.magnitude) + " did not shrink the gap on fresh seeds (chi^2 " +
+            fmt(fits.chi2_0, "%.1f") + " -> " + fmt(c.chi2_after, "%.1f") + " over " + std::to_string(fits.nfeatures) +
+            " features; along its signature " + fmt(c.proj_before, "%.2f") + " -> " + fmt(c.proj_after, "%.2f") + " sigma; " + gaps +
+            "): unexplained"};
+  }
+}
+
+void record_verdict(const VerdictDecision &v, const std::vector<std::string> &notes, Diagnosis &d)
+{
+  d.verdict = v.verdict;
+  d.top_effect = v.top_effect;
+  d.tie = v.tie;
+  d.significant = v.significant;
+  d.targeted = v.targeted;
+  d.between_knots = v.between_knots;
+  d.provisional = v.provisional;
+  d.notes.insert(d.notes.end(), notes.begin(), notes.end());
 }
 
 }    // namespace granpen

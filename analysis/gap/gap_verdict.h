@@ -1,41 +1,156 @@
-// granpen gap: the verdict from the fitted candidates, before any confirming run.
-// Two routes to a finding: the omnibus chi^2 over every feature (d.significant on entry: a
-// gap spread over many features), or one candidate's likelihood ratio above its
-// null-calibrated threshold (EffectFit::detected: a gap too small for the omnibus test that
-// lies along an effect's signature). Sorts d.ranking best first (by the likelihood ratio
-// beyond the noise's, lr_evidence) and sets d.targeted, d.significant, d.verdict
-// ("none", "explained", "tie", "unexplained"), d.top_effect (explained) or d.tie (the
-// candidates that explain the gap within the evidence margin of the top's, or whose fitted
-// predictions lie within their knots' noise of the top's: two or more, best first), and a
-// note saying why.
-// separation2(a, b), when given: the evidence the data would give between a's and b's fitted
-// predictions (gap_limits.h, prediction_separation2: squared standard deviations, the knots'
-// noise subtracted); under the evidence margin the top and such a candidate are not told
-// apart, whatever their likelihood ratios say (the difference is then the knots' noise), so
-// one that explains the gap as well makes a tie, wherever it ranks. Without it (the null replicates, unit tests) only
-// the evidence margin tells them apart. On either route an effect is named (or half of a
-// tie) only when detected: its likelihood ratio above its null-calibrated threshold.
-// An unexplained verdict whose top candidate falls short only in what its interpolated
-// signature explains (detected, inside its range, alone, explaining at least
-// BETWEEN_KNOTS_MIN_EXPLAINED) sets d.between_knots: the confirmation simulates it at its
-// fitted magnitude before the verdict stands.
-// docs/gap.md, "Verdict".
+// granpen gap, stage 8 (verdict): the one owner of the verdict. decide_verdict holds every
+// rule, from two typed inputs: the fits' evidence (stage 7, which) and, once there is one,
+// the confirmation's result (stage 9, confirm). The diagnosis calls it twice: on the fits
+// alone (what the confirmation then simulates) and with the confirmation (the verdict that
+// stands); the null replicates call it on their fits alone. No other file sets a verdict.
+//
+// The fits' rules. Two routes to a finding: the omnibus chi^2 over every feature
+// (FitEvidence::omnibus: a gap spread over many features), or one candidate's likelihood
+// ratio above its null-calibrated threshold (EffectFit::detected: a gap too small for the
+// omnibus test that lies along an effect's signature). Candidates are compared best first
+// (rank_by_evidence: by the likelihood ratio beyond the noise's, lr_evidence). A tie names
+// the candidates that explain the gap within the evidence margin of the top's, or whose
+// fitted predictions lie within their knots' noise of the top's (two or more, best first).
+// separation2 to the top, when given (gap_limits.h, prediction_separation2: squared
+// standard deviations, the knots' noise subtracted): under the evidence margin the top and
+// such a candidate are not told apart, whatever their likelihood ratios say, so one that
+// explains the gap as well makes a tie, wherever it ranks. Without it (the null replicates,
+// unit tests) only the evidence margin tells them apart. On either route an effect is named
+// (or half of a tie) only when detected. An unexplained verdict whose top candidate falls
+// short only in what its interpolated signature explains (detected, inside its range,
+// alone, explaining at least between_knots_min_explained) is between_knots: the
+// confirmation simulates it at its fitted magnitude before the verdict stands.
+//
+// The confirmation's rules. An explained verdict stands when its fresh runs confirm it
+// (gap_confirm.h, confirms) and halve G_all; between knots, when they confirm it and halve
+// G_all both over all speeds and at the held-out speed; with --fit-only an explained verdict
+// is provisional. The thresholds: gap_thresholds.h. docs/gap.md, "Verdict".
 #ifndef GRANPEN_GAP_VERDICT_H
 #define GRANPEN_GAP_VERDICT_H
 
-#include "gap_result.h"
+#include "gap_fit.h"
+#include "gap_thresholds.h"
 
+#include <cstddef>
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace granpen {
 
-// a quarter: the ramp case of the selftest explains 0.32 from knots 1.6 and 3.2 at its true
-// 2.4 cm; below a quarter the candidate is too weak to be worth fresh beds
-constexpr double BETWEEN_KNOTS_MIN_EXPLAINED = 0.25;
+enum class Verdict { none, explained, tie, unexplained };
+
+// "none", "explained", "tie", "unexplained": as diagnosis.json and the report write it
+const char *verdict_name(Verdict v);
 
 using Separation2 = std::function<double(const EffectFit &, const EffectFit &)>;
 
-void decide_verdict(Diagnosis &d, const Separation2 &separation2 = {});
+// Sorts the candidates best first: by the likelihood ratio beyond the noise's (lr_evidence).
+void rank_by_evidence(std::vector<EffectFit> &ranking);
+
+// What the fits found, as the verdict reads it.
+struct FitEvidence {
+  bool omnibus = false;                  // the omnibus chi^2's p below significance_p
+  double chi2_0 = 0, p_value = 1;        // the omnibus test, for the verdict's sentences
+  std::size_t nfeatures = 0;
+  int n_null = 0;                        // null replicates behind the thresholds
+  std::vector<EffectFit> ranking;        // best first (rank_by_evidence)
+  // per candidate of the ranking, its fitted prediction's separation from the top's
+  // (separation2), where that can decide (the candidate explains the gap); NaN: not known
+  std::vector<double> separation2_to_top;
+};
+
+// The evidence of a ranking (sorted here), with the separations taken from separation2
+// (none when it is not given).
+FitEvidence fit_evidence(bool omnibus, std::vector<EffectFit> ranking, const Separation2 &separation2 = {});
+
+// Whether G_all shrank from `before` to at most gap_shrink_explained of it.
+bool gap_shrinks(double before, double after);
+
+// Whether fresh runs between knots explain the gap: confirmed, and G_all halved both over all
+// speeds and at the held-out speed (the confirmation asks it too: short of it, it refits).
+bool between_knots_explains(bool confirmed, double gap_before, double gap_after, double heldout_before,
+                            double heldout_after);
+
+// What the confirmation found (gap_confirm.h makes it), as the verdict reads it.
+struct ConfirmationResult {
+  enum class Kind {
+    none,         // nothing to confirm (no explained verdict, not between knots)
+    at_knot,      // between knots, but the fitted magnitude is at a knot: nothing to check
+    fit_only,     // --fit-only: nothing simulated
+    simulated     // fresh runs of the top candidate decided
+  };
+  Kind kind = Kind::none;
+  double magnitude = 0;                  // where the deciding runs were simulated
+  bool confirmed = false;                // by chi^2 or along the signature (gap_confirm.h, confirms)
+  double chi2_after = 0, proj_before = 0, proj_after = 0;
+  double gap_before = 0, gap_after = 0, heldout_before = 0, heldout_after = 0;    // G_all
+};
+
+// Which rule decided, for the sentences that say why.
+enum class VerdictRule {
+  within_noise,            // none: nothing significant, nothing detected
+  no_candidates,           // unexplained: no candidate effects
+  look_alike,              // tie: the top and one whose prediction lies within the knots' noise
+  tie_by_margin,           // tie: the top two explain the gap and their evidence is within the margin
+  targeted_explained,      // explained on the targeted route
+  targeted_weak,           // unexplained: detected alone, but explains too little
+  targeted_close,          // unexplained: two detected, too close to tell apart, not both explaining
+  omnibus_explained,       // explained on the omnibus route
+  explains_too_little,     // unexplained: the top explains less than explained_min
+  heldout_too_little,      // unexplained: the top does not predict the speeds left out
+  at_edge,                 // unexplained: the top needs a magnitude beyond its range
+  not_detected,            // unexplained: the top's likelihood ratio is below its threshold
+  too_close                // unexplained: the top two explain the gap about equally well
+};
+
+// How the confirmation changed the fits' verdict.
+enum class ConfirmationRule {
+  none,                    // nothing confirmed: the fits' verdict stands
+  provisional,             // --fit-only, explained: provisional
+  between_knots_fit_only,  // --fit-only, between knots: stays unexplained
+  confirmed,               // explained, confirmed and halved: stands
+  not_halved,              // explained, confirmed by chi^2 but G_all not halved: unexplained
+  not_confirmed,           // explained, not confirmed: unexplained
+  between_knots_explained, // between knots: explained
+  between_knots_short      // between knots: the runs did not explain it: unexplained
+};
+
+// A candidate in a tie, and why it is there (for the sentences).
+struct TieMember {
+  std::string name;
+  double evidence_gap = 0;    // lr_evidence(top) - lr_evidence(this)
+  double separation2 = -1;    // >= 0: within the margin by its fitted prediction
+};
+
+struct Diagnosis;
+
+// The decision and its record.
+struct VerdictDecision {
+  Verdict verdict = Verdict::none;
+  std::string top_effect;                // explained: the effect named; else ""
+  std::vector<std::string> tie;          // tie: the candidates, best first
+  bool significant = false;              // on either route
+  bool targeted = false;                 // by one effect's likelihood ratio, not the omnibus chi^2
+  bool between_knots = false;            // the fits' unexplained that fresh runs between knots decide
+  bool provisional = false;              // --fit-only: explained, not confirmed
+  VerdictRule rule = VerdictRule::within_noise;
+  ConfirmationRule confirmation = ConfirmationRule::none;
+  std::vector<TieMember> tie_record;     // [0], [1]: the pair that made the tie; then those that joined
+};
+
+// The verdict: every rule, from the fits' evidence and (when given) the confirmation's result.
+VerdictDecision decide_verdict(const FitEvidence &fits, const ConfirmationResult *confirmation = nullptr);
+
+// The sentences that say why (the report's notes), made from the decision's record: those of
+// the fits' rules, and those of the confirmation's.
+std::vector<std::string> fits_verdict_notes(const VerdictDecision &v, const FitEvidence &fits);
+std::vector<std::string> confirmation_verdict_notes(const VerdictDecision &v, const FitEvidence &fits,
+                                                    const ConfirmationResult &c);
+
+// The decision into the diagnosis (the verdict, its effect or tie, the routes, the flags),
+// with the sentences that say why appended to its notes: the one writer of d.verdict.
+void record_verdict(const VerdictDecision &v, const std::vector<std::string> &notes, Diagnosis &d);
 
 }    // namespace granpen
 

@@ -1,5 +1,6 @@
 // granpen gap, stage 6 (where): see gap_where.h.
 #include "gap_where.h"
+#include "scaling_laws.h"
 
 #include "text_util.h"
 
@@ -80,8 +81,8 @@ void regimes(const Features &f, const RunsBySpeed &fresh, const Scenario &sc, co
       const auto o = run_observables(r.z, r.F, v, sc.D, sc.g, sc.d_g, grid, grid.zmax);
       if (o.crossed) ts.push_back(o.t_star);
     }
-    const double zc = ts.size() == runs.size() && !ts.empty() ? mean_of(ts) * v * std::sqrt(sc.D / sc.g) : grid.zmax;
-    d.speeds[s].z_transient_end = std::clamp(zc, 0.35 * sc.D, grid.zmax);
+    const double zc = ts.size() == runs.size() && !ts.empty() ? depth_at_t_tilde(mean_of(ts), v, sc.g, sc.D) : grid.zmax;
+    d.speeds[s].z_transient_end = std::clamp(zc, peak_regime_end(sc.D), grid.zmax);
   }
 }
 
@@ -109,7 +110,7 @@ void observable_findings(const Features &f, const RunsBySpeed &real, const Simul
     const double scale = f.target_scale[s];
     for (const auto &[name, reg] : regime) {
       if (!oR.count(name) || !oB.count(name) || !pooled.count(name)) continue;
-      if (name == "excess" && zt <= 0.35 * sc.D + grid.w) continue;    // no transient regime in range
+      if (name == "excess" && zt <= peak_regime_end(sc.D) + grid.w) continue;    // no transient regime in range
       const double var1 = pooled[name].first / pooled[name].second;    // one run's variance
       const double level = std::abs(mean_of(oB.at(name)));
       if (!(var1 > 0.0) || std::sqrt(var1) <= 1e-9 * level) {
@@ -158,7 +159,37 @@ void gap_significance(const Features &f, const GapGrid &grid, Diagnosis &d)
   d.chi2_0 = omnibus_chi2(f.target, f);
   d.nfeatures = f.nspeeds() * grid.nfeatures();
   d.p_value = chi2_sf(d.chi2_0, (double) d.nfeatures);
-  d.significant = d.p_value < 1e-3;
+  d.significant = d.p_value < GapThresholds::significance_p;
+}
+
+RegimeGaps gap_by_regime(const GapGrid &grid, double peak_end, const std::vector<SpeedCurves> &speeds)
+{
+  const std::size_t nb = grid.nbins();
+  RegimeGaps out;
+  for (const char *reg : {"peak", "transient", "linear"}) {
+    double sb = 0, sa = 0;
+    int n = 0;
+    for (const auto &c : speeds) {
+      std::size_t b0 = 0, b1 = 0;
+      for (std::size_t b = 0; b < nb; ++b) {
+        const double z = grid.centre(b);
+        const std::string r = z <= peak_end ? "peak" : (z <= c.z_transient_end ? "transient" : "linear");
+        if (r == reg) {
+          if (b1 == 0) b0 = b;
+          b1 = b + 1;
+        }
+      }
+      if (b1 == 0) continue;
+      Ensemble R, B, C;
+      R.mean = c.real, B.mean = c.base, C.mean = c.corr;
+      R.runs.resize(1), B.runs.resize(1), C.runs.resize(1);    // the debiasing is in the overall G
+      sb += gap_metric(R, B, b0, b1);
+      sa += gap_metric(R, C, b0, b1);
+      ++n;
+    }
+    if (n) out[reg] = {sb / n, sa / n};
+  }
+  return out;
 }
 
 }    // namespace granpen

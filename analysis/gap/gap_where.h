@@ -33,6 +33,13 @@ double omnibus_chi2(const Target &t, const Features &f);
 // d.chi2_0, d.nfeatures, d.p_value, d.significant (p < 0.001).
 void gap_significance(const Features &f, const GapGrid &grid, Diagnosis &d);
 
+// G per regime before and after (peak: z <= peak_end; transient: up to each speed's
+// z_transient_end; linear: beyond): the mean over speeds of G restricted to the regime's
+// bins, from the curves before and after the confirmation (without the noise debiasing,
+// which is in the overall G).
+using RegimeGaps = std::map<std::string, std::pair<double, double>>;
+RegimeGaps gap_by_regime(const GapGrid &grid, double peak_end, const std::vector<SpeedCurves> &speeds);
+
 }    // namespace granpen
 
 #endif

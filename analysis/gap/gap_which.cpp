@@ -99,12 +99,7 @@ FalseAlarms null_false_alarms(const std::vector<const Effect *> &effects, const 
   FalseAlarms fa;
   const std::size_t P = f.nspeeds() && !f.real.empty() ? f.real[0].mean.size() : 0;
   for (std::size_t i = 0; i < f.nulls.size(); ++i) {
-    Diagnosis n;
-    n.chi2_0 = omnibus_chi2(f.nulls[i], f);
-    n.nfeatures = f.nspeeds() * P;
-    n.p_value = chi2_sf(n.chi2_0, (double) n.nfeatures);
-    n.significant = n.p_value < 1e-3;
-    n.n_null = (int) f.nulls.size() - 1;
+    std::vector<EffectFit> ranking;
     for (const Effect *e : effects) {
       const EffectData &ed = data.at(e->name);
       EffectFit fit = fit_effect(f.nulls[i], ed);
@@ -116,11 +111,13 @@ FalseAlarms null_false_alarms(const std::vector<const Effect *> &effects, const 
       fit.lr_null_mean = others.empty() ? 0.0 : mean_of(others);
       fit.lr_threshold = lr_threshold(fit.lr_null_mean);
       fit.detected = fit.lr > fit.lr_threshold && !fit.at_edge;
-      n.ranking.push_back(fit);
+      ranking.push_back(fit);
     }
-    decide_verdict(n);
-    ++fa.replicates, ++fa.verdicts[n.verdict];
-    fa.not_none += n.verdict != "none";
+    const double chi2_0 = omnibus_chi2(f.nulls[i], f);
+    const bool omnibus = chi2_sf(chi2_0, (double) (f.nspeeds() * P)) < GapThresholds::significance_p;
+    const Verdict v = decide_verdict(fit_evidence(omnibus, std::move(ranking))).verdict;
+    ++fa.replicates, ++fa.verdicts[verdict_name(v)];
+    fa.not_none += v != Verdict::none;
   }
   return fa;
 }
@@ -150,29 +147,36 @@ std::string packing_note(const EffectData &ed, double a, const std::vector<doubl
          fmt(phi_baseline, "%.4f");
 }
 
-std::map<std::string, EffectData> fit_candidates(const std::vector<const Effect *> &effects, const Features &f,
-                                                 const std::function<double(const std::string &)> &phi0, Diagnosis &d)
+FittedCandidates fit_candidates(const std::vector<const Effect *> &effects, const Features &f,
+                                const std::function<double(const std::string &)> &phi0, Diagnosis &d)
 {
-  std::map<std::string, EffectData> data;
+  FittedCandidates out;
+  std::vector<EffectFit> fits;
   for (const Effect *e : effects) {
     EffectData ed = effect_data(*e, f);
-    d.ranking.push_back(fit_candidate(ed, f));
+    fits.push_back(fit_candidate(ed, f));
     if (e->pour_mu_at) {
       // packing: the phi_0 the fitted pour friction makes, interpolated between the beds'
       std::vector<double> phi;
       for (const auto &[a, name] : knot_sweeps(*e)) phi.push_back(phi0(name.empty() ? "baseline" : name));
-      d.magnitude_note[e->name] = packing_note(ed, d.ranking.back().magnitude, phi, phi0("baseline"));
+      d.magnitude_note[e->name] = packing_note(ed, fits.back().magnitude, phi, phi0("baseline"));
     }
-    data[e->name] = std::move(ed);
+    out.data[e->name] = std::move(ed);
   }
   d.n_null = (int) f.nulls.size();
   // the top two told apart by the data, not only by the evidence margin (gap_verdict.h)
   const NoiseFactors now(f.target.mean.size(), 1.0);
-  decide_verdict(d, [&](const EffectFit &a, const EffectFit &b) {
+  const auto &data = out.data;
+  out.evidence = fit_evidence(d.significant, std::move(fits), [&](const EffectFit &a, const EffectFit &b) {
     return prediction_separation2(data.at(a.name), a.magnitude, data.at(b.name), b.magnitude, f.target, now);
   });
-  d.false_alarms = null_false_alarms(effects, data, d.ranking, f);
-  return data;
+  out.evidence.chi2_0 = d.chi2_0, out.evidence.p_value = d.p_value, out.evidence.nfeatures = d.nfeatures;
+  out.evidence.n_null = d.n_null;
+  d.ranking = out.evidence.ranking;
+  const VerdictDecision v = decide_verdict(out.evidence);
+  record_verdict(v, fits_verdict_notes(v, out.evidence), d);
+  d.false_alarms = null_false_alarms(effects, out.data, d.ranking, f);
+  return out;
 }
 
 }    // namespace granpen

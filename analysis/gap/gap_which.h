@@ -9,6 +9,7 @@
 #include "gap_features.h"
 #include "gap_fit.h"
 #include "gap_result.h"
+#include "gap_verdict.h"
 
 #include <functional>
 #include <map>
@@ -29,7 +30,8 @@ EffectFit fit_candidate(const EffectData &ed, const Features &f);
 // The false-alarm rate on data without any effect: each null replicate taken as the
 // measurement, every effect fitted to it (data: the effects' model data, in the order of
 // effects) with its threshold calibrated on the other replicates, the omnibus test against
-// the reference beds, and the verdict (decide_verdict); counted by verdict.
+// the reference beds, and the fits' verdict (decide_verdict, no confirmation); counted by
+// verdict.
 FalseAlarms null_false_alarms(const std::vector<const Effect *> &effects, const std::map<std::string, EffectData> &data,
                               const std::vector<EffectFit> &fits, const Features &f);
 
@@ -43,11 +45,18 @@ void how_blind(const std::vector<const Effect *> &effects, const std::map<std::s
 // against the baseline's.
 std::string packing_note(const EffectData &ed, double magnitude, const std::vector<double> &phi0, double phi0_baseline);
 
-// Fits every effect (d.ranking, d.magnitude_note, d.n_null) and decides the verdict
-// (decide_verdict). Returns the effects' model data by name, for the confirmation.
-// phi0(sweep): the mean phi_0 of a sweep's beds (for packing's note).
-std::map<std::string, EffectData> fit_candidates(const std::vector<const Effect *> &effects, const Features &f,
-                                                 const std::function<double(const std::string &)> &phi0, Diagnosis &d);
+// The stage's result: the effects' model data by name (for the confirmation) and the
+// fits' evidence the verdict reads (gap_verdict.h).
+struct FittedCandidates {
+  std::map<std::string, EffectData> data;
+  FitEvidence evidence;
+};
+
+// Fits every effect (d.ranking, d.magnitude_note, d.n_null) and takes the fits' verdict
+// (decide_verdict, recorded into d). phi0(sweep): the mean phi_0 of a sweep's beds (for
+// packing's note).
+FittedCandidates fit_candidates(const std::vector<const Effect *> &effects, const Features &f,
+                                const std::function<double(const std::string &)> &phi0, Diagnosis &d);
 
 }    // namespace granpen
 

@@ -4,6 +4,7 @@
 #include "bed_info.h"
 #include "json_text.h"
 #include "json_writer.h"
+#include "scaling_laws.h"
 #include "trace_fit.h"
 #include "trace_reader.h"
 
@@ -247,8 +248,9 @@ CalibrationSweep read_calibration_sweep(const std::string &sweep, double zmin, d
       if (bed && std::fabs(bed->mu - p.mu) > 1e-9 * std::fabs(p.mu))
         sw.notes.push_back(f + ": pushed at mu = " + json_number("%g", p.mu) + " into bed '" + p.bed + "' poured at mu = " +
                         json_number("%g", bed->mu) + " (grouped by the push's mu)");
-      double rho_g = 3.0;
-      if (!key("rho_g", rho_g)) sw.notes.push_back(f + ": no rho_g header key; alpha uses rho_g = 3 g/cm^3");
+      double rho_g = DEFAULT_RHO_G;
+      if (!key("rho_g", rho_g))
+        sw.notes.push_back(f + ": no rho_g header key; alpha uses rho_g = " + json_number("%g", rho_g) + " g/cm^3");
 
       TraceFitParams par;
       par.zlo = zmin;

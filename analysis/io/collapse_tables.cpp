@@ -2,6 +2,7 @@
 #include "collapse_tables.h"
 
 #include "json_text.h"
+#include "scaling_laws.h"
 #include "trace_fit.h"
 #include "trace_reader.h"
 
@@ -9,9 +10,9 @@ namespace granpen {
 
 double alpha_depth_term(const DepthTerm &dt, const Trace &tr)
 {
-  const double mu = dt.mu > 0 ? dt.mu : tr.number("mu", 0.3);
-  const double rho = dt.rho_g > 0 ? dt.rho_g : tr.number("rho_g", 3.0);
-  return dt.alpha * mu * rho * tr.g * tr.D * tr.D;
+  const double mu = dt.mu > 0 ? dt.mu : tr.number("mu", DEFAULT_MU);
+  const double rho = dt.rho_g > 0 ? dt.rho_g : tr.number("rho_g", DEFAULT_RHO_G);
+  return k_z_from_alpha(dt.alpha, mu, rho, tr.g, tr.D);
 }
 
 TraceFitParams depth_term_window(const DepthTerm &dt, const Trace &tr)

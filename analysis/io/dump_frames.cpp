@@ -92,6 +92,7 @@ PushTrace load_push_trace(const std::string &path)
 {
   PushTrace h;
   h.trace = read_trace(path);
+  require_t(h.trace, "--trace (the push's time against the dump's steps)");
   h.present = true;
   auto get = [&](const char *key, bool &have, double &v) {
     auto it = h.trace.keys.find(key);

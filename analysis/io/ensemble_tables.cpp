@@ -27,7 +27,10 @@ std::string g3(double v) { return json_number("%g", v); }
 
 std::string TraceGroup::label() const
 {
-  return "v0 = " + g3(v0) + " cm/s, g = " + g3(g) + " cm/s^2, D = " + g3(D) + " cm";
+  std::string s = "v0 = " + g3(v0) + " cm/s";
+  if (v0_tolerance > 0.0 && v0_max > v0_min)
+    s += " (runs at " + g3(v0_min) + ".." + g3(v0_max) + " cm/s, grouped within " + g3(100.0 * v0_tolerance) + "%)";
+  return s + ", g = " + g3(g) + " cm/s^2, D = " + g3(D) + " cm";
 }
 
 std::vector<Trace> read_traces(const std::vector<std::string> &files, std::vector<std::string> &problems)
@@ -43,16 +46,34 @@ std::vector<Trace> read_traces(const std::vector<std::string> &files, std::vecto
   return out;
 }
 
-std::vector<TraceGroup> group_traces(const std::vector<Trace> &traces)
+std::vector<TraceGroup> group_traces(const std::vector<Trace> &traces, double v0_tolerance)
 {
   std::map<std::tuple<double, double, double>, TraceGroup> m;    // (g, D, v0)
   for (const auto &t : traces) {
     TraceGroup &g = m[{key6(t.g), key6(t.D), key6(t.v0)}];
-    if (g.traces.empty()) g.v0 = t.v0, g.g = t.g, g.D = t.D;
+    if (g.traces.empty()) g.v0 = t.v0, g.g = t.g, g.D = t.D, g.v0_min = g.v0_max = t.v0;
     g.traces.push_back(t);
   }
   std::vector<TraceGroup> out;
-  for (auto &kv : m) out.push_back(std::move(kv.second));
+  for (auto &kv : m) {
+    TraceGroup &next = kv.second;
+    // sorted by (g, D, v0): a group within the tolerance of the slowest run of the one
+    // before (same g and D) joins it
+    if (v0_tolerance > 0.0 && !out.empty()) {
+      TraceGroup &prev = out.back();
+      if (key6(prev.g) == key6(next.g) && key6(prev.D) == key6(next.D) &&
+          next.v0_max <= prev.v0_min * (1.0 + v0_tolerance)) {
+        for (auto &t : next.traces) prev.traces.push_back(std::move(t));
+        prev.v0_max = next.v0_max;
+        double sum = 0.0;
+        for (const auto &t : prev.traces) sum += t.v0;
+        prev.v0 = sum / (double) prev.traces.size();
+        continue;
+      }
+    }
+    next.v0_tolerance = v0_tolerance;
+    out.push_back(std::move(next));
+  }
   return out;
 }
 
@@ -112,6 +133,7 @@ Json ensemble_json(const TraceGroup &g)
   const EnsembleMean &m = g.mean;
   Json j;
   j["v0"] = n(g.v0), j["g"] = n(g.g), j["D"] = n(g.D), j["runs"] = m.runs;
+  if (g.v0_tolerance > 0.0) j["v0_min"] = n(g.v0_min), j["v0_max"] = n(g.v0_max), j["v0_tolerance"] = n(g.v0_tolerance);
   j["files"] = Json::array();
   for (std::size_t i = 0; i < g.traces.size(); ++i)
     j["files"].push_back({{"file", g.traces[i].path}, {"onset", i < m.alignment.onset.size() && std::isfinite(m.alignment.onset[i]) ? n(m.alignment.onset[i]) : Json()},

@@ -16,15 +16,20 @@
 namespace granpen {
 
 struct TraceGroup {
-  double v0 = 0.0, g = 0.0, D = 0.0;    // cgs
+  double v0 = 0.0, g = 0.0, D = 0.0;    // cgs; v0 the mean of the runs' v0 when grouped within a tolerance
+  double v0_min = 0.0, v0_max = 0.0;    // the runs' v0 range
+  double v0_tolerance = 0.0;            // the grouping's (0: equal v0)
   std::vector<Trace> traces;            // cgs, in the order given
   EnsembleMean mean;                    // set by average_groups
   std::string label() const;            // "v0 = 100 cm/s, g = 981 cm/s^2, D = 2 cm"
 };
 
 // Traces grouped by (v0, g, D), each rounded to 6 significant digits so that "100" and
-// "1.0 m/s" meet; groups sorted by g, D, then v0. Traces arrive in cgs.
-std::vector<TraceGroup> group_traces(const std::vector<Trace> &traces);
+// "1.0 m/s" meet; groups sorted by g, D, then v0. Traces arrive in cgs. With
+// v0_tolerance > 0, the runs of one (g, D) sorted by v0 form a new group at each v0 more
+// than v0_tolerance above the slowest of the current group; the group's v0 is its runs'
+// mean.
+std::vector<TraceGroup> group_traces(const std::vector<Trace> &traces, double v0_tolerance = 0.0);
 
 // Reads the files (cgs); an unreadable file is a line in problems naming it.
 std::vector<Trace> read_traces(const std::vector<std::string> &files, std::vector<std::string> &problems);

@@ -196,11 +196,15 @@ void plot_scaling(const std::vector<std::string> &inputs, Run &run)
   }
   SeriesFigure f;
   f.name = "scaling";
-  f.title = "Against the grain size ratio D/d_g: granpen (blue, ± its error), the paper's value (red; shaded: its error)" +
-            std::string(std::isfinite(paper_ratio) ? ", the paper's D/d_g (dotted)" : "");
-  f.about = "granpen plot scaling: each quantity of " + t.path +
-            " against D/d_g with its error bars, and the paper's value (a red line, with its band when it has an error)" +
-            (std::isfinite(paper_ratio) ? "; the dotted line: the paper's own D/d_g." : ".");
+  // the axis in words: "the grain size ratio D/d_g", "the box width"
+  const bool by_ratio = std::string(axis.column) == "D_over_dg";
+  const std::string axis_words = by_ratio ? "the grain size ratio D/d_g" : "the box width";
+  const std::string paper_axis = by_ratio ? "D/d_g" : "box";
+  f.title = "Against " + axis_words + ": granpen (blue, ± its error), the paper's value (red; shaded: its error)" +
+            std::string(std::isfinite(paper_ratio) ? ", the paper's " + paper_axis + " (dotted)" : "");
+  f.about = "granpen plot scaling: each quantity of " + t.path + " against " + (by_ratio ? "D/d_g" : "the box width") +
+            " with its error bars, and the paper's value (a red line, with its band when it has an error)" +
+            (std::isfinite(paper_ratio) ? "; the dotted line: the paper's own " + paper_axis + "." : ".");
   f.columns = panels.size() > 1 ? 2 : 1;
   const int rows = (int) ((panels.size() + f.columns - 1) / f.columns);
   f.width = f.columns == 1 ? 800 : 1300, f.height = 120 + 380 * rows;

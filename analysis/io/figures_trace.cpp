@@ -8,6 +8,7 @@
 #include "ensemble_tables.h"
 #include "json_text.h"
 #include "linear_fit.h"
+#include "scaling_laws.h"
 #include "trace_files.h"
 #include "trace_fit.h"
 #include "trace_reader.h"
@@ -190,9 +191,9 @@ std::string window_text(const Options &o)
 bool depth_term(const TraceIn &t, const Options &o, double &k_z, std::string &why)
 {
   if (o.alpha > 0.0) {
-    const double mu = o.mu > 0 ? o.mu : t.tr.number("mu", 0.3);
-    const double rho = o.rho > 0 ? o.rho : t.tr.number("rho_g", 3.0);
-    k_z = o.alpha * mu * rho * t.tr.g * t.tr.D * t.tr.D;
+    const double mu = o.mu > 0 ? o.mu : t.tr.number("mu", DEFAULT_MU);
+    const double rho = o.rho > 0 ? o.rho : t.tr.number("rho_g", DEFAULT_RHO_G);
+    k_z = k_z_from_alpha(o.alpha, mu, rho, t.tr.g, t.tr.D);
     return true;
   }
   TraceFitParams fp;
@@ -337,7 +338,7 @@ void force_ensembles(const std::vector<TraceIn> &traces, double factor, double z
 {
   std::vector<Trace> tr;
   for (const auto &t : traces) tr.push_back(t.tr);
-  auto groups = group_traces(tr);
+  auto groups = group_traces(tr, run.opt.ens.v0_tolerance);
   average_groups(groups, run.opt.ens, run.problems);
   bool several_cases = false;
   for (const auto &g : groups) several_cases |= g.g != groups.front().g || g.D != groups.front().D;
@@ -438,7 +439,7 @@ void plot_force(const std::vector<std::string> &inputs, Run &run)
     Dmax = std::max(Dmax, t.tr.D);
     for (double F : t.tr.F) Fmax = std::max(Fmax, std::fabs(F));
   }
-  const double zpeak = 0.35 * Dmax;    // 0.7 R
+  const double zpeak = peak_regime_end(Dmax);
   const AxisScale ys = axis_scale(Fmax, "dyne");
   const std::string no_view = peak_view_missing(traces, zpeak);
   const bool view = no_view.empty();
@@ -517,11 +518,10 @@ struct RatioCurves {
 std::vector<double> ratio_se(const EnsembleCase &c, const CollapseCurve &cv, const CollapseParams &p)
 {
   const EnsembleMean &m = c.mean;
-  const double scale = std::sqrt(c.g / c.D) / c.v0;
   std::map<long, std::vector<std::pair<double, int>>> bins;    // bin -> per run (sum, count)
   for (std::size_t k = 0; k < m.z.size(); ++k) {
     if (m.z[k] < p.zmin) continue;
-    auto &b = bins[(long) std::floor(m.z[k] * scale / p.tbin)];
+    auto &b = bins[(long) std::floor(t_tilde(m.z[k], c.v0, c.g, c.D) / p.tbin)];
     b.resize(m.runs);
     for (std::size_t r = 0; r < m.runs; ++r) b[r].first += m.per_run[r][k] / (cv.k_z * m.z[k]), ++b[r].second;
   }
@@ -562,7 +562,7 @@ bool ratio_curves(const std::vector<TraceIn> &traces, Run &run, RatioCurves &rc,
   }
   std::vector<Trace> tr;
   for (const auto &t : traces) tr.push_back(t.tr);
-  auto groups = group_traces(tr);
+  auto groups = group_traces(tr, run.opt.ens.v0_tolerance);
   average_groups(groups, o.ens, run.problems);
   DepthTerm dt;
   dt.kz_zmin = o.kz_zmin, dt.kz_zmax = o.kz_zmax, dt.alpha = o.alpha, dt.mu = o.mu, dt.rho_g = o.rho;
@@ -669,9 +669,8 @@ void plot_ratio(const std::vector<std::string> &inputs, Run &run)
       else if (i == kv.second.front())
         sb.title = v0_text(c.v0) + " (" + std::to_string(kv.second.size()) + " runs)";
       sa.line_width = sb.line_width = 1.8;
-      const double scale = std::sqrt(c.g / c.D) / c.v0;
       for (std::size_t k = 0; k < c.t.size(); ++k) {
-        sa.x.push_back(c.t[k] / scale), sa.y.push_back(c.ratio[k]);
+        sa.x.push_back(depth_at_t_tilde(c.t[k], c.v0, c.g, c.D)), sa.y.push_back(c.ratio[k]);
         sb.x.push_back(c.t[k]), sb.y.push_back(c.ratio[k]);
         ymax = std::max(ymax, c.ratio[k]), ymin = std::min(ymin, c.ratio[k]);
         if (run.opt.ensemble) {    // the run-to-run band
@@ -755,7 +754,7 @@ bool peak_ensembles(const std::vector<TraceIn> &traces, Run &run, std::vector<Tr
 {
   std::vector<Trace> tr;
   for (const auto &t : traces) tr.push_back(t.tr);
-  groups = group_traces(tr);
+  groups = group_traces(tr, run.opt.ens.v0_tolerance);
   average_groups(groups, run.opt.ens, run.problems);
   std::vector<EnsembleCase> cases;
   for (const auto &g : groups) {
@@ -912,7 +911,7 @@ void ensemble_kz(const std::vector<TraceIn> &traces, Run &run, std::vector<std::
 {
   std::vector<Trace> tr;
   for (const auto &t : traces) tr.push_back(t.tr);
-  auto groups = group_traces(tr);
+  auto groups = group_traces(tr, run.opt.ens.v0_tolerance);
   average_groups(groups, run.opt.ens, run.problems);
   for (const auto &g : groups) {
     TraceFitParams fp;

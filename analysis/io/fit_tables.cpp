@@ -2,6 +2,7 @@
 #include "fit_tables.h"
 
 #include "json_text.h"
+#include "scaling_laws.h"
 #include "trace_reader.h"
 
 #include <cerrno>
@@ -22,7 +23,7 @@ bool number_arg(const std::string &s, double &v)
   return !s.empty() && end && *end == '\0' && errno != ERANGE && std::isfinite(v);
 }
 
-const double DEFAULT_MU = 0.3, DEFAULT_RHO = 3.0, DEFAULT_DG = 0.4;
+const double DEFAULT_DG = 0.4;
 
 // header value: returns false (message set) when present but not a number
 bool header_value(const Trace &tr, const char *key, double fallback, double &out,
@@ -128,15 +129,15 @@ FitResult fit_trace_file(const std::string &file, const FitWindow &w)
   const Trace tr = to_cgs(read_trace(file));
   std::string msg;
   if (!header_value(tr, "mu", DEFAULT_MU, r.mu, r.mu_src, msg) ||
-      !header_value(tr, "rho_g", DEFAULT_RHO, r.rho_g, r.rho_src, msg) ||
+      !header_value(tr, "rho_g", DEFAULT_RHO_G, r.rho_g, r.rho_src, msg) ||
       !header_value(tr, "d_g", DEFAULT_DG, r.d_g, r.dg_src, msg))
     throw InputError(msg);
   if (w.mu > 0) r.mu = w.mu, r.mu_src = "option";
   if (w.rho_g > 0) r.rho_g = w.rho_g, r.rho_src = "option";
   r.v0 = tr.v0, r.D = tr.D, r.g = tr.g;
   TraceFitParams p;
-  // a t~ window: z >= t~ v0 sqrt(D / g), this trace's depth of that t~
-  p.zlo = w.tmin > 0 ? w.tmin * tr.v0 * std::sqrt(tr.D / tr.g) : w.zmin;
+  // a t~ window: z at least this trace's depth of that t~
+  p.zlo = w.tmin > 0 ? depth_at_t_tilde(w.tmin, tr.v0, tr.g, tr.D) : w.zmin;
   p.zhi = w.zmax;
   p.v0 = tr.v0, p.D = tr.D, p.g = tr.g;
   p.mu = r.mu, p.rho_g = r.rho_g, p.d_g = r.d_g;

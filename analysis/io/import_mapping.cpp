@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 
@@ -33,7 +35,7 @@ const std::set<std::string> KEYS = {
     "delimiter", "decimal", "header_lines", "column_names", "lines_after_names", "time", "time_unit", "sample_rate", "force",
     "force_unit", "area", "area_unit", "force_sign", "displacement", "depth", "position_unit", "position_sign",
     "speed", "speed_unit", "speed_sign", "v0", "v0_unit", "tare_rows", "onset_force", "surface", "position_noise",
-    "end_time", "speed_rows", "speed_tolerance", "window"};
+    "end_time", "speed_rows", "speed_tolerance", "end_tolerance", "window"};
 const std::map<std::string, std::string> ALIASES = {{"displacement_unit", "position_unit"},
                                                      {"depth_unit", "position_unit"},
                                                      {"displacement_sign", "position_sign"},
@@ -168,15 +170,25 @@ ImportMapping parse_import_mapping(const std::string &text, const std::string &p
   if (!out.force.given()) fail_line(path, 0, "no force column (force = NAME or force = #N)");
   for (const auto *key : {"time", "force", "displacement", "depth", "speed"}) {
     const ColumnRef c = m.column(key);
-    if (c.index > 0 && out.delimiter == "keyvalue")
-      fail_line(path, m.line(key), std::string(key) + ": key=value rows have no column indices, name the key");
     if (!c.name.empty() && !out.column_names && out.delimiter != "keyvalue")
       fail_line(path, m.line(key), std::string(key) + " by name needs column_names = yes, or give #N");
   }
-  if (out.time.given() == m.has("sample_rate"))
-    fail_line(path, m.line("sample_rate") ? m.line("sample_rate") : m.line("time"),
-            out.time.given() ? "both a time column and a sample_rate: one of them" : "neither a time column nor a sample_rate");
+  if (out.time.given() && m.has("sample_rate"))
+    fail_line(path, m.line("sample_rate"), "both a time column and a sample_rate: one of them");
+  if (!out.time.given() && !m.has("sample_rate") && !out.position.given())
+    fail_line(path, 0, "neither a time column nor a sample_rate (nor a depth or displacement column: a depth-sampled "
+                       "log, whose t is the integral of dz / v with a speed column)");
   out.sample_rate = m.positive("sample_rate", 0.0);
+  using TS = ImportMapping::TimeSource;
+  out.time_source = out.time.given()        ? TS::column
+                    : m.has("sample_rate")  ? TS::sample_rate
+                    : out.speed.given()     ? TS::depth_over_speed
+                                            : TS::none;
+  // without a time every rule in time is meaningless: refused, not silently ignored
+  if (out.time_source == TS::none)
+    for (const char *key : {"window", "end_time", "time_unit"})
+      if (m.has(key))
+        fail_line(path, m.line(key), std::string(key) + " needs a time: no time column, sample_rate or speed column");
 
   // units and signs
   out.time_unit = m.text("time_unit", "s");
@@ -208,6 +220,7 @@ ImportMapping parse_import_mapping(const std::string &text, const std::string &p
   ImportRules &r = out.rules;
   r.has_position = out.position.given();
   r.has_speed = out.speed.given();
+  r.has_time = out.time_source != TS::none;
   r.tare_rows = m.count("tare_rows", 50, 0);
   if (m.has("onset_force")) r.onset_force = m.positive("onset_force", 0.0) * std::fabs(out.force_factor);
   const std::string surface = m.text("surface", out.position_is_depth ? "0" : "threshold");
@@ -223,6 +236,8 @@ ImportMapping parse_import_mapping(const std::string &text, const std::string &p
   if (m.has("end_time")) r.end_time = m.number("end_time", 0.0) * out.time_factor;
   r.speed_rows = m.count("speed_rows", 50, 2);
   r.speed_tolerance = m.positive("speed_tolerance", 0.05);
+  r.end_tolerance = m.positive("end_tolerance", 0.15);
+  if (!(r.end_tolerance < 1.0)) fail_line(path, m.line("end_tolerance"), "end_tolerance must be below 1 (a fraction of the mean speed)");
   r.window = m.positive("window", 0.0);
   if (m.has("v0")) {
     double f;
@@ -231,6 +246,100 @@ ImportMapping parse_import_mapping(const std::string &text, const std::string &p
     out.v0 = m.positive("v0", 0.0) * f;
   }
   return out;
+}
+
+std::map<std::string, double> read_v0_table(const std::string &path, bool si)
+{
+  std::string text;
+  if (!read_text_file(path, text)) throw InputError(path + ": cannot read the v0 table: " + std::strerror(errno));
+  std::map<std::string, double> table;
+  std::map<std::string, long> first;
+  long n = 0;
+  std::size_t pos = 0;
+  while (pos < text.size()) {
+    const std::size_t nl = text.find('\n', pos);
+    std::string line = text.substr(pos, nl == std::string::npos ? std::string::npos : nl - pos);
+    pos = nl == std::string::npos ? text.size() : nl + 1;
+    ++n;
+    line = line.substr(0, line.find('#'));
+    for (auto &c : line)
+      if (c == ',' || c == ';' || c == '\t' || c == '\r') c = ' ';
+    const auto w = words(line);
+    if (w.empty()) continue;
+    if (w.size() < 2 || w.size() > 3) fail_at(path, n, "expected 'FILE V0 [UNIT]', got '" + trim(line) + "'");
+    char *end = nullptr;
+    errno = 0;
+    const double v = std::strtod(w[1].c_str(), &end);
+    if (*end || errno == ERANGE || !(v > 0.0) || !std::isfinite(v))
+      fail_at(path, n, "v0 of " + w[0] + " must be a number > 0, got '" + w[1] + "'");
+    double f = 1.0;
+    if (w.size() == 3 && !speed_unit_factor(w[2], si, f))
+      fail_at(path, n, "unknown speed unit '" + w[2] + "' (LENGTH/TIME: m, cm, mm, um, in over s, ms, min)");
+    if (first.count(w[0])) fail_at(path, n, w[0] + " given twice (first at line " + std::to_string(first[w[0]]) + ")");
+    first[w[0]] = n;
+    table[w[0]] = v * f;
+  }
+  if (table.empty()) throw InputError(path + ": no 'FILE V0' line in the v0 table");
+  return table;
+}
+
+std::string gef_mapping_text(const std::string &path)
+{
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot read: " + std::strerror(errno));
+  std::map<int, std::pair<int, std::string>> by_quantity;    // quantity -> (column, unit)
+  std::string separator = "whitespace", area, area_unit, line;
+  long n = 0, eoh = 0;
+  while (eoh == 0 && n < 10000 && std::getline(in, line)) {
+    ++n;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    const auto eq = line.find('=');
+    if (line.empty() || line[0] != '#' || eq == std::string::npos) continue;
+    const std::string key = trim(line.substr(1, eq - 1));
+    std::vector<std::string> v = split(line.substr(eq + 1), ',');
+    for (auto &f : v) f = trim(f);
+    if (key == "EOH") eoh = n;
+    else if (key == "COLUMNSEPARATOR" && !v.empty())
+      separator = v[0] == ";" ? "semicolon" : v[0] == "," ? "comma" : v[0] == "\t" || v[0].empty() ? "tab" : "whitespace";
+    else if (key == "COLUMNINFO" && v.size() >= 4)
+      by_quantity[std::atoi(v[3].c_str())] = {std::atoi(v[0].c_str()), v[1]};
+    else if (key == "MEASUREMENTVAR" && v.size() >= 3 && std::atoi(v[0].c_str()) == 1)
+      area = v[1], area_unit = v[2];
+  }
+  if (!eoh) throw InputError(path + ": GEF: no '#EOH=' line ending the header (in the first 10000 lines)");
+  const int depth_q = by_quantity.count(11) ? 11 : 1;
+  if (!by_quantity.count(depth_q)) throw InputError(path + ": GEF: no column of quantity 1 (penetration length) or 11 (corrected depth)");
+  if (!by_quantity.count(2)) throw InputError(path + ": GEF: no column of quantity 2 (cone resistance)");
+  if (area.empty()) throw InputError(path + ": GEF: no #MEASUREMENTVAR= 1 (the cone's area): the force is the cone resistance times it");
+  std::string t = "# implied by the GEF header of " + path + "\ndelimiter = " + separator + "\nheader_lines = " +
+                  std::to_string(eoh) + "\ncolumn_names = no\ndepth = #" + std::to_string(by_quantity[depth_q].first) +
+                  "\nposition_unit = " + by_quantity[depth_q].second + "\nforce = #" + std::to_string(by_quantity[2].first) +
+                  "\nforce_unit = " + by_quantity[2].second + "\narea = " + area + "\narea_unit = " + area_unit +
+                  "\ntare_rows = 0\n";
+  if (by_quantity.count(12))
+    t += "time = #" + std::to_string(by_quantity[12].first) + "\ntime_unit = " + by_quantity[12].second + "\n";
+  return t;
+}
+
+double nominal_v0(const std::map<std::string, double> &table, const std::string &file)
+{
+  const std::filesystem::path p(file);
+  for (const std::string &key : {p.filename().string(), p.stem().string()}) {
+    const auto it = table.find(key);
+    if (it != table.end()) return it->second;
+  }
+  return NAN;
+}
+
+std::string ImportMapping::time_from() const
+{
+  switch (time_source) {
+    case TimeSource::column: return "time";
+    case TimeSource::sample_rate: return "sample_rate";
+    case TimeSource::depth_over_speed: return "dz/v";
+    case TimeSource::none: break;
+  }
+  return "none";
 }
 
 ImportMapping read_import_mapping(const std::string &path, bool si)

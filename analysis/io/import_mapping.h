@@ -8,6 +8,7 @@
 
 #include "instrument_import.h"
 
+#include <map>
 #include <string>
 
 namespace granpen {
@@ -32,6 +33,13 @@ struct ImportMapping {
   ColumnRef time, force, position, speed;
   bool position_is_depth = false;    // "depth = ..." (surface 0 unless given) or "displacement = ..."
   double sample_rate = 0.0;          // Hz, instead of a time column
+  // where t comes from: a time column, the sample rate, the integral of dz / v over the
+  // rows of a depth-sampled log (a position and a speed column, no time), or nowhere (a
+  // position alone: the trace is written without t)
+  enum class TimeSource { column, sample_rate, depth_over_speed, none };
+  TimeSource time_source = TimeSource::column;
+  // the header's t_from value for time_source: time, sample_rate, dz/v, none
+  std::string time_from() const;
   // factors to the trace's units (signs included); set by read_import_mapping for `si`
   double time_factor = 1.0, force_factor = 1.0, position_factor = 1.0, speed_factor = 1.0;
   std::string force_unit = "N", position_unit = "mm", time_unit = "s", speed_unit = "mm/s";
@@ -45,6 +53,24 @@ struct ImportMapping {
 // neither time nor sample rate, ...).
 ImportMapping read_import_mapping(const std::string &path, bool si);
 ImportMapping parse_import_mapping(const std::string &text, const std::string &path, bool si);
+
+// A table of nominal speeds, one run a line: "FILE V0 [UNIT]" (white space, comma, semicolon
+// or tab between; '#' starts a comment). FILE: an input's file name, with or without its
+// extension; UNIT: LENGTH/TIME, default the traces' (cm/s in cgs, m/s in si). The speeds
+// come back in the traces' units. Throws InputError "PATH:LINE: ..." (a bad speed or unit,
+// a file given twice, a line of other shape) or "PATH: ..." (unreadable, empty).
+std::map<std::string, double> read_v0_table(const std::string &path, bool si);
+// GEF (the Geotechnical Exchange Format of cone penetration tests, GEF-CPT): the mapping
+// a GEF file's own header implies, as mapping text for parse_import_mapping. Read up to
+// "#EOH=": #COLUMNINFO (1 penetration length or 11 corrected depth -> depth, 2 cone
+// resistance -> force as a stress on the cone's area, #MEASUREMENTVAR 1 in mm2 or cm2;
+// 12 elapsed time -> time, else no time), #COLUMNSEPARATOR (default white space),
+// #RECORDSEPARATOR (a trailing field, ignored); tare_rows = 0 (the cone is in the ground
+// from the first row). Throws InputError "PATH: ..." (no #EOH=, no depth or cone
+// resistance column, no cone area, a unit not known).
+std::string gef_mapping_text(const std::string &path);
+// the table's speed for an input file (its name, else its stem); NaN when absent
+double nominal_v0(const std::map<std::string, double> &table, const std::string &file);
 
 }    // namespace granpen
 

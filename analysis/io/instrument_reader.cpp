@@ -106,22 +106,11 @@ bool InstrumentReader::locate(const std::vector<std::string> &names, std::string
 
 bool InstrumentReader::numeric_row(const std::string &line, Delim d) const
 {
-  double v;
-  if (d == Delim::keyvalue) {
-    for (const ColumnRef *c : {&m_.time, &m_.force, &m_.position, &m_.speed}) {
-      if (!c->given()) continue;
-      bool found = false;
-      for (const auto &kv : fields(line, d)) {
-        const auto eq = kv.find('=');
-        if (eq != std::string::npos && kv.substr(0, eq) == c->name) found = parse_number(kv.substr(eq + 1), v);
-      }
-      if (!found) return false;
-    }
-    return true;
-  }
   const auto f = fields(line, d);
+  double v;
   for (const ColumnRef *c : {&m_.time, &m_.force, &m_.position, &m_.speed})
-    if (c->given() && (c->index > (int) f.size() || !parse_number(f[c->index - 1], v))) return false;
+    if (c->given() && !value_of(f, d, c->index - 1, *c, "", v).empty()) return false;
+  if (d == Delim::keyvalue) return true;
   return f.size() >= 2 || (f.size() == 1 && m_.force.index == 1 && !m_.time.given() && !m_.position.given());
 }
 
@@ -196,51 +185,70 @@ void InstrumentReader::find_layout()
   throw InputError(path_ + ": no data row with numbers in the mapped columns");
 }
 
-double InstrumentReader::field_value(const std::vector<std::string> &f, int index, const ColumnRef &c, const char *what,
-                                     long line_no) const
+std::string InstrumentReader::value_of(const std::vector<std::string> &f, Delim d, int index, const ColumnRef &c,
+                                       const char *what, double &v) const
 {
-  if (index >= (int) f.size())
-    fail_at(path_, line_no, std::to_string(f.size()) + " fields: no " + what + " column " + c.text());
-  double v;
-  if (!parse_number(f[index], v))
-    fail_at(path_, line_no, std::string(what) + " column " + c.text() + " is not a number: '" + unquote(f[index]) + "'");
-  return v;
-}
-
-double InstrumentReader::key_value(const std::string &line, const ColumnRef &c, const char *what, long line_no) const
-{
-  for (const auto &kv : fields(line, Delim::keyvalue)) {
-    const auto eq = kv.find('=');
-    if (eq == std::string::npos || kv.substr(0, eq) != c.name) continue;
-    double v;
-    if (!parse_number(kv.substr(eq + 1), v))
-      fail_at(path_, line_no, std::string(what) + " key '" + c.name + "' is not a number: '" + kv.substr(eq + 1) + "'");
-    return v;
+  if (index < 0) {    // a key=value row's key
+    for (const auto &kv : f) {
+      const auto eq = kv.find('=');
+      if (eq == std::string::npos || kv.substr(0, eq) != c.name) continue;
+      if (!parse_number(kv.substr(eq + 1), v))
+        return std::string(what) + " key '" + c.name + "' is not a number: '" + kv.substr(eq + 1) + "'";
+      return "";
+    }
+    return "no " + std::string(what) + " key '" + c.name + "=' in the row";
   }
-  fail_at(path_, line_no, "no " + std::string(what) + " key '" + c.name + "=' in the row");
+  if (index >= (int) f.size()) return std::to_string(f.size()) + " fields: no " + what + " column " + c.text();
+  std::string field = f[index];
+  if (d == Delim::keyvalue) {
+    // a key=value field by position: its value, or a keyless field after its leading symbols
+    const auto eq = field.find('=');
+    if (eq != std::string::npos)
+      field = field.substr(eq + 1);
+    else
+      field = field.substr(std::min(field.size(), field.find_first_of("0123456789+-.")));
+  }
+  if (!parse_number(field, v)) return std::string(what) + " column " + c.text() + " is not a number: '" + unquote(f[index]) + "'";
+  return "";
 }
 
-ImportRow InstrumentReader::to_row(const std::string &line, long line_no)
+std::string InstrumentReader::parse_fields(const std::string &line, ImportRow &r) const
 {
-  ImportRow r;
+  const auto f = fields(line, delim_);
+  const bool kv = delim_ == Delim::keyvalue;
+  std::string why = value_of(f, delim_, kv ? m_.force.index - 1 : i_force_, m_.force, "force", r.F);
+  const struct {
+    const ColumnRef &c;
+    int located;
+    const char *what;
+    double &v;
+  } others[] = {{m_.time, i_time_, "time", r.t}, {m_.position, i_position_, "position", r.x}, {m_.speed, i_speed_, "speed", r.v}};
+  for (const auto &o : others)
+    if (why.empty() && o.c.given()) why = value_of(f, delim_, kv ? o.c.index - 1 : o.located, o.c, o.what, o.v);
+  return why;
+}
+
+ImportRow InstrumentReader::to_row(ImportRow r, long line_no)
+{
   r.line = line_no;
-  if (delim_ == Delim::keyvalue) {
-    r.F = key_value(line, m_.force, "force", line_no);
-    if (m_.time.given()) r.t = key_value(line, m_.time, "time", line_no);
-    if (m_.position.given()) r.x = key_value(line, m_.position, "position", line_no);
-    if (m_.speed.given()) r.v = key_value(line, m_.speed, "speed", line_no);
-  } else {
-    const auto f = fields(line, delim_);
-    r.F = field_value(f, i_force_, m_.force, "force", line_no);
-    if (i_time_ >= 0) r.t = field_value(f, i_time_, m_.time, "time", line_no);
-    if (i_position_ >= 0) r.x = field_value(f, i_position_, m_.position, "position", line_no);
-    if (i_speed_ >= 0) r.v = field_value(f, i_speed_, m_.speed, "speed", line_no);
-  }
-  r.t = m_.time.given() ? r.t * m_.time_factor : (double) rows_ / m_.sample_rate;
   r.F *= m_.force_factor;
   r.x *= m_.position_factor;
   r.v *= m_.speed_factor;
+  using TS = ImportMapping::TimeSource;
+  switch (m_.time_source) {
+    case TS::column: r.t *= m_.time_factor; break;
+    case TS::sample_rate: r.t = (double) rows_ / m_.sample_rate; break;
+    case TS::none: r.t = (double) rows_; break;    // the order of the rows, not a time
+    case TS::depth_over_speed:
+      try {
+        r.t = clock_.next(r.x, r.v, line_no);
+      } catch (const ImportRejected &e) {
+        fail_at(path_, line_no, e.what());
+      }
+      break;
+  }
   ++rows_;
+  last_data_line_ = line_no;
   return r;
 }
 
@@ -248,7 +256,10 @@ bool InstrumentReader::next(std::vector<ImportRow> &rows, std::size_t max_rows)
 {
   rows.clear();
   if (!pending_.empty()) {
-    rows.push_back(to_row(pending_, pending_no_));
+    ImportRow raw;
+    const std::string why = parse_fields(pending_, raw);
+    if (!why.empty()) fail_at(path_, pending_no_, why);
+    rows.push_back(to_row(raw, pending_no_));
     pending_.clear();
   }
   std::string line;
@@ -256,7 +267,22 @@ bool InstrumentReader::next(std::vector<ImportRow> &rows, std::size_t max_rows)
     if (names_line_ && line_no_ <= names_line_ + m_.lines_after_names) continue;    // a units line
     const std::string t = trim(line);
     if (t.empty() || t[0] == '#') continue;    // blank lines and comments between rows
-    rows.push_back(to_row(line, line_no_));
+    ImportRow raw;
+    const std::string why = parse_fields(line, raw);
+    if (trailer_line_) {    // past the data's end: a data row now means the end was not one
+      if (why.empty())
+        fail_at(path_, trailer_line_, trailer_why_ + " (the data seemed to end at this line, but data rows come back at line " +
+                                          std::to_string(line_no_) + ")");
+      continue;
+    }
+    if (!why.empty() && rows_ > 0) {    // the data end here: a trailer or footer
+      trailer_line_ = line_no_;
+      trailer_why_ = why;
+      trailer_text_ = t.substr(0, 60);
+      continue;
+    }
+    if (!why.empty()) fail_at(path_, line_no_, why);    // the first data row
+    rows.push_back(to_row(raw, line_no_));
   }
   return !rows.empty();
 }

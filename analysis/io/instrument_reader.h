@@ -2,7 +2,10 @@
 // penetrometer's export) read row by row in chunks, as a mapping (import_mapping.h) says:
 // comma, semicolon, tab or white-space delimited, or rows of key=value pairs; a decimal
 // point or comma; any number of header lines before the column names (found when not
-// given). Rows come out in the trace's units with the mapping's signs. Memory does not
+// given). Rows come out in the trace's units with the mapping's signs; t from the time
+// column, the sample rate, the integral of dz / v (a depth-sampled log) or, without any,
+// the row index. A field of a key=value row is named by its key or by its position
+// (#N, also for a field without a key such as a logger's counter '%452304468'). Memory does not
 // grow with the file: a chunk of rows at a time. Rejections name the file and line.
 #ifndef GRANPEN_INSTRUMENT_READER_H
 #define GRANPEN_INSTRUMENT_READER_H
@@ -30,6 +33,14 @@ class InstrumentReader {
   // how the file was read, e.g. "semicolon-delimited, decimal comma, 3 header lines"
   std::string layout() const;
 
+  // Where the data ended, once next() has returned false: the data end at the first line,
+  // after at least one data row, whose mapped fields are not all numbers (a logger's
+  // trailer, a footer, a summary); blank and '#' lines between rows are skipped. A data
+  // row after that line is an InputError naming both lines.
+  long last_data_line() const { return last_data_line_; }
+  long trailer_line() const { return trailer_line_; }    // 0: the data run to the end of the file
+  std::string trailer_text() const { return trailer_text_; }    // that line, trimmed, at most 60 characters
+
  private:
   enum class Delim { comma, semicolon, tab, whitespace, keyvalue };
   bool read_line(std::string &line);
@@ -39,10 +50,14 @@ class InstrumentReader {
   bool locate(const std::vector<std::string> &names, std::string &missing);
   bool parse_number(const std::string &field, double &v) const;
   bool numeric_row(const std::string &line, Delim d) const;
-  ImportRow to_row(const std::string &line, long line_no);
-  double field_value(const std::vector<std::string> &f, int index, const ColumnRef &c, const char *what,
-                     long line_no) const;
-  double key_value(const std::string &line, const ColumnRef &c, const char *what, long line_no) const;
+  // the row's values (parse_fields) in the trace's units, with its t
+  ImportRow to_row(ImportRow raw, long line_no);
+  // why the mapped columns of line are not all numbers ("" when they are), with the values
+  // in r (raw: units not applied)
+  std::string parse_fields(const std::string &line, ImportRow &r) const;
+  // one mapped column's value from the row's fields; "" or why not
+  std::string value_of(const std::vector<std::string> &f, Delim d, int index, const ColumnRef &c, const char *what,
+                       double &v) const;
 
   std::string path_;
   ImportMapping m_;
@@ -55,6 +70,9 @@ class InstrumentReader {
   std::string pending_;               // a data line read while finding the layout
   long pending_no_ = 0;
   std::size_t rows_ = 0;              // data rows so far (the sample index without a time column)
+  DepthClock clock_;                  // t of a depth-sampled log
+  long last_data_line_ = 0, trailer_line_ = 0;
+  std::string trailer_text_, trailer_why_;
 };
 
 }    // namespace granpen

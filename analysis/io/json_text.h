@@ -1,5 +1,6 @@
-// granpen analysis: the little JSON the tools write by hand (no JSON library in the
-// dependencies): string literals with escapes, numbers that are always valid JSON.
+// granpen analysis: two pieces of JSON text: a string literal with escapes, and a number
+// that is always valid JSON. The documents themselves are built with nlohmann::json and
+// written by json_writer.h, which writes its numbers with json_number.
 #ifndef GRANPEN_JSON_TEXT_H
 #define GRANPEN_JSON_TEXT_H
 

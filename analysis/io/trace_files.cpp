@@ -41,7 +41,7 @@ std::vector<std::string> expand_trace_paths(const std::vector<std::string> &inpu
       inputs,
       [](const fs::directory_entry &e) {
         std::error_code ec;
-        return e.path().extension() == ".csv" && e.is_regular_file(ec);
+        return e.path().extension() == ".csv" && e.path().filename() != kImportSummaryName && e.is_regular_file(ec);
       },
       "folder holds no *.csv file", problems);
 }

@@ -17,7 +17,11 @@ std::vector<std::string> expand_paths(const std::vector<std::string> &inputs,
                                       const std::function<bool(const std::filesystem::directory_entry &)> &keep,
                                       const std::string &none_kept, std::vector<std::string> &problems);
 
-// expand_paths for traces: a folder's regular *.csv files
+// granpen import's table of the files it imported, written beside the traces: not a
+// trace, so a folder's expansion leaves it out
+constexpr const char *kImportSummaryName = "import_summary.csv";
+
+// expand_paths for traces: a folder's regular *.csv files but kImportSummaryName
 std::vector<std::string> expand_trace_paths(const std::vector<std::string> &inputs,
                                             std::vector<std::string> &problems);
 

@@ -34,6 +34,15 @@ double to_number(const std::string &field, const std::string &name, long line,
 
 }    // namespace
 
+bool Trace::has_t() const { return std::find(columns.begin(), columns.end(), "t") != columns.end(); }
+
+void require_t(const Trace &trace, const std::string &who)
+{
+  if (!trace.has_t())
+    throw InputError(trace.path + ": no t column (t_from = none: a depth-sampled import without a time or a speed "
+                                  "column): " + who + " needs t");
+}
+
 double Trace::number(const std::string &key, double fallback) const
 {
   auto it = keys.find(key);
@@ -219,7 +228,10 @@ void TraceParser::check_header(long colline)
     else if (c == "z") iz_ = i;
     else if (c == "F") iF_ = i;
   }
-  if (it_ < 0 || iz_ < 0 || iF_ < 0) fail_at(name, colline, "column line must name t, z and F");
+  // a depth-sampled import without time or speed writes no t and says so (t_from = none)
+  const bool untimed = tr.keys.count("t_from") && tr.keys.at("t_from") == "none";
+  if (untimed && it_ >= 0) fail_at(name, colline, "header t_from = none, but the column line names t");
+  if ((it_ < 0 && !untimed) || iz_ < 0 || iF_ < 0) fail_at(name, colline, "column line must name t, z and F");
 }
 
 void TraceParser::parse_row(const std::string &s, std::vector<double> &values)
@@ -242,6 +254,7 @@ void TraceParser::parse_row(const std::string &s, std::vector<double> &values)
       values[i] = to_number(fields[i], name_, lineno_, "column " + tr_.columns[i] + " value");
     if (!std::isfinite(values[i] * kLargestSiFactor)) too_large(lineno_, "column " + tr_.columns[i] + " value");
   }
+  if (it_ < 0) return;
   const double t = values[it_];
   if (rows_ && !(t > t_prev_))
     fail_at(name_, lineno_, "t does not increase (" + trim(fields[it_]) + " after previous row)");
@@ -259,7 +272,7 @@ Trace parse_stream(std::istream &in, const std::string &name, std::size_t max_ro
                                                                                          : &tr.other[tr.columns[i]]);
   std::vector<double> values;
   while (p.next_row(values)) {
-    if (tr.t.size() == max_rows)
+    if (tr.z.size() == max_rows)
       fail_at(name, p.line(), "more than " + std::to_string(max_rows) +
                                   " data rows (the limit of a trace read into memory; thin the trace)");
     for (std::size_t i = 0; i < values.size(); ++i) dest[i]->push_back(values[i]);
@@ -293,8 +306,9 @@ TraceSummary scan_trace(const std::string &path)
   s.header.path = path;
   std::vector<double> values;
   while (p.next_row(values)) {
-    if (!s.rows) s.t_first = values[p.t_index()], s.z_first = values[p.z_index()];
-    s.t_last = values[p.t_index()];
+    const double t = p.t_index() < 0 ? NAN : values[p.t_index()];
+    if (!s.rows) s.t_first = t, s.z_first = values[p.z_index()];
+    s.t_last = t;
     s.z_last = values[p.z_index()];
     s.F_max = std::max(s.F_max, values[p.F_index()]);
     ++s.rows;

@@ -28,7 +28,12 @@ struct Trace {
 
   // optional numeric key; fallback when absent
   double number(const std::string &key, double fallback) const;
+  // false for a trace written without t (header t_from = none: t empty)
+  bool has_t() const;
 };
+
+// InputError "PATH: no t column (...): WHO needs t" for a trace without t
+void require_t(const Trace &trace, const std::string &who);
 
 // What a reader accepts, at most (docs/reliability.md): beyond these it throws a named
 // InputError instead of allocating without bound.
@@ -50,7 +55,7 @@ Trace parse_trace(const std::string &text, const std::string &name, std::size_t 
 struct TraceSummary {
   Trace header;               // header, keys and columns; t, z, F empty
   std::size_t rows = 0;
-  double t_first = 0.0, t_last = 0.0;
+  double t_first = 0.0, t_last = 0.0;    // NaN without a t column
   double z_first = 0.0, z_last = 0.0;
   double F_max = -INFINITY;
 };

@@ -4,20 +4,23 @@
 # when any is not excused. Excused: a LAMMPS style's constructor in src/ (it parses the
 # style's arguments: Name::Name(LAMMPS *lmp, int narg, char **arg)), and the functions in
 # the allow-list file (one "path function" a line, # comments), which lists those still
-# being split elsewhere; an entry that is no longer long is reported as stale.
-#   long_functions.sh [--limit N] [--allow FILE] [--self-test] [ROOT]
+# being split elsewhere; an entry that is no longer long is reported as stale. --under DIR
+# (repeatable) checks those folders of ROOT only (analysis/gap holds its functions to 100).
+#   long_functions.sh [--limit N] [--under DIR]... [--allow FILE] [--self-test] [ROOT]
 # Exit: 0 none unexcused, 1 some, 2 usage. Needs only sh and awk.
 set -u
 limit=150
 allow=
+under=
 root=.
 self_test=no
 while [ $# -gt 0 ]; do
   case "$1" in
     --limit) limit=$2; shift 2 ;;
     --allow) allow=$2; shift 2 ;;
+    --under) under="$under $2"; shift 2 ;;
     --self-test) self_test=yes; shift ;;
-    -h|--help) sed -n '2,9p' "$0"; exit 0 ;;
+    -h|--help) sed -n '2,10p' "$0"; exit 0 ;;
     -*) echo "long_functions.sh: unknown option $1" >&2; exit 2 ;;
     *) root=$1; shift ;;
   esac
@@ -89,8 +92,9 @@ scan() {
 # the report for ROOT: prints the long functions, returns 1 when one is not excused
 check() {
   croot=$1 callow=$2
-  files=$(cd "$croot" && find src launcher analysis -name '*.cpp' -o -name '*.h' 2>/dev/null | sort)
-  [ -n "$files" ] || { echo "long_functions.sh: no C++ files under $croot/{src,launcher,analysis}" >&2; return 2; }
+  dirs=${under:-src launcher analysis}
+  files=$(cd "$croot" && find $dirs -name '*.cpp' -o -name '*.h' 2>/dev/null | sort)
+  [ -n "$files" ] || { echo "long_functions.sh: no C++ files under $croot: $dirs" >&2; return 2; }
   (cd "$croot" && scan $files) | awk -v limit="$limit" -v allowfile="$callow" -v root="$croot" '
     BEGIN {
       if (allowfile != "") {
@@ -145,6 +149,14 @@ if [ "$self_test" = yes ]; then
   [ $rc -eq 1 ] || { echo "SELF-TEST FAILED: exit $rc with a long function, 1 expected"; exit 1; }
   echo "analysis/core/k.cpp long_one" > "$t/allow"
   check "$t" "$t/allow" > /dev/null 2>&1 || { echo "SELF-TEST FAILED: an allowed function still fails"; exit 1; }
+  # --under: a folder held to a lower limit sees its own functions only
+  mkdir -p "$t/analysis/gap"
+  { echo "int gap_101()"; echo "{"; body 99; echo "}"; echo "int gap_100()"; echo "{"; body 98; echo "}"; } > "$t/analysis/gap/g.cpp"
+  out=$(under=" analysis/gap" limit=100 check "$t" "" 2>&1); rc=$?
+  echo "$out"
+  case "$out" in *"101 lines  analysis/gap/g.cpp:1  gap_101  TOO LONG"*) ;; *) echo "SELF-TEST FAILED: --under missed the long function"; exit 1 ;; esac
+  case "$out" in *long_one*|*gap_100*) echo "SELF-TEST FAILED: --under reported a function it should not"; exit 1 ;; esac
+  [ $rc -eq 1 ] || { echo "SELF-TEST FAILED: --under exit $rc with a long function, 1 expected"; exit 1; }
   echo "self-test passed: the check fails on a long function and passes once it is excused"
   exit 0
 fi

@@ -14,10 +14,13 @@
 #   6. fix wall/gran against pair gran/hertz/history for a sphere on a flat (docs/compat.md)
 #   7. LAMMPS's fix-style harness (unittest/force-styles/test_fix_timestep) on fix rod/drive,
 #      from the YAML files in tests/compat/force-styles/, in step 3's tree and build directory
+#   8. the integer sizes and MPI variants Modify_requirements.rst asks for: src/ compiled
+#      (syntax only, C++11) with -DLAMMPS_BIGBIG and MPI and with the tree's STUBS mpi.h; then
+#      step 3's package route built with -D LAMMPS_SIZES=bigbig, `lmp -h` and the same runs
 # Nothing is downloaded: the tree is given, GoogleTest (Debian's googletest package, packed as
 # LAMMPS's unittest/ fetches it), libyaml and Voro++ come from Debian.
 #
-#   tests/compat/check_current_lammps.sh [--steps "1 2 3 4 5 6 7"] [--only-compile] LAMMPS_TREE
+#   tests/compat/check_current_lammps.sh [--steps "1 2 3 4 5 6 7 8"] [--only-compile] LAMMPS_TREE
 #
 # LAMMPS builds are cached in $GRANPEN_CACHE (default ~/.cache/granpen) by tree version and
 # reused; ccache is used when installed. Environment: GRANPEN_JOBS (default: all cores).
@@ -27,7 +30,7 @@
 set -euo pipefail
 
 say() { printf 'check_current_lammps: %s\n' "$*" >&2; }
-STEPS="1 2 3 4 5 6 7"
+STEPS="1 2 3 4 5 6 7 8"
 while [ $# -gt 1 ]; do
   case "$1" in
     --steps) STEPS=$2; shift 2 ;;
@@ -131,7 +134,7 @@ make_package_tree() {
   local tree=$LBUILD/package-tree
   rm -rf "$tree"; cp -al "$src" "$tree"
   rm -rf "$tree/src/GRANPEN"; mkdir "$tree/src/GRANPEN"
-  cp -p "$ROOT"/src/*.cpp "$ROOT"/src/*.h "$tree/src/GRANPEN/"
+  cp -p "$ROOT"/src/*.cpp "$ROOT"/src/*.h "$ROOT"/src/README "$tree/src/GRANPEN/"
   cp --remove-destination "$src/cmake/CMakeLists.txt" "$tree/cmake/CMakeLists.txt"
   sed -i 's/^set(STANDARD_PACKAGES$/set(STANDARD_PACKAGES\n  GRANPEN/' "$tree/cmake/CMakeLists.txt"
   grep -q "^  GRANPEN$" "$tree/cmake/CMakeLists.txt"
@@ -223,30 +226,10 @@ lammps_tests() {
 }
 
 coding_standard() {
-  local t=$WORK/coding-standard
-  rm -rf "$t"; mkdir -p "$t/src/GRANPEN" "$t/doc/src"
-  cp "$ROOT"/src/* "$t/src/GRANPEN/"; cp "$ROOT"/docs/*.rst "$t/doc/src/"
-  local s rc=0
-  for s in whitespace permissions homepage errordocs fmtlib versiontags; do
-    if python3 "$src/tools/coding_standard/$s.py" "$t"; then echo "$s: 0 findings"
-    else echo "$s: findings above"; rc=1; fi
-  done
-  # the doc tree's own index checks, with the package's entries added to a scratch copy
-  local d=$WORK/doc-check
-  rm -rf "$d"; mkdir -p "$d"; cp -r "$src/doc/src" "$d/src"; cp "$ROOT"/docs/*.rst "$d/src/"
-  python3 "$ROOT/tests/compat/lammps_doc_entries.py" "$ROOT" "$d/src"
-  local pkgsrc=$LBUILD/package-tree/src
-  [ -d "$pkgsrc/GRANPEN" ] || pkgsrc=$t/src
-  for chk in check-styles check-packages; do
-    # paths are cut from its output: the work and cache directories have "granpen" in them
-    python3 "$src/doc/utils/$chk.py" -s "$pkgsrc" -d "$d/src" 2>&1 | sed -e "s|$d/src/||g" -e "s|$pkgsrc|SRC|g" > "$WORK/$chk.txt" || true
-    if grep -Eiq "granpen|rod/drive|rod/drag|bed/surface|flow/azimuthal|momentum/vbin|create_rod" "$WORK/$chk.txt"; then
-      echo "$chk: findings about GRANPEN:"; grep -Ei "granpen|rod/|bed/surface|flow/azimuthal|momentum/vbin|create_rod" "$WORK/$chk.txt"; rc=1
-    else
-      echo "$chk: no finding about GRANPEN ($(grep -c . "$WORK/$chk.txt") lines about the tree itself: $WORK/$chk.txt)"
-    fi
-  done
-  return $rc
+  # tools/coding_standard, check-styles and check-packages with the package's index entries,
+  # and the pages' ASCII, markup and spelling checks: the same script as the ctest
+  # docs_lammps_doc_checks runs on Debian's tree
+  "$ROOT/tests/compat/lammps_doc_checks.sh" "$src"
 }
 
 wall_gran() {
@@ -257,6 +240,33 @@ wall_gran() {
   "$ROOT/tests/compat/wall_vs_pair.sh" "$ROOT/build/lmp_granpen" "$lmp"
 }
 
+compile_src_only() {    # SIZES MPI|STUBS: every src/*.cpp, syntax only, as C++11
+  local sizes=$1 mpi=$2 cxx=c++ inc=() f
+  if [ "$mpi" = STUBS ]; then inc=(-I"$src/src/STUBS"); else cxx=mpicxx; fi
+  for f in "$ROOT"/src/*.cpp; do
+    # OMPI_SKIP_MPICXX, MPICH_SKIP_MPICXX: as LAMMPS compiles, without the MPI C++ bindings
+    "$cxx" -std=c++11 -fsyntax-only -Wall -Wextra -DOMPI_SKIP_MPICXX=1 -DMPICH_SKIP_MPICXX -DLAMMPS_"$sizes" "${inc[@]}" -I"$ROOT/src" -I"$src/src" \
+      -I/usr/include/voro++ "$f" || { echo "$(basename "$f"): does not compile with LAMMPS_$sizes and $mpi"; return 1; }
+  done
+  echo "src/*.cpp compile with LAMMPS_$sizes and $mpi"
+}
+
+bigbig_route() {
+  compile_src_only BIGBIG MPI
+  compile_src_only SMALLBIG STUBS
+  # the package route with 64-bit tags and image flags, in a build directory of its own
+  make_package_tree
+  CCACHE_BASEDIR=$LBUILD "$CMAKE" -S "$LBUILD/package-tree/cmake" -B "$LBUILD/package-bigbig" \
+    -DCMAKE_BUILD_TYPE=Release -DLAMMPS_SIZES=bigbig -DBUILD_MPI=on -DBUILD_OMP=off -DPKG_GRANPEN=on \
+    -DPKG_GRANULAR=on -DPKG_VORONOI=on -DDOWNLOAD_VORO=off -DDOWNLOAD_POTENTIALS=off "${LAUNCHER[@]}"
+  CCACHE_BASEDIR=$LBUILD "$CMAKE" --build "$LBUILD/package-bigbig" -j "$JOBS" --target lmp
+  local lmp=$LBUILD/package-bigbig/lmp
+  "$lmp" -h > "$WORK/package-bigbig-help.txt"
+  grep -q "sizeof(tagint): *64-bit" "$WORK/package-bigbig-help.txt" || { echo "lmp -h does not say 64-bit tagint"; return 1; }
+  grep -A4 "Installed packages" "$WORK/package-bigbig-help.txt" | grep -q GRANPEN
+  tiny_runs "$lmp" "" package_bigbig
+}
+
 CMAKE=${CMAKE:-cmake}
 step 1 "the plugin compiles against $version" compile_plugin
 step 2 "plugin route: plugin load into lmp built from the tree" plugin_route
@@ -265,7 +275,8 @@ step 4 "LAMMPS-level tests (ctest -L lammps) with lmp_granpen on the tree's libl
 step 5 "LAMMPS's coding-standard and doc index checks" coding_standard
 step 6 "fix wall/gran against pair gran/hertz/history (a sphere on a flat)" wall_gran
 step 7 "LAMMPS's fix-style harness (test_fix_timestep) on fix rod/drive" fix_harness
+step 8 "BIGBIG and STUBS: src/ compiled in both, the package route built with LAMMPS_SIZES=bigbig" bigbig_route
 echo
 echo "LAMMPS $version${update:+ ($update)}:"
-for n in 1 2 3 4 5 6 7; do [ -n "${result[$n]:-}" ] && echo "  step ${result[$n]}"; done
+for n in 1 2 3 4 5 6 7 8; do [ -n "${result[$n]:-}" ] && echo "  step ${result[$n]}"; done
 exit $failed

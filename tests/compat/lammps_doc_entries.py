@@ -7,7 +7,8 @@ Commands_all.rst) and every package in Packages.rst and Packages_details.rst. A 
 offered upstream adds those lines; this script adds them to a copy, so that the checks can
 run on the package as LAMMPS's CI would. The entries are written from the package's own
 doc pages (docs/*.rst: the style names from their `.. index::` lines, the one-line
-descriptions below), in LAMMPS's layout and in alphabetical order.
+descriptions below), in LAMMPS's layout and in alphabetical order; the package's section of
+Packages_details.rst is docs/lammps/Packages_details_GRANPEN.rst, inserted as it is.
 
     lammps_doc_entries.py GRANPEN_ROOT DOC_SRC_COPY
 """
@@ -23,6 +24,7 @@ DESCRIPTIONS = {
     "compute flow/azimuthal": "azimuthally averaged flow fields about a rod's axis",
     "compute momentum/vbin": "grain counts and momentum by vertical-speed class",
     "create_rod": "create a rod of overlapping spheres",
+    "restore_contact_history": "carry a restart's granular contact histories over to a new pair style",
 }
 
 
@@ -67,25 +69,34 @@ def main():
             insert_sorted(os.path.join(doc, "Commands_compute.rst"), r"^   \* :doc:`", f"   * :doc:`{name} <{page}>`", name)
         else:
             insert_sorted(os.path.join(doc, "Commands_all.rst"), r"^   \* :doc:`", f"   * :doc:`{name} <{page}>`", name)
-    # the package: a row of the table in Packages.rst, an entry and a section in Packages_details.rst
-    pkgs = os.path.join(doc, "Packages.rst")
-    with open(pkgs) as f:
-        text = f.read()
+    # the package: a row of the package table (Packages_list.rst in 29Sep2021, Packages.rst in
+    # some trees: whichever holds GRANULAR's row), an entry and a section in Packages_details.rst
     row = ("   * - :ref:`GRANPEN <PKG-GRANPEN>`\n     - rod penetration into granular beds\n"
-           "     - :doc:`fix rod/drive <fix_rod_drive>`\n     - granpen inputs/\n     - no\n")
-    text = text.replace("   * - :ref:`GRANULAR <PKG-GRANULAR>`", row + "   * - :ref:`GRANULAR <PKG-GRANULAR>`", 1)
-    with open(pkgs, "w") as f:
-        f.write(text)
+           "     - :doc:`fix rod/drive <fix_rod_drive>`\n     - PACKAGES/granpen\n     - ext\n")
+    granular_row = "   * - :ref:`GRANULAR <PKG-GRANULAR>`"
+    tables = 0
+    for name in ("Packages_list.rst", "Packages.rst"):
+        path = os.path.join(doc, name)
+        if not os.path.exists(path):
+            continue
+        with open(path) as f:
+            text = f.read()
+        if granular_row in text:
+            with open(path, "w") as f:
+                f.write(text.replace(granular_row, row + granular_row, 1))
+            tables += 1
+    if tables == 0:
+        raise SystemExit(f"{doc}: no package table with a GRANULAR row (Packages_list.rst, Packages.rst)")
     det = os.path.join(doc, "Packages_details.rst")
     with open(det) as f:
         text = f.read()
+    for anchor in ("   * :ref:`GRANULAR <PKG-GRANULAR>`", ".. _PKG-GRANULAR:"):
+        if anchor not in text:
+            raise SystemExit(f"{det}: no {anchor!r} to insert GRANPEN before")
     text = text.replace("   * :ref:`GRANULAR <PKG-GRANULAR>`",
                         "   * :ref:`GRANPEN <PKG-GRANPEN>`\n   * :ref:`GRANULAR <PKG-GRANULAR>`", 1)
-    section = (".. _PKG-GRANPEN:\n\nGRANPEN package\n---------------\n\n**Contents:**\n\n"
-               "A rod of overlapping spheres driven at constant speed into a granular bed, its drag, "
-               "and the grain flow about it.\n\n**Supporting info:**\n\n")
-    section += "".join(f"* :doc:`{(k + ' ') if k != 'command' else ''}{n} <{p}>`\n" for k, n, p in styles(root))
-    section += "\n----------\n\n"
+    with open(os.path.join(root, "docs", "lammps", "Packages_details_GRANPEN.rst")) as f:
+        section = f.read().rstrip("\n") + "\n\n----------\n\n"
     text = text.replace(".. _PKG-GRANULAR:", section + ".. _PKG-GRANULAR:", 1)
     with open(det, "w") as f:
         f.write(text)

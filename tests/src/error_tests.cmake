@@ -87,6 +87,12 @@ granpen_error_test(rod_outside_box "Create_rod: rod spans z = 12 to 18, outside 
   "create_rod 2 2.0 6.0 0.4 0.2 4.0 4.0 12.0 shell")
 granpen_error_test(rod_gaps "Create_rod: rod spacing larger than the sphere diameter leaves gaps"
   "create_rod 2 2.0 6.0 0.4 0.5 4.0 4.0 9.0 shell")
+# a rod of unbounded sphere count (a mistyped spacing or diameter) is refused by name before
+# anything is allocated: it ended in std::bad_alloc
+granpen_error_test(rod_too_many_spheres "Create_rod: the rod would have [0-9]+ spheres, more than the 10000000 a rod may have"
+  "create_rod 2 2.0 6000.0 1e-5 1e-5 4.0 4.0 1.0 filled")
+granpen_error_test(rod_wider_than_box "Create_rod: rod diameter [0-9.e+]+ is not below the box width 8[.0]* in x"
+  "create_rod 2 1e7 6.0 0.4 0.2 4.0 4.0 1.0 shell")
 granpen_error_test(rod_type_bad "Create_rod atom type 3 is outside 1 to 2" "create_rod 3 2.0 6.0 0.4 0.2 4.0 4.0 9.0 shell")
 granpen_error_test(rod_density_bad "Create_rod density must be > 0, got 0" "create_rod 2 2.0 6.0 0.4 0.2 4.0 4.0 9.0 shell density 0")
 
@@ -112,5 +118,5 @@ restore_contact_history
     COMMAND ${MPIEXEC_EXECUTABLE} ${MPIEXEC_NUMPROC_FLAG} ${np} $<TARGET_FILE:lmp_granpen> -in ${deck} -log none)
   set_tests_properties(error_restore_history_too_many_np${np} PROPERTIES ENVIRONMENT "${GRANPEN_TEST_ENV}"
     LABELS "lammps;errors" PROCESSORS ${np} PASS_REGULAR_EXPRESSION
-    "ERROR.*restore_contact_history: the restart holds 2 gran/hertz/history contact histories but the pair style defines 1")
+    "ERROR.*Restore_contact_history: the restart holds 2 gran/hertz/history contact histories but the pair style defines 1")
 endforeach()

@@ -3,6 +3,9 @@
 // the rank boundary at z = 8 on two ranks).
 #include "lmp_session.h"
 
+#include "fix_rod_drive.h"
+#include "granpen_compat.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -52,6 +55,28 @@ TEST(CreateRod, BenchRodHas764SpheresInPlace)
   auto m = s.gather("rmass", 1);
   EXPECT_DOUBLE_EQ(r[100], 0.2);
   EXPECT_NEAR(m[100], 3.0 * 4.0 / 3.0 * M_PI * 0.008, 1e-14);
+}
+
+// A rod across the periodic boundary in x (axis at x = 0.1 of a box 8 wide: half its atoms
+// wrapped to x near 8) is measured whole, as granpen flow's find_rod measures it: D = 2, the
+// axis at x = 0.1 (an image of it), and compute rod/drag's t~ with that D. Tolerances: the
+// shell's positions come from cosines, a few ulps of numbers near 1.
+TEST(FixRodDrive, RodAcrossThePeriodicBoundaryIsMeasuredWhole)
+{
+  LmpSession s;
+  s.cmds(BOX);
+  s.cmd("create_rod 2 2.0 6.0 0.4 0.2 0.1 4.0 8.0 shell density 3.0");
+  s.cmd("group rod type 2");
+  s.cmd("fix push rod rod/drive 100 surface 9.0 g 981");
+  auto *drive = static_cast<LAMMPS_NS::FixRodDrive *>(LAMMPS_NS::gp::fix_by_id(s.lmp, "push"));
+  ASSERT_NE(drive, nullptr);
+  EXPECT_NEAR(drive->rod_diameter(), 2.0, 1e-12);
+  EXPECT_NEAR(std::remainder(drive->axis_x() - 0.1, 8.0), 0.0, 1e-12);
+  EXPECT_NEAR(drive->axis_y(), 4.0, 1e-12);
+  // compute rod/drag without the fix measures D the same way: depth 1 at v0 100, g 981
+  s.cmds({"compute drag rod rod/drag surface 9.0 v0 100 g 981", "run 0"});
+  EXPECT_NEAR(s.compute_vector("drag", 4), 1.0, 1e-12);
+  EXPECT_NEAR(s.compute_vector("drag", 5), 0.01 * std::sqrt(981.0 / 2.0), 1e-12);
 }
 
 TEST(FixRodDrive, TipMovesExactlyV0T)

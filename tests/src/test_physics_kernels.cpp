@@ -119,6 +119,37 @@ TEST(FlowBinsMoments, TwoGrainsInOneBin)
   EXPECT_EQ(two.phi_voronoi, 0.0);
 }
 
+// One ring's moments (bin_moments), as the slices of granpen flow take them: a ring
+// 1 <= r < 2 of height 0.5 (volume 1.5 pi) with one grain of mass 2 and radius 0.1 at
+// v_z = 4, over 2 frames without stress; an empty ring keeps its centre as rbar, zbar.
+TEST(FlowBinsMoments, OneRingOverTwoFrames)
+{
+  EXPECT_NEAR(ring_volume(1.0, 2.0, 0.5), 1.5 * PI, 1e-15);
+  std::vector<double> sums(FLOW_NSUM, 0.0);
+  add_grain_to_bin(sums.data(), 0.0, 1.5, 0.1, 0.0, 0.0, 4.0, 0.1, 2.0, nullptr, nullptr);
+  FlowBin m;
+  m.r = 1.5, m.z = 0.25;
+  bin_moments(sums.data(), ring_volume(1.0, 2.0, 0.5), 2.0, 0.0, false, m);
+  const double tol = 1e-15;    // a division or two of O(1) numbers
+  EXPECT_EQ(m.count, 0.5);
+  EXPECT_EQ(m.mass, 1.0);
+  EXPECT_NEAR(m.phi_centre, sphere_volume(0.1) / (1.5 * PI * 2.0), tol);
+  EXPECT_EQ(m.vz, 4.0);
+  EXPECT_EQ(m.vr, 0.0);
+  EXPECT_EQ(m.T, 0.0);    // one grain: no spread about the mean
+  EXPECT_EQ(m.p, 0.0);    // no stress frames
+  EXPECT_EQ(m.rbar, 1.5);
+  EXPECT_NEAR(m.zbar, 0.1, tol);
+  FlowBin empty;
+  empty.r = 1.5, empty.z = 0.25;
+  const std::vector<double> none(FLOW_NSUM, 0.0);
+  bin_moments(none.data(), 1.0, 2.0, 0.0, true, empty);
+  EXPECT_EQ(empty.count, 0.0);
+  EXPECT_EQ(empty.vz, 0.0);
+  EXPECT_EQ(empty.rbar, 1.5);
+  EXPECT_EQ(empty.zbar, 0.25);
+}
+
 TEST(FlowBinsMoments, RigidMotionHasNoTemperature)
 {
   // every grain at the same velocity: T = 0 exactly (round-off clipped), never negative

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <stdexcept>
+#include <string>
 
 using granpen::build_rod;
 using granpen::RodSpec;
@@ -63,6 +64,46 @@ TEST(RodGeometry, FilledRodRepeatsTheDiscInEveryLayer)
   s.filled = true;
   auto rod = build_rod(s);
   EXPECT_EQ(rod.size(), 29u * (25 + 1 + 6 + 13 + 19));
+}
+
+// the count without building is build_rod's size, for shells and filled rods of several
+// sizes (two routes: a closed count against the spheres made)
+TEST(RodGeometry, SphereCountIsTheBuiltRodsSize)
+{
+  for (bool filled : {false, true})
+    for (double D : {0.6, 1.0, 2.0, 3.3})
+      for (double spacing : {0.1, 0.2, 0.3}) {
+        RodSpec s;
+        s.diameter = D, s.spacing = spacing, s.filled = filled, s.sphere = 0.4, s.length = 3.0;
+        EXPECT_EQ(granpen::rod_sphere_count(s), static_cast<double>(build_rod(s).size()))
+            << "D " << D << " spacing " << spacing << " filled " << filled;
+      }
+}
+
+// a spec of unbounded sphere count is refused before anything is allocated (it ended in
+// std::bad_alloc in create_rod): a spacing of 1e-5 cm, a diameter of 1e7 cm, a length of 1e12
+TEST(RodGeometry, RefusesARodOfTooManySpheres)
+{
+  RodSpec s;
+  s.sphere = 1e-5, s.spacing = 1e-5, s.filled = true;
+  EXPECT_GT(granpen::rod_sphere_count(s), granpen::MAX_ROD_SPHERES);
+  EXPECT_THROW(build_rod(s), std::invalid_argument);
+  s = RodSpec{};
+  s.diameter = 1e7;
+  EXPECT_THROW(build_rod(s), std::invalid_argument);
+  s = RodSpec{};
+  s.length = 1e12;
+  EXPECT_THROW(build_rod(s), std::invalid_argument);
+  s = RodSpec{};
+  s.diameter = INFINITY;
+  EXPECT_THROW(build_rod(s), std::invalid_argument);
+  try {
+    s = RodSpec{};
+    s.diameter = 1e7;
+    build_rod(s);
+  } catch (std::invalid_argument &e) {
+    EXPECT_NE(std::string(e.what()).find("more than the 10000000 a rod may have"), std::string::npos) << e.what();
+  }
 }
 
 TEST(RodGeometry, RejectsImpossibleSpecs)

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # validation/results.sh's parts that wait for runs still under way (the dg10 column: its
-# peak, flow and D parts; the bench sweeps with stiffer grains and weaker damping), on
+# peak, flow and D parts; the bench sweeps with stiffer grains and weaker damping; the box
+# series), on
 # stand-ins made of committed traces and tables with the names those runs will have: every
 # line of a part must be what granpen gives on the same files directly (another route: the
 # CLI called here, or the mid push's own lines for the flow tables), and a part with a file
@@ -45,8 +46,27 @@ cp "$BENCH"/bench_mu0.3_s[12]_v*_g981_D2.0.csv "$BENCH"/bed_bench_mu0.3_s[12].in
 DA=$OUT/damp
 cp -r "$ST" "$DA"
 
+# ---- the box series: the 8 and 20 cm boxes' peak sweeps are the bench's own traces (beds 1
+# and 2 as the tiles 11 and 12), the 20 cm flow push the mid push's tables; 12 and 16 cm
+# missing (their parts must add no line)
+BX=$OUT/box
+for b in 8 20; do
+  mkdir -p "$BX/box_bench${b}_peak"
+  for s in 1 2; do
+    cp "$BENCH/bed_bench_mu0.3_s$s.info" "$BX/box_bench${b}_peak/bed_bench_mu0.3_s1$s.info"
+    for f in "$BENCH"/bench_mu0.3_s${s}_v*_g981_D2.0.csv; do
+      cp "$f" "$BX/box_bench${b}_peak/$(basename "$f" | sed "s/_s${s}_/_s1${s}_/")"
+    done
+  done
+done
+id=bench_mu0.3_s11_v50_g981_D2.0
+mkdir -p "$BX/box_bench20_flow/$id.flow"
+stand_in "$MID/mid_mu0.3_s1_v90_g981_D2.0.csv" "$BX/box_bench20_flow/$id.csv" 50
+cp -r "$ROOT/docs/results/mid/flow" "$ROOT/docs/results/mid/surface" "$ROOT/docs/results/mid/momentum" \
+  "$ROOT/docs/results/mid/window.txt" "$BX/box_bench20_flow/$id.flow/"
+
 GRANPEN_CLI=$CLI "$ROOT/validation/results.sh" --out "$OUT/res" --dumps /nonexistent --dg10 "$DG" --stiff "$ST" --damp "$DA" \
-  > "$OUT/res.log" 2>&1 || { cat "$OUT/res.log"; fail "results.sh failed"; }
+  --box "$BX" > "$OUT/res.log" 2>&1 || { cat "$OUT/res.log"; fail "results.sh failed"; }
 N=$OUT/res/numbers.txt
 val() { awk -v k="$1" '$1 == k { sub(/  #.*/, ""); sub(/^[^=]*= /, ""); print; exit }' "$N"; }
 same() { [ "$(val "$1")" = "$2" ] || fail "$1 = '$(val "$1")', expected '$2'"; }
@@ -73,6 +93,21 @@ done
 # each push paired with its bench twin: the stand-ins are the twins themselves
 same bench_stiff.peak_over_bench "1 +- 0 n = 8"
 same bench_damp.peak_over_bench "1 +- 0 n = 8"
+# the box series: each complete box's peak law is the bench's own (the same traces through
+# peak_law), the 20 cm box's peaks over the 8 cm box's are those of twins, its flow rows the
+# mid push's; the 12 and 16 cm boxes add no line
+for b in 8 20; do
+  for k in peak_exponent peak_exponent_ensemble peak_exponent_local peak_exponent_from_2vc peak_z \
+    peak_exponent_ensemble_from_2vc peak_inertial peak_crossover_speed; do
+    same "bench_box$b.$k" "$(val "bench.$k")"
+  done
+done
+same bench_box20.peak_over_box8 "1 +- 0 n = 10"
+for k in lambda_vz_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove; do
+  same "bench_box20.v50.$k" "$(val "mid.$k")"
+done
+! grep -q '^bench_box1[26]\.\|^bench_box8\.v50\|^bench_box8.peak_over' "$N" || fail "an incomplete box part added lines"
+grep -q "box 12 cm: 0 of 10 peak pushes" "$OUT/res.log" || fail "no note of the 12 cm box's missing pushes"
 # the flow rows of each dg10 speed: the mid push's, from the same tables
 for v in 40 100 200; do
   for k in lambda_vz_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove; do

@@ -365,8 +365,15 @@ TEST(ImportBadInput, NamedErrorNothingWritten)
          });
        },
        MAP, "in.csv:52: time does not increase"},
-      {"no_time", [] { return good_csv(plain); }, "force = F\ndisplacement = x\nsurface = 0\n",
+      {"no_time", [] { return good_csv(plain); }, "force = F\nonset_force = 1\n",
        "m.map: neither a time column nor a sample_rate"},
+      // a data row after the rows stopped matching: the end was not one (both lines named)
+      {"data_after_end", [] {
+         return good_csv([](std::size_t i, double t, double F, double z) {
+           return i == 200 ? std::string("paused\n") : plain(i, t, F, z);
+         });
+       },
+       MAP, "in.csv:202: 1 fields: no force column 'F' \\(the data seemed to end at this line, but data rows come back at line 203\\)"},
   };
   for (const auto &c : cases) {
     SCOPED_TRACE(c.name);
@@ -444,4 +451,359 @@ TEST(ImportCli, MemoryBoundedIndependentlyOfFileSize)
   ASSERT_EQ(getrusage(RUSAGE_CHILDREN, &ru), 0);
   EXPECT_LT(ru.ru_maxrss, 16 * 1024) << "kB resident at most in a child";
   EXPECT_GT(fs::file_size(d / "out" / "long.csv"), 10u << 20);
+}
+
+// ---- a penetrometer's depth-sampled log, as a commercial logger writes it: metadata
+// lines, tab-separated columns with units in the names, one row per depth step (no time),
+// the force, the measured push speed and the logger's counter; the push ends with a
+// deceleration (speed falling, force spiking) and the logger's own trailer after the data.
+namespace {
+
+struct DepthLog {
+  double v_mm_s = 20.0;         // mean push speed
+  double ripple = 0.07;         // relative amplitude of the speed's slow drift
+  double wavelength_cm = 4.0;   // of that drift
+  double c_N_per_cm = 0.8;      // F = c z (1 + wobble sin 3z) below the surface
+  double offset_N = 0.05;       // the load cell's offset
+  double wobble = 0.1;          // of the force about c z
+  int air_rows = 10, push_rows = 550, decel_rows = 8;
+  double step_mm = 0.2;
+  std::string after_trailer;    // lines after the trailer (data coming back: an error)
+
+  double z_cm(int i) const { return (i - air_rows + 1) * step_mm / 10.0; }
+  // the speed's drift starts at the mean and ends (z = 11 cm) in a trough, 7% below it
+  double speed_mm_s(double z) const { return v_mm_s * (1.0 + ripple * std::sin(2.0 * M_PI * z / wavelength_cm)); }
+  double force_N(double z) const { return z > 0.0 ? c_N_per_cm * z * (1.0 + wobble * std::sin(3.0 * z)) : 0.0; }
+  int header_lines() const { return 6; }
+  int data_rows() const { return air_rows + push_rows + decel_rows; }
+  int last_data_line() const { return header_lines() + 1 + data_rows(); }
+  int trailer_line() const { return last_data_line() + 2; }    // after the '#' line
+
+  std::string text() const
+  {
+    std::string s = "PENETROLOG PL-500 firmware 3.2.1\nSerial no.: 20-4471\nSounding: S12\n"
+                    "Started: 2026-11-20 14:02:11\nRate setpoint: " + fmt("%.1f", v_mm_s) + " mm/s\n\n";
+    s += "Depth(mm)\tForce(N)\tSpeed(mm/s)\tCount\n";
+    long count = 452304468;
+    for (int i = 0; i < air_rows + push_rows; ++i) {
+      const double z = z_cm(i);
+      count += 37 + i % 5;
+      s += fmt("%.2f", 10.0 * z) + "\t" + fmt("%.6f", force_N(z) + offset_N) + "\t" + fmt("%.4f", speed_mm_s(z)) + "\t" +
+           std::to_string(count) + "\n";
+    }
+    const double z_end = z_cm(air_rows + push_rows - 1), v_end = speed_mm_s(z_end), F_end = force_N(z_end);
+    for (int j = 1; j <= decel_rows; ++j) {
+      const double z = z_end + j * step_mm / 10.0;
+      s += fmt("%.2f", 10.0 * z) + "\t" + fmt("%.6f", F_end * (1.0 + j / 8.0) + offset_N) + "\t" +
+           fmt("%.4f", v_end * (1.0 - j / 9.0)) + "\t" + std::to_string(count += 400) + "\n";
+    }
+    return s + "#\n0:\n14:Transmission lost\n15:End of test\n" + after_trailer;
+  }
+  // t of row i: the integral of dz / v from the first row, by Simpson's rule on 200
+  // sub-steps a row (the reference; the importer takes one step a row)
+  double t_exact(int i) const
+  {
+    double t = 0.0;
+    for (int k = 1; k <= i; ++k) {
+      const double a = z_cm(k - 1), b = z_cm(k), h = (b - a) / 200.0;
+      double sum = 0.0;
+      for (int m = 0; m <= 200; ++m)
+        sum += (m == 0 || m == 200 ? 1.0 : m % 2 ? 4.0 : 2.0) / (0.1 * speed_mm_s(a + m * h));
+      t += sum * h / 3.0;
+    }
+    return t;
+  }
+};
+
+const char *DEPTH_MAP = "# PENETROLOG PL-500 exports\ndelimiter = tab\ndepth = Depth(mm)\nposition_unit = mm\n"
+                        "force = Force(N)\nforce_unit = N\nspeed = Speed(mm/s)\nspeed_unit = mm/s\ntare_rows = 10\n"
+                        "speed_rows = 5\n";
+
+}    // namespace
+
+// The round trip: t is the integral of dz / v (the header says t_from = dz/v), z the
+// depth, F tared; the deceleration (8 rows) is cut, the slow drift of the speed (7% off
+// the mean at the end) is kept and reported; the data end at the trailer, reported.
+TEST(ImportRoundTrip, DepthSampledLogWithSpeedAndTrailer)
+{
+  const fs::path d = fresh("depthlog");
+  const DepthLog L;
+  write(d / "S12.txt", L.text());
+  write(d / "pl500.map", DEPTH_MAP);
+  const CliRun r = cli(d, "import " + (d / "S12.txt").string() + " --mapping " + (d / "pl500.map").string() + " --out " +
+                           (d / "out").string() + " --D 2 --g 981 --v0 2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("data end at line " + std::to_string(L.last_data_line()) + "; from line " +
+                       std::to_string(L.trailer_line()) + " on, not data rows: '0:'"),
+            std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("cut 8 rows"), std::string::npos) << "the deceleration only, not the drift: " << r.out;
+  EXPECT_NE(r.err.find("S12.txt: speed not constant within 5%"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("(a drift: kept, not cut)"), std::string::npos) << r.err;
+  const auto tr = granpen::read_trace((d / "out" / "S12.csv").string());
+  EXPECT_EQ(tr.keys.at("t_from"), "dz/v");
+  EXPECT_EQ(tr.keys.at("v0_from"), "nominal");
+  EXPECT_DOUBLE_EQ(tr.v0, 2.0);
+  // the measured mean: about the nominal (the drift's mean over the push is near zero)
+  EXPECT_NEAR(std::stod(tr.keys.at("v0_measured")), 2.0, 0.02 * 2.0);
+  ASSERT_EQ((int) tr.z.size(), L.air_rows + L.push_rows);
+  for (std::size_t i = 0; i < tr.z.size(); ++i) {
+    // z: the printed depth exactly; F: 6 decimals of N (0.1 dyne) and the tare's rounding
+    ASSERT_NEAR(tr.z[i], L.z_cm((int) i), 1e-9) << "row " << i;
+    ASSERT_NEAR(tr.F[i], 1e5 * L.force_N(L.z_cm((int) i)), 0.2) << "row " << i;
+    // t: each row's step at the mean of its two speeds is off the integral by about
+    // h^2 k^2 ripple / 12 = 6e-6 of it (h = 0.02 cm, k = 2 pi / 4 cm), the printed speeds
+    // (4 decimals of 20 mm/s) by 2.5e-6: over the 5.6 s of the push at most 5e-5 s
+    ASSERT_NEAR(tr.t[i], L.t_exact((int) i), 5e-5) << "row " << i;
+  }
+  EXPECT_EQ(cli(d, "check " + (d / "out").string()).status, 0);
+}
+
+// Rows after the trailer that read as data: the end was not one; an error naming both lines
+TEST(ImportBadInput, DataAfterTrailerNamesBothLines)
+{
+  const fs::path d = fresh("depthlog_after");
+  DepthLog L;
+  L.after_trailer = "112.40\t9.5\t18.0000\t452399999\n";
+  write(d / "S13.txt", L.text());
+  write(d / "pl500.map", DEPTH_MAP);
+  const CliRun r = cli(d, "import " + (d / "S13.txt").string() + " --mapping " + (d / "pl500.map").string() + " --out " +
+                           (d / "out").string() + " --D 2 --g 981 --v0 2");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_TRUE(std::regex_search(r.err, std::regex("S13.txt:" + std::to_string(L.trailer_line()) +
+                                                  ": .*the data seemed to end at this line, but data rows come back at line " +
+                                                  std::to_string(L.trailer_line() + 3))))
+      << r.err;
+  EXPECT_FALSE(fs::exists(d / "out"));
+}
+
+// A depth with neither a time nor a speed: no t is made up; the trace has z and F only
+// (t_from = none), passes check, and a command that needs t refuses by name
+TEST(ImportRoundTrip, DepthWithoutTimeOrSpeedHasNoT)
+{
+  const fs::path d = fresh("depth_only");
+  const DepthLog L;
+  write(d / "S14.txt", L.text());
+  write(d / "m.map", "delimiter = tab\ndepth = Depth(mm)\nposition_unit = mm\nforce = Force(N)\ntare_rows = 10\n");
+  const CliRun r = cli(d, "import " + (d / "S14.txt").string() + " --mapping " + (d / "m.map").string() + " --out " +
+                           (d / "out").string() + " --D 2 --g 981 --v0 2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto tr = granpen::read_trace((d / "out" / "S14.csv").string());
+  EXPECT_EQ(tr.keys.at("t_from"), "none");
+  EXPECT_FALSE(tr.has_t());
+  EXPECT_EQ(tr.columns, (std::vector<std::string>{"z", "F"}));
+  // without a speed nothing is cut by it: the air, the push and the deceleration
+  ASSERT_EQ((int) tr.z.size(), L.air_rows + L.push_rows + L.decel_rows);
+  EXPECT_NEAR(tr.z.back(), L.z_cm(L.data_rows() - 1), 1e-9);
+  EXPECT_EQ(cli(d, "check " + (d / "out").string()).status, 0);
+  // momentum --trace reads the trace before any dump: the refusal names the file and what needs t
+  const CliRun mom = cli(d, "momentum " + (d / "none.dump").string() + " --trace " + (d / "out" / "S14.csv").string());
+  EXPECT_EQ(mom.status, 1);
+  EXPECT_TRUE(std::regex_search(mom.err, std::regex("S14.csv: no t column \\(t_from = none.*--trace .* needs t"))) << mom.err;
+  // without a time, a window is refused, not ignored
+  write(d / "w.map", slurp(d / "m.map") + "window = 1e-3\n");
+  const CliRun w = cli(d, "import " + (d / "S14.txt").string() + " --mapping " + (d / "w.map").string() + " --out " +
+                           (d / "out2").string() + " --D 2 --g 981 --v0 2");
+  EXPECT_EQ(w.status, 1);
+  EXPECT_NE(w.err.find("w.map:6: window needs a time"), std::string::npos) << w.err;
+}
+
+// key=value rows with a field without a key (a logger's counter, '%452304468', in
+// microseconds) addressed by its position and used as the time
+TEST(ImportRoundTrip, KeyValueRowsWithKeylessCounter)
+{
+  const fs::path d = fresh("kv_counter");
+  std::string s = "LOGGER KV-7 v1.4\n";
+  for (std::size_t i = 0; i < ORIG.t.size(); ++i)
+    s += "%" + std::to_string(452304468L + (long) std::lround(ORIG.t[i] * 1e6)) + " A=" + fmt("%.10g", ORIG.F[i] + 250.0) +
+         " D=" + fmt("%.10g", 7.0 + ORIG.z[i]) + "\n";
+  s += "#\n0:\n15:End of test\n";
+  write(d / "kv7.log", s);
+  write(d / "kv.map", "delimiter = keyvalue\ntime = #1\ntime_unit = us\nforce = A\nforce_unit = dyne\n"
+                      "displacement = D\nposition_unit = cm\nsurface = 7\ntare_rows = 10\nspeed_rows = 10\n");
+  const CliRun r = cli(d, "import " + (d / "kv7.log").string() + " --mapping " + (d / "kv.map").string() + " --out " +
+                           (d / "out").string() + " --D 2 --g 981");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("data end at line " + std::to_string(1 + ORIG.t.size())), std::string::npos) << r.out;
+  const auto tr = granpen::read_trace((d / "out" / "kv7.csv").string());
+  EXPECT_EQ(tr.keys.at("t_from"), "time");
+  EXPECT_NEAR(tr.v0, 100.0, 1e-3) << "measured from the counter and the position";
+  // t: whole microseconds of a 1e-4 s grid, exact; z, F: 10 significant figures
+  expect_equal(tr, 0, ORIG.t[0], 1e-8, 1e-9, 0);
+}
+
+// ---- a folder of runs at three nominal speeds (10, 20 and 40 mm/s, three runs each)
+// whose measured means scatter by a few percent, imported in one command, averaged per
+// nominal speed by fit --ensemble
+namespace {
+
+const double NOMINAL_MM_S[3] = {10.0, 20.0, 40.0};
+const double SCATTER[3] = {-0.03, 0.01, 0.025};       // measured mean / nominal - 1
+const double C_SPREAD[3] = {-0.05, 0.0, 0.05};        // the runs' force coefficients about 0.8 N/cm
+
+// the folder's files (S<speed><run>.txt) and the lab's table of nominal speeds
+void write_speed_folder(const fs::path &dir)
+{
+  fs::create_directories(dir);
+  std::string table = "# sounding  nominal rate\n";
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j) {
+      DepthLog L;
+      L.v_mm_s = NOMINAL_MM_S[k] * (1.0 + SCATTER[j]);
+      L.ripple = 0.02;
+      L.wobble = 0.0;
+      L.c_N_per_cm = 0.8 * (1.0 + C_SPREAD[(j + k) % 3]);
+      const std::string name = "S" + std::to_string(k + 1) + std::to_string(j + 1);
+      write(dir / (name + ".txt"), L.text());
+      table += name + "\t" + fmt("%.0f", NOMINAL_MM_S[k]) + " mm/s\n";
+    }
+  write(dir.parent_path() / "rates.tsv", table);
+}
+
+struct EnsembleLine {
+  double v0;
+  int runs;
+  double k_z, se;
+};
+// fit's lines "ensemble v0 = V cm/s...: N runs..." and, below, "  mean: k_z = K +- SE"
+std::vector<EnsembleLine> ensemble_lines(const std::string &out)
+{
+  std::vector<EnsembleLine> o;
+  const std::regex head("ensemble v0 = ([0-9.e+-]+) cm/s[^\n]*: ([0-9]+) runs?"), kz("  mean: k_z = ([0-9.e+-]+) \\+- ([0-9.e+-]+)");
+  std::istringstream in(out);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::smatch m;
+    if (std::regex_search(line, m, head)) o.push_back({std::stod(m[1]), std::stoi(m[2]), NAN, NAN});
+    else if (!o.empty() && std::regex_search(line, m, kz)) o.back().k_z = std::stod(m[1]), o.back().se = std::stod(m[2]);
+  }
+  return o;
+}
+
+// the three ensembles: their nominal v0, three runs each, and k_z the mean of the runs'
+// coefficients (F = c z exactly: the mean of the runs is linear with slope mean c) with a
+// standard error over the runs
+void expect_three_ensembles(const std::string &out, const double v0_cm_s[3])
+{
+  const auto e = ensemble_lines(out);
+  ASSERT_EQ(e.size(), 3u) << out;
+  for (int k = 0; k < 3; ++k) {
+    SCOPED_TRACE(k);
+    EXPECT_NEAR(e[k].v0, v0_cm_s[k], 1e-3 * v0_cm_s[k]);    // printed to 6 digits; 1e-3 is far above that
+    EXPECT_EQ(e[k].runs, 3);
+    // the runs' mean coefficient is 0.8 N/cm = 80000 dyne/cm; the force's 6 printed
+    // decimals of N and the binning move the fit by far less than 0.5%
+    EXPECT_NEAR(e[k].k_z, 80000.0, 0.005 * 80000.0);
+    // the coefficients' standard deviation is 5% of the mean: over 3 runs a standard
+    // error of about 0.05 / sqrt(3) = 2.9% (a bootstrap's plug-in: 2.4%); 1% to 5% allows
+    // for the bootstrap's own scatter
+    EXPECT_GT(e[k].se, 0.01 * 80000.0);
+    EXPECT_LT(e[k].se, 0.05 * 80000.0);
+  }
+}
+
+}    // namespace
+
+// One command imports the folder with the table of nominal speeds: each header's v0 is
+// the nominal, its measured mean and ripple beside it; fit --ensemble averages per speed
+TEST(ImportEnsemble, FolderOfThreeNominalSpeedsByTable)
+{
+  const fs::path d = fresh("speeds");
+  write_speed_folder(d / "lab");
+  write(d / "pl500.map", DEPTH_MAP);
+  const std::string args = "import " + (d / "lab").string() + " --mapping " + (d / "pl500.map").string() + " --out " +
+                           (d / "out").string() + " --D 2 --g 981 --v0-table " + (d / "rates.tsv").string();
+  // the dry run: each file's report, then one table, then the warnings
+  const CliRun dry = cli(d, args + " --dry-run");
+  ASSERT_EQ(dry.status, 0) << dry.err;
+  const auto table = dry.out.find("file                         rows kept");
+  ASSERT_NE(table, std::string::npos) << dry.out;
+  EXPECT_GT(table, dry.out.rfind("granpen import: " + (d / "lab" / "S33.txt").string())) << "the table after the reports";
+  EXPECT_TRUE(std::regex_search(dry.out, std::regex("\nS21\\.txt +560 +8 +[0-9]+ +2 n +1\\.9[0-9]* +1\\.[0-9]+% +0\n"))) << dry.out;
+  // and the speed against depth of each: S11's 2% drift about its mean, 16 lines of it
+  EXPECT_TRUE(std::regex_search(dry.out, std::regex("speed against depth \\(the push at speed in 16 equal times")))
+      << dry.out;
+  EXPECT_TRUE(std::regex_search(dry.out, std::regex("\n    z +[0-9.-]+\\.\\.[0-9.-]+ +cm [0-9.]+ +[+-][0-9]\\.[0-9]{2}% [+-]*\n")))
+      << dry.out;
+  EXPECT_FALSE(fs::exists(d / "out"));
+  const CliRun r = cli(d, args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err, "") << "measured means within 5% of the nominal, a ripple of 2%: no warning";
+  const std::string csv = slurp(d / "out" / "import_summary.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 10) << csv;
+  EXPECT_NE(csv.find(",S21.csv,568,560,8,"), std::string::npos) << csv;
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j) {
+      const auto tr = granpen::read_trace((d / "out" / ("S" + std::to_string(k + 1) + std::to_string(j + 1) + ".csv")).string());
+      EXPECT_DOUBLE_EQ(tr.v0, NOMINAL_MM_S[k] / 10.0);
+      EXPECT_EQ(tr.keys.at("v0_from"), "nominal");
+      // the measured mean: the run's own speed (its 2% ripple averages out over 2.75
+      // wavelengths to within 0.5%)
+      EXPECT_NEAR(std::stod(tr.keys.at("v0_measured")), NOMINAL_MM_S[k] / 10.0 * (1.0 + SCATTER[j]),
+                  0.005 * NOMINAL_MM_S[k] / 10.0);
+      EXPECT_NEAR(std::stod(tr.keys.at("v0_ripple")), 0.02 / std::sqrt(2.0), 0.005);
+    }
+  EXPECT_EQ(cli(d, "check " + (d / "out").string()).status, 0) << "the summary is not read as a trace";
+  const CliRun fit = cli(d, "fit " + (d / "out").string() + " --ensemble --zmin 1");
+  ASSERT_EQ(fit.status, 0) << fit.err << fit.out;
+  const double v0[3] = {1.0, 2.0, 4.0};
+  expect_three_ensembles(fit.out, v0);
+}
+
+// Without a table: v0 is each run's measured mean; fit --ensemble groups them by a
+// tolerance it states, and without one leaves nine ensembles of one run
+TEST(ImportEnsemble, MeasuredSpeedsGroupedWithinATolerance)
+{
+  const fs::path d = fresh("speeds_tol");
+  write_speed_folder(d / "lab");
+  write(d / "pl500.map", DEPTH_MAP);
+  const CliRun r = cli(d, "import " + (d / "lab").string() + " --mapping " + (d / "pl500.map").string() + " --out " +
+                           (d / "out").string() + " --D 2 --g 981");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto tr = granpen::read_trace((d / "out" / "S21.csv").string());
+  EXPECT_EQ(tr.keys.at("v0_from"), "measured");
+  // the header's v0 is the measured mean, written with more digits than v0_measured
+  EXPECT_NEAR(tr.v0, std::stod(tr.keys.at("v0_measured")), 1e-5 * tr.v0);
+  EXPECT_EQ(ensemble_lines(cli(d, "fit " + (d / "out").string() + " --ensemble --zmin 1").out).size(), 9u);
+  const CliRun fit = cli(d, "fit " + (d / "out").string() + " --ensemble --zmin 1 --ensemble-v0-tolerance 0.1");
+  ASSERT_EQ(fit.status, 0) << fit.err << fit.out;
+  EXPECT_NE(fit.out.find("grouped within 10%"), std::string::npos) << fit.out;
+  // each group's v0: the mean of its runs' v0, read here from the headers
+  double v0[3] = {0.0, 0.0, 0.0};
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 3; ++j)
+      v0[k] += granpen::read_trace((d / "out" / ("S" + std::to_string(k + 1) + std::to_string(j + 1) + ".csv")).string()).v0 / 3.0;
+  expect_three_ensembles(fit.out, v0);
+}
+
+// A GEF-CPT file (the open exchange format of cone penetration tests) needs no mapping:
+// --mapping gef reads its header (columns by quantity number, units, separators, the
+// cone's area); depth in m, cone resistance in MPa on a 10 cm2 cone, elapsed time in s
+TEST(ImportRoundTrip, GefConePenetrationTestNeedsNoMapping)
+{
+  const fs::path d = fresh("gef");
+  std::size_t first = 0;
+  while (ORIG.z[first] <= 0.0) ++first;    // a sounding starts at the surface
+  std::string s = "#GEFID= 1, 1, 0\n#FILEOWNER= granpen lab\n#FILEDATE= 2026, 11, 20\n#PROJECTID= CPT, 4471\n"
+                  "#COLUMN= 4\n#COLUMNINFO= 1, m, penetration length, 1\n#COLUMNINFO= 2, MPa, cone resistance, 2\n"
+                  "#COLUMNINFO= 3, MPa, local friction, 3\n#COLUMNINFO= 4, s, elapsed time, 12\n#COLUMNSEPARATOR= ;\n"
+                  "#RECORDSEPARATOR= !\n#COLUMNVOID= 1, -9999.000000\n"
+                  "#MEASUREMENTVAR= 1, 1000, mm2, nom. surface area cone tip\n#EOH=\n";
+  for (std::size_t i = first; i < ORIG.t.size(); ++i)    // F dyne on 10 cm2: F * 1e-8 MPa
+    s += fmt("%.10g", ORIG.z[i] / 100.0) + ";" + fmt("%.12g", ORIG.F[i] * 1e-8) + ";0.001;" + fmt("%.6f", ORIG.t[i]) + ";!\n";
+  write(d / "CPT12.gef", s);
+  const CliRun r = cli(d, "import " + (d / "CPT12.gef").string() + " --mapping gef --out " + (d / "out").string() +
+                           " --D 2 --g 981");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto tr = granpen::read_trace((d / "out" / "CPT12.csv").string());
+  EXPECT_EQ(tr.keys.at("mapping"), "gef");
+  EXPECT_NEAR(tr.v0, 100.0, 1e-3) << "measured from the depth and the elapsed time";
+  // z: 10 digits of m; F: 12 digits of MPa; t from the sounding's first row
+  expect_equal(tr, first, ORIG.t[first], 1e-8, 1e-9, 0);
+  EXPECT_EQ(cli(d, "check " + (d / "out").string()).status, 0);
+  // without the cone's area there is no force: named
+  write(d / "noarea.gef", std::regex_replace(s, std::regex("#MEASUREMENTVAR= 1,[^\n]*\n"), ""));
+  const CliRun bad = cli(d, "import " + (d / "noarea.gef").string() + " --mapping gef --out " + (d / "out2").string() +
+                             " --D 2 --g 981");
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_NE(bad.err.find("noarea.gef: GEF: no #MEASUREMENTVAR= 1 (the cone's area)"), std::string::npos) << bad.err;
 }

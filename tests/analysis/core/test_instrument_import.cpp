@@ -160,3 +160,102 @@ TEST(ImportKernels, PositionNoise)
   const auto s = run_passes(rules, rows, out);
   EXPECT_EQ(s.limits.end_line, rows.back().line);
 }
+
+// t of a depth-sampled log: at a constant speed every step is dz / v exactly; with a speed
+// linear in depth, v = v0 (1 + b x), the exact integral is ln(v / v0) / (v0 b), which the
+// rule (each step at the mean of its two speeds) meets to second order in the step
+TEST(ImportKernels, DepthClockIntegratesDzOverV)
+{
+  granpen::DepthClock steady;
+  for (int i = 0; i <= 100; ++i) ASSERT_NEAR(steady.next(0.05 * i, 2.0, i + 1), 0.025 * i, 1e-12);
+  const double v0 = 2.0, b = 0.05, h = 0.05;
+  granpen::DepthClock linear;
+  double t = 0.0;
+  for (int i = 0; i <= 200; ++i) t = linear.next(h * i, v0 * (1.0 + b * h * i), i + 1);
+  const double exact = std::log(1.0 + b * h * 200) / (v0 * b);
+  // the mean-speed rule's error per step is (b h)^2 / 12 of the step's time (the second
+  // derivative of 1/v): 5e-7 of t here; 1e-6 holds it
+  EXPECT_NEAR(t, exact, 1e-6 * exact);
+  EXPECT_GT(std::fabs(t - exact), 0.0) << "the rule is not exact for a varying speed";
+  granpen::DepthClock stuck;
+  stuck.next(1.0, 2.0, 5);
+  try {
+    stuck.next(1.0, 2.0, 6);
+    FAIL() << "a depth that does not advance accepted";
+  } catch (const granpen::ImportRejected &e) {
+    EXPECT_EQ(e.line, 6);
+    EXPECT_NE(std::string(e.what()).find("depth does not advance"), std::string::npos);
+  }
+  granpen::DepthClock halted;
+  halted.next(1.0, 0.0, 5);
+  EXPECT_THROW(halted.next(1.1, 0.0, 6), granpen::ImportRejected) << "no speed at either end of a step";
+}
+
+// The end of the push: a slow drift of the speed (a swing of 8% about the mean, ending
+// in a trough) is kept, a deceleration (to 30% and below) is cut
+TEST(ImportKernels, EndCutsDecelerationNotDrift)
+{
+  granpen::ImportRules rules;
+  rules.has_position = true;
+  rules.tare_rows = 10;
+  rules.onset_force = 10.0;
+  rules.speed_rows = 20;
+  std::vector<granpen::ImportRow> rows;
+  double x = -0.3;
+  const int n = 6000, stop_from = 5960;
+  for (int i = 0; i < n; ++i) {
+    // 1.75 periods before the stop: it begins at the mean and ends at the trough
+    double v = 100.0 * (1.0 + 0.08 * std::sin(2.0 * M_PI * 1.75 * std::min(i, stop_from) / (double) stop_from));
+    if (i >= stop_from) v *= std::max(0.05, 0.3 * (1.0 - (i - stop_from) / 40.0));
+    granpen::ImportRow r;
+    r.t = i * 1e-5;
+    if (i) x += v * 1e-5;
+    r.x = x;
+    r.F = x > 0 ? 1000.0 * x : 0.0;
+    r.line = i + 2;
+    rows.push_back(r);
+  }
+  std::vector<granpen::TracePoint> out;
+  const auto s = run_passes(rules, rows, out);
+  // the 40 rows of the stop, and at most one block (speed_rows) that holds its start
+  EXPECT_GE(s.rows_cut, 40u);
+  EXPECT_LE(s.rows_cut, 40u + rules.speed_rows);
+  EXPECT_FALSE(s.speed.constant) << "the drift (8% at its end) is reported";
+  // the same with a tolerance for the whole run that calls 8% a stop: the drift's end goes too
+  rules.end_tolerance = 0.05;
+  out.clear();
+  const auto tight = run_passes(rules, rows, out);
+  EXPECT_GT(tight.rows_cut, 40u + rules.speed_rows);
+}
+
+// A slow monotone drift (the speed falls by 8% over the last third of the push, steadily)
+// is no second speed: imported, reported as not constant, nothing of it cut; a step of
+// the same size is two speeds
+TEST(ImportKernels, MonotoneDriftIsNotTwoSpeeds)
+{
+  granpen::ImportRules rules;
+  rules.has_position = true;
+  rules.tare_rows = 10;
+  rules.onset_force = 10.0;
+  rules.speed_rows = 20;
+  auto rows_with = [](const std::function<double(int)> &speed) {
+    std::vector<granpen::ImportRow> rows;
+    double x = -0.3;
+    for (int i = 0; i < 6000; ++i) {
+      granpen::ImportRow r;
+      r.t = i * 1e-5;
+      if (i) x += speed(i) * 1e-5;
+      r.x = x;
+      r.F = x > 0 ? 1000.0 * x : 0.0;
+      r.line = i + 2;
+      rows.push_back(r);
+    }
+    return rows;
+  };
+  std::vector<granpen::TracePoint> out;
+  const auto drift = run_passes(rules, rows_with([](int i) { return 100.0 * (1.0 - 0.08 * std::max(0, i - 4000) / 2000.0); }), out);
+  EXPECT_FALSE(drift.speed.constant);
+  EXPECT_LE(drift.rows_cut, rules.speed_rows) << "at most the last block's rows: the drift is kept";
+  out.clear();
+  EXPECT_THROW(run_passes(rules, rows_with([](int i) { return i < 4000 ? 100.0 : 92.0; }), out), granpen::ImportRejected);
+}

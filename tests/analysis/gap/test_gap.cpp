@@ -4,6 +4,7 @@
 #include "gap_fit.h"
 #include "gap_limits.h"
 #include "gap_sims.h"
+#include "gap_result.h"
 #include "gap_verdict.h"
 #include "sensor_response.h"
 
@@ -252,9 +253,9 @@ TEST(GapFit, LikelihoodRatioOfASmallGapAlongOneSignature)
   EXPECT_NEAR(effect_lr(t, A), fa.lr, 1e-9 * expect);
   EXPECT_LT(fb.lr, 0.05 * fa.lr);    // B's signature is nearly orthogonal to A's (cosine -0.1)
   // the threshold: 15.14 times the null mean, at least 15.14
-  EXPECT_NEAR(lr_threshold(0.2), LR_CHI2_1_P1E4, 1e-12);
-  EXPECT_NEAR(lr_threshold(3.0), 3.0 * LR_CHI2_1_P1E4, 1e-12);
-  EXPECT_NEAR(chi2_sf(LR_CHI2_1_P1E4, 1), 1e-4, 1e-6);
+  EXPECT_NEAR(lr_threshold(0.2), GapThresholds::lr_chi2_1_p1e4, 1e-12);
+  EXPECT_NEAR(lr_threshold(3.0), 3.0 * GapThresholds::lr_chi2_1_p1e4, 1e-12);
+  EXPECT_NEAR(chi2_sf(GapThresholds::lr_chi2_1_p1e4, 1), 1e-4, 1e-6);
   // no gap: no ratio
   for (int s = 0; s < 2; ++s)
     for (auto &x : t.mean[s]) x = 100.0;
@@ -267,7 +268,7 @@ EffectFit candidate(const std::string &name, double explained, double heldout, d
   EffectFit f;
   f.name = name, f.explained = explained, f.heldout_explained = heldout, f.chi2 = chi2;
   f.lr = lr, f.lr_threshold = threshold, f.detected = lr > threshold;
-  f.lr_null_mean = threshold / LR_CHI2_1_P1E4;
+  f.lr_null_mean = threshold / GapThresholds::lr_chi2_1_p1e4;
   return f;
 }
 Diagnosis significance(bool omnibus, std::vector<EffectFit> ranking)
@@ -276,63 +277,72 @@ Diagnosis significance(bool omnibus, std::vector<EffectFit> ranking)
   d.significant = omnibus, d.chi2_0 = omnibus ? 200 : 70, d.nfeatures = 66, d.ranking = std::move(ranking);
   return d;
 }
+// the fits' verdict of a hand-made diagnosis, taken as the which stage takes it (fit_candidates)
+void judge_fits(Diagnosis &d, const Separation2 &separation2 = {})
+{
+  FitEvidence ev = fit_evidence(d.significant, d.ranking, separation2);
+  ev.chi2_0 = d.chi2_0, ev.p_value = d.p_value, ev.nfeatures = d.nfeatures, ev.n_null = d.n_null;
+  d.ranking = ev.ranking;
+  const VerdictDecision v = decide_verdict(ev);
+  record_verdict(v, fits_verdict_notes(v, ev), d);
+}
 }    // namespace
 
 TEST(GapVerdict, TheTwoRoutesAndTheirConditions)
 {
   // nothing significant, nothing detected: none
   Diagnosis d = significance(false, {candidate("a", 0.6, 0.6, 50, 10, 15), candidate("b", 0.2, 0.2, 60, 3, 15)});
-  decide_verdict(d);
-  EXPECT_EQ(d.verdict, "none");
+  judge_fits(d);
+  EXPECT_EQ(d.verdict, Verdict::none);
   EXPECT_FALSE(d.significant);
   // omnibus: the largest likelihood ratio beyond the noise's wins by a margin of 6
   d = significance(true, {candidate("b", 0.3, 0.3, 150, 50, 15), candidate("a", 0.7, 0.6, 80, 120, 15)});
-  decide_verdict(d);
-  EXPECT_EQ(d.verdict, "explained");
+  judge_fits(d);
+  EXPECT_EQ(d.verdict, Verdict::explained);
   EXPECT_EQ(d.top_effect, "a");
   EXPECT_FALSE(d.targeted);
   d = significance(true, {candidate("a", 0.7, 0.6, 80, 120, 15), candidate("b", 0.65, 0.6, 83, 116, 15)});
-  decide_verdict(d);
-  EXPECT_EQ(d.verdict, "tie");    // a and b both explain the gap, too close to tell apart
+  judge_fits(d);
+  EXPECT_EQ(d.verdict, Verdict::tie);    // a and b both explain the gap, too close to tell apart
   EXPECT_EQ(d.tie, (std::vector<std::string>{"a", "b"}));
   EXPECT_TRUE(d.top_effect.empty());
   // as close, but b explains less than half of the gap: no tie, and no pick either
   d = significance(true, {candidate("a", 0.7, 0.6, 80, 120, 15), candidate("b", 0.45, 0.6, 83, 116, 15)});
-  decide_verdict(d);
-  EXPECT_EQ(d.verdict, "unexplained");
+  judge_fits(d);
+  EXPECT_EQ(d.verdict, Verdict::unexplained);
   EXPECT_TRUE(d.tie.empty());
   // a noisier signature (null mean 3.7) fits more of the noise: 125 - 2.7 against 120 is a tie
-  d = significance(true, {candidate("b", 1.0, 0.9, 25, 125, 3.7 * LR_CHI2_1_P1E4), candidate("a", 0.97, 0.95, 34, 120, 15.137)});
-  decide_verdict(d);
-  EXPECT_EQ(d.verdict, "tie");
+  d = significance(true, {candidate("b", 1.0, 0.9, 25, 125, 3.7 * GapThresholds::lr_chi2_1_p1e4), candidate("a", 0.97, 0.95, 34, 120, 15.137)});
+  judge_fits(d);
+  EXPECT_EQ(d.verdict, Verdict::tie);
   d = significance(true, {candidate("b", 1.0, 0.9, 25, 125, 1.0), candidate("a", 0.97, 0.95, 34, 118, 15.137)});
-  decide_verdict(d);
-  EXPECT_EQ(d.verdict, "explained");    // without the null's excess, 125 against 118 decides
+  judge_fits(d);
+  EXPECT_EQ(d.verdict, Verdict::explained);    // without the null's excess, 125 against 118 decides
   EXPECT_EQ(d.top_effect, "b");
   // targeted: not significant overall, one candidate detected, alone, explaining enough
   d = significance(false, {candidate("b", 0.1, 0.1, 70, 4, 60), candidate("a", 0.64, 0.64, 36, 44, 37)});
-  decide_verdict(d);
+  judge_fits(d);
   EXPECT_TRUE(d.targeted);
   EXPECT_TRUE(d.significant);
-  EXPECT_EQ(d.verdict, "explained");
+  EXPECT_EQ(d.verdict, Verdict::explained);
   EXPECT_EQ(d.top_effect, "a");
   // detected but explaining a third of the gap: unexplained, no effect named
   d = significance(false, {candidate("a", 0.34, 0.34, 44, 19, 15.1), candidate("b", 0.33, 0.33, 45, 18.8, 94)});
-  decide_verdict(d);
-  EXPECT_EQ(d.verdict, "unexplained");
+  judge_fits(d);
+  EXPECT_EQ(d.verdict, Verdict::unexplained);
   EXPECT_TRUE(d.top_effect.empty());
   // two detected with about the same evidence (LR beyond the null's excess), both explaining
   // the gap: a tie
   d = significance(false, {candidate("a", 0.6, 0.6, 40, 40, 20), candidate("b", 0.6, 0.6, 40, 44, 30)});
-  decide_verdict(d);
-  EXPECT_EQ(d.verdict, "tie");
+  judge_fits(d);
+  EXPECT_EQ(d.verdict, Verdict::tie);
   EXPECT_EQ(d.tie, (std::vector<std::string>{"b", "a"}));
   ASSERT_EQ(d.ranking.size(), 2u);
   EXPECT_EQ(d.ranking[0].name, "b");    // 44 - 0.98 before 40 - 0.32
   // the same with a margin of 6: the first is named although its LR / threshold is smaller
   d = significance(false, {candidate("a", 0.68, 0.68, 74, 26.5, 15.1), candidate("b", 0.9, 0.9, 60, 35.2, 23.3)});
-  decide_verdict(d);
-  EXPECT_EQ(d.verdict, "explained");
+  judge_fits(d);
+  EXPECT_EQ(d.verdict, Verdict::explained);
   EXPECT_EQ(d.top_effect, "b");
 }
 
@@ -342,20 +352,20 @@ TEST(GapVerdict, ACandidateShortOnlyByItsInterpolationIsSimulatedBetweenItsKnots
   // detected, alone by far more than the margin, inside their range: unexplained by the fits,
   // and marked for runs at the fitted magnitude
   Diagnosis d = significance(true, {candidate("ramp", 0.32, -0.25, 302, 320, 22.3), candidate("friction", 0.04, 0.02, 366, 239, 15.1)});
-  decide_verdict(d);
-  EXPECT_EQ(d.verdict, "unexplained");
+  judge_fits(d);
+  EXPECT_EQ(d.verdict, Verdict::unexplained);
   EXPECT_TRUE(d.top_effect.empty());
   EXPECT_TRUE(d.between_knots);
   d = significance(true, {candidate("cohesion", 0.54, 0.29, 40, 136, 15.1), candidate("friction", 0.31, 0.28, 37, 119, 15.1)});
-  decide_verdict(d);
-  EXPECT_EQ(d.verdict, "unexplained");
+  judge_fits(d);
+  EXPECT_EQ(d.verdict, Verdict::unexplained);
   EXPECT_TRUE(d.between_knots);
   // not when the candidate explains less than a quarter, is not detected, sits at the edge of
   // its range, or has a second within the margin
   auto marked = [](EffectFit top, const EffectFit &second) {
     Diagnosis d = significance(true, {std::move(top), second});
-    decide_verdict(d);
-    EXPECT_EQ(d.verdict, "unexplained");
+    judge_fits(d);
+    EXPECT_EQ(d.verdict, Verdict::unexplained);
     return d.between_knots;
   };
   const EffectFit far = candidate("b", 0.04, 0.02, 366, 239, 15.1);
@@ -368,9 +378,74 @@ TEST(GapVerdict, ACandidateShortOnlyByItsInterpolationIsSimulatedBetweenItsKnots
   EXPECT_TRUE(marked(candidate("a", 0.4, 0.4, 100, 320, 15.1), far));    // the same, alone: marked
   // an explained verdict needs no such runs
   d = significance(true, {candidate("a", 0.7, 0.6, 80, 320, 15.1), candidate("b", 0.04, 0.02, 366, 239, 15.1)});
-  decide_verdict(d);
-  EXPECT_EQ(d.verdict, "explained");
+  judge_fits(d);
+  EXPECT_EQ(d.verdict, Verdict::explained);
   EXPECT_FALSE(d.between_knots);
+}
+
+TEST(GapVerdict, TheConfirmationsResultDecidesThroughTheSameFunction)
+{
+  using Kind = ConfirmationResult::Kind;
+  // the fits explain the gap by a (omnibus route, a far ahead of b)
+  const FitEvidence fits = fit_evidence(true, {candidate("b", 0.3, 0.3, 150, 50, 15), candidate("a", 0.7, 0.6, 80, 120, 15)});
+  ASSERT_EQ(decide_verdict(fits).verdict, Verdict::explained);
+  ConfirmationResult c;
+  c.kind = Kind::simulated, c.gap_before = 0.2, c.heldout_before = 0.3;
+  // confirmed, G_all halved (half exactly counts): the verdict stands
+  c.confirmed = true, c.gap_after = 0.1;
+  VerdictDecision v = decide_verdict(fits, &c);
+  EXPECT_EQ(v.verdict, Verdict::explained);
+  EXPECT_EQ(v.top_effect, "a");
+  EXPECT_EQ(v.confirmation, ConfirmationRule::confirmed);
+  // confirmed by chi^2 but G_all not halved (the friction case's 0.088 -> 0.074): unexplained
+  c.gap_before = 0.088, c.gap_after = 0.074;
+  v = decide_verdict(fits, &c);
+  EXPECT_EQ(v.verdict, Verdict::unexplained);
+  EXPECT_TRUE(v.top_effect.empty());
+  EXPECT_EQ(v.confirmation, ConfirmationRule::not_halved);
+  // not confirmed, whatever G_all did: unexplained
+  c.confirmed = false, c.gap_after = 0.01;
+  v = decide_verdict(fits, &c);
+  EXPECT_EQ(v.verdict, Verdict::unexplained);
+  EXPECT_EQ(v.confirmation, ConfirmationRule::not_confirmed);
+  // --fit-only: explained, provisional; nothing to confirm: the fits' verdict
+  c.kind = Kind::fit_only;
+  v = decide_verdict(fits, &c);
+  EXPECT_EQ(v.verdict, Verdict::explained);
+  EXPECT_TRUE(v.provisional);
+  c.kind = Kind::none;
+  EXPECT_EQ(decide_verdict(fits, &c).verdict, Verdict::explained);
+  EXPECT_FALSE(decide_verdict(fits, &c).provisional);
+
+  // the selftest's ramp: the fits' unexplained, between knots
+  const FitEvidence ramp = fit_evidence(true, {candidate("ramp", 0.32, -0.25, 302, 320, 22.3), candidate("friction", 0.04, 0.02, 366, 239, 15.1)});
+  ASSERT_EQ(decide_verdict(ramp).verdict, Verdict::unexplained);
+  ASSERT_TRUE(decide_verdict(ramp).between_knots);
+  // its runs confirm it and halve G_all over all speeds and at the held-out speed: explained
+  c = ConfirmationResult{};
+  c.kind = Kind::simulated, c.confirmed = true, c.gap_before = 0.472, c.gap_after = 0.112, c.heldout_before = 0.5,
+  c.heldout_after = 0.2;
+  v = decide_verdict(ramp, &c);
+  EXPECT_EQ(v.verdict, Verdict::explained);
+  EXPECT_EQ(v.top_effect, "ramp");
+  EXPECT_EQ(v.confirmation, ConfirmationRule::between_knots_explained);
+  // the held-out speed not halved: unexplained
+  c.heldout_after = 0.3;
+  v = decide_verdict(ramp, &c);
+  EXPECT_EQ(v.verdict, Verdict::unexplained);
+  EXPECT_TRUE(v.top_effect.empty());
+  EXPECT_EQ(v.confirmation, ConfirmationRule::between_knots_short);
+  // at a knot nothing is checked (and it is no longer between knots); --fit-only: unexplained
+  c.kind = Kind::at_knot;
+  v = decide_verdict(ramp, &c);
+  EXPECT_EQ(v.verdict, Verdict::unexplained);
+  EXPECT_FALSE(v.between_knots);
+  c.kind = Kind::fit_only;
+  v = decide_verdict(ramp, &c);
+  EXPECT_EQ(v.verdict, Verdict::unexplained);
+  EXPECT_TRUE(v.between_knots);
+  EXPECT_FALSE(v.provisional);
+  EXPECT_EQ(v.confirmation, ConfirmationRule::between_knots_fit_only);
 }
 
 TEST(GapVerdict, FitsWithinTheKnotsNoiseOfEachOtherAreATieWhateverTheirEvidence)
@@ -385,12 +460,12 @@ TEST(GapVerdict, FitsWithinTheKnotsNoiseOfEachOtherAreATieWhateverTheirEvidence)
   };
   auto omnibus = [] { return significance(true, {candidate("a", 0.8, 0.7, 40, 110, 15), candidate("b", 0.9, 0.8, 30, 120, 15)}); };
   Diagnosis d = omnibus();
-  decide_verdict(d);    // the margin alone: b
-  EXPECT_EQ(d.verdict, "explained");
+  judge_fits(d);    // the margin alone: b
+  EXPECT_EQ(d.verdict, Verdict::explained);
   EXPECT_EQ(d.top_effect, "b");
   d = omnibus();
-  decide_verdict(d, sep);    // their predictions 2 squared sigmas apart: the 10 is the knots' noise
-  EXPECT_EQ(d.verdict, "tie");
+  judge_fits(d, sep);    // their predictions 2 squared sigmas apart: the 10 is the knots' noise
+  EXPECT_EQ(d.verdict, Verdict::tie);
   EXPECT_EQ(d.tie, (std::vector<std::string>{"b", "a"}));
   EXPECT_TRUE(d.top_effect.empty());
   EXPECT_EQ(asked, (std::vector<std::pair<std::string, std::string>>{{"b", "a"}}));
@@ -398,29 +473,29 @@ TEST(GapVerdict, FitsWithinTheKnotsNoiseOfEachOtherAreATieWhateverTheirEvidence)
   EXPECT_NE(d.notes.back().find("fitted predictions only by 2.0 squared standard deviations"), std::string::npos) << d.notes.back();
   sep2 = 6.0;    // at the margin: told apart
   d = omnibus();
-  decide_verdict(d, sep);
-  EXPECT_EQ(d.verdict, "explained");
+  judge_fits(d, sep);
+  EXPECT_EQ(d.verdict, Verdict::explained);
   EXPECT_EQ(d.top_effect, "b");
   // a second that does not explain the gap on its own is no rival, however close
   sep2 = 0.0;
   d = significance(true, {candidate("a", 0.4, 0.7, 40, 110, 15), candidate("b", 0.9, 0.8, 30, 120, 15)});
-  decide_verdict(d, sep);
-  EXPECT_EQ(d.verdict, "explained");
+  judge_fits(d, sep);
+  EXPECT_EQ(d.verdict, Verdict::explained);
   EXPECT_EQ(d.top_effect, "b");
   // the targeted route: the same, with both detected
   d = significance(false, {candidate("a", 0.6, 0.6, 40, 40, 20), candidate("b", 0.7, 0.7, 40, 60, 20)});
-  decide_verdict(d, sep);
+  judge_fits(d, sep);
   EXPECT_TRUE(d.targeted);
-  EXPECT_EQ(d.verdict, "tie");
+  EXPECT_EQ(d.verdict, Verdict::tie);
   d = significance(false, {candidate("a", 0.6, 0.6, 40, 18, 20), candidate("b", 0.7, 0.7, 40, 60, 20)});
-  decide_verdict(d, sep);    // a not detected: b alone
-  EXPECT_EQ(d.verdict, "explained");
+  judge_fits(d, sep);    // a not detected: b alone
+  EXPECT_EQ(d.verdict, Verdict::explained);
   EXPECT_EQ(d.top_effect, "b");
   // no rival explains: the separation is not asked for
   asked.clear();
   d = significance(false, {candidate("a", 0.1, 0.1, 40, 0, 20), candidate("b", 0.1, 0.1, 40, 1, 20)});
-  decide_verdict(d, sep);
-  EXPECT_EQ(d.verdict, "none");
+  judge_fits(d, sep);
+  EXPECT_EQ(d.verdict, Verdict::none);
   EXPECT_TRUE(asked.empty());
 }
 
@@ -436,26 +511,26 @@ TEST(GapVerdict, EveryCandidateTheDataCannotTellFromTheTopJoinsTheTie)
                                candidate("s", 0.91, 0.9, 63, 130, 15), candidate("x", 0.9, 0.9, 50, 100, 15)});
   };
   Diagnosis d = ranking();
-  decide_verdict(d, sep);
-  EXPECT_EQ(d.verdict, "tie");
+  judge_fits(d, sep);
+  EXPECT_EQ(d.verdict, Verdict::tie);
   EXPECT_EQ(d.tie, (std::vector<std::string>{"s", "p", "r"}));    // x: 30 behind and told apart
   EXPECT_EQ(tie_names(d.tie), "s, p or r");
   // without the look-alike rule (the null replicates) only the margin: s and p
   d = ranking();
-  decide_verdict(d);
+  judge_fits(d);
   EXPECT_EQ(d.tie, (std::vector<std::string>{"s", "p"}));
   // the second told apart (its evidence 9 behind, its prediction 20 away), the third a
   // look-alike of the top: a tie of the top and the third, not an explained top (the second
   // must not hide it: adding a candidate to the library never makes a tie an explained)
   d = significance(true, {candidate("r", 0.85, 0.76, 43, 118, 15), candidate("p", 0.93, 0.9, 24, 121, 15),
                           candidate("s", 0.91, 0.9, 63, 130, 15)});
-  decide_verdict(d, sep);
-  EXPECT_EQ(d.verdict, "tie");
+  judge_fits(d, sep);
+  EXPECT_EQ(d.verdict, Verdict::tie);
   EXPECT_EQ(d.tie, (std::vector<std::string>{"s", "r"}));
   // a third that does not explain the gap on its own stays out
   d = significance(true, {candidate("r", 0.4, 0.76, 43, 118, 15), candidate("p", 0.93, 0.9, 24, 127, 15),
                           candidate("s", 0.91, 0.9, 63, 130, 15)});
-  decide_verdict(d, sep);
+  judge_fits(d, sep);
   EXPECT_EQ(d.tie, (std::vector<std::string>{"s", "p"}));
 }
 
@@ -464,20 +539,20 @@ TEST(GapVerdict, TheNamedEffectIsDetectedOnTheOmnibusRouteToo)
   // a significant gap; the top candidate explains 0.8 of it but its likelihood ratio (30) is
   // below its threshold (50: a noisy signature that fits that much of pure noise)
   Diagnosis d = significance(true, {candidate("a", 0.8, 0.7, 40, 30, 50), candidate("b", 0.3, 0.3, 60, 10, 15)});
-  decide_verdict(d);
-  EXPECT_EQ(d.verdict, "unexplained");
+  judge_fits(d);
+  EXPECT_EQ(d.verdict, Verdict::unexplained);
   EXPECT_TRUE(d.top_effect.empty());
   ASSERT_FALSE(d.notes.empty());
   EXPECT_NE(d.notes.back().find("likelihood ratio 30.0 is below its threshold 50.0"), std::string::npos) << d.notes.back();
   // the same above its threshold: named
   d = significance(true, {candidate("a", 0.8, 0.7, 40, 60, 50), candidate("b", 0.3, 0.3, 60, 10, 15)});
-  decide_verdict(d);
-  EXPECT_EQ(d.verdict, "explained");
+  judge_fits(d);
+  EXPECT_EQ(d.verdict, Verdict::explained);
   EXPECT_EQ(d.top_effect, "a");
   // nor is an undetected candidate half of a tie
   d = significance(true, {candidate("a", 0.8, 0.7, 40, 60, 50), candidate("b", 0.8, 0.7, 40, 58, 60)});
-  decide_verdict(d);
-  EXPECT_EQ(d.verdict, "unexplained");    // a leads by 2.7 (< 6), b (58 < 60) is not detected
+  judge_fits(d);
+  EXPECT_EQ(d.verdict, Verdict::unexplained);    // a leads by 2.7 (< 6), b (58 < 60) is not detected
   EXPECT_TRUE(d.tie.empty());
 }
 

@@ -10,6 +10,7 @@
 #include "gap_features.h"
 #include "gap_inputs.h"
 #include "gap_plan.h"
+#include "gap_report.h"
 #include "gap_sims.h"
 #include "sensor_response.h"
 #include "gap_where.h"
@@ -659,9 +660,9 @@ TEST(GapWhich, TheVerdictOnAHandMadeFeatureSet)
   Diagnosis d;
   d.significant = true;    // the omnibus route: chi^2 about 150 over 12 features (by hand)
   d.nfeatures = 12;
-  const auto data = fit_candidates({&h.ea, &h.eb}, h.f, [](const std::string &) { return NAN; }, d);
+  const auto data = fit_candidates({&h.ea, &h.eb}, h.f, [](const std::string &) { return NAN; }, d).data;
   ASSERT_EQ(d.ranking.size(), 2u);
-  EXPECT_EQ(d.verdict, "explained");
+  EXPECT_EQ(d.verdict, Verdict::explained);
   EXPECT_EQ(d.top_effect, "a");
   // the model is linear between the knots 0 and 1 and the data noise-free: exact
   EXPECT_NEAR(d.ranking[0].magnitude, 0.5, 1e-3);
@@ -678,7 +679,7 @@ TEST(GapWhich, TheVerdictOnAHandMadeFeatureSet)
   HandMade z(0.0);
   Diagnosis dz;
   fit_candidates({&z.ea, &z.eb}, z.f, [](const std::string &) { return NAN; }, dz);
-  EXPECT_EQ(dz.verdict, "none");
+  EXPECT_EQ(dz.verdict, Verdict::none);
   EXPECT_TRUE(dz.top_effect.empty());
 }
 
@@ -797,8 +798,8 @@ TEST(GapLimits, LookAlikesAreATieWithTheRunsThatCannotSeparateThem)
   Diagnosis d;
   d.significant = true;
   d.nfeatures = 12;
-  const auto data = fit_candidates({&h.ea, &h.eb, &h.ec}, h.f, [](const std::string &) { return NAN; }, d);
-  EXPECT_EQ(d.verdict, "tie");
+  const auto data = fit_candidates({&h.ea, &h.eb, &h.ec}, h.f, [](const std::string &) { return NAN; }, d).data;
+  EXPECT_EQ(d.verdict, Verdict::tie);
   EXPECT_TRUE(d.top_effect.empty());
   ASSERT_EQ(d.tie.size(), 2u);
   EXPECT_EQ(std::set<std::string>(d.tie.begin(), d.tie.end()), (std::set<std::string>{"a", "c"}));
@@ -847,8 +848,8 @@ TEST(GapLimits, TheNextMeasurementDetectsTheUndetectedCandidate)
   noisier(h, 100);
   Diagnosis d;
   d.nfeatures = 12;
-  const auto data = fit_candidates({&h.ea, &h.eb}, h.f, [](const std::string &) { return NAN; }, d);
-  EXPECT_EQ(d.verdict, "none");
+  const auto data = fit_candidates({&h.ea, &h.eb}, h.f, [](const std::string &) { return NAN; }, d).data;
+  EXPECT_EQ(d.verdict, Verdict::none);
   const EffectFit &a = d.ranking[0].name == "a" ? d.ranking[0] : d.ranking[1];
   ASSERT_FALSE(a.detected);
   EXPECT_NEAR(a.magnitude, 0.5, 1e-3);
@@ -867,7 +868,7 @@ TEST(GapLimits, TheNextMeasurementDetectsTheUndetectedCandidate)
   // the bisection's tolerance on m, squared into lambda
   EXPECT_NEAR(next->now, a.lr, 1e-6 * next->target);
   // an explained verdict asks for nothing more
-  EXPECT_FALSE(next_measurement(d.ranking, data, h.f, "explained").has_value());
+  EXPECT_FALSE(next_measurement(d.ranking, data, h.f, Verdict::explained).has_value());
   EXPECT_GE(next->after, next->target);
   EXPECT_GT(next->gain(), 0.0);
 }
@@ -985,7 +986,7 @@ TEST(GapResidual, WhereItLiesWhatItMovesAndTheNearestCandidate)
   ctx.speeds = {50, 100};
   ctx.z_transient_end = {1.5, 1.5};
   ctx.peak_end = 0.7;    // bin 2 (centre 0.625) is in the peak regime, bin 3 (0.875) in the transient
-  ctx.verdict = "unexplained";
+  ctx.verdict = Verdict::unexplained;
   EffectFit near, far;
   near.name = "near", near.explained = 0.3, near.heldout_explained = 0.4, near.detected = true, near.lr = 40, near.lr_threshold = 15.1;
   far.name = "far", far.explained = 0.1, far.heldout_explained = 0.1, far.lr = 3, far.lr_threshold = 15.1;
@@ -1202,7 +1203,7 @@ Diagnosis filled_diagnosis(const std::string &real_dir)
     d.ranking.push_back(r);
   }
   d.magnitude_note["packing"] = "pour friction 0.150: phi_0 0.5812 against the baseline's 0.5801";
-  d.verdict = "explained", d.top_effect = "packing", d.tested_effect = "packing";
+  d.verdict = Verdict::explained, d.top_effect = "packing", d.tested_effect = "packing";
   d.magnitude = -0.150123, d.magnitude_unit = "pour friction minus 0.3";
   for (double v : {50.0, 100.0}) {
     SpeedCurves c;
@@ -1272,8 +1273,34 @@ TEST(GapReport, DiagnosisJsonKeysAndValuesAsTheHandBuiltWriterWroteThem)
   for (auto it = now.begin(); it != now.end(); ++it)
     if (!before.contains(it.key())) added.push_back(it.key());
   EXPECT_EQ(added, (std::vector<std::string>{"detection_limits", "false_alarms", "gap_parts", "knot_bends", "look_alikes",
-                                             "next_measurement", "residual", "tie"}));
+                                             "next_measurement", "residual", "thresholds", "tie"}));
   // written through the atomic writer: no temporary left beside it
   for (const auto &e : fs::directory_iterator(dir.path))
     EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+}
+
+// The gap per regime splits the bins where the diagnosis says the peak regime ends
+// (d.peak_end), as the residual's description does, not at a depth of its own: a gap in a
+// bin beyond peak_end is the transient's.
+TEST(GapReport, GapByRegimeEndsThePeakAtTheDiagnosisPeakEnd)
+{
+  Diagnosis d;
+  GapGrid grid;
+  grid.zmax = 2.0;    // 8 bins of 0.25: centres 0.125, 0.375, 0.625, ...
+  d.peak_end = 0.5;   // bins 0 and 1 are the peak regime, bin 2 (0.625) the transient
+  SpeedCurves c;
+  c.v0 = 100;
+  c.z_transient_end = 1.5;
+  c.base.assign(grid.nbins(), 100.0);
+  c.corr = c.base;
+  c.real = c.base;
+  c.real[2] += 10;    // the only gap: in the transient regime
+  d.speeds = {c};
+  // the where stage's function, given the diagnosis's peak_end (as gap_diagnosis.cpp calls
+  // it); with D = 2 a peak end of its own, 0.35 D = 0.7, would put bin 2 in the peak
+  auto by_regime = gap_by_regime(grid, d.peak_end, d.speeds);
+  ASSERT_TRUE(by_regime.count("peak"));
+  ASSERT_TRUE(by_regime.count("transient"));
+  EXPECT_EQ(by_regime["peak"].first, 0.0);
+  EXPECT_GT(by_regime["transient"].first, 0.0);
 }

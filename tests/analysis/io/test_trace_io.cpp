@@ -310,3 +310,28 @@ TEST(TraceIO, ResumeDropsALastRowCutShort)
   EXPECT_DOUBLE_EQ(t.z[8], 0.08);
   std::remove(path.c_str());
 }
+
+// A trace without t (a depth-sampled import with neither time nor speed) is read only when
+// its header says so (t_from = none): z and F as written, no t, and require_t names it;
+// without that key a missing t is the error it always was
+TEST(TraceIO, UntimedTraceOnlyWhenTheHeaderSaysSo)
+{
+  std::ostringstream zf;
+  for (int i = 0; i < 12; ++i) zf << -0.5 + i * 0.01 << "," << 10.0 * i << "\n";
+  const Trace tr = parse_trace(good_header() + "# t_from = none\nz,F\n" + zf.str(), "untimed.csv");
+  EXPECT_FALSE(tr.has_t());
+  EXPECT_TRUE(tr.t.empty());
+  ASSERT_EQ(tr.z.size(), 12u);
+  EXPECT_DOUBLE_EQ(tr.z[11], -0.5 + 11 * 0.01);
+  EXPECT_DOUBLE_EQ(tr.F[11], 110.0);
+  try {
+    require_t(tr, "granpen gap");
+    FAIL() << "a trace without t passed require_t";
+  } catch (InputError &e) {
+    EXPECT_TRUE(std::regex_search(e.what(), std::regex("^untimed\\.csv: no t column \\(t_from = none.*granpen gap needs t")))
+        << e.what();
+  }
+  EXPECT_NO_THROW(require_t(parse_trace(good_header() + "t,z,F\n" + rows(12), "timed.csv"), "granpen gap"));
+  expect_rejected(good_header() + "z,F\n" + zf.str(), "bad\\.csv:10: column line must name t, z and F");
+  expect_rejected(good_header() + "# t_from = none\nt,z,F\n" + rows(12), "bad\\.csv:11: header t_from = none, but the column line names t");
+}

@@ -1,0 +1,36 @@
+/* ----------------------------------------------------------------------
+   GRANPEN package: the paper's scaling relations (scaling_laws.h).
+------------------------------------------------------------------------- */
+
+#include "scaling_laws.h"
+
+#include <cmath>
+#include <limits>
+
+namespace granpen {
+
+namespace {
+bool positive_finite(double v) { return v > 0.0 && std::isfinite(v); }
+const double NaN = std::numeric_limits<double>::quiet_NaN();
+}    // namespace
+
+double t_tilde(double z, double v0, double g, double D)
+{
+  if (!positive_finite(v0) || !positive_finite(g) || !positive_finite(D)) return NaN;
+  return z / v0 * std::sqrt(g / D);
+}
+
+double depth_at_t_tilde(double t, double v0, double g, double D)
+{
+  if (!positive_finite(v0) || !positive_finite(g) || !positive_finite(D)) return NaN;
+  return t * v0 * std::sqrt(D / g);
+}
+
+double k_z_from_alpha(double alpha, double mu, double rho_g, double g, double D)
+{
+  return alpha * mu * rho_g * g * D * D;
+}
+
+double peak_regime_end(double D) { return PEAK_END_PER_D * D; }
+
+}    // namespace granpen
