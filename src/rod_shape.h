@@ -1,4 +1,21 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: granpen developers
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANPEN package: the shape of a rod measured from its atoms, as fix
    rod/drive, compute rod/drag and granpen flow / momentum (analysis/core
    rod_frame) all take it: the axis is the mean x, y of the atoms' centres
@@ -11,8 +28,8 @@
    RodExtent). Pure C++11: no LAMMPS type, no I/O.
 ------------------------------------------------------------------------- */
 
-#ifndef GRANPEN_ROD_SHAPE_H
-#define GRANPEN_ROD_SHAPE_H
+#ifndef LMP_ROD_SHAPE_H
+#define LMP_ROD_SHAPE_H
 
 namespace granpen {
 

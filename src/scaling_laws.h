@@ -1,4 +1,21 @@
 /* -*- c++ -*- ----------------------------------------------------------
+   LAMMPS - Large-scale Atomic/Molecular Massively Parallel Simulator
+   https://www.lammps.org/, Sandia National Laboratories
+   Steve Plimpton, sjplimp@sandia.gov
+
+   Copyright (2003) Sandia Corporation.  Under the terms of Contract
+   DE-AC04-94AL85000 with Sandia Corporation, the U.S. Government retains
+   certain rights in this software.  This software is distributed under
+   the GNU General Public License.
+
+   See the README file in the top-level LAMMPS directory.
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
+   Contributing author: granpen developers
+------------------------------------------------------------------------- */
+
+/* ----------------------------------------------------------------------
    GRANPEN package: the paper's scaling relations, each written once. The
    styles (compute rod/drag) and the post-processor (analysis/) call these;
    tests/architecture/scaling_once.sh fails when one is written elsewhere.
@@ -11,8 +28,8 @@
    Pure C++11: no LAMMPS type, no I/O.
 ------------------------------------------------------------------------- */
 
-#ifndef GRANPEN_SCALING_LAWS_H
-#define GRANPEN_SCALING_LAWS_H
+#ifndef LMP_SCALING_LAWS_H
+#define LMP_SCALING_LAWS_H
 
 namespace granpen {
 

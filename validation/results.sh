@@ -483,5 +483,23 @@ ratio_of() { # QUANTITY RATIO KEY1 KEY2 PAPER PAPER_ERROR
 } > "$OUT/scaling.csv.partial" && mv "$OUT/scaling.csv.partial" "$OUT/scaling.csv"
 "$CLI" plot scaling "$OUT/scaling.csv" --out "$OUT/scaling" > /dev/null
 
+# ---------------------------------------------------------------- against the box width
+# The four rows the box series is to settle (bench grains, D/d_g = 5; empty until a box is
+# in): box.csv, drawn by granpen plot scaling against box_cm. Errors as in scaling.csv; the
+# peak over the 8 cm box's push of the same bed and speed carries its spread over pairs.
+if ls "$BOX"/box_bench*_peak/*.csv > /dev/null 2>&1; then
+  say "against the box width: box.csv (granpen plot scaling)"
+  {
+    echo "# paper_box_cm = 20"
+    echo "quantity,box_cm,value,error,paper,paper_error,unit,label"
+    for b in 8 12 16 20; do row_of "peak exponent (v_c to 10 v_c)" "$b" "bench_box$b.peak_exponent" 2 "" 1.96; done
+    for b in 8 12 16 20; do row_of "peak exponent above v_c (ensemble means)" "$b" "bench_box$b.peak_exponent_ensemble_from_2vc" 2 ""; done
+    for b in 12 16 20; do row_of "peak / the 8 cm box's (same bed and v0)" "$b" "bench_box$b.peak_over_box8" 1 ""; done
+    for b in 8 12 16 20; do row_of "lambda_vz / D at 50 cm/s" "$b" "bench_box$b.v50.lambda_vz_D" 0.98 0.15; done
+    for b in 8 12 16 20; do row_of "drag / (mu g M) at 50 cm/s" "$b" "bench_box$b.v50.drag_over_mu_g_Mmove" 1 ""; done
+  } > "$OUT/box.csv.partial" && mv "$OUT/box.csv.partial" "$OUT/box.csv"
+  "$CLI" plot scaling "$OUT/box.csv" --out "$OUT/box" > /dev/null
+fi
+
 mv "$NUM" "$OUT/numbers.txt"
 say "wrote $OUT/numbers.txt"

@@ -108,6 +108,10 @@ for k in lambda_vz_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_
 done
 ! grep -q '^bench_box1[26]\.\|^bench_box8\.v50\|^bench_box8.peak_over' "$N" || fail "an incomplete box part added lines"
 grep -q "box 12 cm: 0 of 10 peak pushes" "$OUT/res.log" || fail "no note of the 12 cm box's missing pushes"
+# the box table holds the 20 cm box's paired peaks and flow, and its figure was made
+grep -q "^peak / the 8 cm box's (same bed and v0),20,1,0," "$OUT/res/box.csv" || fail "box.csv lacks the 20 cm box's paired peaks: $(cat "$OUT/res/box.csv")"
+grep -q "^lambda_vz / D at 50 cm/s,20,$(val mid.lambda_vz_D | awk '{print $1}')," "$OUT/res/box.csv" || fail "box.csv lacks the 20 cm box's lambda_vz"
+[ -s "$OUT/res/box/scaling.gp" ] || fail "no box figure"
 # the flow rows of each dg10 speed: the mid push's, from the same tables
 for v in 40 100 200; do
   for k in lambda_vz_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove; do
