@@ -7,23 +7,9 @@
 #   plugin_matches_lmp_granpen.sh LAMMPS_SOURCE_TREE PROJECT_DIR LMP_GRANPEN BED TRACE_AGREE WORKDIR
 set -euo pipefail
 SRC=$1 ROOT=$2 LMP_GRANPEN=$3 BED=$4 TRACE_AGREE=$5 WORK=$6
-CACHE=${GRANPEN_CACHE:-${XDG_CACHE_HOME:-$HOME/.cache}/granpen}
 JOBS=${GRANPEN_JOBS:-$(nproc)}
-LBUILD="$CACHE/lammps-plugin-build-$(basename "$SRC")-shared"
-mkdir -p "$WORK" "$LBUILD"
-
-if [ ! -x "$LBUILD/lmp" ] || [ ! -f "$LBUILD/liblammps.so" ]; then
-  echo "building LAMMPS with PLUGIN, GRANULAR, VORONOI from $SRC into $LBUILD"
-  # Debian's own flags for liblammps: -O2, no -march, so floating point matches;
-  # plugin loading in 29Sep2021 needs a shared liblammps
-  cmake -S "$SRC/cmake" -B "$LBUILD" -DCMAKE_BUILD_TYPE=None -DCMAKE_CXX_FLAGS="-g0 -O2" \
-    -DBUILD_MPI=on -DBUILD_OMP=on -DBUILD_SHARED_LIBS=on -DPKG_PLUGIN=on -DPKG_GRANULAR=on \
-    -DPKG_VORONOI=on -DDOWNLOAD_VORO=off -DLAMMPS_EXCEPTIONS=off >"$WORK/lammps-configure.log" 2>&1 \
-    || { tail -30 "$WORK/lammps-configure.log"; exit 1; }
-  cmake --build "$LBUILD" -j "$JOBS" >"$WORK/lammps-build.log" 2>&1 || { tail -30 "$WORK/lammps-build.log"; exit 1; }
-fi
-"$LBUILD/lmp" -h >"$WORK/lmp-help.txt"
-grep -q "PLUGIN" "$WORK/lmp-help.txt" || { echo "the built lmp lacks PLUGIN"; exit 1; }
+mkdir -p "$WORK"
+LBUILD=$("$(dirname "$0")/plugin_lammps.sh" "$SRC" "$WORK")
 
 echo "building the GRANPEN plugin against $SRC"
 cmake -S "$ROOT" -B "$WORK/plugin-build" -DLAMMPS_SOURCE_DIR="$SRC" -DGRANPEN_TESTS=OFF \
