@@ -128,16 +128,8 @@ plugin_route() {
   grep -q "Loading plugin: GRANPEN" "$WORK/runs_plugin/pour.log" || grep -qi "loading plugin" "$WORK/runs_plugin/pour.log"
 }
 
-make_package_tree() {
-  # a copy of the tree (hard links: cheap) with src/GRANPEN and GRANPEN in STANDARD_PACKAGES;
-  # the package's files keep their times (cp -p), so a cached build recompiles only changes
-  local tree=$LBUILD/package-tree
-  rm -rf "$tree"; cp -al "$src" "$tree"
-  rm -rf "$tree/src/GRANPEN"; mkdir "$tree/src/GRANPEN"
-  cp -p "$ROOT"/src/*.cpp "$ROOT"/src/*.h "$ROOT"/src/README "$tree/src/GRANPEN/"
-  cp --remove-destination "$src/cmake/CMakeLists.txt" "$tree/cmake/CMakeLists.txt"
-  sed -i 's/^set(STANDARD_PACKAGES$/set(STANDARD_PACKAGES\n  GRANPEN/' "$tree/cmake/CMakeLists.txt"
-  grep -q "^  GRANPEN$" "$tree/cmake/CMakeLists.txt"
+make_package_tree() {    # src/GRANPEN, its CMake module and list entries (granpen_package_tree.sh)
+  "$ROOT/tests/compat/granpen_package_tree.sh" "$src" "$ROOT" "$LBUILD/package-tree"
 }
 
 build_package() {    # TARGET [CMAKE_OPTION...]: the package tree's LAMMPS, built in $LBUILD/package
