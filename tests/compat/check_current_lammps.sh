@@ -146,7 +146,7 @@ package_route() {
   local lmp=$LBUILD/package/lmp
   "$lmp" -h > "$WORK/package-help.txt"
   grep -A4 "Installed packages" "$WORK/package-help.txt" | grep -q GRANPEN
-  for s in rod/drive rod/drag bed/surface flow/azimuthal momentum/vbin create_rod; do
+  for s in rod/drive rod/drag bed/surface flow/azimuthal momentum/vbin create_rod restore_contact_history; do
     grep -q "$s" "$WORK/package-help.txt" || { echo "lmp -h lacks $s"; return 1; }
   done
   tiny_runs "$lmp" "" package

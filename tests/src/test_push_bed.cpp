@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <numeric>
 #include <string>
 
@@ -115,6 +116,49 @@ TEST_F(PushBed, ThirdLawWithFriction)
   // mostly horizontal: measured |gg / drag - 1| = 0.022, 0.005, 0.009, 0.019, 0.004 on the
   // tiny beds of seeds 4242 (the fixture's), 11, 12, 13, 14. 0.06: about three times the largest.
   EXPECT_NEAR(gg, fz_step, 0.06 * std::fabs(fz_step)) << "group/group with friction";
+}
+
+TEST_F(PushBed, SurfaceAutoMeasuresOnTheGridItIsGiven)
+{
+  // fix rod/drive surface auto surface_grid N takes z_s as compute bed/surface grid N does (the
+  // same kernel, src/bed_surface), on 1 and 2 ranks; and N reaches the measurement: the 4 cm
+  // tiny box on 2 x 2 columns (2 cm wide) and on 8 x 8 (0.5 cm, about a grain) gives z_s
+  // apart by far more than round-off
+  int nprocs = 1, rank = 0;
+  MPI_Comm_size(MPI_COMM_WORLD, &nprocs);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+  double measured[2] = {0.0, 0.0};
+  const int grids[2] = {2, 8};
+  for (int k = 0; k < 2; ++k) {
+    const std::string n = std::to_string(grids[k]);
+    const std::string trace = "granpen_surface_grid" + n + "_np" + std::to_string(nprocs) + ".csv";
+    double from_compute = 0.0;
+    {
+      LmpSession s;
+      setup_push(s, bed_path(), 100.0, "file " + trace);
+      s.cmds({"unfix push", "compute surfn grains bed/surface grid " + n, "run 0 post no"});
+      from_compute = s.compute_vector("surfn", 0);
+      s.cmds({"fix push rod rod/drive 100 surface auto surface_grid " + n + " grains grains file " + trace,
+              "run 1 post no"});
+    }
+    MPI_Barrier(MPI_COMM_WORLD);
+    // the header alone (one step gives too few rows for the trace reader's checks)
+    std::ifstream in(trace);
+    std::string line, key = "# surface = ";
+    bool found = false;
+    while (std::getline(in, line) && !found)
+      if (line.compare(0, key.size(), key) == 0) measured[k] = std::stod(line.substr(key.size())), found = true;
+    ASSERT_TRUE(found) << trace << " has no surface key";
+    // the header prints the fix's z_s to 10 significant digits (trace_writer's num): the same
+    // number to that rounding, half a unit of the 10th digit at most
+    EXPECT_NEAR(measured[k], from_compute, 1e-9 * std::fabs(from_compute)) << "grid " << n;
+    MPI_Barrier(MPI_COMM_WORLD);
+    if (rank == 0) std::remove(trace.c_str());
+  }
+  if (verbose()) std::printf("surface auto: z_s %.10g on 2 x 2 columns, %.10g on 8 x 8\n", measured[0], measured[1]);
+  // a column's highest grain top rises with the column's width: 2 cm columns sit above 0.5 cm
+  // ones by a fraction of a grain (0.4 cm); 1e-3 cm is far above round-off and far below that
+  EXPECT_GT(measured[0], measured[1] + 1e-3);
 }
 
 TEST_F(PushBed, ZeroBeforeContactAndGrowsWithDepthWhenSlow)
