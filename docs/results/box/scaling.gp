@@ -1,15 +1,15 @@
 # scaling.gp, written by granpen. The data are in scaling.dat beside it.
-# granpen plot scaling: each quantity of /work/wt-box-run/docs/results/box.csv against the box width with its error bars, and the paper's value (a red line, with its band when it has an error); the dotted line: the paper's own box.
+# granpen plot scaling: each quantity of /work/main/docs/results/box.csv against the box width with its error bars, and the paper's value (a red line, with its band when it has an error); the dotted line: the paper's own box.
 # Run in this folder: `gnuplot scaling.gp` makes scaling.png and scaling.svg;
 # `gnuplot -e "formats='png'" scaling.gp` makes only the PNG.
 if (!exists("formats")) formats = "png svg"
 data = "scaling.dat"
 do for [fmt in formats] {
   if (fmt eq "png") {
-    set terminal pngcairo enhanced size 1300,500 font "sans,12" background rgb "white"
+    set terminal pngcairo enhanced size 1300,880 font "sans,12" background rgb "white"
   } else {
     if (fmt ne "svg") { print "unknown format ", fmt, " (png or svg)"; exit status 1 }
-    set terminal svg enhanced size 1300,500 font "sans,12" background rgb "white"
+    set terminal svg enhanced size 1300,880 font "sans,12" background rgb "white"
   }
   set output "scaling." . fmt
   reset
@@ -17,8 +17,8 @@ do for [fmt in formats] {
   set multiplot title "Against the box width: granpen (blue, ± its error), the paper's value (red; shaded: its error), the paper's box (dotted)" font ",14"
 
   # ---- panel 1: peak exponent (v\_c to 10 v\_c)   (paper: 2)
-  set origin 0,0
-  set size 0.5,0.94
+  set origin 0,0.47
+  set size 0.5,0.47
   set title "peak exponent (v\\_c to 10 v\\_c)   (paper: 2)"
   set xlabel "box width (cm)"
   set ylabel "peak exponent (v\\_c to 10 v\\_c)"
@@ -35,8 +35,8 @@ do for [fmt in formats] {
   # ---- panel 2: peak exponent (means above v_c)   (paper: 2)
   reset
   set encoding utf8
-  set origin 0.5,0
-  set size 0.5,0.94
+  set origin 0.5,0.47
+  set size 0.5,0.47
   set title "peak exponent (means above v_c)   (paper: 2)"
   set xlabel "box width (cm)"
   set ylabel "peak exponent (means above v_c)"
@@ -49,6 +49,24 @@ do for [fmt in formats] {
   set samples 400
   plot data index 1 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        2 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 2"
+
+  # ---- panel 3: peak / the 8 cm box's (same bed and v0)   (paper: 1)
+  reset
+  set encoding utf8
+  set origin 0,0
+  set size 0.5,0.47
+  set title "peak / the 8 cm box's (same bed and v0)   (paper: 1)"
+  set xlabel "box width (cm)"
+  set ylabel "peak / the 8 cm box's (same bed and v0)"
+  set grid lc rgb "#d0d0d0"
+  set xrange [7:21]
+  set yrange [0.7826:1.0842]
+  unset key
+  set arrow 1 from first 20, graph 0 to first 20, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
+  set label 1 "paper" at first 20, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
+  set samples 400
+  plot data index 2 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+       1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
   unset multiplot
   unset multiplot
   set output
