@@ -18,11 +18,13 @@
 /* ----------------------------------------------------------------------
    GRANPEN package: create_rod command
 
-   create_rod type D length sphere spacing x y ztip shell|filled [density rho]
+   create_rod type D length sphere spacing x y ztip shell|filled [density rho] [shaft_type T]
 
    Places the spheres of granpen::build_rod() with the axis at (x, y) and
    the tip (lowest sphere bottom) at ztip. Each rank creates the spheres in
-   its sub-domain, as create_atoms single does.
+   its sub-domain, as create_atoms single does. With shaft_type T the spheres
+   above the tip layer (the shaft) get type T: their contacts with grains can
+   then be given their own friction (a frictionless shaft) by pair_coeff.
 ------------------------------------------------------------------------- */
 
 #include "create_rod.h"
@@ -67,12 +69,19 @@ void CreateRod::command(int narg, char **arg)
   else error->all(FLERR, "Create_rod fill must be shell or filled, got {}", arg[8]);
 
   double density = 1.0;
+  int shaft_type = type;    // the shaft's own type: its contacts can get their own friction
   int iarg = 9;
   while (iarg < narg) {
     if (strcmp(arg[iarg], "density") == 0) {
       gp::need_args(FLERR, "create_rod density", iarg, 2, narg, lmp);
       density = utils::numeric(FLERR, arg[iarg + 1], false, lmp);
       if (density <= 0.0) error->all(FLERR, "Create_rod density must be > 0, got {}", arg[iarg + 1]);
+      iarg += 2;
+    } else if (strcmp(arg[iarg], "shaft_type") == 0) {
+      gp::need_args(FLERR, "create_rod shaft_type", iarg, 2, narg, lmp);
+      shaft_type = utils::inumeric(FLERR, arg[iarg + 1], false, lmp);
+      if (shaft_type < 1 || shaft_type > atom->ntypes)
+        error->all(FLERR, "Create_rod shaft_type {} is outside 1 to {}", arg[iarg + 1], atom->ntypes);
       iarg += 2;
     } else {
       error->all(FLERR, "Unknown create_rod keyword: {}", arg[iarg]);
@@ -116,7 +125,7 @@ void CreateRod::command(int narg, char **arg)
     domain->remap(xone, image);
     if (xone[0] >= sublo[0] && xone[0] < subhi[0] && xone[1] >= sublo[1] && xone[1] < subhi[1] &&
         xone[2] >= sublo[2] && xone[2] < subhi[2]) {
-      atom->avec->create_atom(type, xone);
+      atom->avec->create_atom(s.layer == 0 ? type : shaft_type, xone);
       const int n = atom->nlocal - 1;
       atom->image[n] = image;
       atom->radius[n] = r;

@@ -46,12 +46,12 @@ std::vector<double> disc_radii(double rshell, double spacing)
   return radii;
 }
 
-static void add_ring(std::vector<RodSphere> &out, double r, double z, double spacing, double phase)
+static void add_ring(std::vector<RodSphere> &out, double r, double z, int layer, double spacing, double phase)
 {
   int n = ring_count(r, spacing);
   for (int k = 0; k < n; ++k) {
     double a = (TWO_PI * k) / n + phase;
-    out.push_back({r * std::cos(a), r * std::sin(a), z});
+    out.push_back({r * std::cos(a), r * std::sin(a), z, layer});
   }
 }
 
@@ -110,9 +110,9 @@ std::vector<RodSphere> build_rod(const RodSpec &s)
     const double z = 0.5 * s.sphere + layer * s.spacing;
     const int nring = ring_count(rshell, s.spacing);
     const double phase = (layer % 2) ? 0.5 * TWO_PI / nring : 0.0;
-    add_ring(out, rshell, z, s.spacing, phase);
+    add_ring(out, rshell, z, layer, s.spacing, phase);
     if (layer == 0 || s.filled)
-      for (double r : disc) add_ring(out, r, z, s.spacing, 0.0);
+      for (double r : disc) add_ring(out, r, z, layer, s.spacing, 0.0);
   }
   return out;
 }

@@ -35,9 +35,11 @@ struct RodSpec {
   bool filled = false;      // false: hollow shell closed by a bottom disc; true: solid
 };
 
-// Sphere centre relative to the rod: x, y from the axis, z above the tip.
+// Sphere centre relative to the rod: x, y from the axis, z above the tip; layer 0 is the tip
+// (the bottom disc and the shell ring that closes it), layers 1, 2, ... the shaft above it.
 struct RodSphere {
   double x, y, z;
+  int layer;
 };
 
 // Number of spheres on a ring of radius r at the given spacing (1 at r = 0).

@@ -94,6 +94,8 @@ granpen_error_test(rod_too_many_spheres "Create_rod: the rod would have [0-9]+ s
 granpen_error_test(rod_wider_than_box "Create_rod: rod diameter [0-9.e+]+ is not below the box width 8[.0]* in x"
   "create_rod 2 1e7 6.0 0.4 0.2 4.0 4.0 1.0 shell")
 granpen_error_test(rod_type_bad "Create_rod atom type 3 is outside 1 to 2" "create_rod 3 2.0 6.0 0.4 0.2 4.0 4.0 9.0 shell")
+granpen_error_test(rod_shaft_type_bad "Create_rod shaft_type 3 is outside 1 to 2"
+  "create_rod 2 2.0 6.0 0.4 0.2 4.0 4.0 9.0 shell shaft_type 3")
 granpen_error_test(rod_density_bad "Create_rod density must be > 0, got 0" "create_rod 2 2.0 6.0 0.4 0.2 4.0 4.0 9.0 shell density 0")
 
 # restore_contact_history: it takes no arguments; and a restart with more gran/hertz/history

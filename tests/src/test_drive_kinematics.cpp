@@ -5,6 +5,7 @@
 
 #include "fix_rod_drive.h"
 #include "granpen_compat.h"
+#include "rod_geometry.h"
 
 #include <gtest/gtest.h>
 
@@ -55,6 +56,44 @@ TEST(CreateRod, BenchRodHas764SpheresInPlace)
   auto m = s.gather("rmass", 1);
   EXPECT_DOUBLE_EQ(r[100], 0.2);
   EXPECT_NEAR(m[100], 3.0 * 4.0 / 3.0 * M_PI * 0.008, 1e-14);
+}
+
+// shaft_type: the tip layer (the bottom disc and the ring that closes it) keeps the rod's type,
+// every sphere above it takes the shaft's; the same spheres in the same places. The bench rod
+// (764 spheres) has a tip layer of 64: the shell ring's 25 at radius 0.8 and the disc's rings
+// of radius 0, 0.2, 0.4, 0.6 (1 + 6 + 13 + 19). A rod driven by fix rod/drive over both types
+// moves as one.
+TEST(CreateRod, ShaftTypeTakesEverySphereAboveTheTipLayer)
+{
+  LmpSession s;
+  std::vector<std::string> box3 = BOX;
+  std::replace(box3.begin(), box3.end(), std::string("create_box 2 box"), std::string("create_box 3 box"));
+  s.cmds(box3);
+  s.cmd("create_rod 2 2.0 6.0 0.4 0.2 4.0 4.0 8.0 shell density 3.0 shaft_type 3");
+  ASSERT_EQ(s.lmp->atom->natoms, 764);
+  granpen::RodSpec spec;    // the bench rod, as above
+  const auto rod = granpen::build_rod(spec);
+  const auto tip = std::count_if(rod.begin(), rod.end(), [](const granpen::RodSphere &p) { return p.layer == 0; });
+  auto type = s.gather_int("type", 1);
+  auto x = s.gather("x", 3);
+  long ntip = 0, nshaft = 0;
+  for (size_t i = 0; i < type.size(); ++i) {
+    if (type[i] == 2) {
+      ++ntip;
+      EXPECT_NEAR(x[3 * i + 2], 8.2, 1e-12) << "a tip sphere above the tip layer";    // ztip + d/2
+    } else if (type[i] == 3) {
+      ++nshaft;
+      EXPECT_GT(x[3 * i + 2], 8.2 + 0.1) << "a shaft sphere in the tip layer";    // a spacing up
+    }
+  }
+  EXPECT_EQ(tip, 64);
+  EXPECT_EQ(ntip, tip);
+  EXPECT_EQ(ntip + nshaft, 764);
+  // driven over both types at 100 cm/s for 100 steps of 2e-6 s: every sphere 0.02 cm lower
+  s.cmds({"group rod type 2 3", "fix push rod rod/drive 100 surface 7.0 g 981", "run 100"});
+  auto x2 = s.gather("x", 3);
+  for (size_t i = 0; i < type.size(); ++i)
+    EXPECT_NEAR(x2[3 * i + 2], x[3 * i + 2] - 0.02, 1e-12) << "sphere " << i << " of type " << type[i];
 }
 
 // A rod across the periodic boundary in x (axis at x = 0.1 of a box 8 wide: half its atoms

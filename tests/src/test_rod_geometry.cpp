@@ -43,6 +43,24 @@ TEST(RodGeometry, BenchRodIs764Spheres)
   EXPECT_NEAR(zmax + 0.2, 6.0, 1e-12);    // top at the length
 }
 
+// layer is the sphere's layer counted from the tip (its height: d/2 + layer spacing), for a
+// shell and a filled rod: two routes to the same index; and only layer 0 holds the disc
+TEST(RodGeometry, LayerIndexIsTheHeightInSpacingsAboveTheTipLayer)
+{
+  for (bool filled : {false, true}) {
+    RodSpec s;
+    s.filled = filled;
+    int nlayer0 = 0;
+    for (auto &p : build_rod(s)) {
+      // heights are exact multiples of 0.2 up to the rounding of d/2 + k spacing
+      EXPECT_EQ(p.layer, std::lround((p.z - 0.2) / 0.2)) << "z = " << p.z;
+      if (p.layer == 0) ++nlayer0;
+      if (!filled && p.layer > 0) EXPECT_NEAR(std::hypot(p.x, p.y), 0.8, 1e-12) << "a disc sphere above the tip";
+    }
+    EXPECT_EQ(nlayer0, 25 + 1 + 6 + 13 + 19);
+  }
+}
+
 TEST(RodGeometry, AlternateRingsRotatedByHalfSpacing)
 {
   auto rod = build_rod(RodSpec{});

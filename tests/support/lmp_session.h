@@ -65,6 +65,12 @@ class LmpSession {
     lammps_gather_atoms(lmp, const_cast<char *>(name), 1, count, data.data());
     return data;
   }
+  std::vector<int> gather_int(const char *name, int count)    // an integer per-atom property (type, ...)
+  {
+    std::vector<int> data((size_t) lmp->atom->natoms * count);
+    lammps_gather_atoms(lmp, const_cast<char *>(name), 0, count, data.data());
+    return data;
+  }
   int rank() const
   {
     int r;
