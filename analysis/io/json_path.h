@@ -43,8 +43,10 @@ struct JsonLookup {
   bool complete() const { return missing.empty(); }
 };
 
-// The values of doc at path (parse_json_path's InputError for a malformed path).
+// The values of doc at path (parse_json_path's InputError for a malformed path). They point
+// into doc, so doc must outlive them (a temporary is refused at compile time).
 JsonLookup json_lookup(const Json &doc, const std::string &path);
+JsonLookup json_lookup(const Json &&doc, const std::string &path) = delete;
 
 // A value as a script reads it: a string without its quotes, a number as its JSON text
 // (what the writer wrote), true, false, null, an object or array as compact JSON.
