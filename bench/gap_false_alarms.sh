@@ -26,6 +26,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 WORK=${GRANPEN_SELFTEST_WORK:-$ROOT/runs/gap_selftest}/$SCEN
+CLI=${GRANPEN_CLI:-$ROOT/build/analysis/granpen-cli}
 mkdir -p "$WORK"
 TABLE=$WORK/false_alarms.md
 echo "| set | seeds | verdict | G_all before | null replicates | their verdicts other than none | wall s |" > "$TABLE"
@@ -40,11 +41,7 @@ for k in $(seq 1 "$SETS"); do
   j=$WORK/diag_none/diagnosis.json
   [ -f "$j" ] || { echo "gap_false_alarms: set $k: no diagnosis (see $WORK/false_alarms_$k.log)" >&2; exit 1; }
   cp "$j" "$WORK/false_alarms_$k.json"
-  v=$(sed -n 's/^  "verdict": "\(.*\)",$/\1/p' "$j")
-  g=$(sed -n 's/^  "gap_before": \(.*\),$/\1/p' "$j")
-  fa=$(sed -n 's/^  "false_alarms": {\(.*\)},$/\1/p' "$j")
-  n=$(echo "$fa" | sed -n 's/.*"null_replicates": \([0-9]*\).*/\1/p')
-  nn=$(echo "$fa" | sed -n 's/.*"not_none": \([0-9]*\).*/\1/p')
+  IFS=$'\t' read -r v g n nn < <("$CLI" get "$j" verdict gap_before false_alarms.null_replicates false_alarms.not_none)
   [ "$v" = none ] || alarms=$((alarms + 1))
   [ "$k" = 1 ] && nulls=$n null_alarms=$nn
   printf '| %d | %s | %s | %.3f | %d | %d | %d |\n' "$k" "$seeds" "$v" "$g" "$n" "$nn" $(( $(date +%s) - t0 )) | tee -a "$TABLE"

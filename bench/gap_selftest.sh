@@ -7,12 +7,13 @@
 # lighter than the header says), on beds no diagnosis uses (seeds 101 to 104); every trace's
 # header is cut to the standard keys (units v0 D d_g rho_g g run mu), its depth origin moved
 # by a random offset up to +-0.2 cm and 2% noise added to F. Then `granpen gap` runs
-# blind on it, and the case is scored: the right top effect for library cases, "none" for
-# the no-effect case, no confident wrong effect for the outside case (force_scale at the
-# grains' density ratio less 1 is right for lighter grains: outside_as), G after <= 0.5 G
-# before where explained; a library case whose true magnitude lies below its detection limit
-# in this data (diagnosis.json detection_limits) may be missed (none or unexplained), one above
-# it may not (issue 21). Everything is cached in runs/gap_selftest (resumable); the table goes
+# blind on it, and `granpen gap-score` scores the case (analysis/gap/gap_selftest_score.h):
+# the right top effect for library cases, "none" for the no-effect case, no confident wrong
+# effect for the outside case (force_scale at the grains' density ratio less 1 is right for
+# lighter grains: outside_as), G_all shrunk as an explained verdict requires where explained;
+# a library case whose true magnitude lies below its detection limit in this data
+# (diagnosis.json detection_limits) may be missed (none or unexplained), one above it may not
+# (issue 21). Everything is cached in runs/gap_selftest (resumable); the table goes
 # to runs/gap_selftest/SCENARIO/table.md (docs/gap-validation.md quotes it).
 set -euo pipefail
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -126,55 +127,15 @@ while IFS='|' read -r name truth mag keys; do
   t0=$(date +%s)
   "$CLI" "${args[@]}" > "$WORK/diag_$name.log" 2>&1 || { echo "gap_selftest: gap failed on $name: $WORK/diag_$name.log" >&2; fails=$((fails + 1)); continue; }
   secs=$(( $(date +%s) - t0 ))
-  # the numbers of diagnosis.json (written by granpen gap, one key per line at the top level)
-  j=$out/diagnosis.json
-  top() { sed -n "s/^  \"$1\": \(.*\),\{0,1\}$/\1/p" "$j" | head -1 | sed 's/,$//; s/"//g'; }
-  sub() { sed -n "s/^  \"$1\": {\(.*\)},\{0,1\}$/\1/p" "$j" | head -1 | tr ',' '\n' | sed -n "s/^ *\"$2\": //p" | sed 's/}$//'; }
-  v=$(top verdict) te=$(top top_effect) fm=$(top magnitude) gb=$(top gap_before) ga=$(top gap_after)
-  # the case's own effect's detection limit on the true magnitude's side of 0, and whether
-  # the truth lies below it (closer to 0, or the limit null)
-  lim=- below=no
-  if [ "$truth" != none ] && [ "$truth" != outside ]; then
-    dl=$(sed -n '/^  "detection_limits": \[/,/^  \]/p' "$j" | grep -o "{\"effect\": \"$truth\"[^}]*}" || true)
-    field() { echo "$dl" | sed -n "s/.*\"$1\": \([^,}]*\).*/\1/p"; }
-    side=$(awk -v t="$mag" -v r="$(field reference)" 'BEGIN { print (t * r >= 0 ? "limit" : "limit_other_side") }')
-    lim=$(field "$side")
-    [ -z "$dl" ] && lim=missing
-    case "$lim" in
-      null) below=yes lim="none within the knots" ;;
-      missing) lim=- ;;
-      *) below=$(awk -v t="$mag" -v l="$lim" 'BEGIN { print (t * t < l * l ? "yes" : "no") }'); lim=$(printf %.3g "$lim") ;;
-    esac
-  fi
-  hv=$(sub heldout v0) hb=$(sub heldout gap_before) ha=$(sub heldout gap_after) cf=$(sub confirmation explained_fraction)
-  case "$truth" in
-    none) ok=$([ "$v" = none ] && echo yes || echo no) ;;
-    # an outside case: not explained is right (a miss at worst), explained by another effect
-    # a confident wrong answer, except by the library effect that stands for it in the force
-    # (outside_as) at its true magnitude within two of its fit's standard errors
-    outside) ok=$([ "$v" != explained ] && echo yes || echo no)
-       read -r as_effect as_mag <<< "$(outside_as "$name")"
-       if [ "$v" = explained ] && [ -n "$as_effect" ] && [ "$te" = "$as_effect" ]; then
-         fe=$(grep -o "{\"effect\": \"$te\"[^}]*}" "$j" | sed -n 's/.*"magnitude_error": \([^,}]*\).*/\1/p' || true)
-         ok=$(awk -v a="$fm" -v t="$as_mag" -v e="$fe" 'BEGIN{exit !(e != "null" && (a - t)^2 <= 4 * e^2)}' && echo yes || echo no)
-         te="$te ($(awk -v a="$fm" -v t="$as_mag" -v e="$fe" 'BEGIN{ if (e == "null") print "no fit error"; else printf "%+.1f fit errors off %.3g", (a - t) / e, t }'))"
-       fi ;;
-    *) ok=$([ "$v" = explained ] && [ "$te" = "$truth" ] && awk -v a="$ga" -v b="$gb" 'BEGIN{exit !(a <= 0.5 * b)}' && echo yes || echo no)
-       # a tie that names the truth is a right answer (nothing confirmed: G after = before)
-       [ "$v" = tie ] && grep -q "^  \"tie\": \[.*\"$truth\"" "$j" && ok=yes && te="tie: $(top tie | tr -d '[] ')"
-       # a true magnitude below its detection limit (on its side of 0; null: not detectable
-       # within the simulated range) may be missed: none or unexplained is then right
-       # (issue 21); a miss above the limit, or any other effect named, is not
-       if [ "$below" = yes ] && { [ "$v" = none ] || [ "$v" = unexplained ]; }; then ok=yes; fi ;;
-  esac
-  [ "$te" = null ] && te=-
-  [ "$fm" = null ] && fm=- || fm=$(printf %.3g "$fm")
-  [ "$cf" = null ] && cf=- || cf=$(printf %.2f "$cf")
-  verdict=$([ "$ok" = yes ] && { [ "$below" = yes ] && [ "$v" != explained ] && [ "$v" != tie ] && echo "yes (below its limit)" || echo yes; } || echo '**no**')
-  row=$(printf '| %s | %s | %s | %s | %s | %s | %s | %.3f | %.3f | %g | %.3f | %.3f | %s | %s | %s |' "$name" "$truth" "$mag" "$lim" "$v" "$te" "$fm" \
-        "$gb" "$ga" "$hv" "$hb" "$ha" "$cf" "$secs" "$verdict")
+  # the case scored by granpen gap-score (analysis/gap/gap_selftest_score.h): its row of the
+  # table; exit 0 when it passes, 3 when it does not
+  score=(gap-score "$out/diagnosis.json" --case "$name" --truth "$truth" --magnitude "$mag" --wall-seconds "$secs")
+  read -r as_effect as_mag <<< "$(outside_as "$name")"
+  [ -n "$as_effect" ] && score+=(--as-effect "$as_effect" --as-magnitude "$as_mag")
+  rc=0; row=$("$CLI" "${score[@]}" 2> "$WORK/score_$name.log") || rc=$?
+  [ "$rc" = 0 ] || [ "$rc" = 3 ] || { echo "gap_selftest: scoring $name failed: $(cat "$WORK/score_$name.log")" >&2; fails=$((fails + 1)); continue; }
   echo "$row" | tee -a "$TABLE"
-  case "$row" in *"**no**"*) fails=$((fails + 1)) ;; esac
+  [ "$rc" = 0 ] || fails=$((fails + 1))
 done < <(all_cases)
 if [ "$MEASURED_ONLY" = yes ]; then echo "gap_selftest: measured data in $WORK/real_*"
 else echo "gap_selftest: table in $TABLE; $fails case(s) failed"; fi

@@ -31,7 +31,8 @@ make_cache() {    # label [--sweep-by-sweep]
   wall=$(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')
   echo "$wall" > "$WORK/$1.wall"
   # every run's own wall time, from the manifests (linked beds count 0)
-  busy=$(cat "$WORK/$1/$SCENARIO"/*/manifest.json | grep -o '"wall_seconds_run": [0-9.]*' | awk '{s += $2} END {print s}')
+  busy=$(for m in "$WORK/$1/$SCENARIO"/*/manifest.json; do "$CLI" get "$m" 'runs[*].wall_seconds_run' --missing 0; done |
+         awk '{s += $1} END {print s}')
   awk -v w="$wall" -v busy="$busy" -v j="$JOBS" -v l="$1" 'BEGIN {
     printf "%-15s wall %7.1f s; runs %8.1f s; busy %5.1f%%\n", l, w, busy, 100 * busy / (j * w) }' |
     tee -a "$WORK/summary.txt"

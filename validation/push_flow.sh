@@ -43,8 +43,7 @@ echo "push_flow.sh: ${#dumps[@]} frames of $TRACE (granpen flow, granpen momentu
 # (v_z of the top grain layer 0.5-1.5 cm from the shaft) against t~ with its sign change
 "$CLI" flow "${dumps[@]}" --trace "$TRACE" --voronoi none --out "$OUT/surface" > "$OUT/surface.txt" \
   || { echo "push_flow.sh: granpen flow --voronoi none failed (see $OUT/surface.txt)" >&2; exit 1; }
-steps=$(grep -o '"timestep": [0-9]*, "where": "[^"]*", "grains": [0-9]*, "rod_atoms": [0-9]*, "tip": [-0-9.e+]*, "z_tip": [-0-9.e+]*' \
-          "$OUT/surface/flow.json" | awk '{ gsub(/,/, ""); print $2, $12 }' |
+steps=$("$CLI" get "$OUT/surface/flow.json" 'frames[*].timestep' 'frames[*].z_tip' |
         awk -v lo="$ZLO" -v hi="$ZHI" '$2 >= lo && $2 <= hi { if (!a) a = $1; b = $1 } END { if (a) print a ":" b }')
 [ -n "$steps" ] || { echo "push_flow.sh: no frame of $TRACE has its tip $ZLO to $ZHI cm deep ($OUT/surface/flow.json)" >&2; exit 1; }
 # --rod-cells: the rod's spheres bound the grains' Voronoi cells (phi at the rod edge)

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Regenerates every number and figure of docs/results.md (issue: validation) from the
 # validation sweeps' traces and dumps, with granpen's own commands (fit, collapse, flow,
-# momentum, plot); awk only averages their outputs over beds.
+# momentum, plot); values of their JSON outputs are asked of `granpen get` by key path, and
+# awk only averages their outputs over beds.
 #
 #   validation/results.sh [--out DIR] [--bench DIR] [--mid DIR] [--dumps DIR] [--dg10 DIR] [--stiff DIR]
 #                         [--damp DIR] [--box DIR] [--cli PATH]
@@ -58,20 +59,17 @@ stats() { awk '{ s += $1; ss += $1 * $1; n++ }
         m = s / n; sd = n > 1 ? sqrt((ss - n * m * m) / (n - 1)) : 0
         printf "%.4g +- %.2g n = %d\n", m, sd, n }'; }
 
-# the first number member KEY of a JSON file: jget FILE KEY
-jget() { grep -o "\"$2\": [-0-9.e+]*" "$1" | head -1 | awk '{print $2}'; }
+# the value at key path KEY of a granpen JSON output: jget FILE KEY
+jget() { "$CLI" get "$1" "$2"; }
 
 # the peak law of granpen collapse --ensemble's JSON: "VALUE +- SE (fit; 95% over runs: CI)"
 ensemble_peak() {
-  grep -o '"peak_exponent": {[^}]*}' "$1" | head -1 |
-    awk '{ for (i = 1; i <= NF; i++) { k = $i; gsub(/[":,{]/, "", k); v = $(i + 1); gsub(/[,}]/, "", v); x[k] = v }
-           printf "%.4g +- %.2g (fit; 95%% over runs: %.2g)\n", x["value"], x["se"], x["ci95"] }'
+  "$CLI" get "$1" ensemble.peak_exponent.value ensemble.peak_exponent.se ensemble.peak_exponent.ci95 |
+    awk -F'\t' '{ printf "%.4g +- %.2g (fit; 95%% over runs: %.2g)\n", $1, $2, $3 }'
 }
 
-# "FILE V0 PEAK" per trace of granpen collapse's JSON
-trace_peaks() {
-  grep -o '"file": "[^"]*", "v0": [-0-9.e+]*, "k_z": [-0-9.e+]*, "peak": [-0-9.e+]*' "$1" | tr -d '",' | awk '{ print $2, $4, $8 }'
-}
+# "FILE V0 PEAK" per trace of granpen collapse's JSON (tab-separated)
+trace_peaks() { "$CLI" get "$1" 'traces[*].file' 'traces[*].v0' 'traces[*].peak'; }
 
 # the local exponent of the peak law between successive speeds, from the mean peak over the
 # runs of each speed in granpen collapse's JSON: "V1-V2: E, ..." (does it approach 2 at speed?)
@@ -111,11 +109,11 @@ peak_above_vc() { # KEY OUTDIR SLOW_V0 ALPHA TRACE...
   put "$key.peak_inertial = $(two_term "$o/collapse_peak_fast.json" quadratic "$(awk -v r="$rho" -v d="$D" 'BEGIN { print r * d * d }')")  # granpen collapse: c2 / (rho_g D^2) of peak = c1 v0 + c2 v0^2 above v0 = $slow; standard error"
   put "$key.peak_crossover_speed = $(two_term "$o/collapse_peak_fast.json" crossover_speed 1)  # granpen collapse: c1 / c2 (cm/s), where the linear term equals the inertial one"
 }
-# FIELD of granpen collapse's peak_two_term divided by DIVISOR: "VALUE +- SE"
+# FIELD of granpen collapse's peak_two_term divided by DIVISOR: "VALUE +- SE" ("undefined"
+# when the collapse wrote no such term)
 two_term() { # JSON FIELD DIVISOR
-  grep -o '"peak_two_term": {[^}]*}' "$1" | head -1 |
-    awk -v k="$2" -v s="$3" '{ for (i = 1; i <= NF; i++) { f = $i; gsub(/[":,{]/, "", f); v = $(i + 1); gsub(/[,}]/, "", v); x[f] = v }
-      if (!(k in x)) print "undefined"; else printf "%.4g +- %.2g\n", x[k] / s, x[k "_se"] / s }'
+  "$CLI" get "$1" "peak_two_term.$2" "peak_two_term.$2_se" --missing undefined |
+    awk -F'\t' -v s="$3" '{ if ($1 == "undefined") print "undefined"; else printf "%.4g +- %.2g\n", $1 / s, $2 / s }'
 }
 
 # k_z against v0 in the deep regime t~ >= 1, where the push reaches it (>= 0.5 cm of window
@@ -136,7 +134,7 @@ deep_kz() {
 # KEY JSON NTRACES ALPHA
 collapse_numbers() {
   put "$1.t_star = $(jget "$2" t_star_mean) +- $(jget "$2" t_star_sd) n = $(jget "$2" n_crossed) of $3  # granpen collapse --alpha $4, every v0, g, D"
-  put "$1.t_star_ensemble = $(jget "$2" t_star_ensemble) (crossed: $(grep -o '"ensemble_crossed": [a-z]*' "$2" | awk '{print $2}'))  # the mean of F/F_z over the traces"
+  put "$1.t_star_ensemble = $(jget "$2" t_star_ensemble) (crossed: $(jget "$2" ensemble_crossed))  # the mean of F/F_z over the traces"
   put "$1.collapse_spread_z = $(jget "$2" spread_z)  # spread of F/F_z across traces against z"
   put "$1.collapse_spread_t = $(jget "$2" spread_t)  # ... against t~"
 }
@@ -151,16 +149,12 @@ analyse_traces() {
 
   if [ -f "$dir/manifest.json" ]; then
     say "$preset: cost of each run (the sweep's manifest: wall seconds, two runs at a time on 2 cores)"
-    awk -v preset="$preset" '/"kind": "(pour|push)"/ {
-        match($0, /"kind": "[a-z]*"/); kind = substr($0, RSTART + 9, RLENGTH - 10)
-        key = kind
-        if (kind == "push") { n = split("v0 g D", f, " ")
-          for (i = 1; i <= n; i++) { match($0, "\"" f[i] "\": \"[0-9.]*\""); v = substr($0, RSTART, RLENGTH)
-            sub(/^.*: "/, "", v); sub(/"$/, "", v); key = key "." (f[i] == "v0" ? "v" : f[i]) v } }
-        match($0, /"wall_seconds_run": [0-9.]+/); w = substr($0, RSTART + 20, RLENGTH - 20)
-        s[key] += w; c[key]++ }
-      END { for (k in s) printf "%s.cost.%s = %.0f s n = %d  # wall seconds per run, the sweep manifest\n", preset, k, s[k] / c[k], c[k] }' \
-      "$dir/manifest.json" | sort -t= -k1,1 -V | tee -a "$NUM"
+    "$CLI" get "$dir/manifest.json" 'runs[*].kind' 'runs[*].v0' 'runs[*].g' 'runs[*].D' 'runs[*].wall_seconds_run' --missing '' |
+      awk -F'\t' -v preset="$preset" '$1 == "pour" || $1 == "push" {
+        key = $1 ($1 == "push" ? ".v" $2 ".g" $3 ".D" $4 : "")
+        s[key] += $5; c[key]++ }
+      END { for (k in s) printf "%s.cost.%s = %.0f s n = %d  # wall seconds per run, the sweep manifest\n", preset, k, s[k] / c[k], c[k] }' |
+      sort -t= -k1,1 -V | tee -a "$NUM"
   fi
   say "$preset: linear fits (granpen fit)"
   "$CLI" fit "$dir" --zmin "$zmin" --csv "$o/fit_z$zmin.csv" > "$o/fit_z$zmin.txt"
@@ -227,21 +221,17 @@ plot_flow() {
 
 # the flow rows of one push (KEY.lambda_vz_D, ...) from validation/push_flow.sh's outputs in DIR
 # lambda_vz / D of granpen flow's JSON: "VALUE +- SE"
-lambda_D() {
-  local lam; lam=$(grep -o '"lambda_vz": {[^}]*}' "$1")
-  echo "$(echo "$lam" | grep -o '"lambda_D": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$lam" | grep -o '"lambda_D_se": [-0-9.e+]*' | awk '{print $2}')"
-}
+lambda_D() { echo "$(jget "$1" profile_below.lambda_vz.lambda_D) +- $(jget "$1" profile_below.lambda_vz.lambda_D_se)"; }
 flow_numbers() {
-  local key=$1 dir=$2 fj=$2/flow/flow.json mj=$2/momentum/momentum.json steps edge
+  local key=$1 dir=$2 fj=$2/flow/flow.json mj=$2/momentum/momentum.json steps
   steps=$(awk '{print $1 " (tip " $2 " to " $3 " cm deep)"}' "$dir/window.txt")
   put "$key.lambda_vz_D = $(lambda_D "$fj")  # granpen flow --steps $steps"
-  edge=$(grep -o '"edge": {"points"[^}]*}' "$fj")
-  put "$key.edge_phi_0 = $(echo "$edge" | grep -o '"phi_0": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$edge" | grep -o '"phi_0_se": [-0-9.e+]*' | awk '{print $2}')  # phi = phi_0 + b I at the rod edge"
-  put "$key.edge_slope = $(echo "$edge" | grep -o '"slope": [-0-9.e+]*' | awk '{print $2}') +- $(echo "$edge" | grep -o '"slope_se": [-0-9.e+]*' | awk '{print $2}')"
+  put "$key.edge_phi_0 = $(jget "$fj" edge.fit.phi_0) +- $(jget "$fj" edge.fit.phi_0_se)  # phi = phi_0 + b I at the rod edge"
+  put "$key.edge_slope = $(jget "$fj" edge.fit.slope) +- $(jget "$fj" edge.fit.slope_se)"
   put "$key.phi_below_far = $(awk -F, 'NR == 2 { printf "%.4g\n", $4 }' "$dir/flow/flow_profile_below.csv")  # phi on the axis below the rod, the bin farthest below the tip (about 4 cm)"
   put "$key.phi_below_face = $(awk -F, 'NR > 1 { p = $4 } END { printf "%.4g\n", p }' "$dir/flow/flow_profile_below.csv")  # ... the bin nearest the tip (the rod's face)"
-  put "$key.surface_flux_sign_change_t = $(grep -o '"crossing_t_tilde": [-0-9.e+a-z]*' "$dir/surface/flow.json" | awk '{print $2}')  # granpen flow: t~ where v_z of the strip's top grain layer (0.5-1.5 cm from the shaft) last turns from up to down"
-  put "$key.drag_over_mu_g_Mmove = $(grep -o '"k": [-0-9.e+]*' "$mj" | head -1 | awk '{print $2}') +- $(grep -o '"k_se": [-0-9.e+]*' "$mj" | head -1 | awk '{print $2}')  # F = k mu g M(v_z > v0/320), granpen momentum"
+  put "$key.surface_flux_sign_change_t = $(jget "$dir/surface/flow.json" surface.crossing_t_tilde)  # granpen flow: t~ where v_z of the strip's top grain layer (0.5-1.5 cm from the shaft) last turns from up to down"
+  put "$key.drag_over_mu_g_Mmove = $(jget "$mj" drag.k) +- $(jget "$mj" drag.k_se)  # F = k mu g M(v_z > v0/320), granpen momentum"
 }
 
 # the flow of one push (mid, 90 cm/s, g = 981, D = 2, seed 1) from its dumps

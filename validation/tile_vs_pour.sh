@@ -73,7 +73,7 @@ fi
 info() { awk -F' = ' -v k="$2" '$1 == k {print $2}' "$1"; }
 manifest() {    # KEY of the direct beds, seeds 1 to 5
   for m in "$ROOT"/data/sims/v0_bench/manifest.json "$ROOT"/data/sims/v0_bench_ensemble/manifest.json; do
-    grep -o "\"id\": \"bed_bench_mu0.3_s[0-9]*\"[^}]*\"$1\": [0-9.e+-]*" "$m" | sed "s/.*\"$1\": //"
+    "$CLI" get "$m" 'runs[*].id' "runs[*].$1" --missing '' | awk -F'\t' '$1 ~ /^bed_bench_mu0\.3_s[0-9]+$/ && $2 != "" { print $2 }'
   done
 }
 peakf() { awk -F, '!/^#/ && $1 != "t" && $2 >= 0.0 && $2 <= 1.0 && $3 > m {m = $3} END {printf "%.9g\n", m}' "$1"; }

@@ -28,6 +28,8 @@ const Subcommand SUBCOMMANDS[] = {
     {"momentum", granpen::cli::momentum, "upward momentum by v_z class from LAMMPS dumps; drag F against mu g M"},
     {"plot", granpen::cli::plot, "figures as gnuplot scripts + data, run to PNG and SVG: force, ratio, peak, kz, flow, momentum"},
     {"gap", granpen::cli::gap, "sim-to-real gap: where, which unmodelled effect, how far it shrinks"},
+    {"gap-score", granpen::cli::gap_score, "score a diagnosis.json against a selftest case's truth (bench/gap_selftest.sh)"},
+    {"get", granpen::cli::get, "values of a JSON output by key path (heldout.gap_before, traces[*].peak)"},
 };
 
 void usage(std::FILE *out)

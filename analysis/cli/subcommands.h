@@ -4,6 +4,7 @@
 #ifndef GRANPEN_CLI_SUBCOMMANDS_H
 #define GRANPEN_CLI_SUBCOMMANDS_H
 
+#include "get_options.h"
 #include "options.h"
 
 #include <cstdio>
@@ -22,6 +23,8 @@ int run_plot(const PlotOptions &o);                    // plot_cmd.cpp
 int run_gap_command(const GapCommandOptions &o);       // gap_cmd.cpp
 int run_convert(const ConvertOptions &o);              // convert_cmd.cpp
 int run_import(const ImportOptions &o);                // import_cmd.cpp
+int run_get(const GetOptions &o);                      // get_cmd.cpp
+int run_gap_score(const GapScoreOptions &o);           // gap_score_cmd.cpp
 
 // parse, then --help's text on stdout (exit 0) or run
 template <class Options>
@@ -48,6 +51,8 @@ inline int plot(int argc, char **argv) { return run_parsed(parse_plot, run_plot,
 inline int gap(int argc, char **argv) { return run_parsed(parse_gap, run_gap_command, argc, argv); }
 inline int convert(int argc, char **argv) { return run_parsed(parse_convert, run_convert, argc, argv); }
 inline int import(int argc, char **argv) { return run_parsed(parse_import, run_import, argc, argv); }
+inline int get(int argc, char **argv) { return run_parsed(parse_get, run_get, argc, argv); }
+inline int gap_score(int argc, char **argv) { return run_parsed(parse_gap_score, run_gap_score, argc, argv); }
 
 }    // namespace cli
 }    // namespace granpen

@@ -1,7 +1,10 @@
 // granpen analysis: the one JSON writer. Results are built as nlohmann::ordered_json (key
-// order as inserted) and written here, as text that keeps granpen's layout: one member per
-// line down to a given depth, deeper objects and arrays on one line ("a": 1, "b": 2), so
-// that a line-oriented grep still finds a frame or a fit.
+// order as inserted) and written here, laid out for a person reading the file: one member
+// per line down to a given depth, deeper objects and arrays on one line ("a": 1, "b": 2).
+// The layout is no contract: scripts ask for values by key path (`granpen get FILE KEY`,
+// io/json_path.h), and tests/architecture/json_in_scripts.sh fails on a script that greps
+// the text. (It is kept, not nlohmann's dump(2), because the committed outputs under
+// docs/results are this layout: a change would rewrite every one of them.)
 #ifndef GRANPEN_JSON_WRITER_H
 #define GRANPEN_JSON_WRITER_H
 

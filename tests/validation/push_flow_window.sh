@@ -27,8 +27,7 @@ steps=$(cat "$OUT/a.steps")
 read -r first last <<< "${steps/:/ }"
 echo "window: $steps"
 # (timestep, z_tip) of every frame, from the pass over every frame
-grep -o '"timestep": [0-9]*, "where": "[^"]*", "grains": [0-9]*, "rod_atoms": [0-9]*, "tip": [-0-9.e+]*, "z_tip": [-0-9.e+]*' \
-  "$OUT/a/surface/flow.json" | awk '{ gsub(/,/, ""); print $2, $12 }' > "$OUT/tips.txt"
+"$CLI" get "$OUT/a/surface/flow.json" 'frames[*].timestep' 'frames[*].z_tip' > "$OUT/tips.txt"
 [ "$(wc -l < "$OUT/tips.txt")" -ge 10 ] || fail "fewer than 10 frames in $OUT/a/surface/flow.json"
 # inside the window exactly the frames 0.5 to 1.2 cm deep (the tip moves down monotonically)
 bad=$(awk -v a="$first" -v b="$last" '{ inside = ($1 >= a && $1 <= b); deep = ($2 >= 0.5 && $2 <= 1.2)
@@ -37,11 +36,12 @@ bad=$(awk -v a="$first" -v b="$last" '{ inside = ($1 >= a && $1 <= b); deep = ($
 nin=$(awk -v a="$first" -v b="$last" '$1 >= a && $1 <= b' "$OUT/tips.txt" | wc -l)
 [ "$nin" -ge 3 ] || fail "only $nin frames in the window"
 # the fields' pass read those frames and no others
-nfields=$(grep -o '"timestep": [0-9]*, "where"' "$OUT/a/flow/flow.json" | wc -l)
+nfields=$("$CLI" get "$OUT/a/flow/flow.json" 'frames[*].timestep' | wc -l)
 [ "$nfields" = "$nin" ] || fail "the fields were made over $nfields frames, the window holds $nin"
 [ "$(cat "$OUT/a/window.txt")" = "$steps 0.5 1.2" ] || fail "window.txt: $(cat "$OUT/a/window.txt")"
-grep -q '"lambda_D": [-0-9.e+]*[0-9]' "$OUT/a/flow/flow.json" || fail "no lambda_vz in the fields"
-grep -q '"k": [-0-9.e+]*[0-9]' "$OUT/a/momentum/momentum.json" || fail "no momentum fit"
+isnum() { awk -v x="$1" 'BEGIN { exit !(x ~ /^[-+]?[0-9.]+([eE][-+]?[0-9]+)?$/) }'; }
+isnum "$("$CLI" get "$OUT/a/flow/flow.json" profile_below.lambda_vz.lambda_D)" || fail "no lambda_vz in the fields"
+isnum "$("$CLI" get "$OUT/a/momentum/momentum.json" drag.k)" || fail "no momentum fit"
 
 # a window below the deepest frame: exit 1, named, no window.txt
 set +e

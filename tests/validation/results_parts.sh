@@ -70,7 +70,7 @@ GRANPEN_CLI=$CLI "$ROOT/validation/results.sh" --out "$OUT/res" --dumps /nonexis
 N=$OUT/res/numbers.txt
 val() { awk -v k="$1" '$1 == k { sub(/  #.*/, ""); sub(/^[^=]*= /, ""); print; exit }' "$N"; }
 same() { [ "$(val "$1")" = "$2" ] || fail "$1 = '$(val "$1")', expected '$2'"; }
-num() { grep -o "\"$2\": [-0-9.e+]*" "$1" | head -1 | awk '{print $2}'; }
+num() { "$CLI" get "$1" "$2"; }    # the value at key path $2 of granpen's JSON $1
 
 # the peak law: granpen collapse on the 15 files directly
 "$CLI" collapse "$DG"/dg10_peak/*.csv --alpha 35 --tbin 0.25 --json "$OUT/direct.json" > /dev/null
@@ -78,9 +78,9 @@ same dg10.peak_exponent "$(num "$OUT/direct.json" peak_exponent) +- $(num "$OUT/
 "$CLI" collapse $(ls "$DG"/dg10_peak/*.csv | grep -v _v20_) --alpha 35 --tbin 0.25 --json "$OUT/fast.json" > /dev/null
 same dg10.peak_exponent_from_2vc "$(num "$OUT/fast.json" peak_exponent) +- $(num "$OUT/fast.json" peak_exponent_ci95) (95%)"
 # the two-term peak law, c2 / (rho_g D^2) and c1 / c2 (the stand-ins' rho_g = 3, D = 2)
-same dg10.peak_inertial "$(awk -v c="$(num "$OUT/fast.json" quadratic)" -v e="$(num "$OUT/fast.json" quadratic_se)" \
+same dg10.peak_inertial "$(awk -v c="$(num "$OUT/fast.json" peak_two_term.quadratic)" -v e="$(num "$OUT/fast.json" peak_two_term.quadratic_se)" \
   'BEGIN { printf "%.4g +- %.2g\n", c / 12, e / 12 }')"
-same dg10.peak_crossover_speed "$(awk -v c="$(num "$OUT/fast.json" crossover_speed)" -v e="$(num "$OUT/fast.json" crossover_speed_se)" \
+same dg10.peak_crossover_speed "$(awk -v c="$(num "$OUT/fast.json" peak_two_term.crossover_speed)" -v e="$(num "$OUT/fast.json" peak_two_term.crossover_speed_se)" \
   'BEGIN { printf "%.4g +- %.2g\n", c, e }')"
 same dg10.phi_0 "$(grep -h '^phi_0' "$DG"/beds/*.info | awk '{ s += $3; ss += $3 * $3; n++ } END { m = s / n
   printf "%.4g +- %.2g n = %d\n", m, sqrt((ss - n * m * m) / (n - 1)), n }')"

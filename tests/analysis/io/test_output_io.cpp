@@ -69,7 +69,8 @@ TEST(JsonWriter, RoundedIsWhatPrintfPrinted)
 }
 
 // one member per line at the top, a table (array of objects) one row per line, the rest inline
-TEST(JsonWriter, LayoutKeepsLinesGreppable)
+// (for a person reading the file; scripts read values through granpen get, json_path.h)
+TEST(JsonWriter, LayoutOneMemberPerLineAtTheTop)
 {
   Json j;
   j["tool"] = "granpen x";

@@ -1,0 +1,93 @@
+// granpen gap: the selftest's scoring (bench/gap_selftest.sh, docs/gap-validation.md). A
+// diagnosis made blind on data with one effect withheld is scored against the case's truth
+// by issue 21's rules:
+//   - the no-effect case: right when the verdict finds no gap (none);
+//   - a library case: right when the verdict names the truth and its fresh runs shrink G_all
+//     as an explained verdict must (gap_verdict.h, gap_shrinks), or names the truth among the
+//     candidates it cannot tell apart (a tie); a true magnitude below the case's detection
+//     limit in this data (diagnosis.json detection_limits, on the truth's side of 0; null:
+//     none within the knots) may be missed (a verdict that names nothing);
+//   - an outside case (an effect the library lacks): right unless a top effect is named,
+//     except the library effect that does to the force what the outside one does (as_effect)
+//     at its magnitude within two of its fit's standard errors.
+// How each verdict kind counts is one table (gap_selftest_score.cpp, VERDICT_READINGS), so a
+// new kind of the enum is one line there; a verdict the table lacks is a named error.
+#ifndef GRANPEN_GAP_SELFTEST_SCORE_H
+#define GRANPEN_GAP_SELFTEST_SCORE_H
+
+#include "gap_verdict.h"
+#include "json_writer.h"    // Json
+
+#include <string>
+#include <vector>
+
+namespace granpen {
+
+// What a verdict kind says about the effect, as the selftest reads it.
+enum class VerdictReading {
+  no_gap,              // no gap beyond the noise (none)
+  gap_unnamed,         // a gap, no effect named (unexplained)
+  names_top,           // one effect named (explained)
+  names_candidates     // candidates that cannot be told apart (tie)
+};
+
+// The reading of verdict v (the table's entry).
+VerdictReading verdict_reading(Verdict v);
+// The verdict kind written as name in diagnosis.json; false when the table has none.
+bool verdict_from_name(const std::string &name, Verdict &v);
+
+// A selftest case: its truth and, for an outside case, the library effect that stands for it.
+struct SelftestCase {
+  enum class Truth { none, library, outside };
+  Truth truth = Truth::none;
+  std::string effect;            // library: the effect withheld
+  double magnitude = 0;          // library: its true magnitude
+  std::string as_effect;         // outside: the library effect that is a right answer ("": none)
+  double as_magnitude = 0;       // ... at this magnitude
+};
+
+// The case's detection limit in the diagnosis (library cases).
+struct SelftestLimit {
+  enum class Kind {
+    not_applicable,      // not a library case
+    missing,             // the diagnosis lists no limit for the effect
+    none_within_knots,   // null: not detectable within the simulated range
+    value                // the limit on the truth's side of 0
+  };
+  Kind kind = Kind::not_applicable;
+  double value = 0;
+  bool truth_below = false;    // the true magnitude closer to 0 than the limit (or no limit within the knots)
+};
+
+// An optional number of diagnosis.json (null: absent).
+struct MaybeNumber {
+  bool known = false;
+  double value = 0;
+};
+
+struct SelftestScore {
+  Verdict verdict = Verdict::none;
+  std::string top_effect;              // "" when null
+  std::vector<std::string> tie;        // the tie's candidates, best first
+  MaybeNumber magnitude;               // the top effect's fitted magnitude
+  double gap_before = 0, gap_after = 0;
+  MaybeNumber heldout_v0, heldout_before, heldout_after;
+  MaybeNumber explained_fraction;      // the confirmation's chi^2 excess removed
+  SelftestLimit limit;
+  bool pass = false;
+  // how a right answer was right (for the table): by the tie naming the truth, by a miss
+  // below the detection limit; an outside case's named effect: its distance from as_magnitude
+  bool tie_names_truth = false;
+  bool missed_below_limit = false;
+  bool named_as_effect = false;        // outside: the top effect is as_effect
+  MaybeNumber as_effect_error;         // its fit's standard error (null: none)
+};
+
+// The score of diagnosis (diagnosis.json, parsed) against c. Throws InputError naming
+// `source` and the key when a key the score needs is missing or of the wrong type, or the
+// verdict is one the table lacks.
+SelftestScore score_selftest(const Json &diagnosis, const SelftestCase &c, const std::string &source);
+
+}    // namespace granpen
+
+#endif
