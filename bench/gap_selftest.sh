@@ -162,10 +162,14 @@ while IFS='|' read -r name truth mag keys; do
     *) ok=$([ "$v" = explained ] && [ "$te" = "$truth" ] && awk -v a="$ga" -v b="$gb" 'BEGIN{exit !(a <= 0.5 * b)}' && echo yes || echo no)
        # a tie that names the truth is a right answer (nothing confirmed: G after = before)
        [ "$v" = tie ] && grep -q "^  \"tie\": \[.*\"$truth\"" "$j" && ok=yes && te="tie: $(top tie | tr -d '[] ')"
+       # scale_only names no effect: right, as a tie is, when its causes hold the truth
+       # (a library effect whose signature looks like a uniform scale here)
+       [ "$v" = scale_only ] && grep -q "^  \"scale_only\": {.*\"cause\": \"$truth\"" "$j" && ok=yes && te="scale_only, with $truth"
        # a true magnitude below its detection limit (on its side of 0; null: not detectable
        # within the simulated range) may be missed: none or unexplained is then right
-       # (issue 21); a miss above the limit, or any other effect named, is not
-       if [ "$below" = yes ] && { [ "$v" = none ] || [ "$v" = unexplained ]; }; then ok=yes; fi ;;
+       # (issue 21), and so is scale_only, which names no effect (issue 37); a miss above the
+       # limit, or any other effect named, is not
+       if [ "$below" = yes ] && { [ "$v" = none ] || [ "$v" = unexplained ] || [ "$v" = scale_only ]; }; then ok=yes; fi ;;
   esac
   [ "$te" = null ] && te=-
   [ "$fm" = null ] && fm=- || fm=$(printf %.3g "$fm")
