@@ -54,6 +54,7 @@ std::string top_effect_text(const granpen::SelftestScore &s, const granpen::Self
     for (std::size_t i = 0; i < s.tie.size(); ++i) t += (i ? "," : "") + s.tie[i];
     return t;
   }
+  if (s.scale_causes_hold_truth) return "scale_only, with " + c.effect;
   if (s.named_as_effect) {
     const double a = s.magnitude.known ? s.magnitude.value : 0.0;
     return s.top_effect + " (" +

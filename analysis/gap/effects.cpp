@@ -141,9 +141,20 @@ const std::vector<Effect> &effect_library()
       // 10 to 20%; a calibrated load cell's 1 to 2% is below anything a bed's noise shows.
       {"force_scale", "measured force (1 + a) times the grains': a sensor's calibration or gain error, or grains of "
        "another density than the header's (the two scale F alike)", "relative scale error of the force", false,
-       {-0.25, 0.25}, false, none, none, "", nullptr, false, scale_force, INFINITY, 0.1},
+       {-0.25, 0.25}, false, none, none, "", nullptr, false, scale_force, INFINITY, 0.1, true},
   };
   return lib;
+}
+
+bool common_in_labs(const Effect &e)
+{
+  // a lab calibrates its grains by one friction and one pour, its force by one load cell on
+  // one mount, its rod by its material: these are the numbers most often off (docs/gap.md,
+  // "Which"); the rest (cohesion, rolling shape, stiffness, walls, ramp) are set-up specific
+  static const char *const common[] = {"force_scale", "friction", "packing", "measurement_chain", "rod_friction"};
+  for (const char *n : common)
+    if (e.name == n) return true;
+  return false;
 }
 
 const Effect *find_effect(const std::string &name)

@@ -39,6 +39,10 @@ struct Effect {
   double transform_max = INFINITY;
   // The reference value (detection limit, look-alikes); NaN: the first knot.
   double reference = NAN;
+  // The effect is a uniform scale of the measured force (a sensor's gain, the grains'
+  // density): a nuisance within a lab's calibration bound, never a physical cause (gap_fit.h,
+  // EffectData::is_scale; gap_verdict.h, Verdict::scale_only).
+  bool uniform_scale = false;
 };
 
 // The effect's reference value: Effect::reference, or its first knot.
@@ -46,6 +50,11 @@ double reference_magnitude(const Effect &e);
 
 // Whether effect e at magnitude a is realised by its transform (nothing simulated).
 bool by_transform(const Effect &e, double a);
+
+// The effects commonest in labs, whose detection limits a `none` reports first (report.md's
+// first screen): the force's calibration and the grains' density, the grains' friction and
+// packing (the calibration's numbers), the sensor's mount and the rod's surface (the rig's).
+bool common_in_labs(const Effect &e);
 
 // The library, in a fixed order.
 const std::vector<Effect> &effect_library();

@@ -233,7 +233,8 @@ ConfirmStep confirm_top_effect(const std::map<std::string, const Effect *> &by_n
   Confirmation &c = step.done;
   using Kind = ConfirmationResult::Kind;
   const bool between = d.verdict == Verdict::unexplained && d.between_knots && !d.ranking.empty();
-  if (d.verdict != Verdict::explained && !between) return step;
+  // a scale_only verdict is confirmed as an explained one: its scale on fresh runs
+  if (d.verdict != Verdict::explained && d.verdict != Verdict::scale_only && !between) return step;
   const EffectFit &top = d.ranking[0];
   const Effect &e = *by_name.at(top.name);
   const EffectData &ed = data.at(e.name);

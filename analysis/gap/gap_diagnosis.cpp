@@ -260,9 +260,9 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   // confirm: the top effect on fresh seeds
   progress.say(GapProgress::STEP, "confirm",
                d.between_knots && !d.ranking.empty() ? "simulating " + d.ranking[0].name + " between its knots on fresh seeds"
-               : d.verdict != Verdict::explained     ? "no effect to confirm"
+               : d.verdict != Verdict::explained && d.verdict != Verdict::scale_only ? "no effect to confirm"
                : opt.fit_only                        ? "not confirming (--fit-only)"
-                                                     : "confirming " + d.top_effect + " on fresh seeds",
+                                                     : "confirming " + d.ranking[0].name + " on fresh seeds",
                4, 4);
   after_is_before(sims.fresh, d);
   const Confirmation confirmation =

@@ -99,19 +99,43 @@ double effect_chi2(const Target &t, const EffectData &e, double a, const std::ve
 
 namespace {
 
+// the weights of weighted_residual at speed s, feature k: the baseline comparison's variance
+double fixed_weight(const Target &t, const EffectData &e, std::size_t s, std::size_t k)
+{
+  return t.err[s][k] + e.err[zero_knot(e)][s][k];
+}
+
+}    // namespace
+
+double nuisance_scale(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds)
+{
+  if (!(e.scale_bound > 0.0) || (e.is_scale && a != 0.0)) return 0.0;
+  double num = 0.0, den = 0.0;
+  std::vector<double> m, v;
+  for (std::size_t s : speeds) {
+    effect_predict(e, a, s, m, v);
+    for (std::size_t k = 0; k < m.size(); ++k) {
+      const double w = fixed_weight(t, e, s, k);
+      num += (t.mean[s][k] - m[k]) * m[k] / w, den += m[k] * m[k] / w;
+    }
+  }
+  return den > 0.0 ? std::clamp(num / den, -e.scale_bound, e.scale_bound) : 0.0;
+}
+
+namespace {
+
 // Squared residual weighted by the baseline comparison's variances (fixed, whatever a):
 // the fraction of it an effect removes is what it explains. (With the model's own
 // variance in the weights, a magnitude whose prediction is merely less certain would
-// seem to explain more.)
+// seem to explain more.) The prediction carries the nuisance scale (nuisance_scale).
 double weighted_residual(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds)
 {
-  const std::size_t j0 = zero_knot(e);
+  const double c = nuisance_scale(t, e, a, speeds);
   double r2 = 0.0;
   std::vector<double> m, v;
   for (std::size_t s : speeds) {
     effect_predict(e, a, s, m, v);
-    for (std::size_t k = 0; k < m.size(); ++k)
-      r2 += std::pow(t.mean[s][k] - m[k], 2) / (t.err[s][k] + e.err[j0][s][k]);
+    for (std::size_t k = 0; k < m.size(); ++k) r2 += std::pow(t.mean[s][k] - (1.0 + c) * m[k], 2) / fixed_weight(t, e, s, k);
   }
   return r2;
 }
@@ -126,6 +150,7 @@ double weighted_residual(const Target &t, const EffectData &e, double a, const s
 double signature_residual(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds)
 {
   const std::size_t j0 = zero_knot(e);
+  const double c = nuisance_scale(t, e, a, speeds);
   double r2 = 0.0;
   std::vector<double> m, v, u, uv;
   for (std::size_t s : speeds) {
@@ -133,7 +158,7 @@ double signature_residual(const Target &t, const EffectData &e, double a, const 
     effect_signature(e, a, s, u, uv);
     for (std::size_t k = 0; k < m.size(); ++k) {
       const double V = t.err[s][k] + e.err[j0][s][k];
-      r2 += std::pow(t.mean[s][k] - m[k], 2) / (V + uv[k]) + std::log1p(uv[k] / V);
+      r2 += std::pow(t.mean[s][k] - (1.0 + c) * m[k], 2) / (V + uv[k]) + std::log1p(uv[k] / V);
     }
   }
   return r2;
@@ -219,6 +244,8 @@ EffectFit fit_effect(const Target &t, const EffectData &e)
   std::iota(all.begin(), all.end(), 0);
   f.nfeatures = ns ? ns * t.mean[0].size() : 0;
   f.magnitude = best_magnitude(t, e, all, &f.at_edge);
+  f.scale = nuisance_scale(t, e, f.magnitude, all);
+  f.is_scale = e.is_scale;
   f.chi2_0 = effect_chi2(t, e, 0.0, all);
   f.chi2 = effect_chi2(t, e, f.magnitude, all);
   const double w0 = weighted_residual(t, e, 0.0, all), wa = weighted_residual(t, e, f.magnitude, all);

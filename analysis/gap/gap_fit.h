@@ -40,6 +40,14 @@ struct EffectData {
   // are fractions of the residual's excess over it (a certain signature cannot explain the
   // noise part of a residual); empty: fractions of the whole residual.
   std::vector<double> noise_r2;
+  // The nuisance force scale (GapThresholds::calibration_scale_bound): every prediction is
+  // taken as (1 + c) M(a) with the c in [-scale_bound, scale_bound] that fits the target best
+  // (fixed weights, closed form), the baseline at a = 0 included, so a gap no larger than a
+  // calibration allows is evidence for nothing. 0: no nuisance. is_scale: the effect is itself
+  // a uniform scale of the force (force_scale): the nuisance applies at a = 0 only (its
+  // magnitude is the scale beyond it: the two would be one parameter).
+  double scale_bound = 0.0;
+  bool is_scale = false;
 };
 
 struct Target {
@@ -93,7 +101,13 @@ struct EffectFit {
   double lr = 0.0, lr_null_mean = 0.0, lr_threshold = 0.0;
   bool detected = false;
   std::vector<double> lr_nulls;     // the statistic on each null replicate (their mean is lr_null_mean)
+  double scale = 0.0;               // the nuisance force scale fitted with the magnitude (EffectData::scale_bound)
+  bool is_scale = false;            // the candidate is itself a uniform force scale (EffectData::is_scale)
 };
+
+// The nuisance scale c at magnitude a over the given speeds: the weighted least-squares
+// factor of the target on (1 + c) M(a), clamped to +-scale_bound (0 when there is none).
+double nuisance_scale(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds);
 
 EffectFit fit_effect(const Target &t, const EffectData &e);
 

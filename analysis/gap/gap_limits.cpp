@@ -1,6 +1,8 @@
 // granpen gap, stage 10 (limits): see gap_limits.h.
 #include "gap_limits.h"
 
+#include "text_util.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -228,7 +230,8 @@ std::optional<NextMeasurement> next_measurement(const std::vector<EffectFit> &ra
                                                 const std::map<std::string, EffectData> &data, const Features &f,
                                                 Verdict verdict)
 {
-  if (ranking.empty() || f.nspeeds() == 0 || verdict == Verdict::explained) return std::nullopt;
+  // after scale_only the next measurement is off the rig's data (ScaleFinding: a weighed calibration)
+  if (ranking.empty() || f.nspeeds() == 0 || verdict == Verdict::explained || verdict == Verdict::scale_only) return std::nullopt;
   const EffectFit &top = ranking[0];
   if (ranking.size() > 1) {
     const EffectFit &second = ranking[1];
@@ -259,6 +262,49 @@ std::optional<NextMeasurement> next_measurement(const std::vector<EffectFit> &ra
   m.goal = "detect";
   m.effects = {near->name};
   return m;
+}
+
+ScaleFinding scale_finding(const EffectFit &scale, double magnitude, const std::vector<EffectFit> &ranking,
+                           const std::map<std::string, EffectData> &data, const std::map<std::string, const Effect *> &effects,
+                           const Features &f)
+{
+  ScaleFinding out;
+  out.scale = magnitude;
+  out.scale_error = scale.magnitude_error;
+  out.bound = GapThresholds::calibration_scale_bound;
+  // the two causes no trace tells apart: the same uniform scale of F
+  out.causes.push_back({"calibration", "the force sensor's gain or calibration factor off by this much", magnitude,
+                        "relative scale error", -1,
+                        "a weighed calibration: known masses hung on the sensor through the rod's mount, its reading "
+                        "against their weight",
+                        std::nullopt});
+  out.causes.push_back({"density", "grains of density (1 + scale) times the header's rho_g (the lithostatic term and the "
+                                   "impact peak both go as rho_g)",
+                        magnitude, "relative density error", -1,
+                        "the grains weighed: a known volume of them (a pycnometer, or a graduated cylinder of water) on a "
+                        "balance",
+                        std::nullopt});
+  const EffectData &S = data.at(scale.name);
+  for (const auto &c : ranking) {
+    if (c.is_scale || c.name == scale.name || !data.count(c.name)) continue;
+    const EffectData &C = data.at(c.name);
+    const auto sep = [&](const NoiseFactors &fac) { return prediction_separation2(C, c.magnitude, S, magnitude, f.target, fac); };
+    const double sep2 = sep(ones(f.target));
+    if (!(sep2 < GapThresholds::evidence_margin)) continue;
+    ScaleCause cause{c.name, effects.count(c.name) ? effects.at(c.name)->what : c.name, c.magnitude,
+                     effects.count(c.name) ? effects.at(c.name)->unit : "", sep2, "", std::nullopt};
+    NextMeasurement m = best_runs(f, GapThresholds::evidence_margin, sep);
+    m.goal = "separate", m.effects = {c.name, scale.name};
+    cause.tell_apart = m.reaches && m.after > 0
+                           ? "measured runs: " + std::to_string(m.runs) + " more at v0 = " + printf_number("%g", m.v0) +
+                                 " cm/s bring its prediction and the scale's the evidence margin apart"
+                           : "no number of measured runs at these speeds: once the calibration and the density are "
+                             "checked, it is what is left (or a change of the rig that moves it and not a scale: another "
+                             "rod diameter, box width or speed range)";
+    cause.runs = m;
+    out.causes.push_back(cause);
+  }
+  return out;
 }
 
 }    // namespace granpen

@@ -115,6 +115,33 @@ std::optional<NextMeasurement> next_measurement(const std::vector<EffectFit> &ra
                                                 const std::map<std::string, EffectData> &data, const Features &f,
                                                 Verdict verdict);
 
+// What can make a gap that only a uniform force scale explains (Verdict::scale_only), and the
+// measurement that tells each apart: a sensor's calibration, the grains' density (both the
+// same scale of F, told apart only off the rig), and every library effect whose fitted
+// prediction lies within the evidence margin of the scale's (its signature within the
+// look-alike angle of a uniform scale at the magnitude that would give this gap).
+struct ScaleCause {
+  std::string cause;             // "calibration", "density", or an effect's name
+  std::string what;              // one line: what it would mean
+  double magnitude = 0;          // the magnitude that gives this gap (the scale itself for the first two)
+  std::string unit;
+  double separation2 = -1;       // an effect: squared sigmas between its fitted prediction and the scale's (knot noise out)
+  std::string tell_apart;        // the measurement that tells it from the others
+  std::optional<NextMeasurement> runs;    // an effect: the measured runs that would separate it from the scale
+};
+
+struct ScaleFinding {
+  double scale = 0, scale_error = 0;   // the relative scale (the confirmed magnitude when refined) and its standard error
+  double bound = 0;                    // the calibration bound it exceeds (GapThresholds::calibration_scale_bound)
+  std::vector<ScaleCause> causes;
+};
+
+// The finding for the scale candidate `scale` (its fit, at magnitude `magnitude`) against the
+// other candidates of the ranking.
+ScaleFinding scale_finding(const EffectFit &scale, double magnitude, const std::vector<EffectFit> &ranking,
+                           const std::map<std::string, EffectData> &data, const std::map<std::string, const Effect *> &effects,
+                           const Features &f);
+
 }    // namespace granpen
 
 #endif

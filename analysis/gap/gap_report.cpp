@@ -163,6 +163,25 @@ Json next_json(const std::optional<NextMeasurement> &m)
               {"after", num(m->after, "%.3g")}, {"target", num(m->target, "%.3g")}, {"reaches", m->reaches}};
 }
 
+Json scale_only_json(const std::optional<ScaleFinding> &s)
+{
+  if (!s) return Json();
+  Json causes = Json::array();
+  for (const auto &c : s->causes)
+    causes.push_back(Json{{"cause", c.cause},
+                          {"what", c.what},
+                          {"magnitude", num(c.magnitude)},
+                          {"unit", c.unit},
+                          {"separation2", c.separation2 < 0 ? Json() : num(c.separation2)},
+                          {"tell_apart", c.tell_apart},
+                          {"runs", c.runs && c.runs->reaches ? Json(c.runs->runs) : Json()},
+                          {"v0", c.runs && c.runs->reaches ? num(c.runs->v0) : Json()}});
+  return Json{{"scale", num(s->scale)},
+              {"scale_error", std::isfinite(s->scale_error) ? num(s->scale_error) : Json()},
+              {"bound", num(s->bound)},
+              {"causes", causes}};
+}
+
 Json residual_json(const std::optional<Residual> &r)
 {
   if (!r) return Json();
@@ -211,7 +230,8 @@ Json diagnosis_json(const Diagnosis &d)
                            {"significant", d.significant},
                            {"route", !d.significant ? Json() : Json(d.targeted ? "targeted" : "omnibus")},
                            {"null_replicates", d.n_null}};
-  j["confirmed"] = d.verdict != Verdict::explained ? Json() : Json(!d.provisional);
+  j["confirmed"] = d.verdict != Verdict::explained && d.verdict != Verdict::scale_only ? Json() : Json(!d.provisional);
+  j["scale_only"] = scale_only_json(d.scale_only);
   j["confirmation"] = confirmation_json(d);
   j["refinement"] = !d.refined ? Json()
                                : Json{{"from", num(d.refined_from)},
@@ -391,17 +411,96 @@ void draw_figures(const Diagnosis &d, const std::string &dir, std::vector<std::s
   if (d.residual && !d.residual->curves.empty()) draw(series_figure(residual_figure(*d.residual, d.grid)));
 }
 
+// the verdict in plain words (first screen)
+std::string plain_verdict(const Diagnosis &d)
+{
+  const EffectFit *named = nullptr;
+  for (const auto &r : d.ranking)
+    if (r.name == d.top_effect) named = &r;
+  switch (d.verdict) {
+  case Verdict::none: return "No gap beyond the noise: as far as these traces can tell, the simulation matches them.";
+  case Verdict::tie: return "The gap is explained by one of " + tie_names(d.tie) + ", which these traces cannot tell apart.";
+  case Verdict::scale_only:
+    return format_text("The force is %.1f%% %s at every depth and speed: a uniform scale, not a physical effect (a "
+                       "calibration, the grains' density, or a look-alike: see Scale only).",
+                       100.0 * std::fabs(d.scale_only ? d.scale_only->scale : d.magnitude),
+                       (d.scale_only ? d.scale_only->scale : d.magnitude) >= 0 ? "high" : "low");
+  case Verdict::unexplained:
+    return "There is a gap that no candidate effect explains" +
+           (d.residual && !d.residual->nearest.empty() ? " (nearest: " + d.residual->nearest + ", see Residual)." : std::string("."));
+  case Verdict::explained: break;
+  }
+  const Effect *e = find_effect(d.top_effect);
+  std::string s = "The gap is explained by " + d.top_effect + (e ? " (" + e->what + ")" : "") + ": " +
+                  f3(d.magnitude, "%.4g") + " " + d.magnitude_unit;
+  if (named && std::isfinite(named->magnitude_error)) s += format_text(", standard error %.2g", named->magnitude_error);
+  return s + (d.provisional ? "; provisional (--fit-only: not confirmed)." : "; confirmed on fresh seeds.");
+}
+
+// the candidate whose evidence the first screen quotes: the named one, else the top
+const EffectFit *quoted_candidate(const Diagnosis &d)
+{
+  const std::string &name = !d.top_effect.empty() ? d.top_effect : !d.scale_effect.empty() ? d.scale_effect
+                                                                   : !d.tie.empty()          ? d.tie[0]
+                                                                                             : std::string();
+  for (const auto &r : d.ranking)
+    if (r.name == name || (name.empty() && &r == &d.ranking[0])) return &r;
+  return nullptr;
+}
+
+// report.md's first screen: what a user needs first, every number one of diagnosis.json's
+std::string md_first_screen(const Diagnosis &d)
+{
+  std::string md = "## In short\n\n- **" + std::string(verdict_name(d.verdict)) + "**: " + plain_verdict(d) + "\n";
+  if (const EffectFit *q = quoted_candidate(d))
+    md += format_text("- Evidence: %s's likelihood ratio %.1f is %s its threshold %.1f; the gap over all %zu features "
+                      "chi^2 %.1f (p = %.2g, significant below %g, the tests' family-wise false-alarm rate). On this data's "
+                      "%d null replicates: %d verdict(s) other than none (rate %.2f).\n",
+                      q->name.c_str(), q->lr, q->lr > q->lr_threshold ? "above" : "not above", q->lr_threshold, d.nfeatures, d.chi2_0, d.p_value, GapThresholds::significance_p,
+                      d.false_alarms.replicates, d.false_alarms.not_none, d.false_alarms.rate());
+  md += format_text("- Gap G_all %.3f before, %.3f after%s; at the held-out speed %g cm/s %.3f -> %.3f.\n", d.gap_before,
+                    d.gap_after, d.tested_effect.empty() ? " (nothing added)" : (" with " + d.tested_effect + " on fresh seeds").c_str(),
+                    d.heldout_v0, d.heldout_before, d.heldout_after);
+  if (d.verdict == Verdict::none) {
+    std::string lims;
+    for (const auto &L : d.limits) {
+      const Effect *e = find_effect(L.effect);
+      if (!e || !common_in_labs(*e)) continue;
+      lims += (lims.empty() ? "" : "; ") + L.effect + " " + (L.limit ? f3(*L.limit, "%.3g") : std::string("beyond its knots")) +
+              " (reference " + f3(L.reference, "%.3g") + ")";
+    }
+    if (!lims.empty()) md += "- How blind: detection limits of the effects commonest in labs: " + lims + ". Below its limit an effect can be there unseen.\n";
+  }
+  if (d.verdict == Verdict::scale_only && d.scale_only && !d.scale_only->causes.empty())
+    md += "- Next: " + d.scale_only->causes[0].tell_apart + " (no run, no simulation); then " + d.scale_only->causes[1].tell_apart + ".\n";
+  else if (d.next && d.next->after > 0) {
+    const NextMeasurement &m = *d.next;
+    const std::string what = std::string(m.reaches ? "" : "go furthest to ") +
+                             (m.goal == "separate" ? "separate " + m.effects[0] + " from " + m.effects[1] : "detect " + m.effects[0]);
+    md += format_text("- Next: %d more measured run(s) at %g cm/s would %s (%s %.2f -> %.2f, %s %.2f)%s; cost: those "
+                      "runs in the lab, no new simulation (the cache holds every signature).\n",
+                      m.runs, m.v0, what.c_str(),
+                      m.goal == "separate" ? "squared separation" : "expected likelihood ratio", m.now, m.after,
+                      m.goal == "separate" ? "margin" : "threshold", m.target, m.reaches ? "" : ", not reached within 64 runs");
+  } else if (d.verdict == Verdict::explained)
+    md += "- Next: nothing needed to stand by this answer; the simulation with it added is in `corrected/`.\n";
+  return md + "\n";
+}
+
 // report.md's top: the verdict and the gap before and after
 std::string md_summary(const Diagnosis &d)
 {
   std::string md;
   md += format_text("# granpen gap: %s\n\n", d.real_dir.c_str());
+  md += md_first_screen(d);
   md += format_text("Scenario `%s`; grid 0 < z <= %.2f cm in %.2f cm bins; at least %d measured run(s) per speed; the "
                   "baseline on %d reference beds (before), each effect's signature on %zu beds per magnitude, the "
                   "confirmation on %zu fresh beds (after).\n\n",
                d.scenario.c_str(), d.grid.zmax, d.grid.w, d.n_real_min, d.n_sim, SIGNATURE_SEEDS.size(),
                CONFIRM_SEEDS.size());
   const std::string named = !d.tie.empty() ? " — " + tie_names(d.tie) + ": they cannot be told apart here"
+                            : d.scale_only ? format_text(" — the force is %.1f%% %s at every depth and speed, no physical effect named",
+                                                         100.0 * std::fabs(d.scale_only->scale), d.scale_only->scale >= 0 ? "high" : "low")
                             : d.top_effect.empty()
                                 ? ""
                                 : " — " + d.top_effect + " at magnitude " + f3(d.magnitude, "%.4g") + " (" + d.magnitude_unit + ")";
@@ -529,6 +628,28 @@ std::string md_blind(const Diagnosis &d)
   return md;
 }
 
+// report.md's Scale only: what can make a uniform scale, and what tells each apart
+std::string md_scale_only(const Diagnosis &d)
+{
+  if (!d.scale_only) return "";
+  const ScaleFinding &s = *d.scale_only;
+  std::string md = format_text("\n## Scale only\n\nThe force is %.1f%% %s at every depth and speed (relative scale %+.3f%s), "
+                               "beyond the +-%g%% a lab's calibration allows. A uniform scale names no physical cause; what can "
+                               "do it:\n\n| cause | what | magnitude | separation from the scale (sigma^2) | what tells it apart "
+                               "|\n|---|---|---|---|---|\n",
+                               100.0 * std::fabs(s.scale), s.scale >= 0 ? "high" : "low", s.scale,
+                               std::isfinite(s.scale_error) ? format_text(" +- %.3f", s.scale_error).c_str() : "",
+                               100.0 * s.bound);
+  for (const auto &c : s.causes)
+    md += format_text("| %s | %s | %.4g (%s) | %s | %s |\n", c.cause.c_str(), c.what.c_str(), c.magnitude, c.unit.c_str(),
+                      c.separation2 < 0 ? "-" : f3(c.separation2, "%.1f").c_str(), c.tell_apart.c_str());
+  md += format_text("\nThe effects listed are those whose fitted prediction lies within the evidence margin (%g squared "
+                    "standard deviations, the knots' noise subtracted) of the scale's: at this noise their signatures "
+                    "look like a uniform scale at the magnitude that would give this gap.\n\n",
+                    GapThresholds::evidence_margin);
+  return md;
+}
+
 // report.md's Residual: what the gap left over
 std::string md_residual(const Diagnosis &d)
 {
@@ -563,7 +684,7 @@ std::string md_residual(const Diagnosis &d)
 std::string report_markdown(const Diagnosis &d, const std::vector<std::string> &figures,
                             const std::vector<std::string> &failures)
 {
-  std::string md = md_summary(d) + md_where(d) + md_which(d) + md_blind(d) + md_residual(d);
+  std::string md = md_summary(d) + md_scale_only(d) + md_where(d) + md_which(d) + md_blind(d) + md_residual(d);
   md += format_text("\n## Notes\n\n");
   for (const auto &n : d.notes) md += format_text("- %s\n", n.c_str());
   md += format_text("\n## Figures\n\n");

@@ -124,22 +124,11 @@ std::string line_scaling(const std::vector<SpectralLine> &lines)
 
 std::string why_rejected(const EffectFit &fit, const ResidualContext &ctx)
 {
+  // the verdict's own record: the rules this candidate fell short of, with their numbers
   std::vector<std::string> why;
-  if (!fit.detected)
-    why.push_back("its likelihood ratio " + fmt(fit.lr, "%.1f") + " is below its threshold " + fmt(fit.lr_threshold, "%.1f"));
-  if (fit.explained < GapThresholds::explained_min)
-    why.push_back("it explains " + fmt(fit.explained, "%.2f") + " of the gap (" + fmt(GapThresholds::explained_min, "%g") + " needed)");
-  if (fit.heldout_explained < GapThresholds::heldout_explained_min)
-    why.push_back("it does not predict the speeds left out (" + fmt(fit.heldout_explained, "%.2f") + ", " +
-                  fmt(GapThresholds::heldout_explained_min, "%g") + " needed)");
-  if (fit.at_edge) why.push_back("it needs a magnitude beyond its simulated range");
-  if (fit.name == ctx.tested_effect && ctx.verdict != Verdict::explained)
-    why.push_back("simulated at its fitted magnitude on fresh beds, it did not shrink the gap");
-  for (const auto &r : ctx.ranking) {
-    if (r.name == fit.name) break;
-    why.push_back(r.name + " has " + fmt(lr_evidence(r) - lr_evidence(fit), "%.1f") + " more evidence");
-    break;
-  }
+  for (const auto &r : ctx.records)
+    if (r.name == fit.name)
+      for (const auto &s : r.shortfalls) why.push_back(shortfall_text(s));
   if (why.empty() && !ctx.ranking.empty() && ctx.ranking[0].name == fit.name && ctx.ranking.size() > 1)
     why.push_back(ctx.ranking[1].name + " explains the gap about as well (evidence " +
                   fmt(lr_evidence(ctx.ranking[0]), "%.1f") + " against " + fmt(lr_evidence(ctx.ranking[1]), "%.1f") + ")");
@@ -225,7 +214,9 @@ Residual describe_residual(const ResidualSide &R, const ResidualSide &M, const G
   // the nearest candidate: the one that explains most (after an explained verdict, of the others)
   const EffectFit *near = nullptr;
   for (const auto &r : ctx.ranking)
-    if (!(ctx.verdict == Verdict::explained && r.name == ctx.top_effect) && (!near || r.explained > near->explained)) near = &r;
+    if (!((ctx.verdict == Verdict::explained || ctx.verdict == Verdict::scale_only) && r.name == ctx.top_effect) &&
+        (!near || r.explained > near->explained))
+      near = &r;
   if (near) out.nearest = near->name, out.why_rejected = why_rejected(*near, ctx);
   return out;
 }
@@ -251,9 +242,12 @@ void residual_stage(const Features &f, const RunsBySpeed &real, const RunsBySpee
   if (d.verdict == Verdict::none) return;
   std::vector<double> z_transient_end;
   for (const auto &c : d.speeds) z_transient_end.push_back(c.z_transient_end);
-  const bool explained = d.verdict == Verdict::explained;
-  ResidualContext ctx{f.speeds, z_transient_end, d.peak_end, "", d.verdict, d.top_effect, d.tested_effect, d.ranking, d.n_null};
-  const bool fitted = explained && after.empty() && data.count(d.top_effect);
+  // a scale_only verdict is judged against its confirming runs as an explained one
+  const bool explained = d.verdict == Verdict::explained || d.verdict == Verdict::scale_only;
+  // after scale_only the scale candidate is the one the residual is left by
+  const std::string &named = d.verdict == Verdict::scale_only ? d.scale_effect : d.top_effect;
+  ResidualContext ctx{f.speeds, z_transient_end, d.peak_end, "", d.verdict, named, d.tested_effect, d.ranking, d.n_null, d.candidates};
+  const bool fitted = explained && after.empty() && data.count(named);
   ctx.against = explained && !after.empty() ? "corrected" : fitted ? "fitted" : "baseline";
   ResidualSide R, M;
   for (std::size_t s = 0; s < f.nspeeds(); ++s) {
@@ -265,7 +259,7 @@ void residual_stage(const Features &f, const RunsBySpeed &real, const RunsBySpee
     } else if (fitted) {
       // --fit-only: the fitted model's prediction (no runs: no periodogram)
       std::vector<double> m, var;
-      effect_predict(data.at(d.top_effect), d.magnitude, s, m, var);
+      effect_predict(data.at(named), d.magnitude, s, m, var);
       M.mean.push_back(m), M.err.push_back(var);
     } else {
       M.mean.push_back(f.fresh[s].mean), M.err.push_back(f.fresh_err[s]), M.runs.push_back(pointers(fresh.at(v)));

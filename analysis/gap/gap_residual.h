@@ -82,11 +82,12 @@ struct ResidualContext {
   std::string top_effect, tested_effect;
   std::vector<EffectFit> ranking;
   int n_null = 0;
+  std::vector<CandidateRecord> records;    // the verdict's record (gap_verdict.h): why each candidate is not the answer
 };
 Residual describe_residual(const ResidualSide &real, const ResidualSide &model, const GapGrid &grid,
                            const ResidualContext &ctx);
 
-// Why a candidate was not the answer, from its numbers and the verdict.
+// Why a candidate was not the answer: the shortfalls the verdict recorded for it (ctx.records).
 std::string why_rejected(const EffectFit &fit, const ResidualContext &ctx);
 
 struct Diagnosis;

@@ -85,7 +85,10 @@ struct Diagnosis {
   std::map<std::string, std::string> magnitude_note;    // effect -> e.g. "phi_0 shift -0.012"
   Verdict verdict = Verdict::none;           // set by gap_verdict.cpp alone (record_verdict)
   std::string top_effect;                    // "" = null; verdict tie: see tie
+  std::string scale_effect;                  // scale_only: the scale candidate that explains the gap (no physical effect)
+  std::optional<ScaleFinding> scale_only;    // scale_only: the scale and what can do it (gap_limits.h)
   std::vector<std::string> tie;              // "tie": the candidates (two or more) that cannot be told apart
+  std::vector<CandidateRecord> candidates;   // the verdict's record: per candidate, the rules it fell short of
   std::string tested_effect;                 // simulated for confirmation (even when downgraded)
   double magnitude = 0;
   std::string magnitude_unit;

@@ -23,6 +23,7 @@ const VerdictKind VERDICT_READINGS[] = {
     {Verdict::explained, VerdictReading::names_top},
     {Verdict::tie, VerdictReading::names_candidates},
     {Verdict::unexplained, VerdictReading::gap_unnamed},
+    {Verdict::scale_only, VerdictReading::names_scale},
 };
 
 // An outside case named as its stand-in effect is right at its magnitude within two of the
@@ -110,7 +111,12 @@ SelftestLimit detection_limit(const Json &d, const SelftestCase &c, const std::s
   return lim;
 }
 
-bool is_miss(VerdictReading r) { return r == VerdictReading::no_gap || r == VerdictReading::gap_unnamed; }
+// a verdict that names no physical effect: below the truth's detection limit it is right (a
+// scale_only names no effect either, issue 37)
+bool is_miss(VerdictReading r)
+{
+  return r == VerdictReading::no_gap || r == VerdictReading::gap_unnamed || r == VerdictReading::names_scale;
+}
 
 // whether s passes c, with how (the flags of s)
 void judge(const Json &d, const SelftestCase &c, const std::string &source, SelftestScore &s)
@@ -133,6 +139,9 @@ void judge(const Json &d, const SelftestCase &c, const std::string &source, Self
     s.pass = r == VerdictReading::names_top && s.top_effect == c.effect && gap_shrinks(s.gap_before, s.gap_after);
     if (r == VerdictReading::names_candidates && std::find(s.tie.begin(), s.tie.end(), c.effect) != s.tie.end())
       s.pass = s.tie_names_truth = true;
+    // a scale whose listed causes hold the truth is right as a tie that holds it is
+    if (r == VerdictReading::names_scale && json_lookup(d, "scale_only.causes[cause=" + c.effect + "]").complete())
+      s.pass = s.scale_causes_hold_truth = true;
     if (s.limit.truth_below && is_miss(r)) s.pass = s.missed_below_limit = true;
     return;
   }

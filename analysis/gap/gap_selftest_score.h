@@ -28,7 +28,8 @@ enum class VerdictReading {
   no_gap,              // no gap beyond the noise (none)
   gap_unnamed,         // a gap, no effect named (unexplained)
   names_top,           // one effect named (explained)
-  names_candidates     // candidates that cannot be told apart (tie)
+  names_candidates,    // candidates that cannot be told apart (tie)
+  names_scale          // a uniform force scale, no effect named; its possible causes listed (scale_only)
 };
 
 // The reading of verdict v (the table's entry).
@@ -78,6 +79,7 @@ struct SelftestScore {
   // how a right answer was right (for the table): by the tie naming the truth, by a miss
   // below the detection limit; an outside case's named effect: its distance from as_magnitude
   bool tie_names_truth = false;
+  bool scale_causes_hold_truth = false;    // scale_only whose causes list the truth
   bool missed_below_limit = false;
   bool named_as_effect = false;        // outside: the top effect is as_effect
   MaybeNumber as_effect_error;         // its fit's standard error (null: none)

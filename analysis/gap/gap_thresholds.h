@@ -52,6 +52,14 @@ struct GapThresholds {
   // signature noise fitted, or of a look-alike's part of the gap (the synthetic friction case
   // named polydispersity, G_all 0.088 -> 0.074)
   static constexpr double gap_shrink_explained = 0.5;
+  // the force scale a lab's calibration allows, a nuisance of every fit: a load cell
+  // calibrated with weights is good to 1 to 2%, and the grains' density (which scales the
+  // lithostatic term and the impact peak alike) is known to about as much, so together a
+  // few percent. Every candidate is fitted with a uniform scale of the force free within
+  // +-3%, and the gap at magnitude 0 is the baseline's within the same bound: a scale that
+  // small is nobody's evidence. A scale beyond it is a finding of its own kind (scale_only),
+  // never a physical effect's
+  static constexpr double calibration_scale_bound = 0.03;
 };
 
 // The table as name, value pairs, in the order above (for diagnosis.json).
@@ -69,7 +77,8 @@ inline std::vector<std::pair<const char *, double>> gap_threshold_table()
           {"confirm_excess_removed", T::confirm_excess_removed},
           {"confirm_projection_drop2", T::confirm_projection_drop2},
           {"refine_projection_sigmas", T::refine_projection_sigmas},
-          {"gap_shrink_explained", T::gap_shrink_explained}};
+          {"gap_shrink_explained", T::gap_shrink_explained},
+          {"calibration_scale_bound", T::calibration_scale_bound}};
 }
 
 }    // namespace granpen

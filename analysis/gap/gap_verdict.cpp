@@ -130,7 +130,69 @@ VerdictDecision decide_from_fits(const FitEvidence &fits)
   return v;
 }
 
+// Per candidate, the conditions of explains() it fails, with their numbers, and how far
+// behind the top it ranks; the top's failed confirmation (fresh runs simulated) too.
+std::vector<CandidateRecord> candidate_records(const FitEvidence &fits, const ConfirmationResult *c)
+{
+  using K = Shortfall::Kind;
+  std::vector<CandidateRecord> out;
+  const auto &ranking = fits.ranking;
+  for (std::size_t i = 0; i < ranking.size(); ++i) {
+    const EffectFit &f = ranking[i];
+    CandidateRecord r{f.name, {}};
+    if (!(f.lr > f.lr_threshold)) r.shortfalls.push_back({K::not_detected, f.lr, f.lr_threshold, "", false});
+    if (f.at_edge) r.shortfalls.push_back({K::at_edge, f.magnitude, 0.0, "", false});
+    if (f.explained < TH::explained_min) r.shortfalls.push_back({K::explains_too_little, f.explained, TH::explained_min, "", false});
+    if (f.heldout_explained < TH::heldout_explained_min)
+      r.shortfalls.push_back({K::heldout_too_little, f.heldout_explained, TH::heldout_explained_min, "", false});
+    if (i > 0)
+      r.shortfalls.push_back({K::less_evidence, lr_evidence(ranking[0]) - lr_evidence(f), TH::evidence_margin, ranking[0].name, false});
+    if (i == 0 && c && c->kind == ConfirmationResult::Kind::simulated && !(c->confirmed && gap_shrinks(c->gap_before, c->gap_after)))
+      r.shortfalls.push_back({K::not_confirmed, c->gap_after, TH::gap_shrink_explained * c->gap_before, "", c->confirmed});
+    out.push_back(r);
+  }
+  return out;
+}
+
+// scale_only's sentence: the scale as a percentage at every depth and speed, against the
+// calibration bound, from the scale candidate's fit (magnitude, error, likelihood ratio)
+std::string scale_only_note(const EffectFit &top, const FitEvidence &fits)
+{
+  const double pct = 100.0 * top.magnitude;
+  std::string s = "verdict: scale only: the force is " + fmt(std::fabs(pct), "%.1f") + "% " + (pct >= 0 ? "high" : "low") +
+                  " at every depth and speed (" + top.name + " " + fmt(top.magnitude, "%+.3f");
+  if (std::isfinite(top.magnitude_error)) s += " +- " + fmt(top.magnitude_error, "%.3f");
+  s += ", beyond the +-" + fmt(100.0 * TH::calibration_scale_bound, "%g") + "% a lab's calibration allows; likelihood ratio " +
+       fmt(top.lr, "%.1f") + " against its threshold " + fmt(top.lr_threshold, "%.1f") + ", explained " + fmt(top.explained, "%.2f") +
+       ", held out " + fmt(top.heldout_explained, "%.2f");
+  if (fits.omnibus) s += "; chi^2 " + fmt(fits.chi2_0, "%.1f") + " over " + std::to_string(fits.nfeatures) + " features";
+  return s + "): a uniform scale names no physical cause. A sensor's calibration, the grains' density, or an effect "
+             "whose signature looks like a scale at this noise can do it (scale_only in diagnosis.json lists them, with "
+             "the measurement that tells each apart)";
+}
+
 }    // namespace
+
+std::string shortfall_text(const Shortfall &s)
+{
+  using K = Shortfall::Kind;
+  switch (s.kind) {
+  case K::not_detected:
+    return "its likelihood ratio " + fmt(s.value, "%.1f") + " is not above its threshold " + fmt(s.threshold, "%.1f");
+  case K::at_edge: return "it needs a magnitude beyond its simulated range (fitted at the edge, " + fmt(s.value) + ")";
+  case K::explains_too_little:
+    return "it explains " + fmt(s.value, "%.2f") + " of the gap (" + fmt(s.threshold, "%g") + " needed)";
+  case K::heldout_too_little:
+    return "it does not predict the speeds left out (" + fmt(s.value, "%.2f") + ", " + fmt(s.threshold, "%g") + " needed)";
+  case K::less_evidence:
+    return s.other + " has " + fmt(s.value, "%.1f") + " more evidence" +
+           (s.value >= s.threshold ? "" : " (within the margin of " + fmt(s.threshold, "%g") + ": not told apart by evidence)");
+  case K::not_confirmed:
+    return "simulated at its fitted magnitude on fresh beds, it did not shrink the gap (G_all after " + fmt(s.value, "%.3f") +
+           ", at most " + fmt(s.threshold, "%.3f") + " needed" + (s.confirmed_by_chi2 ? "; the chi^2 test passed" : "") + ")";
+  }
+  return "";
+}
 
 const char *verdict_name(Verdict v)
 {
@@ -139,6 +201,7 @@ const char *verdict_name(Verdict v)
   case Verdict::explained: return "explained";
   case Verdict::tie: return "tie";
   case Verdict::unexplained: return "unexplained";
+  case Verdict::scale_only: return "scale_only";
   }
   return "none";
 }
@@ -171,29 +234,44 @@ bool between_knots_explains(bool confirmed, double gap_before, double gap_after,
   return confirmed && gap_shrinks(gap_before, gap_after) && gap_shrinks(heldout_before, heldout_after);
 }
 
-VerdictDecision decide_verdict(const FitEvidence &fits, const ConfirmationResult *c)
+namespace {
+
+// The confirmation's rules (gap_verdict.h) on the fits' decision v.
+void apply_confirmation(const FitEvidence &fits, const ConfirmationResult &c, VerdictDecision &v)
 {
-  VerdictDecision v = decide_from_fits(fits);
-  if (!c) return v;
   using Kind = ConfirmationResult::Kind;
   if (v.between_knots) {
     // at (or next to) a knot the interpolated signature is the simulated one: the fits' verdict
-    if (c->kind == Kind::at_knot) v.between_knots = false;
-    else if (c->kind == Kind::fit_only) v.confirmation = ConfirmationRule::between_knots_fit_only;
-    else if (c->kind == Kind::simulated) {
-      const bool explained = between_knots_explains(c->confirmed, c->gap_before, c->gap_after, c->heldout_before, c->heldout_after);
+    if (c.kind == Kind::at_knot) v.between_knots = false;
+    else if (c.kind == Kind::fit_only) v.confirmation = ConfirmationRule::between_knots_fit_only;
+    else if (c.kind == Kind::simulated) {
+      const bool explained = between_knots_explains(c.confirmed, c.gap_before, c.gap_after, c.heldout_before, c.heldout_after);
       v.confirmation = explained ? ConfirmationRule::between_knots_explained : ConfirmationRule::between_knots_short;
       if (explained) v.verdict = Verdict::explained, v.top_effect = fits.ranking[0].name;
     }
-  } else if (v.verdict == Verdict::explained && c->kind == Kind::fit_only) {
+  } else if (v.verdict == Verdict::explained && c.kind == Kind::fit_only) {
     v.provisional = true;
     v.confirmation = ConfirmationRule::provisional;
-  } else if (v.verdict == Verdict::explained && c->kind == Kind::simulated) {
+  } else if (v.verdict == Verdict::explained && c.kind == Kind::simulated) {
     // kept only when the fresh runs confirm it and halve G_all
-    v.confirmation = !c->confirmed                            ? ConfirmationRule::not_confirmed
-                     : !gap_shrinks(c->gap_before, c->gap_after) ? ConfirmationRule::not_halved
-                                                               : ConfirmationRule::confirmed;
+    v.confirmation = !c.confirmed                            ? ConfirmationRule::not_confirmed
+                     : !gap_shrinks(c.gap_before, c.gap_after) ? ConfirmationRule::not_halved
+                                                             : ConfirmationRule::confirmed;
     if (v.confirmation != ConfirmationRule::confirmed) v.verdict = Verdict::unexplained, v.top_effect.clear();
+  }
+}
+
+}    // namespace
+
+VerdictDecision decide_verdict(const FitEvidence &fits, const ConfirmationResult *c)
+{
+  VerdictDecision v = decide_from_fits(fits);
+  if (c) apply_confirmation(fits, *c, v);
+  v.candidates = candidate_records(fits, c);
+  // a uniform scale explains the gap: a finding of its own kind, no physical effect named
+  if (v.verdict == Verdict::explained && fits.ranking[0].is_scale) {
+    v.verdict = Verdict::scale_only, v.rule = VerdictRule::scale_explains;
+    v.scale_effect = v.top_effect, v.top_effect.clear();
   }
   return v;
 }
@@ -241,6 +319,9 @@ std::vector<std::string> fits_verdict_notes(const VerdictDecision &v, const FitE
                     fmt(top->lr_threshold, "%.1f") + " (" + std::to_string(fits.n_null) + " null replicates on the reference beds)");
     return notes;
   case VerdictRule::omnibus_explained: return notes;
+  case VerdictRule::scale_explains:
+    notes.push_back(scale_only_note(*top, fits));
+    return notes;
   case VerdictRule::targeted_weak:
     why = "a gap along " + top->name + "'s signature (likelihood ratio " + fmt(top->lr, "%.1f") + " against " +
           fmt(top->lr_threshold, "%.1f") + "), but it explains only " + fmt(top->explained, "%.2f") + " of the gap (held out " +
@@ -319,7 +400,9 @@ void record_verdict(const VerdictDecision &v, const std::vector<std::string> &no
 {
   d.verdict = v.verdict;
   d.top_effect = v.top_effect;
+  d.scale_effect = v.scale_effect;
   d.tie = v.tie;
+  d.candidates = v.candidates;
   d.significant = v.significant;
   d.targeted = v.targeted;
   d.between_knots = v.between_knots;

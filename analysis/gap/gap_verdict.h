@@ -21,6 +21,13 @@
 // alone, explaining at least between_knots_min_explained) is between_knots: the
 // confirmation simulates it at its fitted magnitude before the verdict stands.
 //
+// A uniform force scale (EffectFit::is_scale: a sensor's gain, the grains' density) is a
+// nuisance, not a cause: every candidate is fitted with a scale free within the lab's
+// calibration bound (gap_fit.h), and when the scale candidate is what explains the gap the
+// verdict is scale_only, never explained: "the force is X% high at every depth and speed",
+// with what can do that (gap_limits.h, ScaleFinding). It is confirmed on fresh runs as an
+// explained verdict is (the baseline's runs there, scaled), and unexplained when they fail.
+//
 // The confirmation's rules. An explained verdict stands when its fresh runs confirm it
 // (gap_confirm.h, confirms) and halve G_all; between knots, when they confirm it and halve
 // G_all both over all speeds and at the held-out speed; with --fit-only an explained verdict
@@ -38,9 +45,9 @@
 
 namespace granpen {
 
-enum class Verdict { none, explained, tie, unexplained };
+enum class Verdict { none, explained, tie, unexplained, scale_only };
 
-// "none", "explained", "tie", "unexplained": as diagnosis.json and the report write it
+// "none", "explained", "tie", "unexplained", "scale_only": as diagnosis.json and the report write it
 const char *verdict_name(Verdict v);
 
 using Separation2 = std::function<double(const EffectFit &, const EffectFit &)>;
@@ -101,7 +108,8 @@ enum class VerdictRule {
   heldout_too_little,      // unexplained: the top does not predict the speeds left out
   at_edge,                 // unexplained: the top needs a magnitude beyond its range
   not_detected,            // unexplained: the top's likelihood ratio is below its threshold
-  too_close                // unexplained: the top two explain the gap about equally well
+  too_close,               // unexplained: the top two explain the gap about equally well
+  scale_explains           // scale_only: the one candidate that explains the gap is a uniform force scale
 };
 
 // How the confirmation changed the fits' verdict.
@@ -123,12 +131,40 @@ struct TieMember {
   double separation2 = -1;    // >= 0: within the margin by its fitted prediction
 };
 
+// One rule a candidate fell short of, as the verdict checked it: the number measured and the
+// one the rule asks (the sentences that say why a candidate was not the answer are made from
+// these alone, so a reason cannot contradict its numbers).
+struct Shortfall {
+  enum class Kind {
+    not_detected,          // value: its likelihood ratio, threshold: its threshold (value <= threshold)
+    at_edge,               // value: its fitted magnitude (beyond its simulated range)
+    explains_too_little,   // value: explained, threshold: explained_min (value < threshold)
+    heldout_too_little,    // value: held-out explained, threshold: heldout_explained_min (value < threshold)
+    less_evidence,         // value: evidence below `other`'s, threshold: the evidence margin
+    not_confirmed          // value: G_all after on fresh runs, threshold: what it had to reach (gap_shrink_explained of before)
+  };
+  Kind kind = Kind::not_detected;
+  double value = 0, threshold = 0;
+  std::string other;       // less_evidence: the candidate ahead
+  bool confirmed_by_chi2 = false;    // not_confirmed: the fresh runs passed the chi^2 test (G_all did not halve)
+};
+
+// The sentence of one shortfall, from its numbers.
+std::string shortfall_text(const Shortfall &s);
+
+// Every candidate's shortfalls (ranking order): why it is not the answer on its own.
+struct CandidateRecord {
+  std::string name;
+  std::vector<Shortfall> shortfalls;
+};
+
 struct Diagnosis;
 
 // The decision and its record.
 struct VerdictDecision {
   Verdict verdict = Verdict::none;
   std::string top_effect;                // explained: the effect named; else ""
+  std::string scale_effect;              // scale_only: the scale candidate that explains the gap; else ""
   std::vector<std::string> tie;          // tie: the candidates, best first
   bool significant = false;              // on either route
   bool targeted = false;                 // by one effect's likelihood ratio, not the omnibus chi^2
@@ -137,6 +173,7 @@ struct VerdictDecision {
   VerdictRule rule = VerdictRule::within_noise;
   ConfirmationRule confirmation = ConfirmationRule::none;
   std::vector<TieMember> tie_record;     // [0], [1]: the pair that made the tie; then those that joined
+  std::vector<CandidateRecord> candidates;    // per candidate of the ranking, the rules it fell short of
 };
 
 // The verdict: every rule, from the fits' evidence and (when given) the confirmation's result.

@@ -79,6 +79,10 @@ EffectData effect_data(const Effect &e, const Features &f)
     ed.ref_err[0].push_back(ed.err[j0][s]);
     ed.err[j0][s] = f.fresh_err[s];
   }
+  // every candidate fitted jointly with a force scale within a lab's calibration bound: a
+  // nuisance, not a cause (gap_thresholds.h, calibration_scale_bound)
+  ed.scale_bound = GapThresholds::calibration_scale_bound;
+  ed.is_scale = e.uniform_scale;
   ed.noise_r2 = noise_residual(f.nulls, ed);
   return ed;
 }
@@ -135,6 +139,10 @@ void how_blind(const std::vector<const Effect *> &effects, const std::map<std::s
   }
   d.look_alikes = look_alikes(d.ranking, data, by_name, f);
   d.next = next_measurement(d.ranking, data, f, d.verdict);
+  const auto scale = std::find_if(d.ranking.begin(), d.ranking.end(), [&](const EffectFit &x) { return x.name == d.scale_effect; });
+  // the scale as confirmed (record_confirmation: refined when it was)
+  if (d.verdict == Verdict::scale_only && scale != d.ranking.end())
+    d.scale_only = scale_finding(*scale, d.magnitude, d.ranking, data, by_name, f);
 }
 
 std::string packing_note(const EffectData &ed, double a, const std::vector<double> &phi, double phi_baseline)

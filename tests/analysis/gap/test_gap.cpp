@@ -753,3 +753,107 @@ TEST(GapEffects, LibraryKnobsAreDeckVariables)
   ASSERT_EQ(pk.spec.mu_push.size(), 1u);
   EXPECT_EQ(pk.spec.mu_push[0], "0.3");
 }
+
+TEST(GapFit, AScaleWithinTheCalibrationBoundIsEvidenceForNothing)
+{
+  // every candidate is fitted with a force scale free within the lab's calibration bound
+  // (GapThresholds::calibration_scale_bound, 3%): data 2% above the baseline everywhere are
+  // the baseline within its calibration, so no candidate gains anything from them
+  const std::vector<double> sa = {10, 8, 6, 4, 2, 0};
+  EffectData A = synthetic_effect("A", sa, 0.5);
+  Target t;
+  for (int s = 0; s < 2; ++s) t.mean.push_back(std::vector<double>(sa.size(), 102.0)), t.err.push_back(std::vector<double>(sa.size(), 0.5));
+  const EffectFit plain = fit_effect(t, A);
+  EXPECT_GT(plain.lr, GapThresholds::lr_chi2_1_p1e4);    // without the nuisance A fits part of a 2% scale
+  A.scale_bound = GapThresholds::calibration_scale_bound;
+  std::vector<std::size_t> all{0, 1};
+  EXPECT_NEAR(nuisance_scale(t, A, 0.0, all), 0.02, 1e-12);    // closed-form least squares: exact
+  EXPECT_LT(fit_effect(t, A).lr, 1e-9);
+  // the effect at 1.4 with a 2% calibration error: the joint fit recovers both, exactly on
+  // a noiseless target (the golden-section search ends within 1e-6 of the minimum)
+  for (int s = 0; s < 2; ++s)
+    for (std::size_t k = 0; k < sa.size(); ++k) t.mean[s][k] = 1.02 * (100.0 + (s + 1) * 1.4 * sa[k]);
+  const EffectFit joint = fit_effect(t, A);
+  EXPECT_NEAR(joint.magnitude, 1.4, 1e-5);
+  EXPECT_NEAR(joint.scale, 0.02, 1e-6);
+  EXPECT_GT(joint.explained, 0.99);
+  // a 10% scale is beyond the bound: the nuisance stops at 3%, and a scale candidate (the
+  // baseline times 1 + a: knots -0.25, 0.25) takes the rest, its magnitude the whole scale
+  EffectData S;
+  S.name = "scale", S.knots = {-0.25, 0.0, 0.25}, S.paired = true, S.is_scale = true;
+  S.scale_bound = GapThresholds::calibration_scale_bound;
+  for (double a : S.knots) {
+    Table m, v;
+    for (int s = 0; s < 2; ++s) m.push_back(std::vector<double>(sa.size(), 100.0 * (1 + a))), v.push_back(std::vector<double>(sa.size(), 0.5));
+    S.mean.push_back(m), S.err.push_back(v), S.diff_err.push_back(Table(2, std::vector<double>(sa.size(), 1e-6)));
+  }
+  for (auto &row : t.mean)
+    for (auto &x : row) x = 110.0;
+  EXPECT_NEAR(nuisance_scale(t, A, 0.0, all), 0.03, 1e-12);
+  const EffectFit fs = fit_effect(t, S);
+  EXPECT_NEAR(fs.magnitude, 0.10, 1e-5);
+  EXPECT_DOUBLE_EQ(fs.scale, 0.0);    // its own magnitude is the scale: no nuisance on top
+  EXPECT_TRUE(fs.is_scale);
+  // its likelihood ratio is the gap beyond the bound: 12 features of (110 - 103)^2 / 1
+  EXPECT_NEAR(fs.lr, 12 * 49.0, 0.5);
+}
+
+TEST(GapVerdict, AScaleThatExplainsTheGapIsScaleOnlyAndNamesNoEffect)
+{
+  EffectFit scale = candidate("force_scale", 0.95, 0.9, 40, 200, 15);
+  scale.is_scale = true, scale.magnitude = 0.131, scale.magnitude_error = 0.011;
+  Diagnosis d = significance(true, {scale, candidate("rolling", 0.6, 0.5, 80, 60, 15)});
+  judge_fits(d);
+  EXPECT_EQ(d.verdict, Verdict::scale_only);
+  EXPECT_STREQ(verdict_name(d.verdict), "scale_only");
+  EXPECT_TRUE(d.top_effect.empty());    // no physical effect named
+  EXPECT_EQ(d.scale_effect, "force_scale");
+  ASSERT_FALSE(d.notes.empty());
+  EXPECT_NE(d.notes.back().find("the force is 13.1% high at every depth and speed"), std::string::npos) << d.notes.back();
+  // confirmed as an explained verdict is: fresh runs that do not halve G_all leave it unexplained
+  FitEvidence ev = fit_evidence(true, d.ranking);
+  ConfirmationResult c;
+  c.kind = ConfirmationResult::Kind::simulated, c.confirmed = true, c.gap_before = 0.2, c.gap_after = 0.05;
+  EXPECT_EQ(decide_verdict(ev, &c).verdict, Verdict::scale_only);
+  c.gap_after = 0.15;
+  const VerdictDecision v = decide_verdict(ev, &c);
+  EXPECT_EQ(v.verdict, Verdict::unexplained);
+  EXPECT_TRUE(v.scale_effect.empty());
+  // a physical effect that explains the gap ahead of the scale is named as before
+  EffectFit weak = scale;
+  weak.lr = 30;
+  d = significance(true, {weak, candidate("rolling", 0.9, 0.8, 80, 90, 15)});
+  judge_fits(d);
+  EXPECT_EQ(d.verdict, Verdict::explained);
+  EXPECT_EQ(d.top_effect, "rolling");
+}
+
+TEST(GapVerdict, EveryReasonIsTheRuleThatDecidedWithItsNumbers)
+{
+  // the report once said "its likelihood ratio 119.4 is below its threshold 15.1" of a
+  // candidate rejected for its range: the reasons are now the decision's record
+  EffectFit edge = candidate("friction", 0.7, 0.6, 50, 119.4, 15.1);
+  edge.at_edge = true, edge.detected = false, edge.magnitude = 0.19;
+  Diagnosis d = significance(true, {candidate("cohesion", 0.9, 0.8, 20, 300, 15.1), edge, candidate("walls", 0.2, -0.1, 90, 10, 15.1)});
+  judge_fits(d);
+  ASSERT_EQ(d.candidates.size(), 3u);
+  using K = Shortfall::Kind;
+  const auto kinds = [&](std::size_t i) {
+    std::vector<K> k;
+    for (const auto &s : d.candidates[i].shortfalls) k.push_back(s.kind);
+    return k;
+  };
+  EXPECT_TRUE(kinds(0).empty());    // the named one fell short of nothing
+  EXPECT_EQ(kinds(1), (std::vector<K>{K::at_edge, K::less_evidence}));
+  EXPECT_EQ(kinds(2), (std::vector<K>{K::not_detected, K::explains_too_little, K::heldout_too_little, K::less_evidence}));
+  for (const auto &r : d.candidates)
+    for (const auto &s : r.shortfalls) {
+      // each rule's sentence states its own comparison, and the numbers obey it
+      const std::string t = shortfall_text(s);
+      if (s.kind == K::not_detected) EXPECT_LE(s.value, s.threshold) << t;
+      if (s.kind == K::explains_too_little || s.kind == K::heldout_too_little) EXPECT_LT(s.value, s.threshold) << t;
+      if (s.kind == K::less_evidence) EXPECT_GT(s.value, 0.0) << t;
+    }
+  EXPECT_EQ(shortfall_text(d.candidates[2].shortfalls[0]), "its likelihood ratio 10.0 is not above its threshold 15.1");
+  EXPECT_EQ(shortfall_text(d.candidates[1].shortfalls[0]), "it needs a magnitude beyond its simulated range (fitted at the edge, 0.19)");
+}

@@ -67,7 +67,7 @@ bool passes(const Json &d, const SelftestCase &c) { return granpen::score_selfte
 // every kind of the table reads back from the name diagnosis.json writes; another name does not
 TEST(SelftestScore, VerdictTableRoundTrips)
 {
-  for (Verdict v : {Verdict::none, Verdict::explained, Verdict::tie, Verdict::unexplained}) {
+  for (Verdict v : {Verdict::none, Verdict::explained, Verdict::tie, Verdict::unexplained, Verdict::scale_only}) {
     Verdict back = Verdict::none;
     ASSERT_TRUE(granpen::verdict_from_name(granpen::verdict_name(v), back)) << granpen::verdict_name(v);
     EXPECT_EQ(back, v);
@@ -127,6 +127,23 @@ TEST(SelftestScore, MissRightOnlyBelowTheLimit)
   const auto unlisted = granpen::score_selftest(miss, library("friction", 0.1), "d.json");
   EXPECT_EQ(unlisted.limit.kind, granpen::SelftestLimit::Kind::missing);
   EXPECT_FALSE(unlisted.pass);
+}
+
+// scale_only (issue 37) names no effect: right for a library truth its causes list (as a tie
+// that holds it), or below the truth's limit (as a miss); a false alarm on no-effect data;
+// never a confident wrong answer on an outside case
+TEST(SelftestScore, ScaleOnlyIsRightWhereItNamesNoWrongEffect)
+{
+  Json d = diagnosis("scale_only", nullptr, 0.12, 0.05);
+  d["scale_only"] = Json::parse(R"({"scale": 0.131, "causes": [{"cause": "calibration"}, {"cause": "density"},
+                                   {"cause": "rolling_resistance"}]})");
+  const auto held = granpen::score_selftest(d, library("rolling_resistance", 0.05), "d.json");
+  EXPECT_TRUE(held.pass && held.scale_causes_hold_truth);
+  EXPECT_FALSE(passes(d, library("cohesion", 1800)));     // above cohesion's limit, not among the causes
+  const auto below = granpen::score_selftest(d, library("cohesion", 300), "d.json");
+  EXPECT_TRUE(below.pass && below.missed_below_limit);     // 300 below cohesion's 411
+  EXPECT_FALSE(passes(d, SelftestCase()));                  // no effect: a false alarm
+  EXPECT_TRUE(passes(d, outside()));                        // names no effect
 }
 
 TEST(SelftestScore, NoEffectCaseMustFindNone)
