@@ -393,7 +393,7 @@ TEST(ImportBadInput, NamedErrorNothingWritten)
        "position_unit = cm\nsurface = 0\ntare_rows = 5\n", "m.map:4: speed = F is the column of force \\(line 2\\): one column, one role"},
       {"two_roles_name_and_index", [] { return good_csv(plain); }, "time = t\nforce = F\nforce_unit = dyne\nspeed = #2\n"
        "displacement = x\nposition_unit = cm\nsurface = 0\ntare_rows = 5\n",
-       "in.csv:1: force 'F' and speed #2 are the same column \\(#2\\): one column, one role"},
+       "csv:1: force 'F' and speed #2 are the same column \\(#2\\): one column, one role"},
       // a NUL byte inside a field (strtod stopped at it: the field's first part was read)
       {"nul_in_field", [] {
          return good_csv([](std::size_t i, double t, double F, double z) {
@@ -411,13 +411,13 @@ TEST(ImportBadInput, NamedErrorNothingWritten)
       // trace out of what a trace can hold
       {"surface_1e308", [] { return good_csv(plain); },
        "time = t\nforce = F\nforce_unit = dyne\ndisplacement = x\nposition_unit = cm\nsurface = 1e308\ntare_rows = 5\n",
-       "in.csv:[0-9]+: the trace's z = -1e\\+308 at this row is not finite, or too large for a trace"},
+       "csv:[0-9]+: the trace's z = -1e\\+308 at this row is not finite, or too large for a trace"},
       {"window_1e-20", [] { return good_csv(plain); }, "time = t\nforce = F\nforce_unit = dyne\ndisplacement = x\n"
        "position_unit = cm\nsurface = 0\ntare_rows = 5\nwindow = 1e-20\n",
-       "in.csv:[0-9]+: window = 1e-20 s is too short for t = [0-9.e-]+ s \\(window number"},
+       "csv:[0-9]+: window = 1e-20 s is too short for t = [0-9.e-]+ s \\(window number"},
       {"sample_rate_1e-300", [] { return good_csv(plain); }, "sample_rate = 1e-300\nforce = F\nforce_unit = dyne\n"
        "displacement = x\nposition_unit = cm\nsurface = 0\ntare_rows = 5\n",
-       "in.csv:[0-9]+: the trace's t = [0-9.e+]+ at this row is not finite, or too large"},
+       "csv:[0-9]+: the trace's t = [0-9.e+]+ at this row is not finite, or too large"},
       {"data_after_end", [] {
          return good_csv([](std::size_t i, double t, double F, double z) {
            return i == 200 ? std::string("paused\n") : plain(i, t, F, z);
