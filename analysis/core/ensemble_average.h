@@ -49,7 +49,7 @@ struct EnsembleMean {
 // Throws std::invalid_argument when there is no run, a run's z and F differ in length, a
 // run has fewer than 2 finite samples, the aligned runs share no bin, or p.bin makes more
 // than kMaxEnsembleBins bins. The default bin: the largest of the runs' median depth steps,
-// a quarter of their mean steps and the common range / kMaxEnsembleBins.
+// their mean steps and the common range / kMaxEnsembleBins.
 EnsembleMean ensemble_mean(const std::vector<std::vector<double>> &z, const std::vector<std::vector<double>> &F,
                            const EnsembleParams &p = {});
 

@@ -102,9 +102,9 @@ TEST(EnsembleMean, MeanAndStandardErrorOfAlignedRuns)
 
 // Issue 36, class 2: two runs whose depths repeat in pairs 1e-7 cm apart (a logger writing
 // each depth twice) made the default bin the median step, 1e-7 cm: 4e7 bins a run, and
-// "out of memory". The default bin is now at least a quarter of the mean step, so the mean
-// keeps the runs' own resolution (a mean step of 0.005 cm: at most 4 bins a mean step), and
-// never more than kMaxEnsembleBins; a bin given finer than that is refused.
+// "out of memory". The default bin is now at least the mean step (0.005 cm here: about a
+// sample a bin, as the median step gives for evenly sampled runs), and never makes more than
+// kMaxEnsembleBins bins; a bin given finer than that is refused.
 TEST(EnsembleMean, DepthsRepeatedATinyStepApartKeepTheRunsResolution)
 {
   std::vector<std::vector<double>> z(2), F(2);
@@ -115,9 +115,9 @@ TEST(EnsembleMean, DepthsRepeatedATinyStepApartKeepTheRunsResolution)
       F[r].push_back(depth > 0 ? 1000.0 * depth * (1.0 + 0.1 * r) : 0.0);
     }
   const EnsembleMean e = ensemble_mean(z, F, EnsembleParams{0.0, false});
-  // the mean step: 9.99 cm over 1999 steps = 0.005 cm; a quarter of it, 0.00125 cm
-  EXPECT_GE(e.bin, 0.25 * 9.99 / 1999.0 * (1 - 1e-12));
-  EXPECT_LE(e.z.size(), 8000u);    // 9.99 cm / 0.00125 cm (before: 1e8)
+  // the mean step: 9.99 cm over 1999 steps, 0.005 cm (the factor: round-off of the steps' sum)
+  EXPECT_GE(e.bin, 9.99 / 1999.0 * (1 - 1e-12));
+  EXPECT_LE(e.z.size(), 2000u);    // 9.99 cm / 0.005 cm (before: 1e8)
   // a bin of 1e-9 cm over 10 cm: 1e10 bins, refused
   EXPECT_THROW(ensemble_mean(z, F, EnsembleParams{1e-9, false}), std::invalid_argument);
   // a million-sample trace over 1 cm keeps at most kMaxEnsembleBins by default
