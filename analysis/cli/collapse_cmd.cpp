@@ -177,7 +177,9 @@ int granpen::cli::run_collapse(const CollapseOptions &o)
   const EnsembleOptions &ens = o.ensemble;
   std::vector<std::string> problems, left_out, notes;
   const auto files = expand_trace_paths(o.traces, problems);
-  for (const auto &output : {std::make_pair("--csv", csv), std::make_pair("--json", json)})
+  const std::vector<std::pair<std::string, std::string>> outputs = {{"--csv", csv}, {"--json", json}};
+  refuse_shared_outputs(outputs);
+  for (const auto &output : outputs)
     if (!output.second.empty()) refuse_overwriting_inputs(output.second, output.first, files);
   const std::vector<Trace> traces = read_traces(files, problems);
   const std::vector<CollapseInput> in = collapse_inputs(traces, dt, left_out, notes);

@@ -132,8 +132,10 @@ int granpen::cli::run_fit(const FitOptions &o)
   const std::vector<std::string> files = expand_trace_paths(inputs, problems);
   for (const auto &m : problems) failures.push_back({m.substr(0, m.find(": ")), m});
   for (const auto &f : failures) std::fprintf(stderr, "granpen fit: %s\n", f.message.c_str());
-  for (const auto &o : {std::make_pair("--json", json_path), std::make_pair("--csv", csv_path),
-                        std::make_pair("--ensemble-csv", ens_csv)})
+  const std::vector<std::pair<std::string, std::string>> outputs = {
+      {"--json", json_path}, {"--csv", csv_path}, {"--ensemble-csv", ens_csv}};
+  refuse_shared_outputs(outputs);
+  for (const auto &o : outputs)
     if (!o.second.empty()) refuse_overwriting_inputs(o.second, o.first, files);
 
   std::printf("granpen fit: window %s; %zu trace%s\n",

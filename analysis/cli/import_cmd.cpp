@@ -61,6 +61,29 @@ std::vector<std::string> input_files(const std::vector<std::string> &inputs)
   throw granpen::InputError(file + ": " + e.what());
 }
 
+// What import writes passes `check`, always: the staged trace read back by check's own
+// reader (streamed) before it takes its name; a rejection names the input and the line.
+void refuse_unless_checked(const std::string &in, const std::string &staged)
+{
+  try {
+    granpen::scan_trace(staged);
+  } catch (const granpen::InputError &e) {
+    std::string why = e.what();
+    if (why.compare(0, staged.size(), staged) == 0) why = "the trace's line" + why.substr(staged.size());
+    throw granpen::InputError(in + ": the imported trace would not pass granpen check (" + why + "); nothing written");
+  }
+}
+
+// A line break in a file name would break the trace's header (source = NAME, mapping = NAME).
+void refuse_line_breaks(const std::string &path, const char *what)
+{
+  if (path.find_first_of("\n\r") == std::string::npos) return;
+  std::string shown;
+  for (char c : path) shown += c == '\n' ? "\\n" : c == '\r' ? "\\r" : std::string(1, c);
+  throw granpen::InputError(shown + ": a line break in the " + what +
+                            "'s name: it would break the trace's header, where the name is written; rename it");
+}
+
 struct Header {
   bool si = false;
   double D = 0.0, g = 0.0, v0 = 0.0;
@@ -158,6 +181,8 @@ Imported import_file(const std::string &in, const std::string &out, const granpe
     if (res.sum.points < 10)
       throw InputError(in + ": only " + std::to_string(res.sum.points) + " trace rows after the import (a trace needs 10)");
     res.header = header_text(res, m, hd, run);
+    // every number of the header through the checks `granpen check` makes of it
+    check_trace_header(res.header, in + " (its trace's header)");
     if (dry) return res;
     // pass 4: the trace, now that its header is known
     res.staged.reset(new StagedFile(out));
@@ -179,6 +204,7 @@ Imported import_file(const std::string &in, const std::string &out, const granpe
     again.finish(points);
     write_points();
     res.staged->close();
+    refuse_unless_checked(in, res.staged->temporary());
   } catch (const ImportRejected &e) {
     rethrow_at(in, e);
   }
@@ -318,7 +344,9 @@ int granpen::cli::run_import(const ImportOptions &o)
     double v0;
   };
   std::vector<Planned> plan;
+  if (!gef) refuse_line_breaks(mapping_path, "mapping");
   for (const auto &in : files) {
+    refuse_line_breaks(in, "input");
     std::error_code same_ec;
     if (!o.v0_table.empty() && std::filesystem::equivalent(in, o.v0_table, same_ec)) continue;    // the table in the folder
     const std::string out = (std::filesystem::path(out_dir) / (std::filesystem::path(in).stem().string() + ".csv")).string();
@@ -334,7 +362,11 @@ int granpen::cli::run_import(const ImportOptions &o)
   const std::string summary_path = (std::filesystem::path(out_dir) / kImportSummaryName).string();
   refuse_overwriting_inputs(summary_path, "--out", all_inputs);
   std::error_code ec;
-  const bool made_dir = !dry && !std::filesystem::exists(out_dir, ec);
+  // the folders this run makes, deepest first (--out a/b/c may make a and a/b too)
+  std::vector<std::filesystem::path> made_dirs;
+  for (std::filesystem::path p = std::filesystem::absolute(out_dir, ec).lexically_normal();
+       !dry && !p.empty() && !std::filesystem::exists(p, ec) && p != p.parent_path(); p = p.parent_path())
+    made_dirs.push_back(p);
   if (!dry) make_output_dir(out_dir);
   std::vector<Imported> done;
   int run = o.first_run;
@@ -342,7 +374,7 @@ int granpen::cli::run_import(const ImportOptions &o)
     for (const auto &p : plan) done.push_back(import_file(p.in, p.out, mapping_for(p.in), hd, p.v0, run++, dry));
   } catch (...) {
     done.clear();    // the staged traces' temporaries removed
-    if (made_dir) std::filesystem::remove(out_dir, ec);    // the folder this run made, now empty
+    for (const auto &d : made_dirs) std::filesystem::remove(d, ec);    // the folders this run made, now empty
     throw;
   }
   // every file imported: now, and only now, the traces take their names

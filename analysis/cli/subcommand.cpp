@@ -129,7 +129,11 @@ bool Command::parse(int argc, char **argv, std::string &help)
 
 void Command::refuse_unknown_words() const
 {
-  const auto rest = app.remaining();
+  // "--", the end of the options (the words after it are positional), is what CLI11
+  // leaves among the remaining words when extras are allowed: not an unknown option
+  std::vector<std::string> rest;
+  for (const auto &w : app.remaining())
+    if (w != "--") rest.push_back(w);
   for (const auto &w : rest)
     if (w.size() > 1 && w[0] == '-') throw UsageError("unknown option '" + w.substr(0, w.find('=')) + "'");
   if (!rest.empty()) throw UsageError("unexpected argument '" + rest.front() + "'");

@@ -91,10 +91,19 @@ EnsembleMean ensemble_mean(const std::vector<std::vector<double>> &z, const std:
   double lo = -INFINITY, hi = INFINITY;
   for (std::size_t i = 0; i < zs.size(); ++i) {
     shift_depths(zs[i], e.alignment.shift[i]);
-    if (!(p.bin > 0)) w = std::max(w, median_step(zs[i]));
+    // the default bin: the median depth step (about a sample a bin), but at least the mean
+    // step, so that depths repeated with a tiny jitter (a median step of 1e-7 cm) do not
+    // make it tiny; for evenly sampled runs the two agree
+    const double mean_step = (zs[i].back() - zs[i].front()) / (double) (zs[i].size() - 1);
+    if (!(p.bin > 0)) w = std::max({w, median_step(zs[i]), mean_step});
     lo = std::max(lo, zs[i].front()), hi = std::min(hi, zs[i].back());
   }
   if (!(w > 0) || !(hi > lo)) throw std::invalid_argument("ensemble_mean: the aligned runs share no depth range");
+  if (!(p.bin > 0)) w = std::max(w, (hi - lo) / (double) kMaxEnsembleBins);
+  if ((hi - lo) / w > (double) kMaxEnsembleBins)
+    throw std::invalid_argument("ensemble_mean: a bin of " + num(w) + " cm makes " + num((hi - lo) / w) +
+                                " bins over the runs' common depths, more than " + std::to_string(kMaxEnsembleBins) +
+                                ": a wider bin");
   // whole bins inside [lo, hi]
   const long k0 = (long) std::ceil(lo / w - 1e-9), k1 = (long) std::floor(hi / w + 1e-9);
   if (k1 <= k0)

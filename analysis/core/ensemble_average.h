@@ -20,6 +20,11 @@
 
 namespace granpen {
 
+// The most bins of an ensemble mean (each run keeps a value a bin, and the bootstrap a mean
+// a bin per resample): a default bin is widened to stay within it; a given bin finer than
+// that is refused.
+constexpr std::size_t kMaxEnsembleBins = 100000;
+
 struct EnsembleParams {
   double bin = 0.0;      // bin width, cm; <= 0: the largest median depth step of the runs
   bool align = true;     // shift the runs to their mean force onset first
@@ -42,7 +47,9 @@ struct EnsembleMean {
 };
 
 // Throws std::invalid_argument when there is no run, a run's z and F differ in length, a
-// run has fewer than 2 finite samples, or the aligned runs share no bin.
+// run has fewer than 2 finite samples, the aligned runs share no bin, or p.bin makes more
+// than kMaxEnsembleBins bins. The default bin: the largest of the runs' median depth steps,
+// their mean steps and the common range / kMaxEnsembleBins.
 EnsembleMean ensemble_mean(const std::vector<std::vector<double>> &z, const std::vector<std::vector<double>> &F,
                            const EnsembleParams &p = {});
 

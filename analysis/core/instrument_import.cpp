@@ -2,6 +2,7 @@
 #include "instrument_import.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <map>
 
@@ -318,9 +319,35 @@ void TraceBuilder::add(const std::vector<ImportRow> &rows, std::vector<TracePoin
   }
 }
 
+namespace {
+
+// A trace's every value stays finite in cgs units (the trace reader scales si by up to
+// 1e5 and refuses what overflows): beyond this, a row of the import would fail `check`.
+constexpr double kLargestTraceValue = 1.0e300;
+
+std::string num_g(double v)
+{
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", v);
+  return b;
+}
+
+void check_trace_value(double v, const char *what, long line)
+{
+  if (!(std::fabs(v) <= kLargestTraceValue))
+    throw ImportRejected(line, std::string("the trace's ") + what + " = " + num_g(v) +
+                                   " at this row is not finite, or too large for a trace (|" + what +
+                                   "| <= 1e300): a unit, surface, sample_rate or offset out of range?");
+}
+
+}    // namespace
+
 void TraceBuilder::emit(const ImportRow &r, std::vector<TracePoint> &out)
 {
   const double t = r.t - sum_.limits.t_first, z = depth(r), F = r.F - sum_.limits.tare;
+  check_trace_value(t, "t", r.line);
+  check_trace_value(z, "z", r.line);
+  check_trace_value(F, "F", r.line);
   if (!(rules_.window > 0.0)) {
     if (std::isnan(sum_.z_first)) sum_.z_first = z;
     out.push_back({t, z, F});
@@ -330,7 +357,13 @@ void TraceBuilder::emit(const ImportRow &r, std::vector<TracePoint> &out)
   }
   // window k holds the rows with k w < t <= (k+1) w and is written at its end, as the
   // simulations' fix ave/time writes; 1e-9 of a window absorbs the rounding of t / w
-  const long k = (long) std::ceil(t / rules_.window - 1e-9) - 1;
+  const double windows = std::ceil(t / rules_.window - 1e-9) - 1;
+  // a window index beyond 1e15 overflows a long's exactness (and rows land at negative t)
+  if (!(windows < 1e15))
+    throw ImportRejected(r.line, "window = " + num_g(rules_.window) + " s is too short for t = " + num_g(t) +
+                                     " s (window number " + num_g(windows) +
+                                     ", more than 1e15)");
+  const long k = (long) windows;
   if (window_open_ && k != window_) {
     if (window_ >= 0) {    // window -1 holds only the first row: it began before the data
       if (std::isnan(sum_.z_first)) sum_.z_first = window_z_;

@@ -173,10 +173,7 @@ int run_gap(const GapOptions &given, const GapProgressFn &fn)
   const Progress progress{fn};
   const Scenario sc = load_scenario(given);
   const auto effects = choose_effects(given.effects);
-  std::vector<std::string> v0;
-  std::stringstream in(given.v0);
-  for (std::string v; in >> v;) v0.push_back(v);
-  if (v0.empty()) throw GapRefused("--prepare-only and --slurm need --v0 \"SPEEDS\"");
+  const std::vector<std::string> v0 = checked_speeds(given.v0, sc);
   if (!plan_within_budget(given, sc, signature_requests(sc.name, v0, effects), given.cache + "/" + sc.name, progress))
     return GAP_OVER_BUDGET;
   const GapOptions opt = for_scenario(given, sc);

@@ -5,6 +5,9 @@
 #include "text_util.h"
 #include "trace_files.h"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <sstream>
 #include <system_error>
@@ -31,6 +34,8 @@ std::vector<const Effect *> choose_effects(const std::optional<std::string> &lis
   while (std::getline(in, name, ',')) {
     const Effect *e = find_effect(name);
     if (!e) throw GapRefused("--effects: unknown effect '" + name + "' (known:" + known + ")");
+    // a repeat would be simulated, counted and fitted twice
+    if (std::find(out.begin(), out.end(), e) != out.end()) throw GapRefused("--effects: '" + name + "' given twice");
     out.push_back(e);
   }
   if (out.empty())
@@ -42,6 +47,26 @@ std::pair<double, double> runnable_speeds(const Scenario &sc)
 {
   const double dt = sc.number("dt_push");
   return {(sc.gap + sc.depth) / (1e6 * dt), 0.01 * sc.d_g / dt};
+}
+
+std::vector<std::string> checked_speeds(const std::string &list, const Scenario &sc)
+{
+  const auto [vmin, vmax] = runnable_speeds(sc);
+  std::vector<std::string> out;
+  std::stringstream in(list);
+  for (std::string v; in >> v;) {
+    char *end = nullptr;
+    const double x = std::strtod(v.c_str(), &end);
+    if (end == v.c_str() || *end || !std::isfinite(x))
+      throw GapRefused("--v0: '" + v + "' is not a number (speeds in cm/s, e.g. --v0 \"50 100 200\")");
+    if (!(x >= vmin && x <= vmax))
+      throw GapRefused("--v0: " + v + " cm/s is outside what scenario '" + sc.name + "' can run (" + fmt(vmin) + " to " +
+                       fmt(vmax) + " cm/s: at most 1e6 push steps, at most 0.01 d_g per step)");
+    if (std::find(out.begin(), out.end(), v) != out.end()) throw GapRefused("--v0: " + v + " given twice");
+    out.push_back(v);
+  }
+  if (out.empty()) throw GapRefused("--prepare-only and --slurm need --v0 \"SPEEDS\"");
+  return out;
 }
 
 void check_against_scenario(const Trace &t, const Scenario &sc)

@@ -23,6 +23,10 @@ std::vector<const Effect *> choose_effects(const std::optional<std::string> &lis
 // The speeds (cm/s) a scenario can push at: at most 1e6 push steps for gap + depth, at
 // most 0.01 d_g per step.
 std::pair<double, double> runnable_speeds(const Scenario &sc);
+// --v0's speeds (cm/s, blank-separated) for --prepare-only and --slurm, each a whole number
+// token, finite, within runnable_speeds and given once; GapRefused naming --v0 otherwise,
+// before anything is planned, started or written.
+std::vector<std::string> checked_speeds(const std::string &list, const Scenario &sc);
 
 // Refuses a trace whose header contradicts the scenario: D, g, and d_g and rho_g when given, each
 // within 1%.

@@ -2,6 +2,7 @@
 
 #include "errors.h"
 #include "gap_errors.h"
+#include "text_util.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -23,7 +24,8 @@ double Scenario::number(const std::string &key) const
   if (it == vars.end()) throw InputError(path + ": the preset sets no '" + key + "'");
   char *end = nullptr;
   const double v = std::strtod(it->second.c_str(), &end);
-  if (end == it->second.c_str() || !std::isfinite(v))
+  // the whole value: "2cm" is not 2 (LAMMPS would not read it as a number either)
+  if (end == it->second.c_str() || *end != '\0' || !std::isfinite(v))
     throw InputError(path + ": '" + key + "' is not a number: " + it->second);
   return v;
 }
@@ -43,6 +45,16 @@ std::map<std::string, std::string> preset_vars(std::istream &f)
     if (in >> cmd >> var >> style >> value && cmd == "variable" && style == "index") vars[var] = value;
   }
   return vars;
+}
+
+// Every number a gap plan is made of (core-hours, sizes, steps), checked before anything
+// starts: a negative lattice or time step made a negative plan that passed --budget 0.
+void check_plan_numbers(const Scenario &s)
+{
+  for (const char *key : {"D", "d_g", "g", "rho_g", "depth", "lat", "box", "dt_pour", "dt_push"})
+    if (!(s.number(key) > 0)) throw InputError(s.path + ": '" + key + "' must be > 0, got " + s.vars.at(key));
+  for (const char *key : {"mu", "gap"})
+    if (!(s.number(key) >= 0)) throw InputError(s.path + ": '" + key + "' must be >= 0, got " + s.vars.at(key));
 }
 
 void set_numbers(Scenario &s)
@@ -77,6 +89,7 @@ Scenario read_scenario(const std::string &inputs, const std::string &name)
   if (!f) throw InputError("unknown scenario '" + name + "': no preset " + s.path);
   s.vars = preset_vars(f);
   set_numbers(s);
+  check_plan_numbers(s);
   return s;
 }
 
@@ -111,6 +124,11 @@ std::vector<std::string> preset_variables(const std::string &inputs)
 
 Scenario read_scenario_file(const std::string &inputs, const std::string &file)
 {
+  try {
+    require_regular_file(file);    // a FIFO would block the open
+  } catch (InputError &e) {
+    throw GapRefused(std::string("--scenario ") + e.what());
+  }
   std::ifstream f(file);
   if (!f || fs::is_directory(file)) throw GapRefused("--scenario " + file + ": cannot read this preset file");
   const std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
@@ -131,14 +149,12 @@ Scenario read_scenario_file(const std::string &inputs, const std::string &file)
   try {
     set_numbers(s);
     for (const char *key : {"lat", "box", "fill_lo", "zfill_lo", "zfill_hi", "dt_pour", "dt_push"}) s.number(key);
+    check_plan_numbers(s);
   } catch (GapRefused &) {
     throw;
   } catch (InputError &e) {
     throw GapRefused(std::string("--scenario ") + e.what());
   }
-  for (const auto &[key, v] : std::map<std::string, double>{{"D", s.D}, {"d_g", s.d_g}, {"g", s.g}, {"rho_g", s.rho_g},
-                                                            {"depth", s.depth}, {"dt_push", s.number("dt_push")}})
-    if (!(v > 0)) throw GapRefused("--scenario " + file + ": '" + key + "' must be > 0, got " + s.vars.at(key));
   return s;
 }
 

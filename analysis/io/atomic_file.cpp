@@ -116,4 +116,13 @@ void refuse_overwriting_inputs(const std::string &output, const std::string &opt
       throw OutputError(option + " " + output + " is the input " + in + ": refusing to overwrite it");
 }
 
+void refuse_shared_outputs(const std::vector<std::pair<std::string, std::string>> &outputs)
+{
+  for (std::size_t i = 0; i < outputs.size(); ++i)
+    for (std::size_t j = i + 1; j < outputs.size(); ++j)
+      if (!outputs[i].second.empty() && !outputs[j].second.empty() && same_file(outputs[i].second, outputs[j].second))
+        throw OutputError(outputs[i].first + " " + outputs[i].second + " and " + outputs[j].first + " " +
+                          outputs[j].second + " are the same file: one output would replace the other; give each its own name");
+}
+
 }    // namespace granpen

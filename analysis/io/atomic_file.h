@@ -39,6 +39,11 @@ bool same_file(const std::string &a, const std::string &b);
 void refuse_overwriting_inputs(const std::string &output, const std::string &option,
                                const std::vector<std::string> &inputs);
 
+// Throws OutputError "OPTION_A X and OPTION_B X are the same file: ..." when two of the
+// outputs (option, path; an empty path is no output) are the same file (same_file): the
+// second write would replace the first, and both be reported written.
+void refuse_shared_outputs(const std::vector<std::pair<std::string, std::string>> &outputs);
+
 }    // namespace granpen
 
 #endif

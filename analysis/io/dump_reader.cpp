@@ -11,6 +11,7 @@
 ------------------------------------------------------------------------- */
 
 #include "dump_reader.h"
+#include "text_util.h"
 
 #include <zlib.h>
 
@@ -432,6 +433,12 @@ struct DumpReader::Impl {
     frames_in_file = 0;
     pos = end = 0;
     eof = false;
+    try {
+      require_regular_file(p);    // a FIFO would block the open
+    } catch (const InputError &e) {
+      error = e.what();
+      throw;
+    }
     int fd = ::open(p.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) {
       error = p + ": cannot open dump file (" + std::strerror(errno) + ")";

@@ -23,6 +23,32 @@ double key6(double v)
 
 std::string g3(double v) { return json_number("%g", v); }
 
+// a trace's grains: d_g, rho_g and mu (cgs, 6 significant digits), "" for a key not given
+std::string material_of(const Trace &t)
+{
+  std::string s;
+  for (const char *k : {"d_g", "rho_g", "mu"}) {
+    const double v = t.number(k, NAN);
+    s += std::string(s.empty() ? "" : ", ") + k + " = " + (std::isnan(v) ? std::string("not given") : g3(key6(v)));
+  }
+  return s;
+}
+
+// An ensemble averages runs of one material: the fits take mu, rho_g and d_g from the
+// group's first run, so runs of other grains in the group would be averaged in silently.
+void refuse_mixed_materials(const TraceGroup &g)
+{
+  const std::string first = material_of(g.traces.front());
+  for (const auto &t : g.traces) {
+    const std::string other = material_of(t);
+    if (other != first)
+      throw InputError("--ensemble: " + g.traces.front().path + " (" + first + ") and " + t.path + " (" + other +
+                       ") are runs of one case (" + g.label() +
+                       ") but of different grains: an ensemble averages runs of one material; give each material's "
+                       "runs in a command of its own");
+  }
+}
+
 }    // namespace
 
 std::string TraceGroup::label() const
@@ -74,6 +100,7 @@ std::vector<TraceGroup> group_traces(const std::vector<Trace> &traces, double v0
     next.v0_tolerance = v0_tolerance;
     out.push_back(std::move(next));
   }
+  for (const auto &g : out) refuse_mixed_materials(g);
   return out;
 }
 
@@ -81,6 +108,14 @@ void average_groups(std::vector<TraceGroup> &groups, const EnsembleParams &p, st
 {
   std::vector<TraceGroup> kept;
   for (auto &g : groups) {
+    // a given bin too fine for the runs' depths: the option named, before any memory is taken
+    double lo = INFINITY, hi = -INFINITY;
+    for (const auto &t : g.traces)
+      for (double z : t.z) lo = std::min(lo, z), hi = std::max(hi, z);
+    if (p.bin > 0.0 && (hi - lo) / p.bin > (double) kMaxEnsembleBins)
+      throw InputError("--ensemble-bin " + json_number("%g", p.bin) + " cm makes " + json_number("%.3g", (hi - lo) / p.bin) +
+                       " bins over z = " + json_number("%.4g", lo) + ".." + json_number("%.4g", hi) + " cm of ensemble " +
+                       g.label() + ", more than " + std::to_string(kMaxEnsembleBins) + ": give a wider bin");
     std::vector<std::vector<double>> z, F;
     for (const auto &t : g.traces) z.push_back(t.z), F.push_back(t.F);
     try {

@@ -28,7 +28,9 @@ struct TraceGroup {
 // "1.0 m/s" meet; groups sorted by g, D, then v0. Traces arrive in cgs. With
 // v0_tolerance > 0, the runs of one (g, D) sorted by v0 form a new group at each v0 more
 // than v0_tolerance above the slowest of the current group; the group's v0 is its runs'
-// mean.
+// mean. Runs of one group whose grains differ (d_g, rho_g or mu, a key given in one and
+// not in another included) are an InputError naming two of them: an ensemble is of one
+// material.
 std::vector<TraceGroup> group_traces(const std::vector<Trace> &traces, double v0_tolerance = 0.0);
 
 // Reads the files (cgs); an unreadable file is a line in problems naming it.
@@ -36,6 +38,8 @@ std::vector<Trace> read_traces(const std::vector<std::string> &files, std::vecto
 
 // Sets each group's ensemble mean; a group that cannot be averaged (runs that share no
 // depth) is a line in problems and removed.
+// Throws InputError when p.bin (--ensemble-bin) makes more than kMaxEnsembleBins bins over
+// a group's depths.
 void average_groups(std::vector<TraceGroup> &groups, const EnsembleParams &p, std::vector<std::string> &problems);
 
 // One line per group saying what the averaging did: runs, bins, range, the largest onset

@@ -4,6 +4,7 @@
 #include "text_util.h"
 #include "trace_reader.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cmath>
@@ -43,8 +44,9 @@ const std::map<std::string, std::string> ALIASES = {{"displacement_unit", "posit
 
 class Mapping {
  public:
-  Mapping(const std::string &text, const std::string &path) : path_(path)
+  Mapping(const std::string &with_bom, const std::string &path) : path_(path)
   {
+    const std::string text = without_bom(with_bom);
     long n = 0;
     std::size_t pos = 0;
     while (pos <= text.size()) {
@@ -168,6 +170,19 @@ ImportMapping parse_import_mapping(const std::string &text, const std::string &p
   out.position_is_depth = m.has("depth");
   out.position = m.column(out.position_is_depth ? "depth" : "displacement");
   if (!out.force.given()) fail_line(path, 0, "no force column (force = NAME or force = #N)");
+  // one column, one role: `speed = F` beside `force = F` would read the force as the speed
+  // (a name and an index naming one column are caught where the columns are located)
+  const char *position_key = out.position_is_depth ? "depth" : "displacement";
+  for (const char *a : {"time", "force", position_key, "speed"})
+    for (const char *b : {"time", "force", position_key, "speed"}) {
+      const ColumnRef ca = m.column(a), cb = m.column(b);
+      if (std::string(a) >= std::string(b) || !ca.given() || !cb.given() || ca.text() != cb.text()) continue;
+      const bool a_first = m.line(a) < m.line(b);
+      fail_line(path, std::max(m.line(a), m.line(b)), std::string(a_first ? b : a) + " = " + m.text(a, "") +
+                                                          " is the column of " + (a_first ? a : b) + " (line " +
+                                                          std::to_string(std::min(m.line(a), m.line(b))) +
+                                                          "): one column, one role");
+    }
   for (const auto *key : {"time", "force", "displacement", "depth", "speed"}) {
     const ColumnRef c = m.column(key);
     if (!c.name.empty() && !out.column_names && out.delimiter != "keyvalue")
@@ -285,13 +300,15 @@ std::map<std::string, double> read_v0_table(const std::string &path, bool si)
 
 std::string gef_mapping_text(const std::string &path)
 {
+  require_regular_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot read: " + std::strerror(errno));
   std::map<int, std::pair<int, std::string>> by_quantity;    // quantity -> (column, unit)
   std::string separator = "whitespace", area, area_unit, line;
   long n = 0, eoh = 0;
-  while (eoh == 0 && n < 10000 && std::getline(in, line)) {
-    ++n;
+  std::vector<char> buf(64 * 1024);
+  while (eoh == 0 && n < 10000 && read_bounded_line(in, buf, line, path, n, 1 << 20, "not a GEF header")) {
+    if (++n == 1) line = without_bom(line);
     if (!line.empty() && line.back() == '\r') line.pop_back();
     const auto eq = line.find('=');
     if (line.empty() || line[0] != '#' || eq == std::string::npos) continue;

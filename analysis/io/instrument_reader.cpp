@@ -32,6 +32,7 @@ std::string lower(std::string s)
 
 InstrumentReader::InstrumentReader(const std::string &path, const ImportMapping &mapping) : path_(path), m_(mapping)
 {
+  require_regular_file(path);
   in_.open(path, std::ios::binary);
   if (!in_) throw InputError(path + ": cannot read: " + std::strerror(errno));
   find_layout();
@@ -39,11 +40,9 @@ InstrumentReader::InstrumentReader(const std::string &path, const ImportMapping 
 
 bool InstrumentReader::read_line(std::string &line)
 {
-  if (!std::getline(in_, line)) {
-    if (in_.bad()) throw InputError(path_ + ": read error after line " + std::to_string(line_no_));
+  if (!read_bounded_line(in_, buf_, line, path_, line_no_, kMaxInstrumentLine, "not a row of delimited text"))
     return false;
-  }
-  ++line_no_;
+  if (++line_no_ == 1) line = without_bom(line);
   if (!line.empty() && line.back() == '\r') line.pop_back();
   return true;
 }
@@ -146,6 +145,8 @@ void InstrumentReader::find_layout()
           delim_ = d;
           names_line_ = line_no_;
           header_lines_ = line_no_ - 1;
+          row_fields_ = names.size();
+          refuse_shared_columns();
           return;
         }
         std::size_t found = 0;
@@ -172,6 +173,8 @@ void InstrumentReader::find_layout()
       names_line_ = 0;
       pending_ = line;
       pending_no_ = line_no_;
+      row_fields_ = d == Delim::keyvalue ? 0 : fields(line, d).size();
+      if (d != Delim::keyvalue) refuse_shared_columns();
       return;
     }
     if (fixed) fail_at(path_, line_no_, "the first row after header_lines = " + std::to_string(m_.header_lines) +
@@ -212,9 +215,40 @@ std::string InstrumentReader::value_of(const std::vector<std::string> &f, Delim 
   return "";
 }
 
-std::string InstrumentReader::parse_fields(const std::string &line, ImportRow &r) const
+void InstrumentReader::refuse_shared_columns() const
+{
+  const struct {
+    const char *role;
+    const ColumnRef &c;
+    int located;
+  } roles[] = {{"time", m_.time, i_time_}, {"force", m_.force, i_force_},
+               {m_.position_is_depth ? "depth" : "displacement", m_.position, i_position_}, {"speed", m_.speed, i_speed_}};
+  for (const auto &a : roles)
+    for (const auto &b : roles) {
+      if (&a >= &b || !a.c.given() || !b.c.given() || a.located < 0 || a.located != b.located) continue;
+      const std::string where = names_line_ ? file_line(path_, names_line_) : path_;
+      throw InputError(where + ": " + a.role + " " + a.c.text() + " and " + b.role + " " + b.c.text() +
+                       " are the same column (#" + std::to_string(a.located + 1) + "): one column, one role (mapping " +
+                       m_.path + ")");
+    }
+}
+
+std::string InstrumentReader::field_count_error(const std::vector<std::string> &f) const
+{
+  std::size_t n = f.size();
+  while (n > row_fields_ && trim(f[n - 1]).empty()) --n;    // a trailing delimiter adds an empty field
+  if (!row_fields_ || n <= row_fields_) return "";
+  const std::string of = names_line_ ? "the column names (line " + std::to_string(names_line_) + ") name "
+                                     : "the first data row (line " + std::to_string(first_row_line_) + ") has ";
+  return "row has " + std::to_string(n) + " fields, " + of + std::to_string(row_fields_) +
+         " (a thousands separator, or a decimal comma, splitting a number? the mapping says decimal " +
+         (m_.decimal_comma ? "comma" : "point") + ")";
+}
+
+std::string InstrumentReader::parse_fields(const std::string &line, ImportRow &r, std::string *count_error) const
 {
   const auto f = fields(line, delim_);
+  if (count_error && delim_ != Delim::keyvalue) *count_error = field_count_error(f);
   const bool kv = delim_ == Delim::keyvalue;
   std::string why = value_of(f, delim_, kv ? m_.force.index - 1 : i_force_, m_.force, "force", r.F);
   const struct {
@@ -259,6 +293,7 @@ bool InstrumentReader::next(std::vector<ImportRow> &rows, std::size_t max_rows)
     ImportRow raw;
     const std::string why = parse_fields(pending_, raw);
     if (!why.empty()) fail_at(path_, pending_no_, why);
+    first_row_line_ = pending_no_;
     rows.push_back(to_row(raw, pending_no_));
     pending_.clear();
   }
@@ -268,7 +303,10 @@ bool InstrumentReader::next(std::vector<ImportRow> &rows, std::size_t max_rows)
     const std::string t = trim(line);
     if (t.empty() || t[0] == '#') continue;    // blank lines and comments between rows
     ImportRow raw;
-    const std::string why = parse_fields(line, raw);
+    std::string count_error;
+    const std::string why = parse_fields(line, raw, &count_error);
+    // a row that reads as numbers but has more fields than the names: its fields are shifted
+    if (why.empty() && !count_error.empty()) fail_at(path_, line_no_, count_error);
     if (trailer_line_) {    // past the data's end: a data row now means the end was not one
       if (why.empty())
         fail_at(path_, trailer_line_, trailer_why_ + " (the data seemed to end at this line, but data rows come back at line " +
@@ -282,6 +320,7 @@ bool InstrumentReader::next(std::vector<ImportRow> &rows, std::size_t max_rows)
       continue;
     }
     if (!why.empty()) fail_at(path_, line_no_, why);    // the first data row
+    if (!first_row_line_) first_row_line_ = line_no_;
     rows.push_back(to_row(raw, line_no_));
   }
   return !rows.empty();

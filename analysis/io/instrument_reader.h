@@ -19,6 +19,10 @@
 
 namespace granpen {
 
+// The longest line of an instrument file (bytes): longer is an error naming it, so that one
+// line never costs more memory than this (a chunk of rows is read at a time).
+constexpr std::size_t kMaxInstrumentLine = std::size_t(1) << 20;
+
 class InstrumentReader {
  public:
   // Opens path and finds its layout (delimiter, header lines, the mapped columns).
@@ -54,7 +58,12 @@ class InstrumentReader {
   ImportRow to_row(ImportRow raw, long line_no);
   // why the mapped columns of line are not all numbers ("" when they are), with the values
   // in r (raw: units not applied)
-  std::string parse_fields(const std::string &line, ImportRow &r) const;
+  // count_error (when given): why the row has more fields than the names line (or the first
+  // data row without one) has, "" when it has not
+  std::string parse_fields(const std::string &line, ImportRow &r, std::string *count_error = nullptr) const;
+  std::string field_count_error(const std::vector<std::string> &f) const;
+  // two of time, force, position and speed located at the same column: an InputError
+  void refuse_shared_columns() const;
   // one mapped column's value from the row's fields; "" or why not
   std::string value_of(const std::vector<std::string> &f, Delim d, int index, const ColumnRef &c, const char *what,
                        double &v) const;
@@ -62,6 +71,7 @@ class InstrumentReader {
   std::string path_;
   ImportMapping m_;
   std::ifstream in_;
+  std::vector<char> buf_ = std::vector<char>(64 * 1024);    // read_bounded_line's pieces
   long line_no_ = 0;
   Delim delim_ = Delim::comma;
   long header_lines_ = 0;             // lines before the names line (or the first data row)
@@ -69,6 +79,8 @@ class InstrumentReader {
   int i_time_ = -1, i_force_ = -1, i_position_ = -1, i_speed_ = -1;    // 0-based fields
   std::string pending_;               // a data line read while finding the layout
   long pending_no_ = 0;
+  std::size_t row_fields_ = 0;        // fields of the names line (or the first data row); 0: key=value
+  long first_row_line_ = 0;
   std::size_t rows_ = 0;              // data rows so far (the sample index without a time column)
   DepthClock clock_;                  // t of a depth-sampled log
   long last_data_line_ = 0, trailer_line_ = 0;

@@ -28,6 +28,8 @@ class StagedFile {
   void abandon();
 
   const std::string &path() const { return path_; }
+  // the temporary's name, until rename() (to read back what was written)
+  const std::string &temporary() const { return tmp_; }
 
  private:
   void flush();

@@ -55,30 +55,12 @@ double Trace::number(const std::string &key, double fallback) const
 namespace {
 
 // The next line of in (without its '\n') into line; false at the end of the input.
-// A line longer than kMaxTraceLine is an error, not an allocation as large as the file.
-// buf: the caller's scratch (istream::getline in pieces of its size: no per-line growth).
+// A line longer than kMaxTraceLine is an error, not an allocation as large as the file, and
+// so is a NUL byte (text_util.h's read_bounded_line, shared with the instrument reader).
 bool bounded_getline(std::istream &in, std::vector<char> &buf, std::string &line, const std::string &name,
                      long lineno)
 {
-  line.clear();
-  if (in.eof()) return false;
-  for (;;) {
-    in.getline(buf.data(), (std::streamsize) buf.size());
-    const std::streamsize n = in.gcount();    // with the '\n' when one was taken
-    if (in.bad()) fail_at(name, lineno + 1, "read error");
-    if (in.fail() && !in.eof()) {    // buf filled, the line goes on
-      line.append(buf.data(), (std::size_t) n);
-      if (line.size() > kMaxTraceLine)
-        fail_at(name, lineno + 1, "line longer than " + std::to_string(kMaxTraceLine) + " bytes: not a trace");
-      in.clear();
-      continue;
-    }
-    if (n == 0 && in.eof()) return !line.empty();
-    line.append(buf.data(), (std::size_t) (in.eof() ? n : n - 1));
-    if (line.size() > kMaxTraceLine)
-      fail_at(name, lineno + 1, "line longer than " + std::to_string(kMaxTraceLine) + " bytes: not a trace");
-    return true;
-  }
+  return read_bounded_line(in, buf, line, name, lineno, kMaxTraceLine, "not a trace");
 }
 
 // A granpen-trace v1 file read a row at a time: the header on construction, then rows.
@@ -289,8 +271,16 @@ Trace parse_trace(const std::string &text, const std::string &name, std::size_t 
   return parse_stream(in, name, max_rows);
 }
 
+Trace check_trace_header(const std::string &header_text, const std::string &name)
+{
+  std::istringstream in(header_text);
+  TraceParser p(in, name);
+  return p.header();
+}
+
 Trace read_trace(const std::string &path)
 {
+  require_regular_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open trace file (" + std::strerror(errno) + ")");
   return parse_stream(in, path, kMaxTraceRows);
@@ -298,6 +288,7 @@ Trace read_trace(const std::string &path)
 
 TraceSummary scan_trace(const std::string &path)
 {
+  require_regular_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open trace file (" + std::strerror(errno) + ")");
   TraceParser p(in, path);

@@ -62,6 +62,12 @@ struct TraceSummary {
 TraceSummary scan_trace(const std::string &path);
 TraceSummary to_cgs(const TraceSummary &summary);
 
+// The header checks of read_trace and scan_trace alone, on a header block as
+// format_trace_header writes it (the '#' lines and the column line): what a writer of
+// traces (import) checks before it writes, so that its output passes `check`. Throws
+// InputError "NAME:LINE: ..." naming the key; returns the header (no rows).
+Trace check_trace_header(const std::string &header_text, const std::string &name);
+
 // The raw output of `fix ave/time` in scalar mode ("# Time-averaged data for fix ID",
 // "# TimeStep NAME...", then rows STEP VALUE...) as a trace: t = (step - step0) dt,
 // z = z0 + v0 t, F = sign * the chosen column. LAMMPS writes no units, speed or geometry

@@ -71,6 +71,7 @@ inline void trace_body(const std::string &text)
     for (const char *k : {"d_g", "rho_g", "mu"})
       if (t.keys.count(k)) GRANPEN_FUZZ_CHECK(std::isfinite(t.number(k, NAN)) && t.number(k, NAN) >= 0.0);
     GRANPEN_FUZZ_CHECK(t.z.back() >= t.z.front());    // depth, not height
+    GRANPEN_FUZZ_CHECK(text.find('\0') == std::string::npos);    // a NUL byte is refused, never skipped
     GRANPEN_FUZZ_CHECK(t.columns.size() <= granpen::kMaxTraceColumns);
     for (std::size_t i = 0; i < t.t.size(); ++i) {
       GRANPEN_FUZZ_CHECK(std::isfinite(t.t[i]) && std::isfinite(t.z[i]) && std::isfinite(t.F[i]));

@@ -30,7 +30,7 @@ if(NOT GRANPEN_FUZZ STREQUAL "OFF")
   add_test(NAME fuzz_build COMMAND ${fuzz_src}/run_fuzz.sh build ${fuzz_src} ${fuzz_bin} "${fuzz_cxx}")
   set_tests_properties(fuzz_build PROPERTIES LABELS fuzz FIXTURES_SETUP fuzz_binaries SKIP_RETURN_CODE 77
     TIMEOUT 600 PROCESSORS 2)
-  foreach(target dump_reader trace_reader)
+  foreach(target dump_reader trace_reader instrument_reader)
     add_test(NAME fuzz_${target} COMMAND ${fuzz_src}/run_fuzz.sh run ${fuzz_src} ${fuzz_bin} ${target} ${GRANPEN_FUZZ_SECONDS})
     math(EXPR fuzz_timeout "${GRANPEN_FUZZ_SECONDS} + 120")
     set_tests_properties(fuzz_${target} PROPERTIES LABELS fuzz FIXTURES_REQUIRED fuzz_binaries SKIP_RETURN_CODE 77

@@ -22,7 +22,7 @@ case "$mode" in
     cmake -S "$src" -B "$bin" -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_BUILD_TYPE=RelWithDebInfo >"$bin/configure.log" 2>&1 \
       || { cat "$bin/configure.log"; echo "fuzz: configure failed"; exit 1; }
     cmake --build "$bin" -j 2 || { echo "fuzz: build failed"; exit 1; }
-    echo "fuzz: built $bin/fuzz_dump_reader $bin/fuzz_trace_reader $bin/fuzz_cli_options with $cxx"
+    echo "fuzz: built $bin/fuzz_dump_reader $bin/fuzz_trace_reader $bin/fuzz_instrument_reader $bin/fuzz_cli_options with $cxx"
     ;;
   run)
     target=$4 budget=$5

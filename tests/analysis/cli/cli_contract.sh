@@ -183,6 +183,75 @@ cases=$((cases + 1))
 "$CLI" "${IMPORT[@]}" --out "$W/imported" > "$W/out" 2> "$W/err" || { fail "a good import exits $?"; cat "$W/err"; }
 [ -s "$W/imported/lab.csv" ] || fail "import wrote no $W/imported/lab.csv"
 
+# ---- issue 36: the new surfaces (import, --ensemble, gap before it simulates), a case
+# class by class; each a named error, its exit status, nothing written
+# class 2: a FIFO (or a folder) where a regular file is needed is refused, not blocked on
+# (timeout: before, each of these waited for a writer forever)
+mkfifo "$W/fifo"
+expect 1 "fifo: a FIFO \(a named pipe" timeout 20 "$CLI" import "$W/fifo" --mapping "$W/lab.map" --D 2 --g 981 --out "$W/i2"
+expect 1 "fifo: a FIFO" timeout 20 "$CLI" import "$W/lab.csv" --mapping "$W/fifo" --D 2 --g 981 --out "$W/i2"
+expect 1 "fifo: a FIFO" timeout 20 "$CLI" check "$W/fifo"
+expect 1 "fifo: a FIFO" timeout 20 "$CLI" fit "$W/fifo"    # (fit records a failed trace in its --json, by design)
+expect 2 "--scenario .*fifo: a FIFO" timeout 20 "$CLI" gap --scenario "$W/fifo" --prepare-only --v0 100 \
+  --inputs "$INPUTS" --cache "$W/gc" --lmp /bin/false
+[ -e "$W/i2" ] || [ -e "$W/gc" ] && fail "written after a FIFO input"
+# --ensemble-bin: the bins it makes are bounded (before: no bound, gigabytes, "out of memory")
+expect 1 "--ensemble-bin 1e-09 cm makes .* bins .* more than 100000" "$CLI" fit "$TRACE" --ensemble --ensemble-bin 1e-9 --json "$W/e2.json"
+expect 1 "--ensemble-bin 1e-07 cm makes" "$CLI" collapse "$TRACE" --ensemble --ensemble-bin 1e-7 --json "$W/e2.json"
+[ -e "$W/e2.json" ] && fail "written after --ensemble-bin out of bounds"
+# class 3: every value that reaches a gap plan checked before anything starts or is written
+GAP=(gap --inputs "$INPUTS" --cache "$W/gc" --lmp /bin/false)
+expect 2 "--v0: 'abc' is not a number" "$CLI" "${GAP[@]}" --scenario tiny --prepare-only --v0 abc
+expect 2 "--v0: -50 cm/s is outside what scenario 'tiny' can run" "$CLI" "${GAP[@]}" --scenario tiny --slurm "$W/g.sh" --v0 -50
+expect 2 "--v0: 0 cm/s is outside" "$CLI" "${GAP[@]}" --scenario tiny --slurm "$W/g.sh" --v0 "100 0"
+expect 2 "--v0: 'abc' is not a number" "$CLI" "${GAP[@]}" --scenario tiny --slurm "$W/g.sh" --v0 abc
+sed 's/^variable lat .*/variable lat index -0.5/' "$INPUTS/presets/tiny.lmp" > "$W/neglat.lmp"
+expect 2 "neglat\.lmp: 'lat' must be > 0, got -0\.5" "$CLI" "${GAP[@]}" --scenario "$W/neglat.lmp" --prepare-only --v0 100 --budget 0
+sed 's/^variable dt_push .*/variable dt_push index -1e-6/' "$INPUTS/presets/tiny.lmp" > "$W/negdt.lmp"
+expect 2 "negdt\.lmp: 'dt_push' must be > 0" "$CLI" "${GAP[@]}" --scenario "$W/negdt.lmp" --slurm "$W/g.sh" --v0 100
+[ -e "$W/g.sh" ] || [ -e "$W/gc" ] && fail "gap wrote or started on a bad value"
+# class 4: an ensemble mixes no materials; two outputs never share a file
+{ printf '# granpen-trace v1\n# units = cgs\n# v0 = 100\n# D = 2\n# g = 981\n# rho_g = 2.5\nt,z,F\n'
+  for i in $(seq 0 40); do echo "$((i + 1))e-4,$(awk "BEGIN{print -0.5 + 0.05 * $i}"),$((i * 10))"; done; } > "$W/m1.csv"
+sed 's/rho_g = 2.5/rho_g = 1.5/' "$W/m1.csv" > "$W/m2.csv"
+sed '/rho_g/d' "$W/m1.csv" > "$W/m3.csv"
+expect 1 "--ensemble: .*m1\.csv \(d_g = not given, rho_g = 2\.5, mu = not given\) and .*m2\.csv .* different grains" \
+  "$CLI" fit "$W/m1.csv" "$W/m2.csv" --ensemble --json "$W/e3.json"
+expect 1 "different grains" "$CLI" collapse "$W/m1.csv" "$W/m3.csv" --ensemble --json "$W/e3.json"
+expect 1 "--json .*e3\.json and --csv .*e3\.json are the same file" "$CLI" fit "$TRACE" --json "$W/e3.json" --csv "$W/e3.json"
+expect 1 "--json .*e3\.json and --ensemble-csv .*e3\.json are the same file" "$CLI" fit "$TRACE" --ensemble --json "$W/e3.json" --ensemble-csv "$W/./e3.json"
+expect 1 "--csv .*e3\.json and --json .*e3\.json are the same file" "$CLI" collapse "$TRACE" --csv "$W/e3.json" --json "$W/e3.json"
+[ -e "$W/e3.json" ] && fail "written after a refused ensemble or a shared output"
+# NUL bytes in a trace's field: refused by check (strtod stopped at the NUL before)
+{ printf '# granpen-trace v1\n# units = cgs\n# v0 = 100\n# D = 2\n# g = 981\nt,z,F\n'
+  for i in $(seq 1 12); do printf '%s,%s,1\0003\n' "$i" "$i"; done; } > "$W/nul.csv"
+expect 1 "nul\.csv:7: a NUL byte at byte 6 of the line" "$CLI" check "$W/nul.csv"
+# class 5: what import writes passes check: a header number out of a trace's range is named
+expect 1 "lab\.csv \(its trace's header\):[0-9]+: header v0 is too large" "$CLI" "${IMPORT[@]}" --v0 1e304 --out "$W/i5"
+expect 1 "lab\.csv \(its trace's header\):[0-9]+: header D is too large" "$CLI" import "$W/lab.csv" --mapping "$W/lab.map" --D 1e305 --g 981 --v0 100 --out "$W/i5"
+cp "$W/lab.csv" "$W/line
+break.csv"
+expect 1 "line\\\\nbreak\.csv: a line break in the input's name" "$CLI" import "$W/line
+break.csv" --mapping "$W/lab.map" --D 2 --g 981 --out "$W/i5"
+[ -e "$W/i5" ] && fail "import wrote $W/i5 on a refused header"
+# class 7: the messages
+printf '\xef\xbb\xbft,F,x\n' > "$W/bom.csv" && tail -n +2 "$W/lab.csv" >> "$W/bom.csv"
+cases=$((cases + 1))
+"$CLI" import "$W/bom.csv" --mapping "$W/lab.map" --D 2 --g 981 --out "$W/i7" > "$W/out" 2> "$W/err" \
+  || { fail "a byte-order mark before the column names: exit $?"; cat "$W/err"; }
+mkdir -p "$W/mapdir"
+expect 1 "mapdir: a folder, not a regular file" "$CLI" import "$W/lab.csv" --mapping "$W/mapdir" --D 2 --g 981 --out "$W/i8"
+awk 'NR == 300 { sub(/,/, ",1,") } { print }' "$W/lab.csv" > "$W/split.csv"    # a row of 4 fields
+expect 1 "split\.csv:300: row has 4 fields" "$CLI" import "$W/lab.csv" "$W/split.csv" --mapping "$W/lab.map" --D 2 --g 981 --v0 100 --out "$W/a/b/c"
+[ -e "$W/a" ] && fail "a failed import into --out a/b/c left $(cd "$W" && find a | tr '\n' ' ')"
+for sc in "check -- $TRACE" "fit -- $TRACE" "collapse -- $TRACE"; do
+  cases=$((cases + 1))
+  "$CLI" $sc > "$W/out" 2> "$W/err" || { fail "'--' as the end of options: $sc exits $?"; cat "$W/err"; }
+done
+expect 2 "--effects: 'sidewalls' given twice" "$CLI" "${GAP[@]}" --scenario tiny --prepare-only --v0 100 --effects sidewalls,polydispersity,sidewalls
+sed 's/^variable D .*/variable D index 2cm/' "$INPUTS/presets/tiny.lmp" > "$W/twocm.lmp"
+expect 2 "'D' is not a number: 2cm" "$CLI" "${GAP[@]}" --scenario "$W/twocm.lmp" --prepare-only --v0 100
+
 # ---- a library exception becomes a named error (collapse on a header with v0 = 0)
 { printf '# granpen-trace v1\n# units = cgs\n# v0 = 0\n# D = 2\n# g = 981\nt,z,F\n'
   for i in $(seq 0 20); do echo "$i,$i,$i"; done; } > "$W/v0zero.csv"

@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <random>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -368,6 +369,55 @@ TEST(ImportBadInput, NamedErrorNothingWritten)
       {"no_time", [] { return good_csv(plain); }, "force = F\nonset_force = 1\n",
        "m.map: neither a time column nor a sample_rate"},
       // a data row after the rows stopped matching: the end was not one (both lines named)
+      // issue 36, class 4 (silently wrong, exit 0 before): a thousands separator splits a
+      // force into two fields, every column after it shifted (comma and white space)
+      {"thousands_separator", [] {
+         return good_csv([](std::size_t i, double t, double F, double z) {
+           // F = 12345.6 written "12,345.6"
+           return i == 300 ? fmt("%.6f", t) + "," + fmt("%.0f", std::floor(F / 1000.0)) + "," +
+                                 fmt("%05.1f", std::fmod(F, 1000.0)) + "," + fmt("%.10g", z) + "\n"
+                           : plain(i, t, F, z);
+         });
+       },
+       MAP, "in.csv:302: row has 4 fields, the column names \\(line 1\\) name 3 \\(a thousands separator"},
+      {"thousands_separator_blank", [] {
+         std::string s = "t F x\n";
+         for (std::size_t i = 0; i < ORIG.t.size(); ++i)
+           s += fmt("%.6f", ORIG.t[i]) + " " + (i == 350 ? std::string("17 500.5") : fmt("%.10g", ORIG.F[i])) + " " +
+                fmt("%.10g", ORIG.z[i]) + "\n";
+         return s;
+       },
+       MAP, "in.csv:352: row has 4 fields, the column names \\(line 1\\) name 3"},
+      // one column in two roles: the same name twice, and a name and an index of one column
+      {"two_roles_by_name", [] { return good_csv(plain); }, "time = t\nforce = F\nforce_unit = dyne\nspeed = F\ndisplacement = x\n"
+       "position_unit = cm\nsurface = 0\ntare_rows = 5\n", "m.map:4: speed = F is the column of force \\(line 2\\): one column, one role"},
+      {"two_roles_name_and_index", [] { return good_csv(plain); }, "time = t\nforce = F\nforce_unit = dyne\nspeed = #2\n"
+       "displacement = x\nposition_unit = cm\nsurface = 0\ntare_rows = 5\n",
+       "csv:1: force 'F' and speed #2 are the same column \\(#2\\): one column, one role"},
+      // a NUL byte inside a field (strtod stopped at it: the field's first part was read)
+      {"nul_in_field", [] {
+         return good_csv([](std::size_t i, double t, double F, double z) {
+           return i == 100 ? fmt("%.6f", t) + "," + fmt("%.10g", F) + std::string("\0" "99", 3) + "," + fmt("%.10g", z) + "\n"
+                           : plain(i, t, F, z);
+         });
+       },
+       MAP, "in.csv:102: a NUL byte at byte [0-9]+ of the line"},
+      {"nul_in_names", [] { return std::string("t,F\0,x\n", 7) + good_csv(plain).substr(6); }, MAP,
+       "in.csv:1: a NUL byte at byte 4 of the line"},
+      // class 6: one line of 10 MB is refused at the line bound, not read into memory
+      {"line_of_10MB", [] { return good_csv(plain) + std::string(10u << 20, '7') + "\n"; }, MAP,
+       "in.csv:402: line longer than 1048576 bytes"},
+      // class 5 (written with exit 0 before, then refused by check): numbers that reach the
+      // trace out of what a trace can hold
+      {"surface_1e308", [] { return good_csv(plain); },
+       "time = t\nforce = F\nforce_unit = dyne\ndisplacement = x\nposition_unit = cm\nsurface = 1e308\ntare_rows = 5\n",
+       "csv:[0-9]+: the trace's z = -1e\\+308 at this row is not finite, or too large for a trace"},
+      {"window_1e-20", [] { return good_csv(plain); }, "time = t\nforce = F\nforce_unit = dyne\ndisplacement = x\n"
+       "position_unit = cm\nsurface = 0\ntare_rows = 5\nwindow = 1e-20\n",
+       "csv:[0-9]+: window = 1e-20 s is too short for t = [0-9.e-]+ s \\(window number"},
+      {"sample_rate_1e-300", [] { return good_csv(plain); }, "sample_rate = 1e-300\nforce = F\nforce_unit = dyne\n"
+       "displacement = x\nposition_unit = cm\nsurface = 0\ntare_rows = 5\n",
+       "csv:[0-9]+: the trace's t = [0-9.e+]+ at this row is not finite, or too large"},
       {"data_after_end", [] {
          return good_csv([](std::size_t i, double t, double F, double z) {
            return i == 200 ? std::string("paused\n") : plain(i, t, F, z);
@@ -451,6 +501,32 @@ TEST(ImportCli, MemoryBoundedIndependentlyOfFileSize)
   ASSERT_EQ(getrusage(RUSAGE_CHILDREN, &ru), 0);
   EXPECT_LT(ru.ru_maxrss, 16 * 1024) << "kB resident at most in a child";
   EXPECT_GT(fs::file_size(d / "out" / "long.csv"), 10u << 20);
+}
+
+// Class 6 of issue 36: a 100 MB line cost 1.4 GB resident (std::getline grew a string to
+// the line). Now a line is read in 64 kB pieces up to its 1 MiB bound and refused there:
+// resident memory stays within the 16 MB bound of the streaming test above.
+TEST(ImportCli, MemoryBoundedOnAHundredMegabyteLine)
+{
+  const fs::path d = fresh("long_line");
+  {
+    std::ofstream o(d / "wide.csv", std::ios::binary);
+    o << "t,F,x\n0.0001,0,-0.49\n";
+    const std::string piece(1u << 20, '5');
+    for (int k = 0; k < 100; ++k) o << piece;
+    o << "\n";
+    ASSERT_TRUE(o.good());
+  }
+  write(d / "m.map", MAP);
+  const CliRun r = cli(d, "import " + (d / "wide.csv").string() + " --mapping " + (d / "m.map").string() + " --out " +
+                              (d / "out").string() + " --D 2 --g 981 --v0 100");
+  fs::remove(d / "wide.csv");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_TRUE(std::regex_search(r.err, std::regex("wide.csv:3: line longer than 1048576 bytes"))) << r.err;
+  EXPECT_FALSE(fs::exists(d / "out"));
+  struct rusage ru;
+  ASSERT_EQ(getrusage(RUSAGE_CHILDREN, &ru), 0);
+  EXPECT_LT(ru.ru_maxrss, 16 * 1024) << "kB resident at most in a child";
 }
 
 // ---- a penetrometer's depth-sampled log, as a commercial logger writes it: metadata
@@ -806,4 +882,87 @@ TEST(ImportRoundTrip, GefConePenetrationTestNeedsNoMapping)
                              " --D 2 --g 981");
   EXPECT_EQ(bad.status, 1);
   EXPECT_NE(bad.err.find("noarea.gef: GEF: no #MEASUREMENTVAR= 1 (the cone's area)"), std::string::npos) << bad.err;
+}
+
+// ---- the property (issue 36, class 5): whatever import writes with exit 0, `granpen check`
+// accepts. Generated instrument files and mappings, their numbers drawn over the whole range
+// of a double (units, surface, onset force, sample rate, window, --v0, --D, --g, --d_g, the
+// values' scale), most of them sound: each import either exits 0 and every trace it wrote
+// passes check, or exits 1 or 2 with a message and writes nothing.
+namespace {
+
+// 10^u, u uniform in [lo, hi]
+double decade(std::mt19937 &rng, double lo, double hi) { return std::pow(10.0, std::uniform_real_distribution<double>(lo, hi)(rng)); }
+
+// a value: mostly ordinary (10^[-3, 3]), sometimes anywhere in a double's range
+double wild(std::mt19937 &rng)
+{
+  return std::uniform_int_distribution<int>(0, 3)(rng) ? decade(rng, -3, 3) : decade(rng, -310, 308);
+}
+
+struct GeneratedImport {
+  std::string file, mapping, args;
+};
+
+GeneratedImport generate(std::mt19937 &rng)
+{
+  auto pick = [&](int n) { return std::uniform_int_distribution<int>(0, n - 1)(rng); };
+  GeneratedImport g;
+  const bool sample_rate = pick(4) == 0, tab = pick(2);
+  const char sep = tab ? '\t' : ',';
+  const double scale_x = pick(5) ? 1.0 : wild(rng), scale_F = pick(5) ? 1.0 : wild(rng);
+  const double dt = pick(5) ? 1e-4 : wild(rng);
+  const int n = 12 + pick(300);
+  g.file = std::string("t") + sep + "F" + sep + "x\n";
+  for (int i = 0; i < n; ++i) {
+    const double x = (-0.5 + 100.0 * 1e-4 * i) * scale_x, F = (x > 0 ? 5000.0 * x / scale_x : 0.0) * scale_F;
+    g.file += fmt("%.10g", i * dt) + sep + fmt("%.10g", F) + sep + fmt("%.10g", x) + "\n";
+  }
+  static const char *force_units[] = {"N", "kN", "mN", "lbf", "dyne"}, *lengths[] = {"m", "cm", "mm", "um", "in"};
+  g.mapping = std::string(sample_rate ? "sample_rate = " + fmt("%.6g", wild(rng)) : "time = t") + "\nforce = F\n" +
+              "force_unit = " + force_units[pick(5)] + "\ndisplacement = x\nposition_unit = " + lengths[pick(5)] + "\n" +
+              "tare_rows = " + std::to_string(1 + pick(10)) + "\nspeed_rows = " + std::to_string(2 + pick(10)) + "\n";
+  if (pick(2))
+    g.mapping += "surface = " + fmt("%.6g", (pick(2) ? 1 : -1) * (pick(3) ? 0.0 : wild(rng))) + "\n";
+  else
+    g.mapping += "onset_force = " + fmt("%.6g", wild(rng)) + "\n";
+  if (!pick(3)) g.mapping += "window = " + fmt("%.6g", pick(2) ? decade(rng, -25, 0) : wild(rng)) + "\n";
+  g.args = " --D " + fmt("%.6g", pick(3) ? 2.0 : wild(rng)) + " --g " + fmt("%.6g", pick(3) ? 981.0 : wild(rng));
+  if (pick(2)) g.args += " --v0 " + fmt("%.6g", pick(2) ? 100.0 : wild(rng));
+  if (!pick(4)) g.args += " --d_g " + fmt("%.6g", wild(rng));
+  if (!pick(4)) g.args += " --units si";
+  return g;
+}
+
+}    // namespace
+
+TEST(ImportProperty, WhatImportWritesWithExitZeroPassesCheck)
+{
+  std::mt19937 rng(36);
+  const int cases = 150;
+  int written = 0, refused = 0;
+  for (int k = 0; k < cases; ++k) {
+    const GeneratedImport g = generate(rng);
+    const fs::path d = fresh("property");
+    write(d / "lab.csv", g.file);
+    write(d / "m.map", g.mapping);
+    const CliRun r = cli(d, "import " + (d / "lab.csv").string() + " --mapping " + (d / "m.map").string() + " --out " +
+                                (d / "out").string() + g.args);
+    SCOPED_TRACE("case " + std::to_string(k) + ": mapping\n" + g.mapping + "args" + g.args + "\n" + r.err);
+    if (r.status == 0) {
+      ++written;
+      const CliRun c = cli(d, "check " + (d / "out" / "lab.csv").string());
+      EXPECT_EQ(c.status, 0) << c.out << c.err;
+    } else {
+      ++refused;
+      EXPECT_TRUE(r.status == 1 || r.status == 2);
+      EXPECT_NE(r.err.find("granpen import: "), std::string::npos);
+      EXPECT_EQ(r.err.find("what()"), std::string::npos);
+      EXPECT_FALSE(fs::exists(d / "out"));
+    }
+  }
+  // neither side of the property empty (the generator reaches both)
+  EXPECT_GT(written, cases / 5);
+  EXPECT_GT(refused, cases / 10);
+  std::printf("property: %d imports written and checked, %d refused\n", written, refused);
 }

@@ -100,6 +100,32 @@ TEST(EnsembleMean, MeanAndStandardErrorOfAlignedRuns)
   EXPECT_THROW(ensemble_mean({{0, 1}, {5, 6}}, {{1, 2}, {1, 2}}, EnsembleParams{0.0, false}), std::invalid_argument);
 }
 
+// Issue 36, class 2: two runs whose depths repeat in pairs 1e-7 cm apart (a logger writing
+// each depth twice) made the default bin the median step, 1e-7 cm: 4e7 bins a run, and
+// "out of memory". The default bin is now at least the mean step (0.005 cm here: about a
+// sample a bin, as the median step gives for evenly sampled runs), and never makes more than
+// kMaxEnsembleBins bins; a bin given finer than that is refused.
+TEST(EnsembleMean, DepthsRepeatedATinyStepApartKeepTheRunsResolution)
+{
+  std::vector<std::vector<double>> z(2), F(2);
+  for (int r = 0; r < 2; ++r)
+    for (int i = 0; i < 2000; ++i) {
+      const double depth = -0.5 + 0.01 * (i / 2) + (i % 2) * 1e-7;
+      z[r].push_back(depth);
+      F[r].push_back(depth > 0 ? 1000.0 * depth * (1.0 + 0.1 * r) : 0.0);
+    }
+  const EnsembleMean e = ensemble_mean(z, F, EnsembleParams{0.0, false});
+  // the mean step: 9.99 cm over 1999 steps, 0.005 cm (the factor: round-off of the steps' sum)
+  EXPECT_GE(e.bin, 9.99 / 1999.0 * (1 - 1e-12));
+  EXPECT_LE(e.z.size(), 2000u);    // 9.99 cm / 0.005 cm (before: 1e8)
+  // a bin of 1e-9 cm over 10 cm: 1e10 bins, refused
+  EXPECT_THROW(ensemble_mean(z, F, EnsembleParams{1e-9, false}), std::invalid_argument);
+  // a million-sample trace over 1 cm keeps at most kMaxEnsembleBins by default
+  std::vector<std::vector<double>> zd(1), Fd(1);
+  for (int i = 0; i < 1000000; ++i) zd[0].push_back(i * 1e-6), Fd[0].push_back(i * 1e-3);
+  EXPECT_LE(ensemble_mean(zd, Fd, EnsembleParams{0.0, false}).z.size(), kMaxEnsembleBins);
+}
+
 // The checkable uncertainty: runs F_i = k z + a_i + b_i z + e_i(z) with run offsets a_i,
 // run slopes b_i (a bed's packing) and independent noise e per sample. The slope of the
 // ensemble mean over the window has the standard error

@@ -5,6 +5,7 @@
 // LAMMPS wrote them) dumps of a small deck against LAMMPS's own values.
 #include "dump_reader.h"
 #include "fuzz_bodies.h"
+#include "fuzz_instrument_body.h"
 
 #include <gtest/gtest.h>
 #include <zlib.h>
@@ -604,7 +605,7 @@ TEST(FuzzRegressions, CommittedInputsReplayCleanly)
 {
   const fs::path root = GRANPEN_FUZZ_DIR;
   int n = 0;
-  for (const char *kind : {"dump", "trace"})
+  for (const char *kind : {"dump", "trace", "instrument"})
     for (const char *sub : {"corpus", "regressions"}) {
       const fs::path dir = root / sub / kind;
       if (!fs::is_directory(dir)) continue;
@@ -613,6 +614,8 @@ TEST(FuzzRegressions, CommittedInputsReplayCleanly)
         SCOPED_TRACE(e.path().string());
         if (std::string(kind) == "dump")
           granpen_fuzz::dump_body(e.path().string(), fs::file_size(e.path()));
+        else if (std::string(kind) == "instrument")
+          granpen_fuzz::instrument_body(read_bytes(e.path().string()));
         else
           granpen_fuzz::trace_body(read_bytes(e.path().string()));
         ++n;
