@@ -5,7 +5,6 @@
 #include "json_text.h"
 #include "json_writer.h"
 #include "scaling_laws.h"
-#include "trace_fit.h"
 #include "trace_reader.h"
 
 #include <algorithm>
@@ -15,6 +14,7 @@
 #include <filesystem>
 #include <map>
 #include <sstream>
+#include <utility>
 
 namespace granpen {
 
@@ -190,7 +190,7 @@ std::string gnuplot_script(const std::vector<CalibrationRow> &rows)
 
 }    // namespace
 
-CalibrationSweep read_calibration_sweep(const std::string &sweep, double zmin, double zmax)
+CalibrationSweep read_calibration_sweep(const std::string &sweep)
 {
   CalibrationSweep sw;
   // beds
@@ -252,32 +252,33 @@ CalibrationSweep read_calibration_sweep(const std::string &sweep, double zmin, d
       if (!key("rho_g", rho_g))
         sw.notes.push_back(f + ": no rho_g header key; alpha uses rho_g = " + json_number("%g", rho_g) + " g/cm^3");
 
-      TraceFitParams par;
-      par.zlo = zmin;
-      par.zhi = zmax;
-      par.v0 = tr.v0;
-      par.D = tr.D;
-      par.g = tr.g;
-      par.mu = p.mu;
-      par.rho_g = rho_g;
-      double dg = 0.4;
-      key("d_g", dg);
-      par.d_g = dg;
-      const TraceFit fit = fit_trace(tr.z, tr.F, par);
-      if (!fit.slope_ok) {
-        sw.problems.push_back(f + ": " + (fit.notes.empty() ? std::string("k_z undefined") : fit.notes.front()));
-        continue;
-      }
-      p.k_z = fit.k_z;
-      p.alpha = fit.alpha_ok ? fit.alpha : 0.0;
-      if (!fit.alpha_ok) sw.notes.push_back(f + ": alpha undefined, counted as 0");
-      sw.pushes.push_back(p);
+      CalibrationTrace t;
+      t.push = p;
+      t.z = tr.z, t.F = tr.F, t.D = tr.D, t.g = tr.g, t.rho_g = rho_g;
+      t.d_g = 0.4;
+      key("d_g", t.d_g);
+      sw.pushes.push_back(std::move(t));
+      sw.push_files.push_back(f);
+      sw.problems_at.push_back(sw.problems.size()), sw.notes_at.push_back(sw.notes.size());
     } catch (std::exception &e) {
       sw.problems.push_back(e.what());
     }
   }
 
   return sw;
+}
+
+void calibration_messages(const CalibrationSweep &sw, const CalibrationStudy &st, std::vector<std::string> &problems,
+                          std::vector<std::string> &notes)
+{
+  problems = sw.problems, notes = sw.notes;
+  // from the last push back, so that the earlier positions stay valid
+  for (std::size_t i = std::min(sw.pushes.size(), st.fits.size()); i-- > 0;) {
+    const CalibrationFitOutcome &o = st.fits[i];
+    const std::string &f = sw.push_files[i];
+    if (!o.ok) problems.insert(problems.begin() + sw.problems_at[i], o.refused ? o.why : f + ": " + o.why);
+    else if (!o.alpha_ok) notes.insert(notes.begin() + sw.notes_at[i], f + ": alpha undefined, counted as 0");
+  }
 }
 
 std::string calibration_markdown(const std::vector<CalibrationRow> &rows, double zmin, double zmax)
