@@ -42,23 +42,26 @@ int granpen::cli::run_calibration(const CalibrationOptions &o)
   for (const auto &n : notes) std::printf("note: %s\n", n.c_str());
 
   make_output_dir(out);
-  const fs::path od(out);
   int status = problems.empty() ? 0 : 1;
   const auto outputs = calibration_files(rows, sweep, zmin, zmax, problems, out);
+  const auto figures = calibration_figures(rows);
   std::vector<std::string> inputs = sw.info_files;
   inputs.insert(inputs.end(), sw.trace_files.begin(), sw.trace_files.end());
   for (const auto &o : outputs) refuse_overwriting_inputs(o.first, "--out", inputs);
+  for (const auto &f : figures)
+    for (const char *ext : {".gp", ".dat"}) refuse_overwriting_inputs((fs::path(out) / (f.name + ext)).string(), "--out", inputs);
   write_files_atomic(outputs);
-  for (std::size_t k = 0; k + 1 < outputs.size(); ++k) std::printf("wrote %s\n", outputs[k].first.c_str());
-  bool missing = false;
-  const std::string why = granpen::run_gnuplot(od.string(), "calibration.gp", missing);
-  if (!why.empty() && !missing) status = 1;
-  if (why.empty())
-    std::printf("wrote %s and %s (script %s)\n", (od / "calibration_phi0.png").c_str(),
-                (od / "calibration_kz.png").c_str(), (od / "calibration.gp").c_str());
-  else
-    std::printf("granpen calibration: no plots: %s; the tables are written (script %s)\n", why.c_str(),
-                (od / "calibration.gp").c_str());
+  for (const auto &o : outputs) std::printf("wrote %s\n", o.first.c_str());
+  for (const auto &f : figures) {
+    const PlotResult r = write_plot(out, f, true);
+    if (r.ran) std::printf("wrote %s and %s (script %s, data %s)\n", r.png.c_str(), r.svg.c_str(), r.script.c_str(), r.data.c_str());
+    else if (r.written && r.gnuplot_missing)
+      std::printf("granpen calibration: no plot: %s; the tables are written\n", r.error.c_str());
+    else {
+      std::fprintf(stderr, "granpen calibration: %s\n", r.error.c_str());
+      status = 1;
+    }
+  }
   if (!problems.empty())
     std::printf("granpen calibration: %zu problem%s (see above)\n", problems.size(), problems.size() == 1 ? "" : "s");
   return status;

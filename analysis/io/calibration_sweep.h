@@ -1,13 +1,14 @@
 // granpen analysis: a friction-calibration sweep folder (beds/*.info, traces/*.csv, as
 // granpen sweep writes it) read into the beds and pushes of core/calibration_study.h (which
 // fits and tabulates them), and the files granpen calibration writes from its table:
-// calibration.csv, calibration.json, calibration.md and calibration.gp (a gnuplot script,
-// data inline).
+// calibration.csv, calibration.json, calibration.md, and its figures (io/plot_writer.h):
+// calibration_phi0 and calibration_kz.
 #ifndef GRANPEN_CALIBRATION_SWEEP_H
 #define GRANPEN_CALIBRATION_SWEEP_H
 
 #include "calibration.h"
 #include "calibration_study.h"
+#include "plot_writer.h"
 
 #include <cstddef>
 #include <string>
@@ -39,11 +40,15 @@ void calibration_messages(const CalibrationSweep &sw, const CalibrationStudy &st
 // The table as markdown (the summary granpen calibration prints).
 std::string calibration_markdown(const std::vector<CalibrationRow> &rows, double zmin, double zmax);
 
-// (path in out_dir, text) of calibration.csv, .json, .md and .gp
+// (path in out_dir, text) of calibration.csv, .json and .md
 std::vector<std::pair<std::string, std::string>> calibration_files(const std::vector<CalibrationRow> &rows,
                                                                    const std::string &sweep, double zmin, double zmax,
                                                                    const std::vector<std::string> &problems,
                                                                    const std::string &out_dir);
+
+// The table's figures: calibration_phi0 (phi_0 of each bed and their mean +- sd against mu)
+// and calibration_kz (k_z of each push and their mean +- sd against mu, per v0).
+std::vector<PlotFiles> calibration_figures(const std::vector<CalibrationRow> &rows);
 
 }    // namespace granpen
 
