@@ -31,8 +31,8 @@ granpen::cli::CalibrationOptions granpen::cli::parse_calibration(int argc, char 
                                "widen the window for deeper beds.")
       ->type_name("Z");
   cmd.app.add_option("--out", o.out, "where to write (default SWEEP_DIR): calibration.csv, calibration.json,\n"
-                                     "calibration.md, and with gnuplot calibration_phi0.png and\n"
-                                     "calibration_kz.png (from calibration.gp, written beside them)")
+                                     "calibration.md, and the figures calibration_phi0 and calibration_kz\n"
+                                     "(.gp and .dat; with gnuplot .png and .svg)")
       ->check(file_name())->type_name("DIR");
   if (!cmd.parse(argc, argv, o.help)) return o;
   if (!(o.zmin < o.zmax)) throw UsageError("--zmin must be below --zmax");

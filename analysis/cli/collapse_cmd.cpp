@@ -1,22 +1,22 @@
 // granpen collapse TRACE-OR-FOLDER...: F/F_z against t~ = (z/v0) sqrt(g/D) over a set of
-// traces, the crossover t~*, the collapse quality and the peak law (core/collapse.h); with
-// --ensemble the same from the ensemble means with run-to-run uncertainties
-// (core/ensemble_fit.h).
+// traces, the crossover t~*, the collapse quality and the peak law; with --ensemble the same
+// from the ensemble means with run-to-run uncertainties (core/collapse_study.h runs them all).
 #include "atomic_file.h"
 #include "options.h"
 #include "collapse.h"
+#include "collapse_study.h"
 #include "ensemble_tables.h"
 #include "json_text.h"
 #include "collapse_tables.h"
 #include "json_writer.h"
 #include "subcommands.h"
-#include "trace_fit.h"
 #include "trace_files.h"
 #include "trace_reader.h"
 
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -71,20 +71,6 @@ void print_result(const CollapseResult &r, const CollapseParams &p)
     std::printf("peak law: needs at least 3 traces over 2 or more speeds\n");
 }
 
-// The peak law needs no depth term: from every trace read (k_z = 1), copied into r.
-void peak_law_of_all(const std::vector<Trace> &traces, const CollapseParams &p, CollapseResult &r)
-{
-  std::vector<CollapseInput> all;
-  for (const auto &t : traces) {
-    CollapseInput c;
-    c.name = t.path, c.z = t.z, c.F = t.F, c.v0 = t.v0, c.D = t.D, c.g = t.g, c.k_z = 1.0;
-    all.push_back(c);
-  }
-  if (all.empty()) return;
-  const CollapseResult law = granpen::collapse(all, p);
-  r.peak_law = law.peak_law;
-}
-
 void print_ensembles(const std::vector<TraceGroup> &groups, const EnsembleCollapse &c, const CollapseParams &p)
 {
   const CollapseResult &r = c.result;
@@ -119,50 +105,39 @@ void print_ensembles(const std::vector<TraceGroup> &groups, const EnsembleCollap
   print_two_term(r.peak_law, " (of the ensemble means, errors from their residuals)");
 }
 
-// The peak law of every ensemble (k_z = 1: the peaks need no depth term), into c.
-void ensemble_peak_law(const std::vector<TraceGroup> &groups, const CollapseParams &p, const cli::EnsembleOptions &ens,
-                       EnsembleCollapse &c)
+// The notes of the study's depth terms: windows shortened, then the traces left out.
+void print_depth_notes(const std::vector<Trace> &traces, const std::vector<DepthTermOutcome> &depth,
+                       std::size_t &left_out_count, std::vector<std::string> &left_out)
 {
-  std::vector<EnsembleCase> cases;
-  for (const auto &g : groups) {
-    EnsembleCase k;
-    k.name = g.label(), k.v0 = g.v0, k.g = g.g, k.D = g.D, k.mean = g.mean, k.k_z_fixed = 1.0;
-    cases.push_back(k);
+  for (std::size_t i = 0; i < depth.size(); ++i)
+    if (depth[i].window_shortened) std::printf("note: %s\n", (traces[i].path + ": " + depth[i].window_note).c_str());
+  for (std::size_t i = 0; i < depth.size(); ++i) {
+    const DepthTermOutcome &d = depth[i];
+    if (d.ok) continue;
+    left_out.push_back(traces[i].path + ": no positive depth term over the k_z window z = " + json_number("%g", d.zlo) +
+                       ".." + json_number("%.3g", d.zhi) + " cm (k_z = " + json_number("%.3g", d.k_z) +
+                       " dyne/cm); left out (--kz-zmin/--kz-zmax, --alpha or --ensemble may help)");
+    std::printf("note: %s\n", left_out.back().c_str());
   }
-  if (cases.empty()) return;
-  const EnsembleCollapse law = collapse_ensembles(cases, p, ens.boot);
-  c.peak_exponent = law.peak_exponent;
-  c.result.peak_law = peak_law_of_means(law);
+  left_out_count = left_out.size();
 }
 
-// --ensemble: groups averaged, their depth terms (an ensemble without a positive one is
-// left out, named), the collapse of the means with bootstrap uncertainties
-bool collapse_ensembled(const std::vector<Trace> &traces, const DepthTerm &dt, const CollapseParams &p,
-                        const cli::EnsembleOptions &ens, std::vector<TraceGroup> &groups, EnsembleCollapse &out)
+// --ensemble: the groups' averaging problems and the ensembles the study left out (named),
+// then the collapse of the means with the peak law of every ensemble; false: none usable.
+bool ensembles_of_study(const CollapseStudy &s, std::vector<TraceGroup> &groups, std::vector<std::string> left,
+                        EnsembleCollapse &out)
 {
-  std::vector<std::string> left;
-  groups = group_traces(traces, ens.mean.v0_tolerance);
-  average_groups(groups, ens.mean, left);
-  std::vector<EnsembleCase> cases;
-  std::vector<TraceGroup> kept;
-  for (auto &g : groups) {
-    EnsembleCase c;
-    c.name = g.label(), c.v0 = g.v0, c.g = g.g, c.D = g.D, c.mean = g.mean;
-    const Trace &head = g.traces.front();
-    if (dt.alpha > 0) c.k_z_fixed = alpha_depth_term(dt, head);
-    else c.kz_fit = depth_term_window(dt, head);
-    if (!(ensemble_depth_term(c) > 0)) {
-      left.push_back("ensemble " + g.label() + ": no positive depth term on the mean of its " +
-                     std::to_string(g.mean.runs) + " runs; left out");
-      continue;
-    }
-    cases.push_back(std::move(c));
-    kept.push_back(g);    // copied: every group still gives the peak law
-  }
+  for (std::size_t i : s.ensembles.left_out)
+    left.push_back("ensemble " + groups[i].label() + ": no positive depth term on the mean of its " +
+                   std::to_string(groups[i].mean.runs) + " runs; left out");
   for (const auto &m : left) std::printf("note: %s\n", m.c_str());
-  if (cases.empty()) return false;
-  out = collapse_ensembles(cases, p, ens.boot);
-  ensemble_peak_law(groups, p, ens, out);    // every ensemble, with or without k_z
+  if (s.refused) throw std::invalid_argument(s.refusal);
+  if (s.ensembles.kept.empty()) return false;
+  out = s.ensembles.collapse;
+  out.peak_exponent = s.ensemble_peaks.peak_exponent;    // every ensemble, with or without k_z
+  out.result.peak_law = s.ensemble_peak_law;
+  std::vector<TraceGroup> kept;
+  for (std::size_t i : s.ensembles.kept) kept.push_back(groups[i]);
   groups = std::move(kept);
   return true;
 }
@@ -175,24 +150,36 @@ int granpen::cli::run_collapse(const CollapseOptions &o)
   const CollapseParams &p = o.params;
   const DepthTerm &dt = o.depth;
   const EnsembleOptions &ens = o.ensemble;
-  std::vector<std::string> problems, left_out, notes;
+  std::vector<std::string> problems, left_out, ens_problems;
   const auto files = expand_trace_paths(o.traces, problems);
   const std::vector<std::pair<std::string, std::string>> outputs = {{"--csv", csv}, {"--json", json}};
   refuse_shared_outputs(outputs);
   for (const auto &output : outputs)
     if (!output.second.empty()) refuse_overwriting_inputs(output.second, output.first, files);
   const std::vector<Trace> traces = read_traces(files, problems);
-  const std::vector<CollapseInput> in = collapse_inputs(traces, dt, left_out, notes);
+  std::vector<TraceGroup> groups;
+  if (ens.on) {
+    groups = group_traces(traces, ens.mean.v0_tolerance);
+    average_groups(groups, ens.mean, ens_problems);
+  }
+  CollapseStages stages;
+  stages.peaks = true;
+  stages.ensembles = stages.ensemble_peaks = ens.on;
+  const CollapseStudy s = run_collapse_study(collapse_traces(traces, dt), collapse_ensemble_inputs(groups, dt),
+                                             collapse_study_params(p, dt, ens.boot), stages);
+  const bool refused_on_traces = s.refused && s.refused_at <= CollapseStage::peaks;
+  if (s.refused && s.refused_at == CollapseStage::depth_terms) throw std::invalid_argument(s.refusal);
   for (const auto &m : problems) std::fprintf(stderr, "granpen collapse: %s\n", m.c_str());
-  for (const auto &m : notes) std::printf("note: %s\n", m.c_str());
-  for (const auto &m : left_out) std::printf("note: %s\n", m.c_str());
+  std::size_t n_left = 0;
+  print_depth_notes(traces, s.depth, n_left, left_out);
+  if (refused_on_traces) throw std::invalid_argument(s.refusal);
 
   CollapseResult r;
-  if (!in.empty()) {
-    r = granpen::collapse(in, p);
-    peak_law_of_all(traces, p, r);
+  if (s.collapsed) {
+    r = s.result;
+    r.peak_law = s.peaks.peak_law;    // the peak law needs no depth term: from every trace read
     std::printf("granpen collapse: %zu traces%s, band 1 +- %g, t~ bins of %g\n", r.curves.size(),
-                left_out.empty() ? "" : (" (" + std::to_string(left_out.size()) + " left out)").c_str(), p.band, p.tbin);
+                n_left == 0 ? "" : (" (" + std::to_string(n_left) + " left out)").c_str(), p.band, p.tbin);
     print_result(r, p);
   } else if (!ens.on) {
     std::fprintf(stderr, "granpen collapse: no usable trace\n");
@@ -200,9 +187,8 @@ int granpen::cli::run_collapse(const CollapseOptions &o)
   } else {
     std::printf("granpen collapse: no single trace has a positive k_z over the window; ensembles only\n");
   }
-  std::vector<TraceGroup> groups;
   EnsembleCollapse ec;
-  const bool have_ens = ens.on && collapse_ensembled(traces, dt, p, ens, groups, ec);
+  const bool have_ens = ens.on && ensembles_of_study(s, groups, ens_problems, ec);
   if (ens.on && !have_ens) {
     std::fprintf(stderr, "granpen collapse: no usable ensemble\n");
     return EXIT_FAILED;

@@ -1,8 +1,12 @@
 // granpen plot KIND INPUTS... --out DIR: the paper's figure types as gnuplot scripts
 // with their data beside them, run to PNG and SVG (io/figures.h, io/plot_writer.h):
-// parse, make the figures, write KIND.json.
+// parse, make the figures (ratio and peak: read, run core/collapse_study.h, draw), write
+// KIND.json.
 #include "atomic_file.h"
 #include "options.h"
+#include "collapse_study.h"
+#include "collapse_tables.h"
+#include "ensemble_tables.h"
 #include "figures.h"
 #include "json_writer.h"
 #include "subcommands.h"
@@ -10,6 +14,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -54,6 +59,72 @@ granpen::Json plot_record(const std::string &kind, const granpen::figures::Run &
   return j;
 }
 
+// --ensemble: the runs of each (v0, g, D) averaged; a group that cannot be, a problem of the run
+std::vector<granpen::TraceGroup> averaged_groups(const std::vector<granpen::figures::TraceIn> &traces,
+                                                 granpen::figures::Run &run)
+{
+  std::vector<granpen::Trace> tr;
+  for (const auto &t : traces) tr.push_back(t.tr);
+  auto groups = granpen::group_traces(tr, run.opt.ens.v0_tolerance);
+  granpen::average_groups(groups, run.opt.ens, run.problems);
+  return groups;
+}
+
+// the study's traces, named by their files
+std::vector<granpen::CollapseTrace> study_traces(const std::vector<granpen::figures::TraceIn> &traces,
+                                                 const granpen::DepthTerm &dt)
+{
+  std::vector<granpen::Trace> tr;
+  for (const auto &t : traces) tr.push_back(t.tr);
+  auto out = granpen::collapse_traces(tr, dt);
+  for (std::size_t i = 0; i < out.size(); ++i) out[i].name = traces[i].file;
+  return out;
+}
+
+// ratio: the collapse of the traces, or with --ensemble of their groups' means
+void ratio(const std::vector<std::string> &inputs, granpen::figures::Run &run)
+{
+  using namespace granpen;
+  const auto traces = figures::load_traces(inputs, run);
+  const DepthTerm dt = figures::depth_term_of(run.opt);
+  const bool ens = run.opt.ensemble;
+  std::vector<TraceGroup> groups;
+  if (ens) groups = averaged_groups(traces, run);
+  CollapseStages st;
+  st.collapse = !ens, st.ensembles = ens;
+  const CollapseStudy s = run_collapse_study(ens ? std::vector<CollapseTrace>() : study_traces(traces, dt),
+                                             collapse_ensemble_inputs(groups, dt),
+                                             collapse_study_params(run.opt.collapse, dt, run.opt.boot), st);
+  figures::plot_ratio(traces, groups, s, run);
+}
+
+// peak: the peaks of every trace, and with --ensemble those of the groups' means
+void peak(const std::vector<std::string> &inputs, granpen::figures::Run &run)
+{
+  using namespace granpen;
+  const auto traces = figures::load_traces(inputs, run);
+  if (traces.empty()) return;
+  const DepthTerm dt = figures::depth_term_of(run.opt);
+  const CollapseStudyParams sp = collapse_study_params(run.opt.collapse, dt, run.opt.boot);
+  CollapseStages st;
+  st.collapse = false, st.peaks = true;
+  const CollapseStudy s = run_collapse_study(study_traces(traces, dt), {}, sp, st);
+  if (s.refused) {
+    run.problems.push_back(s.refusal);
+    return;
+  }
+  std::vector<TraceGroup> groups;
+  CollapseStudy es;
+  if (run.opt.ensemble) {
+    groups = averaged_groups(traces, run);
+    CollapseStages est;
+    est.collapse = false, est.ensemble_peaks = true;
+    es = run_collapse_study({}, collapse_ensemble_inputs(groups, dt), sp, est);
+    if (es.refused) throw std::invalid_argument(es.refusal);
+  }
+  figures::plot_peak(traces, s.peaks, groups, run.opt.ensemble ? &es : nullptr, run);
+}
+
 }    // namespace
 
 int granpen::cli::run_plot(const PlotOptions &po)
@@ -75,8 +146,8 @@ int granpen::cli::run_plot(const PlotOptions &po)
   refuse_overwriting_inputs((fs::path(o.out) / (kind + ".json")).string(), "--out", input_files);
 
   if (kind == "force") plot_force(inputs, run);
-  else if (kind == "ratio") plot_ratio(inputs, run);
-  else if (kind == "peak") plot_peak(inputs, run);
+  else if (kind == "ratio") ratio(inputs, run);
+  else if (kind == "peak") peak(inputs, run);
   else if (kind == "kz") plot_kz(inputs, run);
   else if (kind == "flow") plot_flow(inputs, run);
   else if (kind == "momentum") plot_momentum(inputs, run);

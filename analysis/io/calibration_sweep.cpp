@@ -4,8 +4,8 @@
 #include "bed_info.h"
 #include "json_text.h"
 #include "json_writer.h"
+#include "plot_writer.h"
 #include "scaling_laws.h"
-#include "trace_fit.h"
 #include "trace_reader.h"
 
 #include <algorithm>
@@ -14,7 +14,7 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
-#include <sstream>
+#include <utility>
 
 namespace granpen {
 
@@ -118,79 +118,9 @@ Json json_table(const std::vector<CalibrationRow> &rows, const std::string &swee
   return j;
 }
 
-// gnuplot script with the data inline (datablocks); run in the output folder
-std::string gnuplot_script(const std::vector<CalibrationRow> &rows)
-{
-  double lo = 0, hi = 0;
-  bool any = false;
-  for (const auto &r : rows) {
-    lo = any ? std::min(lo, r.mu) : r.mu;
-    hi = any ? std::max(hi, r.mu) : r.mu;
-    any = true;
-  }
-  const double pad = hi > lo ? 0.1 * (hi - lo) : std::max(0.05, 0.1 * std::fabs(lo));
-  std::ostringstream o;
-  o << "# granpen calibration: phi_0 and k_z against the grain friction mu (written by granpen calibration)\n"
-    << "set encoding utf8\nset terminal pngcairo size 1000,600 font \",12\"\nset grid\nset key outside right top box\nset offsets 0, 0, graph 0.05, graph 0.05\n"
-    << "set xrange [" << num(lo - pad) << ":" << num(hi + pad) << "]\n"
-    << "set xlabel \"grain friction coefficient {/Symbol m}\"\n\n";
-
-  // phi_0: per-bed points, mean +- sd per mu
-  o << "$beds << EOD\n# mu phi_0 seed\n";
-  for (const auto &r : rows) {
-    if (&r != &rows.front() && r.mu == (&r - 1)->mu) continue;    // each mu's beds once
-    for (const auto &b : r.beds) o << num(b.mu) << " " << num(b.phi_0) << " " << num(b.seed) << "\n";
-  }
-  o << "EOD\n$phi << EOD\n# mu mean sd n\n";
-  for (const auto &r : rows) {
-    if (&r != &rows.front() && r.mu == (&r - 1)->mu) continue;
-    if (r.phi_0.n) o << num(r.mu) << " " << num(r.phi_0.mean) << " " << num(r.phi_0.sd) << " " << r.phi_0.n << "\n";
-  }
-  o << "EOD\n"
-    << "set output \"calibration_phi0.png\"\nset title \"Bed packing fraction against friction\"\n"
-    << "set ylabel \"packing fraction {/Symbol f}_0\"\n"
-    << "plot $phi using 1:2:3 with yerrorbars pt 7 ps 1.5 lw 2 lc rgb \"#1f77b4\" title \"mean ± sd over seeds\", \\\n"
-    << "     $beds using 1:2 with points pt 6 ps 1.2 lc rgb \"#555555\" title \"each seed's bed\"\n"
-    << "unset output\n\n";
-
-  // k_z: one series per v0
-  std::vector<double> v0s;
-  for (const auto &r : rows)
-    if (!r.pushes.empty() && std::find(v0s.begin(), v0s.end(), r.v0) == v0s.end()) v0s.push_back(r.v0);
-  for (std::size_t i = 0; i < v0s.size(); ++i) {
-    o << "$kz" << i << " << EOD\n# mu mean sd n\n";
-    for (const auto &r : rows)
-      if (!r.pushes.empty() && r.v0 == v0s[i])
-        o << num(r.mu) << " " << num(r.k_z.mean) << " " << num(r.k_z.sd) << " " << r.k_z.n << "\n";
-    o << "EOD\n$pts" << i << " << EOD\n# mu k_z seed\n";
-    for (const auto &r : rows)
-      if (!r.pushes.empty() && r.v0 == v0s[i])
-        for (const auto &p : r.pushes) o << num(p.mu) << " " << num(p.k_z) << " " << num(p.seed) << "\n";
-    o << "EOD\n";
-  }
-  o << "set output \"calibration_kz.png\"\nset title \"Depth term k_z against friction\"\n"
-    << "set ylabel \"k_z (dyne/cm)\"\n";
-  if (v0s.empty()) {
-    o << "set label 1 \"no fitted pushes\" at graph 0.5, graph 0.5 center\nset yrange [0:1]\n"
-      << "plot 1/0 notitle\n";
-  } else {
-    const char *colours[] = {"#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#17becf"};
-    o << "plot ";
-    for (std::size_t i = 0; i < v0s.size(); ++i) {
-      const char *c = colours[i % 6];
-      o << (i ? ", \\\n     " : "") << "$kz" << i << " using 1:2:3 with yerrorbars pt 7 ps 1.5 lw 2 lc rgb \"" << c
-        << "\" title \"v_0 = " << json_number("%g", v0s[i]) << " cm/s: mean ± sd over seeds\", \\\n     $pts" << i
-        << " using 1:2 with points pt 6 ps 1.2 lc rgb \"" << c << "\" title \"each seed's push\"";
-    }
-    o << "\n";
-  }
-  o << "unset output\n";
-  return o.str();
-}
-
 }    // namespace
 
-CalibrationSweep read_calibration_sweep(const std::string &sweep, double zmin, double zmax)
+CalibrationSweep read_calibration_sweep(const std::string &sweep)
 {
   CalibrationSweep sw;
   // beds
@@ -252,32 +182,33 @@ CalibrationSweep read_calibration_sweep(const std::string &sweep, double zmin, d
       if (!key("rho_g", rho_g))
         sw.notes.push_back(f + ": no rho_g header key; alpha uses rho_g = " + json_number("%g", rho_g) + " g/cm^3");
 
-      TraceFitParams par;
-      par.zlo = zmin;
-      par.zhi = zmax;
-      par.v0 = tr.v0;
-      par.D = tr.D;
-      par.g = tr.g;
-      par.mu = p.mu;
-      par.rho_g = rho_g;
-      double dg = 0.4;
-      key("d_g", dg);
-      par.d_g = dg;
-      const TraceFit fit = fit_trace(tr.z, tr.F, par);
-      if (!fit.slope_ok) {
-        sw.problems.push_back(f + ": " + (fit.notes.empty() ? std::string("k_z undefined") : fit.notes.front()));
-        continue;
-      }
-      p.k_z = fit.k_z;
-      p.alpha = fit.alpha_ok ? fit.alpha : 0.0;
-      if (!fit.alpha_ok) sw.notes.push_back(f + ": alpha undefined, counted as 0");
-      sw.pushes.push_back(p);
+      CalibrationTrace t;
+      t.push = p;
+      t.z = tr.z, t.F = tr.F, t.D = tr.D, t.g = tr.g, t.rho_g = rho_g;
+      t.d_g = 0.4;
+      key("d_g", t.d_g);
+      sw.pushes.push_back(std::move(t));
+      sw.push_files.push_back(f);
+      sw.problems_at.push_back(sw.problems.size()), sw.notes_at.push_back(sw.notes.size());
     } catch (std::exception &e) {
       sw.problems.push_back(e.what());
     }
   }
 
   return sw;
+}
+
+void calibration_messages(const CalibrationSweep &sw, const CalibrationStudy &st, std::vector<std::string> &problems,
+                          std::vector<std::string> &notes)
+{
+  problems = sw.problems, notes = sw.notes;
+  // from the last push back, so that the earlier positions stay valid
+  for (std::size_t i = std::min(sw.pushes.size(), st.fits.size()); i-- > 0;) {
+    const CalibrationFitOutcome &o = st.fits[i];
+    const std::string &f = sw.push_files[i];
+    if (!o.ok) problems.insert(problems.begin() + sw.problems_at[i], o.refused ? o.why : f + ": " + o.why);
+    else if (!o.alpha_ok) notes.insert(notes.begin() + sw.notes_at[i], f + ": alpha undefined, counted as 0");
+  }
 }
 
 std::string calibration_markdown(const std::vector<CalibrationRow> &rows, double zmin, double zmax)
@@ -294,8 +225,76 @@ std::vector<std::pair<std::string, std::string>> calibration_files(const std::ve
   const std::string title = "# Friction calibration: " + md_cell(sweep) + "\n\n";
   return {{(od / "calibration.csv").string(), csv_table(rows)},
           {(od / "calibration.json").string(), json_layout(json_table(rows, sweep, zmin, zmax, problems), 1)},
-          {(od / "calibration.md").string(), title + markdown(rows, zmin, zmax)},
-          {(od / "calibration.gp").string(), gnuplot_script(rows)}};
+          {(od / "calibration.md").string(), title + markdown(rows, zmin, zmax)}};
+}
+
+namespace {
+
+// the mu axis: the rows' range padded by a tenth (or 0.05 about a single mu)
+void mu_axis(const std::vector<CalibrationRow> &rows, SeriesPanel &p)
+{
+  if (rows.empty()) return;
+  double lo = rows.front().mu, hi = lo;
+  for (const auto &r : rows) lo = std::min(lo, r.mu), hi = std::max(hi, r.mu);
+  const double pad = hi > lo ? 0.1 * (hi - lo) : std::max(0.05, 0.1 * std::fabs(lo));
+  p.xmin = lo - pad, p.xmax = hi + pad;
+  p.xlabel = "grain friction coefficient μ";
+  p.extra = "set offsets 0, 0, graph 0.05, graph 0.05\n";
+}
+
+PlotSeries points(const std::string &title, const std::string &colour, int type, double size)
+{
+  PlotSeries s;
+  s.style = "points", s.title = title, s.colour = colour, s.point_type = type, s.point_size = size;
+  return s;
+}
+
+}    // namespace
+
+std::vector<PlotFiles> calibration_figures(const std::vector<CalibrationRow> &rows)
+{
+  // phi_0: each bed, and the mean +- sd of each mu (every row of a mu holds its beds)
+  SeriesPanel a;
+  mu_axis(rows, a);
+  a.ylabel = "packing fraction φ_0";
+  PlotSeries mean = points("mean ± sd over seeds", "#1f77b4", 7, 1.5), beds = points("each seed's bed", "#555555", 6, 1.2);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const CalibrationRow &r = rows[i];
+    if (i > 0 && r.mu == rows[i - 1].mu) continue;
+    for (const auto &b : r.beds) beds.x.push_back(b.mu), beds.y.push_back(b.phi_0);
+    if (r.phi_0.n) mean.x.push_back(r.mu), mean.y.push_back(r.phi_0.mean), mean.y_err.push_back(r.phi_0.sd);
+  }
+  a.series = {mean, beds};
+  SeriesFigure phi;
+  phi.name = "calibration_phi0", phi.title = "Bed packing fraction against friction", phi.width = 1000, phi.height = 600;
+  phi.about = "granpen calibration: the packing fraction phi_0 of each poured bed against the grain friction mu,\n"
+              "and the mean +- sample sd over the beds of each mu.";
+  phi.panels = {a};
+
+  // k_z: per v0 the mean +- sd of each mu, and each push
+  SeriesPanel b;
+  mu_axis(rows, b);
+  b.ylabel = "k_z (dyne/cm)";
+  std::vector<double> v0s;
+  for (const auto &r : rows)
+    if (!r.pushes.empty() && std::find(v0s.begin(), v0s.end(), r.v0) == v0s.end()) v0s.push_back(r.v0);
+  for (std::size_t i = 0; i < v0s.size(); ++i) {
+    const std::string colour = plot_colour((int) i);
+    PlotSeries m = points("v_0 = " + json_number("%g", v0s[i]) + " cm/s: mean ± sd over seeds", colour, 7, 1.5);
+    PlotSeries each = points("each seed's push", colour, 6, 1.2);
+    for (const auto &r : rows) {
+      if (r.pushes.empty() || r.v0 != v0s[i]) continue;
+      m.x.push_back(r.mu), m.y.push_back(r.k_z.mean), m.y_err.push_back(r.k_z.sd);
+      for (const auto &p : r.pushes) each.x.push_back(p.mu), each.y.push_back(p.k_z);
+    }
+    b.series.push_back(m), b.series.push_back(each);
+  }
+  SeriesFigure kz;
+  kz.name = "calibration_kz", kz.title = "Depth term k_z against friction", kz.width = 1000, kz.height = 600;
+  kz.about = "granpen calibration: the depth term k_z of each push against the grain friction mu, per v0,\n"
+             "and the mean +- sample sd over the pushes of each mu.";
+  kz.panels = {b};
+  return {series_figure(phi), series_figure(kz)};
 }
 
 }    // namespace granpen

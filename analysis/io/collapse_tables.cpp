@@ -3,8 +3,9 @@
 
 #include "json_text.h"
 #include "scaling_laws.h"
-#include "trace_fit.h"
 #include "trace_reader.h"
+
+#include <utility>
 
 namespace granpen {
 
@@ -15,40 +16,35 @@ double alpha_depth_term(const DepthTerm &dt, const Trace &tr)
   return k_z_from_alpha(dt.alpha, mu, rho, tr.g, tr.D);
 }
 
-TraceFitParams depth_term_window(const DepthTerm &dt, const Trace &tr)
+std::vector<CollapseTrace> collapse_traces(const std::vector<Trace> &traces, const DepthTerm &dt)
 {
-  TraceFitParams fp;
-  fp.zlo = dt.kz_zmin, fp.zhi = dt.kz_zmax, fp.v0 = tr.v0, fp.D = tr.D, fp.g = tr.g;
-  fp.shorten_window = true;
-  return fp;
+  std::vector<CollapseTrace> out;
+  for (const auto &tr : traces) {
+    CollapseTrace c;
+    c.name = tr.path, c.z = tr.z, c.F = tr.F, c.v0 = tr.v0, c.D = tr.D, c.g = tr.g;
+    if (dt.alpha > 0.0) c.k_z_given = true, c.k_z_fixed = alpha_depth_term(dt, tr);
+    out.push_back(std::move(c));
+  }
+  return out;
 }
 
-std::vector<CollapseInput> collapse_inputs(const std::vector<Trace> &traces, const DepthTerm &dt,
-                                           std::vector<std::string> &left_out, std::vector<std::string> &notes)
+std::vector<CollapseEnsemble> collapse_ensemble_inputs(const std::vector<TraceGroup> &groups, const DepthTerm &dt)
 {
-  std::vector<CollapseInput> in;
-  for (const auto &tr : traces) {
-    CollapseInput c;
-    c.name = tr.path;
-    c.z = tr.z;
-    c.F = tr.F;
-    c.v0 = tr.v0, c.D = tr.D, c.g = tr.g;
-    if (dt.alpha > 0.0) {
-      c.k_z = alpha_depth_term(dt, tr);
-    } else {
-      const auto fit = fit_trace(tr.z, tr.F, depth_term_window(dt, tr));
-      if (fit.window_shortened) notes.push_back(tr.path + ": " + fit.notes.front());
-      if (!fit.slope_ok || !(fit.k_z > 0)) {
-        left_out.push_back(tr.path + ": no positive depth term over the k_z window z = " + json_number("%g", fit.zlo) +
-                           ".." + json_number("%.3g", fit.zhi) + " cm (k_z = " + json_number("%.3g", fit.k_z) +
-                           " dyne/cm); left out (--kz-zmin/--kz-zmax, --alpha or --ensemble may help)");
-        continue;
-      }
-      c.k_z = fit.k_z;
-    }
-    in.push_back(c);
+  std::vector<CollapseEnsemble> out;
+  for (const auto &g : groups) {
+    CollapseEnsemble c;
+    c.name = g.label(), c.v0 = g.v0, c.D = g.D, c.g = g.g, c.mean = g.mean;
+    if (dt.alpha > 0.0) c.k_z_given = true, c.k_z_fixed = alpha_depth_term(dt, g.traces.front());
+    out.push_back(std::move(c));
   }
-  return in;
+  return out;
+}
+
+CollapseStudyParams collapse_study_params(const CollapseParams &p, const DepthTerm &dt, const BootstrapParams &b)
+{
+  CollapseStudyParams s;
+  s.collapse = p, s.kz_zmin = dt.kz_zmin, s.kz_zmax = dt.kz_zmax, s.boot = b;
+  return s;
 }
 
 std::string collapse_curves_csv(const CollapseResult &r)

@@ -1,11 +1,15 @@
 // granpen analysis: the figure kinds of granpen plot, each a function from its inputs
 // (traces, or the tables of granpen flow and granpen momentum) to figures written by
 // io/plot_writer and the numbers drawn (figures_trace.cpp: force, ratio, peak, kz;
-// figures_flow.cpp: flow and momentum; figures_scaling.cpp: scaling).
+// figures_flow.cpp: flow and momentum; figures_scaling.cpp: scaling). ratio and peak draw
+// the results of core/collapse_study.h they are given (the CLI runs the study).
 #ifndef GRANPEN_FIGURES_H
 #define GRANPEN_FIGURES_H
 
 #include "collapse.h"
+#include "collapse_study.h"
+#include "collapse_tables.h"
+#include "ensemble_tables.h"
 #include "ensemble_average.h"
 #include "ensemble_fit.h"
 #include "json_writer.h"
@@ -56,9 +60,27 @@ struct Run {
   }
 };
 
+// A trace of the figures: its file, its legend label ("seed 1", "run 2" or the file's
+// stem), the trace in cgs.
+struct TraceIn {
+  std::string file, label;
+  Trace tr;
+};
+// The traces of the inputs (files or folders); each one unreadable a problem of the run.
+std::vector<TraceIn> load_traces(const std::vector<std::string> &inputs, Run &run);
+// The depth term of ratio (the k_z window, or alpha with mu and rho), as granpen collapse's.
+DepthTerm depth_term_of(const Options &o);
+
 void plot_force(const std::vector<std::string> &inputs, Run &run);
-void plot_ratio(const std::vector<std::string> &inputs, Run &run);
-void plot_peak(const std::vector<std::string> &inputs, Run &run);
+// The ratio of the study's collapse: of the traces (stage collapse; the depth terms' notes
+// worded here) or, with --ensemble, of the groups' means (stage ensembles). A refused study
+// is a problem of the run.
+void plot_ratio(const std::vector<TraceIn> &traces, const std::vector<TraceGroup> &groups, const CollapseStudy &s,
+                Run &run);
+// The peaks of every trace (the study's stage peaks) and with --ensemble those of the
+// groups' means (ens_study: a study of the groups that ran stage ensemble_peaks; null: none).
+void plot_peak(const std::vector<TraceIn> &traces, const CollapseResult &peaks, const std::vector<TraceGroup> &groups,
+               const CollapseStudy *ens_study, Run &run);
 void plot_kz(const std::vector<std::string> &inputs, Run &run);
 void plot_flow(const std::vector<std::string> &inputs, Run &run);
 void plot_momentum(const std::vector<std::string> &inputs, Run &run);

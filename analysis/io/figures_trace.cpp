@@ -1,7 +1,7 @@
 // granpen analysis: the paper's figure types of force traces (force, ratio, peak, kz) as
-// gnuplot scripts with their data beside them (io/figures.h, io/plot_writer.h). The
-// numbers come from core/collapse.h and core/trace_fit.h, so they match granpen collapse
-// and granpen fit.
+// gnuplot scripts with their data beside them (io/figures.h, io/plot_writer.h). ratio and
+// peak draw the collapse study they are given (core/collapse_study.h, as granpen collapse);
+// force and kz still fit (core/trace_fit.h, core/ensemble_fit.h), as granpen fit.
 #include "figures.h"
 
 #include "collapse_tables.h"
@@ -72,13 +72,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
+}    // namespace
 
 // ---------------------------------------------------------------- traces
-
-struct TraceIn {
-  std::string file, label;    // label: "seed 1", "run 2" or the file's stem
-  Trace tr;                   // cgs
-};
 
 std::vector<TraceIn> load_traces(const std::vector<std::string> &inputs, Run &run)
 {
@@ -103,6 +99,15 @@ std::vector<TraceIn> load_traces(const std::vector<std::string> &inputs, Run &ru
   if (out.empty() && run.problems.empty()) run.problems.push_back("no trace given");
   return out;
 }
+
+DepthTerm depth_term_of(const Options &o)
+{
+  DepthTerm dt;
+  dt.kz_zmin = o.kz_zmin, dt.kz_zmax = o.kz_zmax, dt.alpha = o.alpha, dt.mu = o.mu, dt.rho_g = o.rho;
+  return dt;
+}
+
+namespace {
 
 // a < b with runs of digits compared as numbers ("run 2" < "run 10")
 bool natural_less(const std::string &a, const std::string &b)
@@ -185,41 +190,6 @@ std::string window_text(const Options &o)
 {
   return std::isfinite(o.kz_zmax) ? "z = " + fmt("%g", o.kz_zmin) + ".." + fmt("%g", o.kz_zmax) + " cm"
                                   : "z ≥ " + fmt("%g", o.kz_zmin) + " cm";
-}
-
-// k_z as granpen collapse: fit over the k_z window, or from alpha
-bool depth_term(const TraceIn &t, const Options &o, double &k_z, std::string &why)
-{
-  if (o.alpha > 0.0) {
-    const double mu = o.mu > 0 ? o.mu : t.tr.number("mu", DEFAULT_MU);
-    const double rho = o.rho > 0 ? o.rho : t.tr.number("rho_g", DEFAULT_RHO_G);
-    k_z = k_z_from_alpha(o.alpha, mu, rho, t.tr.g, t.tr.D);
-    return true;
-  }
-  TraceFitParams fp;
-  fp.zlo = o.kz_zmin, fp.zhi = o.kz_zmax, fp.v0 = t.tr.v0, fp.D = t.tr.D, fp.g = t.tr.g;
-  fp.shorten_window = true;
-  const TraceFit fit = fit_trace(t.tr.z, t.tr.F, fp);
-  if (fit.window_shortened) why = t.file + ": " + fit.notes.front();
-  if (!fit.slope_ok || !(fit.k_z > 0)) {
-    why = t.file + ": no positive depth term over the k_z window; left out (use --kz-zmin/--kz-zmax, --alpha or --ensemble)";
-    return false;
-  }
-  k_z = fit.k_z;
-  return true;
-}
-
-// granpen collapse's curves and peak law with the run's options; false, the reason a
-// problem of the run, when collapse refuses the inputs
-bool collapse_or_note(const std::vector<CollapseInput> &in, Run &run, CollapseResult &r)
-{
-  try {
-    r = collapse(in, run.opt.collapse);
-    return true;
-  } catch (std::invalid_argument &e) {
-    run.problems.push_back(e.what());
-    return false;
-  }
 }
 
 }    // namespace
@@ -505,83 +475,40 @@ void plot_force(const std::vector<std::string> &inputs, Run &run)
 namespace {
 
 // The curves of the ratio figure: one per trace, or with --ensemble one per ensemble (its
-// mean, k_z from it) with the run-to-run standard error of each t~ bin.
+// mean, k_z from it) with the run-to-run standard error of each t~ bin (the study's).
 struct RatioCurves {
-  std::vector<CollapseInput> in;
-  std::vector<std::string> label;             // legend detail: "seed 1", "5 runs"
-  std::vector<EnsembleCase> cases;            // --ensemble
-  std::vector<std::vector<double>> se;        // --ensemble: per curve, per t~ bin of its CollapseCurve
-  EnsembleCollapse ens;
+  std::vector<std::string> label;                    // legend detail: "seed 1", "5 runs"
+  const std::vector<std::vector<double>> *se = nullptr;    // --ensemble: per curve, per t~ bin
+  const EnsembleCollapse *ens = nullptr;             // --ensemble
 };
 
-// each run's F/F_z averaged in the curve's t~ bins (as core/collapse bins), their se over runs
-std::vector<double> ratio_se(const EnsembleCase &c, const CollapseCurve &cv, const CollapseParams &p)
+// The study's curves with their labels; the depth terms' notes (a window shortened, a trace
+// or ensemble left out) worded as notes of the run. False: none to draw.
+bool ratio_curves(const std::vector<TraceIn> &traces, const std::vector<TraceGroup> &groups, const CollapseStudy &s,
+                  Run &run, RatioCurves &rc, CollapseResult &r)
 {
-  const EnsembleMean &m = c.mean;
-  std::map<long, std::vector<std::pair<double, int>>> bins;    // bin -> per run (sum, count)
-  for (std::size_t k = 0; k < m.z.size(); ++k) {
-    if (m.z[k] < p.zmin) continue;
-    auto &b = bins[(long) std::floor(t_tilde(m.z[k], c.v0, c.g, c.D) / p.tbin)];
-    b.resize(m.runs);
-    for (std::size_t r = 0; r < m.runs; ++r) b[r].first += m.per_run[r][k] / (cv.k_z * m.z[k]), ++b[r].second;
-  }
-  std::vector<double> se;
-  for (double t : cv.t) {
-    const auto it = bins.find((long) std::floor(t / p.tbin));
-    double mean = 0, s2 = 0;
-    const double n = (double) m.runs;
-    if (it == bins.end() || m.runs < 2) {
-      se.push_back(0.0);
-      continue;
+  if (!run.opt.ensemble) {
+    for (std::size_t i = 0; i < traces.size() && i < s.depth.size(); ++i) {
+      const TraceIn &t = traces[i];
+      const DepthTermOutcome &d = s.depth[i];
+      std::string why = d.window_shortened ? t.file + ": " + d.window_note : std::string();
+      if (!d.ok)
+        why = t.file + ": no positive depth term over the k_z window; left out (use --kz-zmin/--kz-zmax, --alpha or --ensemble)";
+      if (!why.empty()) run.notes.push_back(why);
+      if (d.ok) rc.label.push_back(t.label);
     }
-    for (const auto &v : it->second) mean += v.first / v.second;
-    mean /= n;
-    for (const auto &v : it->second) s2 += std::pow(v.first / v.second - mean, 2);
-    se.push_back(std::sqrt(s2 / (n - 1) / n));
-  }
-  return se;
-}
-
-bool ratio_curves(const std::vector<TraceIn> &traces, Run &run, RatioCurves &rc, CollapseResult &r)
-{
-  const Options &o = run.opt;
-  if (!o.ensemble) {
-    for (const auto &t : traces) {
-      CollapseInput c;
-      std::string why;
-      const bool ok = depth_term(t, o, c.k_z, why);
-      if (!why.empty()) run.notes.push_back(why);    // left out, or its window shortened
-      if (!ok) continue;
-      c.name = t.file, c.z = t.tr.z, c.F = t.tr.F, c.v0 = t.tr.v0, c.D = t.tr.D, c.g = t.tr.g;
-      rc.in.push_back(c);
-      rc.label.push_back(t.label);
-    }
-    if (rc.in.empty()) return false;
-    r = collapse(rc.in, o.collapse);
+    if (!s.collapsed) return false;
+    r = s.result;
     return true;
   }
-  std::vector<Trace> tr;
-  for (const auto &t : traces) tr.push_back(t.tr);
-  auto groups = group_traces(tr, run.opt.ens.v0_tolerance);
-  average_groups(groups, o.ens, run.problems);
-  DepthTerm dt;
-  dt.kz_zmin = o.kz_zmin, dt.kz_zmax = o.kz_zmax, dt.alpha = o.alpha, dt.mu = o.mu, dt.rho_g = o.rho;
-  for (const auto &g : groups) {
-    EnsembleCase c;
-    c.name = g.label(), c.v0 = g.v0, c.g = g.g, c.D = g.D, c.mean = g.mean;
-    if (o.alpha > 0) c.k_z_fixed = alpha_depth_term(dt, g.traces.front());
-    else c.kz_fit = depth_term_window(dt, g.traces.front());
-    if (!(ensemble_depth_term(c) > 0)) {
-      run.notes.push_back("ensemble " + g.label() + ": no positive depth term on its mean; left out");
-      continue;
-    }
-    rc.cases.push_back(c);
-    rc.label.push_back(std::to_string(g.mean.runs) + (g.mean.runs == 1 ? " run" : " runs"));
-  }
-  if (rc.cases.empty()) return false;
-  rc.ens = collapse_ensembles(rc.cases, o.collapse, o.boot);
-  r = rc.ens.result;
-  for (std::size_t i = 0; i < rc.cases.size(); ++i) rc.se.push_back(ratio_se(rc.cases[i], r.curves[i], o.collapse));
+  for (std::size_t i : s.ensembles.left_out)
+    run.notes.push_back("ensemble " + groups[i].label() + ": no positive depth term on its mean; left out");
+  for (std::size_t i : s.ensembles.kept)
+    rc.label.push_back(std::to_string(groups[i].mean.runs) + (groups[i].mean.runs == 1 ? " run" : " runs"));
+  if (!s.ensembles_done || s.ensembles.kept.empty()) return false;
+  rc.ens = &s.ensembles.collapse;
+  rc.se = &s.ensembles.ratio_se;
+  r = s.ensembles.collapse.result;
   return true;
 }
 
@@ -596,32 +523,28 @@ std::string ratio_title(const CollapseResult &r, const RatioCurves &rc, bool ens
   const std::string what = ensemble ? " ensembles" : " traces";
   std::string t = "t̃* = " +
                   (!r.n_crossed ? std::string("not reached")
-                   : ensemble   ? pm_text(rc.ens.t_star_mean, "%.3g")
+                   : ensemble   ? pm_text(rc.ens->t_star_mean, "%.3g")
                                 : fmt("%.3g", r.t_star_mean) + " ± " + fmt("%.2g", r.t_star_sd)) +
                   " (" + std::to_string(r.n_crossed) + " of " + std::to_string(r.curves.size()) + what;
   if (r.curves.size() > 1)
     t += "; their mean: " + (!r.ens_crossed ? std::string("not reached")
-                             : ensemble     ? pm_text(rc.ens.t_star_ensemble, "%.3g")
+                             : ensemble     ? pm_text(rc.ens->t_star_ensemble, "%.3g")
                                             : fmt("%.3g", r.t_star_ensemble));
   t += "), spread ";
-  if (ensemble) return t + pm_text(rc.ens.spread_z, "%.3f") + " against z, " + pm_text(rc.ens.spread_t, "%.3f") + " against t̃";
+  if (ensemble) return t + pm_text(rc.ens->spread_z, "%.3f") + " against z, " + pm_text(rc.ens->spread_t, "%.3f") + " against t̃";
   return t + fmt("%.3f", r.spread_z) + " against z, " + fmt("%.3f", r.spread_t) + " against t̃";
 }
 
 }    // namespace
 
-void plot_ratio(const std::vector<std::string> &inputs, Run &run)
+void plot_ratio(const std::vector<TraceIn> &traces, const std::vector<TraceGroup> &groups, const CollapseStudy &s,
+                Run &run)
 {
-  const auto traces = load_traces(inputs, run);
   RatioCurves rc;
   CollapseResult r;
-  try {
-    if (!ratio_curves(traces, run, rc, r)) {
-      run.problems.push_back(std::string("no usable ") + (run.opt.ensemble ? "ensemble" : "trace") + " for the ratio");
-      return;
-    }
-  } catch (std::invalid_argument &e) {
-    run.problems.push_back(e.what());
+  if (!ratio_curves(traces, groups, s, run, rc, r)) {
+    run.problems.push_back(s.refused ? s.refusal
+                                     : std::string("no usable ") + (run.opt.ensemble ? "ensemble" : "trace") + " for the ratio");
     return;
   }
   // colours: by v0, shades for the runs of one v0
@@ -674,7 +597,7 @@ void plot_ratio(const std::vector<std::string> &inputs, Run &run)
         sb.x.push_back(c.t[k]), sb.y.push_back(c.ratio[k]);
         ymax = std::max(ymax, c.ratio[k]), ymin = std::min(ymin, c.ratio[k]);
         if (run.opt.ensemble) {    // the run-to-run band
-          const double e = rc.se[i][k];
+          const double e = (*rc.se)[i][k];
           sa.band_lo.push_back(c.ratio[k] - e), sa.band_hi.push_back(c.ratio[k] + e);
           sb.band_lo.push_back(c.ratio[k] - e), sb.band_hi.push_back(c.ratio[k] + e);
         }
@@ -748,25 +671,6 @@ void plot_ratio(const std::vector<std::string> &inputs, Run &run)
 
 namespace {
 
-// --ensemble: the peak of each ensemble's mean +- its se over runs, and the law through
-// them (collapse_ensembles; the peaks do not depend on k_z, set to 1)
-bool peak_ensembles(const std::vector<TraceIn> &traces, Run &run, std::vector<TraceGroup> &groups, EnsembleCollapse &ec)
-{
-  std::vector<Trace> tr;
-  for (const auto &t : traces) tr.push_back(t.tr);
-  groups = group_traces(tr, run.opt.ens.v0_tolerance);
-  average_groups(groups, run.opt.ens, run.problems);
-  std::vector<EnsembleCase> cases;
-  for (const auto &g : groups) {
-    EnsembleCase c;
-    c.name = g.label(), c.v0 = g.v0, c.g = g.g, c.D = g.D, c.mean = g.mean, c.k_z_fixed = 1.0;
-    cases.push_back(c);
-  }
-  if (cases.empty()) return false;
-  ec = collapse_ensembles(cases, run.opt.collapse, run.opt.boot);
-  return true;
-}
-
 // the ensembles' points with their standard errors, and every run's own peak, small
 void ensemble_peak_series(const std::vector<TraceGroup> &groups, const EnsembleCollapse &ec, const CollapseResult &single,
                           SeriesPanel &p)
@@ -788,19 +692,11 @@ void ensemble_peak_series(const std::vector<TraceGroup> &groups, const EnsembleC
 
 }    // namespace
 
-void plot_peak(const std::vector<std::string> &inputs, Run &run)
+void plot_peak(const std::vector<TraceIn> &traces, const CollapseResult &peaks, const std::vector<TraceGroup> &groups,
+               const CollapseStudy *ens_study, Run &run)
 {
-  const auto traces = load_traces(inputs, run);
-  if (traces.empty()) return;
   // the peak law of granpen collapse; peaks and the law do not depend on k_z
-  std::vector<CollapseInput> in;
-  for (const auto &t : traces) {
-    CollapseInput c;
-    c.name = t.file, c.z = t.tr.z, c.F = t.tr.F, c.v0 = t.tr.v0, c.D = t.tr.D, c.g = t.tr.g, c.k_z = 1.0;
-    in.push_back(c);
-  }
-  CollapseResult r;
-  if (!collapse_or_note(in, run, r)) return;
+  CollapseResult r = peaks;
   std::vector<double> v0s;
   double pmax = 0;
   std::vector<std::string> no_peak;
@@ -828,23 +724,21 @@ void plot_peak(const std::vector<std::string> &inputs, Run &run)
   p.extra = value_tics("x", v0s) + "set mxtics 10\n";
   if (pmax > 0) p.extra += log_tics("y", p.ymin, p.ymax);
 
-  const auto groups = by_speed(traces);
+  const auto speeds = by_speed(traces);
   PlotBlock points;
   points.title = "peaks: v0 (cm/s), peak F (dyne), its depth (cm)";
   points.columns = {"v0", "peak_F", "peak_z"};
-  std::vector<TraceGroup> eg;
-  EnsembleCollapse ec;
-  const bool ens = run.opt.ensemble && peak_ensembles(traces, run, eg, ec);
+  const bool ens = run.opt.ensemble && ens_study && ens_study->ensemble_peaks_done;
   if (ens) {
-    ensemble_peak_series(eg, ec, r, p);
+    ensemble_peak_series(groups, ens_study->ensemble_peaks, r, p);
     for (const auto &c : r.curves) points.rows.push_back({c.v0, c.peak, c.peak_z});
-    r.peak_law = peak_law_of_means(ec);
+    r.peak_law = ens_study->ensemble_peak_law;
   }
-  for (std::size_t gi = 0; gi < groups.size() && !ens; ++gi) {
+  for (std::size_t gi = 0; gi < speeds.size() && !ens; ++gi) {
     PlotSeries s;
     s.style = "points", s.colour = plot_colour((int) gi), s.point_size = 1.6;
-    s.title = v0_text(traces[groups[gi][0]].tr.v0) + (groups[gi].size() > 1 ? " (" + std::to_string(groups[gi].size()) + " runs)" : "");
-    for (int i : groups[gi]) {
+    s.title = v0_text(traces[speeds[gi][0]].tr.v0) + (speeds[gi].size() > 1 ? " (" + std::to_string(speeds[gi].size()) + " runs)" : "");
+    for (int i : speeds[gi]) {
       const auto &c = r.curves[i];
       points.rows.push_back({c.v0, c.peak, c.peak_z});
       if (c.peak > 0) s.x.push_back(c.v0), s.y.push_back(c.peak);
