@@ -2,7 +2,7 @@
 // phi_0 and k_z against mu (core/calibration.h, core/trace_fit.h, io/bed_info.h).
 #include "atomic_file.h"
 #include "calibration_sweep.h"
-#include "options.h"
+#include "calibration_options.h"
 #include "plot_writer.h"
 #include "subcommands.h"
 #include "trace_reader.h"
@@ -56,3 +56,5 @@ int granpen::cli::run_calibration(const CalibrationOptions &o)
     std::printf("granpen calibration: %zu problem%s (see above)\n", sw.problems.size(), sw.problems.size() == 1 ? "" : "s");
   return status;
 }
+
+int granpen::cli::calibration(int argc, char **argv) { return run_parsed(parse_calibration, run_calibration, argc, argv); }

@@ -3,7 +3,7 @@
 // --ensemble the same from the ensemble means with run-to-run uncertainties
 // (core/ensemble_fit.h).
 #include "atomic_file.h"
-#include "options.h"
+#include "collapse_options.h"
 #include "collapse.h"
 #include "ensemble_tables.h"
 #include "json_text.h"
@@ -220,3 +220,5 @@ int granpen::cli::run_collapse(const CollapseOptions &o)
   }
   return problems.empty() ? EXIT_OK : EXIT_FAILED;
 }
+
+int granpen::cli::collapse(int argc, char **argv) { return run_parsed(parse_collapse, run_collapse, argc, argv); }

@@ -22,7 +22,7 @@ void refuse_outputs_over_inputs(const std::string &dir, const std::vector<const 
 // Before anything is read: throws OutputError when one of the outputs NAMES in o.out_dir
 // is an input (refuse_outputs_over_inputs); how (FlowProvenance, MomentumProvenance)
 // records the dumps, the rod type and the periodic axes. Options: FlowOptions or
-// MomentumOptions (options.h).
+// MomentumOptions (flow_options.h, momentum_options.h).
 template <class Options, class Provenance>
 void begin_dump_command(const Options &o, const std::vector<const char *> &names, Provenance &how)
 {

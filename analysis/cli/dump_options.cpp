@@ -1,5 +1,5 @@
-// granpen flow / granpen momentum: the options they share (options.h).
-#include "options.h"
+// granpen flow / granpen momentum: the options they share (dump_options.h).
+#include "dump_options.h"
 
 #include <cmath>
 

@@ -4,7 +4,7 @@
 // annulus r = 2-3 cm against t~ (core/flow_fields.h, core/voronoi_volumes.h).
 #include "atomic_file.h"
 #include "dump_cmd_common.h"
-#include "options.h"
+#include "flow_options.h"
 #include "flow_fields.h"
 #include "flow_study.h"
 #include "flow_tables.h"
@@ -236,3 +236,5 @@ int granpen::cli::run_flow(const FlowOptions &o)
               "flow_strip.csv, flow_annulus.csv, flow_surface.csv}\n", o.out_dir.c_str());
   return EXIT_OK;
 }
+
+int granpen::cli::flow(int argc, char **argv) { return run_parsed(parse_flow, run_flow, argc, argv); }

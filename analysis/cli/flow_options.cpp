@@ -1,5 +1,7 @@
-// granpen flow: its command line (options.h).
-#include "options.h"
+// granpen flow: its command line (flow_options.h).
+#include "flow_options.h"
+
+#include "args.h"
 
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 // granpen gap --real DIR --scenario NAME --out DIR: the sim-to-real gap diagnosis
 // (gap/gap_diagnosis.h); --prepare-only runs (or resumes) the cache's simulations.
 #include "atomic_file.h"
-#include "options.h"
+#include "gap_options.h"
 #include "effects.h"
 #include "gap_diagnosis.h"
 #include "gap_errors.h"
@@ -78,3 +78,5 @@ int granpen::cli::run_gap_command(const GapCommandOptions &go)
     return 1;
   }
 }
+
+int granpen::cli::gap(int argc, char **argv) { return run_parsed(parse_gap, run_gap_command, argc, argv); }

@@ -1,5 +1,5 @@
 // granpen-cli: the post-processor's command-line front end (./granpen SUBCOMMAND).
-// A thin layer: every subcommand parses its arguments (cli/options.h) and runs, calling the
+// A thin layer: every subcommand parses its arguments (cli/NAME_options.h) and runs, calling the
 // analysis library (cli/subcommands.h); run_subcommand is the one handler that turns what
 // they throw into an exit status.
 #include "subcommand.h"

@@ -3,7 +3,7 @@
 // M_slow and M(v_z > v0/320) against t~ and depth, and the drag F of the trace against
 // mu g M(v_z > v0/320) (core/momentum_classes.h).
 #include "dump_cmd_common.h"
-#include "options.h"
+#include "momentum_options.h"
 #include "atomic_file.h"
 #include "momentum_study.h"
 #include "momentum_tables.h"
@@ -157,3 +157,5 @@ int granpen::cli::run_momentum(const MomentumOptions &o)
   std::printf("wrote %s/{momentum.json, momentum_classes.csv, momentum_drag.csv}\n", o.out_dir.c_str());
   return EXIT_OK;
 }
+
+int granpen::cli::momentum(int argc, char **argv) { return run_parsed(parse_momentum, run_momentum, argc, argv); }

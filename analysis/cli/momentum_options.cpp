@@ -1,5 +1,7 @@
-// granpen momentum: its command line (options.h).
-#include "options.h"
+// granpen momentum: its command line (momentum_options.h).
+#include "momentum_options.h"
+
+#include "args.h"
 
 #include "momentum_class_limits.h"
 

@@ -2,7 +2,7 @@
 // with their data beside them, run to PNG and SVG (io/figures.h, io/plot_writer.h):
 // parse, make the figures, write KIND.json.
 #include "atomic_file.h"
-#include "options.h"
+#include "plot_options.h"
 #include "figures.h"
 #include "json_writer.h"
 #include "subcommands.h"
@@ -93,3 +93,5 @@ int granpen::cli::run_plot(const PlotOptions &po)
   std::printf("wrote %s\n", jpath.c_str());
   return (failed || !run.problems.empty()) ? EXIT_FAILED : EXIT_OK;
 }
+
+int granpen::cli::plot(int argc, char **argv) { return run_parsed(parse_plot, run_plot, argc, argv); }

@@ -1,5 +1,7 @@
-// granpen plot: its command line (options.h).
-#include "options.h"
+// granpen plot: its command line (plot_options.h).
+#include "plot_options.h"
+
+#include "args.h"
 
 #include <algorithm>
 #include <iterator>

@@ -13,7 +13,17 @@
 #define GRANPEN_FUZZ_CLI_BODY_H
 
 #include "fuzz_check.h"
-#include "options.h"
+#include "calibration_options.h"
+#include "check_options.h"
+#include "collapse_options.h"
+#include "convert_options.h"
+#include "fit_options.h"
+#include "flow_options.h"
+#include "gap_options.h"
+#include "import_options.h"
+#include "momentum_options.h"
+#include "plot_options.h"
+#include "sweep_options.h"
 
 #include <cerrno>
 #include <cmath>

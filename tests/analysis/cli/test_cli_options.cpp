@@ -3,7 +3,6 @@
 // and on a fixed number of seeded mutations of them (the driver CI runs without clang and
 // libFuzzer), with nothing printed; and the checks of a few options by known answers.
 #include "fuzz_cli_body.h"
-#include "options.h"
 
 #include <gtest/gtest.h>
 
