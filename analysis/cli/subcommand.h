@@ -75,8 +75,8 @@ class Command {
 // texts ("stod", "basic_string::_M_create", std::bad_alloc) what they mean.
 std::string user_text(const std::exception &e);
 
-// Runs fn(argc, argv) for subcommand name, the top-level handler: UsageError and CLI11's
-// errors -> "granpen NAME: error: ..." and 2; any other exception (InputError,
+// Runs fn(argc, argv) for subcommand name, the top-level handler: UsageError, CLI11's
+// errors and InputRefused (io/input_refused.h) -> "granpen NAME: error: ..." and 2; any other exception (InputError,
 // OutputError, std::bad_alloc, std::invalid_argument, ...) -> "granpen NAME: error: ..."
 // and 1, the C++ library's own terse texts ("stod", "basic_string::...") replaced by
 // what they mean.
