@@ -15,17 +15,24 @@
 namespace granpen {
 namespace cli {
 
-// granpen flow DUMP... Checks: at least one dump; out_dir not empty; the numbers given
-// (args.numbers) finite, and --D, --dg, --rho, --v0, --g, --dr, --dz, --rmax,
-// --profile-radius > 0; rod.rod_type >= 1; 0 <= strip1 < strip2; 0 <= ann1 < ann2;
-// --edge WR WZ both > 0;
-// zlo < 0 and zlo < zhi; step_lo <= step_hi; periodic xy, x, y or none, as px, py.
+// granpen flow DUMP... Checks: at least one dump; trace empty (not given) or a name;
+// out_dir not empty; the numbers finite, or NaN for not given (then the trace header's,
+// the first frame's or a default: core/flow_study.h's flow_study_params); D, d_g, rho_g,
+// v0, g, dr, dz, rmax, profile_radius, edge_wr, edge_wz NaN or > 0, edge_wr and edge_wz
+// both given or neither; rod as read_rod_options; 0 <= strip1 < strip2; 0 <= ann1 < ann2;
+// ann_top finite; zlo < 0 and zlo < zhi; step_lo <= step_hi; voronoi, stress not empty;
+// periodic xy, x, y or none, as px, py.
 struct FlowOptions : ParsedCommand {
-  ParsedArgs args;
+  std::vector<std::string> dumps;
+  std::string trace, out_dir = ".";
   RodOptions rod;
-  std::string out_dir, voronoi, stress, periodic;
+  double D = NOT_GIVEN, d_g = NOT_GIVEN, rho_g = NOT_GIVEN, v0 = NOT_GIVEN, g = NOT_GIVEN, z_s = NOT_GIVEN;
+  double dr = NOT_GIVEN, dz = NOT_GIVEN, rmax = NOT_GIVEN, profile_radius = NOT_GIVEN;
+  double edge_wr = NOT_GIVEN, edge_wz = NOT_GIVEN;
+  std::string voronoi = "auto", stress = "auto", periodic = "xy";
   bool px = true, py = true, rod_cells = false;
   double strip1 = 0.5, strip2 = 1.5, ann1 = 2.0, ann2 = 3.0, ann_top = 0.5, zlo = -4.0, zhi = 6.0;
+  std::string steps;    // --steps as given ("" all frames)
   long long step_lo = std::numeric_limits<long long>::min(), step_hi = std::numeric_limits<long long>::max();
   bool selected(long long step) const { return step >= step_lo && step <= step_hi; }
 };

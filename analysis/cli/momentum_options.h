@@ -14,14 +14,21 @@
 namespace granpen {
 namespace cli {
 
-// granpen momentum DUMP... --trace TRACE. Checks: at least one dump; --trace given;
-// out_dir not empty; the numbers given finite, --D, --rho, --dt, --mthreshold > 0, --mu
-// >= 0; --thresholds F1 > F2 > F3 > F4 > 0; --push-step a whole number; rod.rod_type
-// >= 1; periodic xy, x, y or none, as px, py.
+// granpen momentum DUMP... --trace TRACE. Checks: at least one dump; trace not empty;
+// out_dir not empty; the numbers finite, or NaN for not given (then the trace header's or
+// a default: core/momentum_study.h's momentum_study_params); D, rho_g, dt, mthreshold NaN
+// or > 0, mu NaN or >= 0; thresholds empty or F1 > F2 > F3 > F4 > 0; push_step given with
+// by_time; rod as read_rod_options; periodic xy, x, y or none, as px, py.
 struct MomentumOptions : ParsedCommand {
-  ParsedArgs args;
+  std::vector<std::string> dumps;
+  std::string trace, out_dir = ".";
   RodOptions rod;
-  std::string out_dir, periodic;
+  double D = NOT_GIVEN, rho_g = NOT_GIVEN, mu = NOT_GIVEN, z_s = NOT_GIVEN, dt = NOT_GIVEN;
+  std::vector<double> thresholds;    // --thresholds F1 F2 F3 F4, or empty (the paper's)
+  double mthreshold = NOT_GIVEN;
+  bool by_time = false;              // --push-step given
+  long long push_step = 0;
+  std::string periodic = "xy";
   bool px = true, py = true;
 };
 MomentumOptions parse_momentum(int argc, char **argv);
