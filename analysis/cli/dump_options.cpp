@@ -30,17 +30,17 @@ std::vector<double> take_numbers(const CLI::Option *option, int n)
 
 CLI::Option *add_number(Command &cmd, const std::string &flag, double &v, const std::string &type, const std::string &what)
 {
-  return cmd.number(flag, v, what)->take_last()->type_name(type);
+  return cmd.number(flag, v, what)->type_name(type);
 }
 
 CLI::Option *add_positive(Command &cmd, const std::string &flag, double &v, const std::string &type, const std::string &what)
 {
-  return cmd.app.add_option(flag, v, what)->check(positive_number())->take_last()->type_name(type);
+  return cmd.app.add_option(flag, v, what)->check(positive_number())->type_name(type);
 }
 
 CLI::Option *add_text(Command &cmd, const std::string &flag, std::string &v, const std::string &type, const std::string &what)
 {
-  return cmd.app.add_option(flag, v, what)->check(file_name())->take_last()->type_name(type);
+  return cmd.app.add_option(flag, v, what)->check(file_name())->type_name(type);
 }
 
 void add_rod_options(Command &cmd, RodArgs &args, const char *axis_what, const char *tip_what)
@@ -64,8 +64,7 @@ void finish_rod_options(const RodArgs &args, RodOptions &rod)
 
 void add_periodic_option(Command &cmd, std::string &axes)
 {
-  cmd.app.add_option("--periodic", axes, "periodic box directions among x, y: xy (default), x, y or none")
-      ->take_last()->type_name("AXES");
+  cmd.app.add_option("--periodic", axes, "periodic box directions among x, y: xy (default), x, y or none")->type_name("AXES");
 }
 
 void finish_periodic(const std::string &axes, bool &x, bool &y)

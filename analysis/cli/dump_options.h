@@ -16,14 +16,14 @@ namespace cli {
 // (core/param_choice.h).
 constexpr double NOT_GIVEN = std::numeric_limits<double>::quiet_NaN();
 
-// The options of the two subcommands, each bound to its field, the last of repeated ones
-// taken (granpen flow and momentum always have): a finite number; a number > 0; a name.
+// The options of the two subcommands, each bound to its field (given twice: a usage error,
+// as for every subcommand): a finite number; a number > 0; a name.
 CLI::Option *add_number(Command &cmd, const std::string &flag, double &v, const std::string &type, const std::string &what);
 CLI::Option *add_positive(Command &cmd, const std::string &flag, double &v, const std::string &type, const std::string &what);
 CLI::Option *add_text(Command &cmd, const std::string &flag, std::string &v, const std::string &type, const std::string &what);
 // An option of n numbers ("--strip A B"), each checked a finite number; their values after
 // the parse from take_numbers: none when not given, UsageError "FLAG needs N values" for
-// another count.
+// another count (given twice, too).
 CLI::Option *add_numbers(Command &cmd, const std::string &flag, int n, const std::string &type, const std::string &what);
 std::vector<double> take_numbers(const CLI::Option *option, int n);
 

@@ -78,7 +78,7 @@ granpen::cli::FlowOptions granpen::cli::parse_flow(int argc, char **argv)
   add_number(cmd, "--annulus-top", o.ann_top, "H", "the annulus starts H below the bed surface (default 0.5)");
   CLI::Option *edge = add_numbers(cmd, "--edge", 2, "WR WZ", "edge bins: centres within WR of r = R and WZ of z = 0 (default:\none bin size each)");
   CLI::Option *steps = cmd.app.add_option("--steps", o.steps, "only the frames with timesteps A to B (either may be left out)")
-                           ->take_last()->type_name("A[:B]");
+                           ->type_name("A[:B]");
   cmd.app.add_flag("--rod-cells", o.rod_cells, "with voro++: the rod's spheres take part in the tessellation, so\nthat the grains' cells end at the rod surface instead of reaching\ninto the rod (phi next to the rod; the compute does not do this)");
   if (!cmd.parse(argc, argv, o.help)) return o;
   if (o.dumps.empty()) throw UsageError("no dump given");

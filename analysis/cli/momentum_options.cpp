@@ -51,7 +51,7 @@ granpen::cli::MomentumOptions granpen::cli::parse_momentum(int argc, char **argv
   CLI::Option *thresholds = add_numbers(cmd, "--thresholds", 4, "F1 F2 F3 F4", "class bounds as fractions of v0 (default 1/10 1/80 1/320\n1/640), > 0 and decreasing; M_move then counts v_z > F3 v0");
   add_positive(cmd, "--mthreshold", o.mthreshold, "F", "M_move counts v_z > F v0 instead");
   cmd.app.add_option("--mu", o.mu, "friction for mu g M (default: trace header mu, else 0.3)")
-      ->check(non_negative_number())->take_last()->type_name("MU");
+      ->check(non_negative_number())->type_name("MU");
   RodArgs rod;
   add_rod_options(cmd, rod, "fixed rod axis (dumps without rod atoms)", "fixed tip height (dumps without rod atoms)");
   add_positive(cmd, "--D", o.D, "D", "rod diameter (default: the trace's)");
@@ -59,7 +59,7 @@ granpen::cli::MomentumOptions granpen::cli::parse_momentum(int argc, char **argv
   add_number(cmd, "--zs", o.z_s, "Z", "bed surface (default: the trace's surface key, else measured in\nthe first frame as compute bed/surface does)");
   std::string push_step;
   CLI::Option *by_time = cmd.app.add_option("--push-step", push_step, "timestep at which the push began: match the trace by time")
-                             ->take_last()->type_name("N");
+                             ->type_name("N");
   add_positive(cmd, "--dt", o.dt, "DT", "timestep size for --push-step (default: the trace's dt key)");
   add_periodic_option(cmd, o.periodic);
   if (!cmd.parse(argc, argv, o.help)) return o;

@@ -2,6 +2,7 @@
 #include "plot_options.h"
 
 #include "args.h"
+#include "ensemble_args.h"
 
 #include <algorithm>
 #include <iterator>

@@ -174,9 +174,9 @@ TEST(CliOptions, KnownAnswers)
   EXPECT_EQ(f.step_hi, 200);
   EXPECT_EQ(f.strip1, 1.0);
   EXPECT_EQ(usage_error(parse_flow, {"d.dump", "--rod-type", "1e300"}), "--rod-type must be a positive integer");
-  // the numbers typed: given ones bound, the last of repeated ones taken, the rest NaN (the
-  // trace's, the frame's or a default then)
-  const FlowOptions ft = parse_words(parse_flow, {"d.dump", "--D", "1", "--D", "2", "--edge", "0.1", "0.2", "--axis", "3",
+  // the numbers typed: given ones bound, the rest NaN (the trace's, the frame's or a default
+  // then); an option given twice refused
+  const FlowOptions ft = parse_words(parse_flow, {"d.dump", "--D", "2", "--edge", "0.1", "0.2", "--axis", "3",
                                                   "4", "--tip", "1.5", "--rod-type", "3", "--trace", "t.csv"});
   EXPECT_EQ(ft.D, 2.0);
   EXPECT_EQ(ft.edge_wr, 0.1);
@@ -188,6 +188,8 @@ TEST(CliOptions, KnownAnswers)
   EXPECT_EQ(ft.trace, "t.csv");
   EXPECT_TRUE(std::isnan(ft.d_g) && std::isnan(ft.z_s) && std::isnan(ft.dr));
   EXPECT_EQ(usage_error(parse_flow, {"d.dump", "--axis", "1"}), "--axis needs 2 values");
+  EXPECT_EQ(usage_error(parse_flow, {"d.dump", "--strip", "1", "2", "--strip", "1", "3"}), "--strip needs 2 values");
+  EXPECT_EQ(usage_error(parse_flow, {"d.dump", "--D", "1", "--D", "2"}).compare(0, 4, "--D:"), 0);
   EXPECT_EQ(usage_error(parse_flow, {"d.dump", "--dr", "0"}), "--dr must be > 0, got '0'");
   EXPECT_EQ(usage_error(parse_flow, {"d.dump", "--zs", "high"}), "--zs needs a number, got 'high'");
   EXPECT_EQ(usage_error(parse_flow, {"d.dump", "--periodic", "z"}), "--periodic must be xy, x, y or none");
