@@ -6,7 +6,7 @@
 #ifndef GRANPEN_CLI_FLOW_OPTIONS_H
 #define GRANPEN_CLI_FLOW_OPTIONS_H
 
-#include "dump_options.h"    // RodOptions, periodic_axes
+#include "dump_options.h"    // RodOptions, NOT_GIVEN, the shared options
 
 #include <limits>
 #include <string>
@@ -19,7 +19,7 @@ namespace cli {
 // out_dir not empty; the numbers finite, or NaN for not given (then the trace header's,
 // the first frame's or a default: core/flow_study.h's flow_study_params); D, d_g, rho_g,
 // v0, g, dr, dz, rmax, profile_radius, edge_wr, edge_wz NaN or > 0, edge_wr and edge_wz
-// both given or neither; rod as read_rod_options; 0 <= strip1 < strip2; 0 <= ann1 < ann2;
+// both given or neither; rod as finish_rod_options; 0 <= strip1 < strip2; 0 <= ann1 < ann2;
 // ann_top finite; zlo < 0 and zlo < zhi; step_lo <= step_hi; voronoi, stress not empty;
 // periodic xy, x, y or none, as px, py.
 struct FlowOptions : ParsedCommand {

@@ -6,7 +6,7 @@
 #ifndef GRANPEN_CLI_MOMENTUM_OPTIONS_H
 #define GRANPEN_CLI_MOMENTUM_OPTIONS_H
 
-#include "dump_options.h"    // RodOptions, periodic_axes
+#include "dump_options.h"    // RodOptions, NOT_GIVEN, the shared options
 
 #include <string>
 #include <vector>
@@ -18,7 +18,7 @@ namespace cli {
 // out_dir not empty; the numbers finite, or NaN for not given (then the trace header's or
 // a default: core/momentum_study.h's momentum_study_params); D, rho_g, dt, mthreshold NaN
 // or > 0, mu NaN or >= 0; thresholds empty or F1 > F2 > F3 > F4 > 0; push_step given with
-// by_time; rod as read_rod_options; periodic xy, x, y or none, as px, py.
+// by_time; rod as finish_rod_options; periodic xy, x, y or none, as px, py.
 struct MomentumOptions : ParsedCommand {
   std::vector<std::string> dumps;
   std::string trace, out_dir = ".";
