@@ -4,7 +4,7 @@
 #include "atomic_file.h"
 #include "calibration_study.h"
 #include "calibration_sweep.h"
-#include "options.h"
+#include "calibration_options.h"
 #include "plot_writer.h"
 #include "subcommands.h"
 #include "trace_reader.h"
@@ -66,3 +66,5 @@ int granpen::cli::run_calibration(const CalibrationOptions &o)
     std::printf("granpen calibration: %zu problem%s (see above)\n", problems.size(), problems.size() == 1 ? "" : "s");
   return status;
 }
+
+int granpen::cli::calibration(int argc, char **argv) { return run_parsed(parse_calibration, run_calibration, argc, argv); }

@@ -1,5 +1,7 @@
-// granpen calibration: its command line (options.h).
-#include "options.h"
+// granpen calibration: its command line (calibration_options.h).
+#include "calibration_options.h"
+
+#include "args.h"
 
 namespace {
 

@@ -1,5 +1,5 @@
 // granpen check TRACE...: validate traces the way every granpen tool reads them.
-#include "options.h"
+#include "check_options.h"
 #include "subcommands.h"
 #include "trace_files.h"
 #include "trace_reader.h"
@@ -29,3 +29,5 @@ int granpen::cli::run_check(const CheckOptions &o)
   }
   return bad ? 1 : 0;
 }
+
+int granpen::cli::check(int argc, char **argv) { return run_parsed(parse_check, run_check, argc, argv); }

@@ -1,5 +1,7 @@
-// granpen check: its command line (options.h).
-#include "options.h"
+// granpen check: its command line (check_options.h).
+#include "check_options.h"
+
+#include "args.h"
 
 namespace {
 

@@ -2,7 +2,7 @@
 // traces, the crossover t~*, the collapse quality and the peak law; with --ensemble the same
 // from the ensemble means with run-to-run uncertainties (core/collapse_study.h runs them all).
 #include "atomic_file.h"
-#include "options.h"
+#include "collapse_options.h"
 #include "collapse.h"
 #include "collapse_study.h"
 #include "ensemble_tables.h"
@@ -208,3 +208,5 @@ int granpen::cli::run_collapse(const CollapseOptions &o)
   }
   return problems.empty() ? EXIT_OK : EXIT_FAILED;
 }
+
+int granpen::cli::collapse(int argc, char **argv) { return run_parsed(parse_collapse, run_collapse, argc, argv); }

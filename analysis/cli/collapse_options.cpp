@@ -1,5 +1,7 @@
-// granpen collapse: its command line (options.h).
-#include "options.h"
+// granpen collapse: its command line (collapse_options.h).
+#include "collapse_options.h"
+
+#include "args.h"
 
 namespace {
 

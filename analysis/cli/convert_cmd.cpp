@@ -1,6 +1,6 @@
 // granpen convert FILE --from ave/time ...: a force trace in another format written as a
 // granpen-trace v1 file, so that every other subcommand reads it.
-#include "options.h"
+#include "convert_options.h"
 #include "atomic_file.h"
 #include "subcommand.h"
 #include "subcommands.h"
@@ -43,3 +43,5 @@ int granpen::cli::run_convert(const ConvertOptions &o)
     return EXIT_FAILED;
   }
 }
+
+int granpen::cli::convert(int argc, char **argv) { return run_parsed(parse_convert, run_convert, argc, argv); }

@@ -1,5 +1,7 @@
-// granpen convert: its command line (options.h).
-#include "options.h"
+// granpen convert: its command line (convert_options.h).
+#include "convert_options.h"
+
+#include "args.h"
 
 #include <string>
 

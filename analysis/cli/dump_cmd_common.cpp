@@ -58,10 +58,11 @@ bool write_outputs(const std::string &dir, const std::vector<std::pair<std::stri
   return true;
 }
 
-void refuse_outputs_over_inputs(const std::string &dir, const std::vector<const char *> &names, const ParsedArgs &args)
+void refuse_outputs_over_inputs(const std::string &dir, const std::vector<const char *> &names,
+                                const std::vector<std::string> &dumps, const std::string &trace)
 {
-  std::vector<std::string> inputs = args.positional;
-  if (args.has("--trace")) inputs.push_back(args.value("--trace", ""));
+  std::vector<std::string> inputs = dumps;
+  if (!trace.empty()) inputs.push_back(trace);
   for (const char *name : names) refuse_overwriting_inputs((fs::path(dir) / name).string(), "--out", inputs);
 }
 

@@ -4,7 +4,6 @@
 #ifndef GRANPEN_CLI_DUMP_CMD_COMMON_H
 #define GRANPEN_CLI_DUMP_CMD_COMMON_H
 
-#include "args.h"
 #include "dump_frames.h"
 #include "dump_reader.h"
 
@@ -15,19 +14,20 @@
 namespace granpen {
 namespace cli {
 
-// Throws OutputError when dir/NAME for one of names is one of the inputs (the dumps,
-// args.positional, and --trace): checked before anything is read.
-void refuse_outputs_over_inputs(const std::string &dir, const std::vector<const char *> &names, const ParsedArgs &args);
+// Throws OutputError when dir/NAME for one of names is one of the inputs (the dumps, and
+// the trace unless empty): checked before anything is read.
+void refuse_outputs_over_inputs(const std::string &dir, const std::vector<const char *> &names,
+                                const std::vector<std::string> &dumps, const std::string &trace);
 
 // Before anything is read: throws OutputError when one of the outputs NAMES in o.out_dir
 // is an input (refuse_outputs_over_inputs); how (FlowProvenance, MomentumProvenance)
 // records the dumps, the rod type and the periodic axes. Options: FlowOptions or
-// MomentumOptions (options.h).
+// MomentumOptions (flow_options.h, momentum_options.h).
 template <class Options, class Provenance>
 void begin_dump_command(const Options &o, const std::vector<const char *> &names, Provenance &how)
 {
-  refuse_outputs_over_inputs(o.out_dir, names, o.args);
-  how.dumps = o.args.positional, how.rod_type = o.rod.rod_type, how.periodic = o.periodic;
+  refuse_outputs_over_inputs(o.out_dir, names, o.dumps, o.trace);
+  how.dumps = o.dumps, how.rod_type = o.rod.rod_type, how.periodic = o.periodic;
 }
 
 // The dumps' first frame into frame, progress lines on stderr as TOOL from then on;

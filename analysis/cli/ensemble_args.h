@@ -1,6 +1,6 @@
 // granpen fit, collapse and plot: the options of --ensemble (runs of one case averaged,
 // core/ensemble_average.h; uncertainties by a bootstrap over runs, core/ensemble_fit.h),
-// added to a parse function's Command and checked after its parse (options.h).
+// added to a parse function's Command and checked after its parse (NAME_options.h).
 #ifndef GRANPEN_CLI_ENSEMBLE_ARGS_H
 #define GRANPEN_CLI_ENSEMBLE_ARGS_H
 

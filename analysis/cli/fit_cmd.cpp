@@ -1,6 +1,6 @@
 // granpen fit TRACE...: the paper's observables of each force trace: the depth term
 // k_z and alpha, the transient peak, the fluctuation wavelength (core/trace_fit.h).
-#include "options.h"
+#include "fit_options.h"
 #include "ensemble_tables.h"
 #include "atomic_file.h"
 #include "subcommand.h"
@@ -176,3 +176,5 @@ int granpen::cli::run_fit(const FitOptions &o)
   }
   return status;
 }
+
+int granpen::cli::fit(int argc, char **argv) { return run_parsed(parse_fit, run_fit, argc, argv); }

@@ -1,5 +1,7 @@
-// granpen fit: its command line (options.h).
-#include "options.h"
+// granpen fit: its command line (fit_options.h).
+#include "fit_options.h"
+
+#include "args.h"
 
 namespace {
 

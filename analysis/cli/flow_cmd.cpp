@@ -4,7 +4,7 @@
 // annulus r = 2-3 cm against t~ (core/flow_fields.h, core/voronoi_volumes.h).
 #include "atomic_file.h"
 #include "dump_cmd_common.h"
-#include "options.h"
+#include "flow_options.h"
 #include "flow_fields.h"
 #include "flow_study.h"
 #include "flow_tables.h"
@@ -74,35 +74,25 @@ Columns choose_columns(const DumpFrame &frame, const FlowOptions &o, FlowProvena
   return c;
 }
 
-// an option's value, NaN when not given
-double option_value(const ParsedArgs &args, const char *name)
-{
-  double v = std::numeric_limits<double>::quiet_NaN();
-  args.number(name, v);
-  return v;
-}
-
 // Where the study's parameters may come from: the options, the trace header, the first frame.
 FlowParamSources parameter_sources(const DumpFrame &frame, const GrainFrame &g, const PushTrace &th,
                                    const FlowOptions &o, bool mass_column)
 {
-  const ParsedArgs &args = o.args;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   FlowParamSources s;
-  s.D = {option_value(args, "--D"), th.present ? th.trace.D : nan};
-  s.d_g = {option_value(args, "--dg"), th.have_dg ? th.d_g : nan};
-  s.rho_g = {option_value(args, "--rho"), th.have_rho ? th.rho_g : nan};
-  s.v0 = {option_value(args, "--v0"), th.present ? th.trace.v0 : nan};
-  s.g = {option_value(args, "--g"), th.present ? th.trace.g : nan};
-  s.z_s = {option_value(args, "--zs"), th.have_surface ? th.surface : nan};
+  s.D = {o.D, th.present ? th.trace.D : nan};
+  s.d_g = {o.d_g, th.have_dg ? th.d_g : nan};
+  s.rho_g = {o.rho_g, th.have_rho ? th.rho_g : nan};
+  s.v0 = {o.v0, th.present ? th.trace.v0 : nan};
+  s.g = {o.g, th.present ? th.trace.g : nan};
+  s.z_s = {o.z_s, th.have_surface ? th.surface : nan};
   s.radius = g.radius.data(), s.mass = mass_column ? g.mass.data() : nullptr, s.grains = g.grains();
   if (g.rod.found) s.rod_D = g.rod.diameter;
   for (int d = 0; d < 3; ++d) s.lo[d] = frame.lo[d], s.hi[d] = frame.hi[d];
   s.timestep = frame.timestep;
   s.measure_z_s = [&frame, &g] { return frame_bed_surface(frame, g); };
-  s.dr = option_value(args, "--dr"), s.dz = option_value(args, "--dz"), s.rmax = option_value(args, "--rmax");
-  s.profile_radius = option_value(args, "--profile-radius");
-  if (args.numbers.count("--edge")) s.edge_wr = args.numbers.at("--edge")[0], s.edge_wz = args.numbers.at("--edge")[1];
+  s.dr = o.dr, s.dz = o.dz, s.rmax = o.rmax, s.profile_radius = o.profile_radius;
+  s.edge_wr = o.edge_wr, s.edge_wz = o.edge_wz;
   s.zlo = o.zlo, s.zhi = o.zhi;
   s.strip1 = o.strip1, s.strip2 = o.strip2, s.ann1 = o.ann1, s.ann2 = o.ann2, s.ann_top = o.ann_top;
   return s;
@@ -194,15 +184,15 @@ int granpen::cli::run_flow(const FlowOptions &o)
   FlowProvenance how;
   begin_dump_command(o, std::vector<const char *>(std::begin(OUTPUTS), std::end(OUTPUTS)), how);
   PushTrace th;
-  if (o.args.has("--trace")) th = load_push_trace(o.args.value("--trace", "")), how.trace = th.trace.path;
+  if (!o.trace.empty()) th = load_push_trace(o.trace), how.trace = th.trace.path;
 
-  DumpReader reader(o.args.positional);
+  DumpReader reader(o.dumps);
   DumpFrame frame;
-  first_frame(reader, o.args.positional, frame, "granpen flow");
+  first_frame(reader, o.dumps, frame, "granpen flow");
   const Columns cols = choose_columns(frame, o, how);
   how.mass_column = cols.choice.mass;
   std::string rho_source;
-  const double rho = flow_grain_density({option_value(o.args, "--rho"), th.have_rho ? th.rho_g : NAN}, rho_source);
+  const double rho = flow_grain_density({o.rho_g, th.have_rho ? th.rho_g : NAN}, rho_source);
   GrainFrame g;
   extract_frame(frame, o.rod, cols.choice, rho, o.px, o.py, g);
   if (g.grains() == 0) throw InputError(g.where + ": frame has no grains (atoms not of the rod type)");
@@ -224,7 +214,7 @@ int granpen::cli::run_flow(const FlowOptions &o)
     study.add_frame(g.arrays(), g.axis_x, g.axis_y, g.period_x, g.period_y, g.tip, g.rod.atoms, frame.timestep, g.where);
   } while (reader.next(frame));
   if (study.frames().empty())
-    throw InputError(o.args.positional[0] + ": no frame with a timestep in " + o.args.value("--steps", "") + " (--steps)");
+    throw InputError(o.dumps[0] + ": no frame with a timestep in " + o.steps + " (--steps)");
   if (voro_missing) how.notes.push_back(std::to_string(voro_missing) + " grain cells could not be computed (volume 0)");
 
   const FlowSummary summary = study.summary();
@@ -236,3 +226,5 @@ int granpen::cli::run_flow(const FlowOptions &o)
               "flow_strip.csv, flow_annulus.csv, flow_surface.csv}\n", o.out_dir.c_str());
   return EXIT_OK;
 }
+
+int granpen::cli::flow(int argc, char **argv) { return run_parsed(parse_flow, run_flow, argc, argv); }

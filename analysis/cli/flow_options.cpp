@@ -1,5 +1,7 @@
-// granpen flow: its command line (options.h).
-#include "options.h"
+// granpen flow: its command line (flow_options.h).
+#include "flow_options.h"
+
+#include "args.h"
 
 #include <string>
 #include <vector>
@@ -51,63 +53,48 @@ granpen::cli::FlowOptions granpen::cli::parse_flow(int argc, char **argv)
 {
   Command cmd("flow", HELP);
   FlowOptions o;
-  static const std::vector<OptionSpec> spec = {
-      {"--trace", 1, "FILE", "the push's force trace: v0, D, g, d_g, rho_g and the bed surface\n(key surface) from its header"},
-      {"--out", 1, "DIR", "output folder (made if missing; default .)"},
-      {"--rod-type", 1, "N", "atom type of the rod (default 2); every other atom is a grain"},
-      {"--axis", 2, "X Y", "fixed rod axis instead of the rod atoms' mean x, y"},
-      {"--tip", 1, "Z", "fixed tip height instead of the rod atoms' lowest point"},
-      {"--D", 1, "D", "rod diameter (default: trace header, else measured from the rod\natoms as fix rod/drive does: 2 max(r_xy + radius))"},
-      {"--dg", 1, "D", "grain diameter for I and the default bins (default: trace header,\nelse the mean grain diameter of the first frame)"},
-      {"--rho", 1, "RHO", "grain density for I and for masses without a mass column\n(default: trace header rho_g, else 3.0)"},
-      {"--v0", 1, "V", "push speed for t~ (default: trace header)"},
-      {"--g", 1, "G", "gravity for t~ (default: trace header)"},
-      {"--zs", 1, "Z", "bed surface height (default: trace header key surface, else\nmeasured in the first frame as compute bed/surface does)"},
-      {"--dr", 1, "DR", "radial bin size (default d_g), rounded to whole bins as the compute does"},
-      {"--dz", 1, "DZ", "vertical bin size (default d_g), rounded likewise"},
-      {"--rmax", 1, "R", "outer radius of the bins (default half the smaller box width)"},
-      {"--zlo", 1, "Z", "bin range about the tip, lower end (default -4)"},
-      {"--zhi", 1, "Z", "bin range about the tip, upper end (default 6)"},
-      {"--voronoi", 1, "WHAT", "auto (default: column c_vor[1] if the dump has it, else voro++),\na column name, voro++ (tessellate each frame, as compute\nflow/azimuthal voronoi voro++ does) or none"},
-      {"--stress", 1, "WHAT", "auto (default: columns c_stress[1..3] if present), a compute ID\n(columns c_ID[1] c_ID[2] c_ID[3] of compute stress/atom), or none"},
-      {"--periodic", 1, "AXES", "periodic box directions among x, y: xy (default), x, y or none"},
-      {"--profile-radius", 1, "R", "cylinder radius of the profile below the rod (default D/3)"},
-      {"--strip", 2, "A B", "strip distances from the shaft surface (default 0.5 1.5)"},
-      {"--annulus", 2, "R1 R2", "annulus radii (default 2 3)"},
-      {"--annulus-top", 1, "H", "the annulus starts H below the bed surface (default 0.5)"},
-      {"--edge", 2, "WR WZ", "edge bins: centres within WR of r = R and WZ of z = 0 (default:\none bin size each)"},
-      {"--steps", 1, "A[:B]", "only the frames with timesteps A to B (either may be left out)"},
-      {"--rod-cells", 0, "", "with voro++: the rod's spheres take part in the tessellation, so\nthat the grains' cells end at the rod surface instead of reaching\ninto the rod (phi next to the rod; the compute does not do this)"}};
-  ParsedArgs &args = o.args;
-  if (!parse_table(cmd, spec, "dumps", argc, argv, args, o.help)) return o;
-  std::string msg;
-  if (args.positional.empty()) throw UsageError("no dump given");
-  if (!args.read_numbers({"--trace", "--out", "--voronoi", "--stress", "--periodic", "--steps"}, msg) ||
-      !args.positive({"--D", "--dg", "--rho", "--v0", "--g", "--dr", "--dz", "--rmax", "--profile-radius"}, msg) ||
-      !read_rod_options(args, o.rod, msg))
-    throw UsageError(msg);
-  const auto &num = args.numbers;
-  if (args.has("--trace") && args.value("--trace", "").empty()) throw UsageError("--trace needs a file");
-  o.out_dir = args.value("--out", ".");
-  if (o.out_dir.empty()) throw UsageError("--out needs a folder");
-  o.voronoi = args.value("--voronoi", "auto");
-  o.rod_cells = args.has("--rod-cells");
-  o.stress = args.value("--stress", "auto");
-  if (o.voronoi.empty() || o.stress.empty()) throw UsageError(o.voronoi.empty() ? "--voronoi needs a value" : "--stress needs a value");
-  o.periodic = args.value("--periodic", "xy");
-  if (!periodic_axes(o.periodic, o.px, o.py)) throw UsageError("--periodic must be xy, x, y or none");
-  if (num.count("--strip")) o.strip1 = num.at("--strip")[0], o.strip2 = num.at("--strip")[1];
-  if (num.count("--annulus")) o.ann1 = num.at("--annulus")[0], o.ann2 = num.at("--annulus")[1];
+  cmd.app.add_option("dumps", o.dumps, "dumps");
+  add_text(cmd, "--trace", o.trace, "FILE", "the push's force trace: v0, D, g, d_g, rho_g and the bed surface\n(key surface) from its header");
+  add_text(cmd, "--out", o.out_dir, "DIR", "output folder (made if missing; default .)");
+  RodArgs rod;
+  add_rod_options(cmd, rod, "fixed rod axis instead of the rod atoms' mean x, y", "fixed tip height instead of the rod atoms' lowest point");
+  add_positive(cmd, "--D", o.D, "D", "rod diameter (default: trace header, else measured from the rod\natoms as fix rod/drive does: 2 max(r_xy + radius))");
+  add_positive(cmd, "--dg", o.d_g, "D", "grain diameter for I and the default bins (default: trace header,\nelse the mean grain diameter of the first frame)");
+  add_positive(cmd, "--rho", o.rho_g, "RHO", "grain density for I and for masses without a mass column\n(default: trace header rho_g, else 3.0)");
+  add_positive(cmd, "--v0", o.v0, "V", "push speed for t~ (default: trace header)");
+  add_positive(cmd, "--g", o.g, "G", "gravity for t~ (default: trace header)");
+  add_number(cmd, "--zs", o.z_s, "Z", "bed surface height (default: trace header key surface, else\nmeasured in the first frame as compute bed/surface does)");
+  add_positive(cmd, "--dr", o.dr, "DR", "radial bin size (default d_g), rounded to whole bins as the compute does");
+  add_positive(cmd, "--dz", o.dz, "DZ", "vertical bin size (default d_g), rounded likewise");
+  add_positive(cmd, "--rmax", o.rmax, "R", "outer radius of the bins (default half the smaller box width)");
+  add_number(cmd, "--zlo", o.zlo, "Z", "bin range about the tip, lower end (default -4)");
+  add_number(cmd, "--zhi", o.zhi, "Z", "bin range about the tip, upper end (default 6)");
+  add_text(cmd, "--voronoi", o.voronoi, "WHAT", "auto (default: column c_vor[1] if the dump has it, else voro++),\na column name, voro++ (tessellate each frame, as compute\nflow/azimuthal voronoi voro++ does) or none");
+  add_text(cmd, "--stress", o.stress, "WHAT", "auto (default: columns c_stress[1..3] if present), a compute ID\n(columns c_ID[1] c_ID[2] c_ID[3] of compute stress/atom), or none");
+  add_periodic_option(cmd, o.periodic);
+  add_positive(cmd, "--profile-radius", o.profile_radius, "R", "cylinder radius of the profile below the rod (default D/3)");
+  CLI::Option *strip = add_numbers(cmd, "--strip", 2, "A B", "strip distances from the shaft surface (default 0.5 1.5)");
+  CLI::Option *annulus = add_numbers(cmd, "--annulus", 2, "R1 R2", "annulus radii (default 2 3)");
+  add_number(cmd, "--annulus-top", o.ann_top, "H", "the annulus starts H below the bed surface (default 0.5)");
+  CLI::Option *edge = add_numbers(cmd, "--edge", 2, "WR WZ", "edge bins: centres within WR of r = R and WZ of z = 0 (default:\none bin size each)");
+  CLI::Option *steps = cmd.app.add_option("--steps", o.steps, "only the frames with timesteps A to B (either may be left out)")
+                           ->type_name("A[:B]");
+  cmd.app.add_flag("--rod-cells", o.rod_cells, "with voro++: the rod's spheres take part in the tessellation, so\nthat the grains' cells end at the rod surface instead of reaching\ninto the rod (phi next to the rod; the compute does not do this)");
+  if (!cmd.parse(argc, argv, o.help)) return o;
+  if (o.dumps.empty()) throw UsageError("no dump given");
+  finish_rod_options(rod, o.rod);
+  finish_periodic(o.periodic, o.px, o.py);
+  const std::vector<double> s = take_numbers(strip, 2), a = take_numbers(annulus, 2), e = take_numbers(edge, 2);
+  if (!s.empty()) o.strip1 = s[0], o.strip2 = s[1];
+  if (!a.empty()) o.ann1 = a[0], o.ann2 = a[1];
   if (!(o.strip1 >= 0 && o.strip2 > o.strip1)) throw UsageError("--strip needs 0 <= A < B");
   if (!(o.ann1 >= 0 && o.ann2 > o.ann1)) throw UsageError("--annulus needs 0 <= R1 < R2");
-  if (num.count("--edge") && !(num.at("--edge")[0] > 0 && num.at("--edge")[1] > 0))
-    throw UsageError("--edge needs WR > 0 and WZ > 0 (bin widths)");
-  args.number("--annulus-top", o.ann_top);
-  args.number("--zlo", o.zlo);
-  args.number("--zhi", o.zhi);
+  if (!e.empty()) {
+    if (!(e[0] > 0 && e[1] > 0)) throw UsageError("--edge needs WR > 0 and WZ > 0 (bin widths)");
+    o.edge_wr = e[0], o.edge_wz = e[1];
+  }
   if (!(o.zhi > o.zlo)) throw UsageError("--zhi must exceed --zlo");
   if (!(o.zlo < 0.0)) throw UsageError("--zlo must be below 0 (the profile below the rod needs bins below the tip)");
-  if (args.has("--steps")) read_steps(args.value("--steps", ""), o);
+  if (steps->count()) read_steps(o.steps, o);
   return o;
 }
-

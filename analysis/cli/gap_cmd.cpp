@@ -1,12 +1,10 @@
 // granpen gap --real DIR --scenario NAME --out DIR: the sim-to-real gap diagnosis
 // (gap/gap_diagnosis.h); --prepare-only runs (or resumes) the cache's simulations.
 #include "atomic_file.h"
-#include "options.h"
+#include "gap_options.h"
 #include "effects.h"
 #include "gap_diagnosis.h"
-#include "gap_errors.h"
 #include "subcommands.h"
-#include "errors.h"
 
 #include <cmath>
 #include <cstdio>
@@ -68,13 +66,7 @@ int granpen::cli::run_gap_command(const GapCommandOptions &go)
   }
   if (!opt.out.empty() && !opt.real.empty() && same_file(opt.out, opt.real))
     throw UsageError("--out " + opt.out + " is the input --real " + opt.real + ": refusing to overwrite it");
-  try {
-    return run_gap(opt, render_progress);
-  } catch (GapRefused &e) {
-    std::fprintf(stderr, "granpen gap: %s\n", e.what());
-    return 2;
-  } catch (InputError &e) {
-    std::fprintf(stderr, "granpen gap: %s\n", e.what());
-    return 1;
-  }
+  return run_gap(opt, render_progress);    // its refusals exit 2, its other errors 1: run_subcommand
 }
+
+int granpen::cli::gap(int argc, char **argv) { return run_parsed(parse_gap, run_gap_command, argc, argv); }

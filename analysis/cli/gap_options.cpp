@@ -1,5 +1,7 @@
-// granpen gap: its command line (options.h).
-#include "options.h"
+// granpen gap: its command line (gap_options.h).
+#include "gap_options.h"
+
+#include "args.h"
 
 #include <algorithm>
 #include <cstdlib>

@@ -3,6 +3,7 @@
 #include "gap_selftest_score.h"
 #include "get_options.h"
 #include "json_path.h"
+#include "subcommand.h"
 #include "subcommands.h"
 #include "text_util.h"
 
@@ -82,3 +83,4 @@ int granpen::cli::run_gap_score(const GapScoreOptions &o)
   std::fputs(row.c_str(), stdout);
   return s.pass ? EXIT_OK : EXIT_CASE_FAILED;
 }
+int granpen::cli::gap_score(int argc, char **argv) { return run_parsed(parse_gap_score, run_gap_score, argc, argv); }

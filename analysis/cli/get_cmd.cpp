@@ -3,6 +3,7 @@
 #include "errors.h"
 #include "get_options.h"
 #include "json_path.h"
+#include "subcommand.h"
 #include "subcommands.h"
 
 #include <algorithm>
@@ -39,3 +40,4 @@ int granpen::cli::run_get(const GetOptions &o)
   std::fputs(out.c_str(), stdout);
   return EXIT_OK;
 }
+int granpen::cli::get(int argc, char **argv) { return run_parsed(parse_get, run_get, argc, argv); }

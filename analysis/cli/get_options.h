@@ -1,5 +1,5 @@
 // granpen get / granpen gap-score: their command lines as typed structs and parse functions
-// (words -> options; pure, throwing only UsageError, as every parse of options.h).
+// (words -> options; pure, throwing only UsageError, as every subcommand's parse).
 #ifndef GRANPEN_CLI_GET_OPTIONS_H
 #define GRANPEN_CLI_GET_OPTIONS_H
 
@@ -21,6 +21,7 @@ struct GetOptions {
   std::string missing;
 };
 GetOptions parse_get(int argc, char **argv);
+int run_get(const GetOptions &o);    // get_cmd.cpp
 
 // granpen gap-score DIAGNOSIS --case NAME --truth EFFECT|none|outside --magnitude TEXT
 //                   [--as-effect EFFECT --as-magnitude X] [--wall-seconds S]
@@ -35,6 +36,7 @@ struct GapScoreOptions {
   long long wall_seconds = -1;
 };
 GapScoreOptions parse_gap_score(int argc, char **argv);
+int run_gap_score(const GapScoreOptions &o);    // gap_score_cmd.cpp
 
 }    // namespace cli
 }    // namespace granpen

@@ -1,7 +1,8 @@
 // granpen-cli: the post-processor's command-line front end (./granpen SUBCOMMAND).
-// A thin layer: every subcommand parses its arguments (cli/options.h) and runs, calling the
-// analysis library (cli/subcommands.h); run_subcommand is the one handler that turns what
-// they throw into an exit status.
+// A thin layer: every subcommand parses its arguments (cli/NAME_options.h) and runs
+// (cli/NAME_cmd.cpp), calling the analysis library; its entry point is declared in
+// cli/subcommands.h and listed in the table below; run_subcommand is the one handler that
+// turns what they throw into an exit status.
 #include "subcommand.h"
 #include "subcommands.h"
 

@@ -9,7 +9,7 @@
 #include "instrument_import.h"
 #include "instrument_reader.h"
 #include "staged_file.h"
-#include "options.h"
+#include "import_options.h"
 #include "subcommands.h"
 #include "text_util.h"
 #include "trace_files.h"
@@ -394,3 +394,5 @@ int granpen::cli::run_import(const ImportOptions &o)
     for (const auto &w : r.warnings) std::fprintf(stderr, "granpen import: warning: %s\n", w.c_str());
   return EXIT_OK;
 }
+
+int granpen::cli::import(int argc, char **argv) { return run_parsed(parse_import, run_import, argc, argv); }

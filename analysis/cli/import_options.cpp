@@ -1,5 +1,7 @@
-// granpen import: its command line (options.h).
-#include "options.h"
+// granpen import: its command line (import_options.h).
+#include "import_options.h"
+
+#include "args.h"
 
 namespace {
 

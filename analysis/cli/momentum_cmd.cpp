@@ -3,7 +3,7 @@
 // M_slow and M(v_z > v0/320) against t~ and depth, and the drag F of the trace against
 // mu g M(v_z > v0/320) (core/momentum_classes.h).
 #include "dump_cmd_common.h"
-#include "options.h"
+#include "momentum_options.h"
 #include "atomic_file.h"
 #include "momentum_study.h"
 #include "momentum_tables.h"
@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -26,51 +27,27 @@ using namespace granpen::cli;
 
 const char *const OUTPUTS[] = {"momentum.json", "momentum_classes.csv", "momentum_drag.csv"};
 
-// The classes: the paper's, or --thresholds; --mthreshold moves M_move's bound
-MomentumClasses classes_of(const ParsedArgs &args, double v0, std::string &source)
-{
-  source = "paper (v0/10, v0/80, v0/320, v0/640)";
-  try {
-    double mf = 0.0;
-    if (args.numbers.count("--thresholds")) {
-      double f[MOMENTUM_NCLASS];
-      for (int k = 0; k < MOMENTUM_NCLASS; ++k) f[k] = args.numbers.at("--thresholds")[k];
-      args.number("--mthreshold", mf);
-      source = "option";
-      return momentum_classes(v0, f, mf);
-    }
-    MomentumClasses c = momentum_classes(v0);
-    if (args.number("--mthreshold", mf)) c.vmove = mf * v0;
-    return c;
-  } catch (std::invalid_argument &e) {
-    throw UsageError(e.what());
-  }
-}
-
-// Everything but z_s: options, else the trace header, else defaults.
+// Everything but z_s (core/momentum_study.h's momentum_study_params), the origins in how.
 MomentumStudyParams resolve_parameters(const MomentumOptions &o, const PushTrace &th, MomentumProvenance &how)
 {
-  const ParsedArgs &args = o.args;
-  const Trace &tr = th.trace;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  MomentumParamSources s;
+  s.v0 = th.trace.v0, s.g = th.trace.g;
+  s.D = {o.D, nan}, s.D_trace = th.trace.D;
+  s.mu = {o.mu, th.have_mu ? th.mu : nan};
+  s.dt = {o.dt, th.have_dt ? th.dt : nan};
+  s.thresholds = o.thresholds.empty() ? nullptr : o.thresholds.data();
+  s.mthreshold = std::isfinite(o.mthreshold) ? o.mthreshold : 0.0;
+  s.by_time = o.by_time, s.push_step = o.push_step;
+  MomentumParamOrigins from;
   MomentumStudyParams p;
-  p.classes = classes_of(args, tr.v0, how.class_source);
-  p.v0 = tr.v0, p.g = tr.g;
-  how.mu_source = "default";
-  if (args.number("--mu", p.mu)) how.mu_source = "option";
-  else if (th.have_mu) p.mu = th.mu, how.mu_source = "trace";
-  p.D = tr.D, how.D_source = "trace";
-  if (args.number("--D", p.D)) how.D_source = "option";
-  how.rho_g = DEFAULT_RHO_G, how.rho_g_source = "default";
-  if (args.number("--rho", how.rho_g)) how.rho_g_source = "option";
-  else if (th.have_rho) how.rho_g = th.rho_g, how.rho_g_source = "trace";
-  p.by_time = args.has("--push-step");
-  if (p.by_time) {
-    integer_arg(args.value("--push-step", ""), p.push_step);
-    if (!args.number("--dt", p.dt)) {
-      if (!th.have_dt) throw UsageError("--push-step needs --dt (the trace has no dt key)");
-      p.dt = th.dt;
-    }
+  try {
+    p = momentum_study_params(s, from);
+  } catch (const std::invalid_argument &e) {
+    throw UsageError(e.what());
   }
+  how.D_source = from.D, how.mu_source = from.mu, how.class_source = from.classes;
+  how.rho_g = resolve({o.rho_g, th.have_rho ? th.rho_g : nan}, DEFAULT_RHO_G, "default", how.rho_g_source);
   return p;
 }
 
@@ -78,12 +55,8 @@ MomentumStudyParams resolve_parameters(const MomentumOptions &o, const PushTrace
 double bed_surface_of(const MomentumOptions &o, const PushTrace &th, const DumpFrame &frame, const GrainFrame &g,
                       MomentumProvenance &how)
 {
-  double zs = 0.0;
-  how.z_s_source = "option";
-  if (o.args.number("--zs", zs)) return zs;
-  how.z_s_source = "trace";
-  if (th.have_surface) return th.surface;
-  how.z_s_source = "first frame";
+  const double z_s = resolve({o.z_s, th.have_surface ? th.surface : std::nan("")}, 0.0, "first frame", how.z_s_source);
+  if (how.z_s_source != "first frame") return z_s;
   how.notes.push_back("bed surface measured in the first frame: the trace has no surface key");
   return frame_bed_surface(frame, g);
 }
@@ -119,13 +92,13 @@ int granpen::cli::run_momentum(const MomentumOptions &o)
 {
   MomentumProvenance how;
   begin_dump_command(o, std::vector<const char *>(std::begin(OUTPUTS), std::end(OUTPUTS)), how);
-  const PushTrace th = load_push_trace(o.args.value("--trace", ""));
+  const PushTrace th = load_push_trace(o.trace);
   how.trace = th.trace.path;
   MomentumStudyParams p = resolve_parameters(o, th, how);
 
-  DumpReader reader(o.args.positional);
+  DumpReader reader(o.dumps);
   DumpFrame frame;
-  first_frame(reader, o.args.positional, frame, "granpen momentum");
+  first_frame(reader, o.dumps, frame, "granpen momentum");
   ColumnChoice cols;
   cols.mass = how.mass_column = frame.has("mass");
   if (!cols.mass && how.rho_g_source == "default")
@@ -157,3 +130,5 @@ int granpen::cli::run_momentum(const MomentumOptions &o)
   std::printf("wrote %s/{momentum.json, momentum_classes.csv, momentum_drag.csv}\n", o.out_dir.c_str());
   return EXIT_OK;
 }
+
+int granpen::cli::momentum(int argc, char **argv) { return run_parsed(parse_momentum, run_momentum, argc, argv); }

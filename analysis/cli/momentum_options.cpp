@@ -1,8 +1,11 @@
-// granpen momentum: its command line (options.h).
-#include "options.h"
+// granpen momentum: its command line (momentum_options.h).
+#include "momentum_options.h"
+
+#include "args.h"
 
 #include "momentum_class_limits.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -42,44 +45,36 @@ granpen::cli::MomentumOptions granpen::cli::parse_momentum(int argc, char **argv
 {
   Command cmd("momentum", HELP);
   MomentumOptions o;
-  static const std::vector<OptionSpec> spec = {
-      {"--trace", 1, "FILE", "force trace of the push (required): v0, D, g, mu, rho_g, surface, dt"},
-      {"--out", 1, "DIR", "output folder (made if missing; default .)"},
-      {"--thresholds", 4, "F1 F2 F3 F4", "class bounds as fractions of v0 (default 1/10 1/80 1/320\n1/640), > 0 and decreasing; M_move then counts v_z > F3 v0"},
-      {"--mthreshold", 1, "F", "M_move counts v_z > F v0 instead"},
-      {"--mu", 1, "MU", "friction for mu g M (default: trace header mu, else 0.3)"},
-      {"--rod-type", 1, "N", "atom type of the rod (default 2); every other atom is a grain"},
-      {"--axis", 2, "X Y", "fixed rod axis (dumps without rod atoms)"},
-      {"--tip", 1, "Z", "fixed tip height (dumps without rod atoms)"},
-      {"--D", 1, "D", "rod diameter (default: the trace's)"},
-      {"--rho", 1, "RHO", "grain density for masses without a mass column (default: trace\nheader rho_g, else 3.0)"},
-      {"--zs", 1, "Z", "bed surface (default: the trace's surface key, else measured in\nthe first frame as compute bed/surface does)"},
-      {"--push-step", 1, "N", "timestep at which the push began: match the trace by time"},
-      {"--dt", 1, "DT", "timestep size for --push-step (default: the trace's dt key)"},
-      {"--periodic", 1, "AXES", "periodic box directions among x, y: xy (default), x, y or none"}};
-  ParsedArgs &args = o.args;
-  if (!parse_table(cmd, spec, "dumps", argc, argv, args, o.help)) return o;
-  std::string msg;
-  if (args.positional.empty()) throw UsageError("no dump given");
-  if (args.value("--trace", "").empty()) throw UsageError("--trace TRACE is required (v0, D, g and the drag come from it)");
-  if (!args.read_numbers({"--trace", "--out", "--periodic", "--push-step"}, msg) ||
-      !args.positive({"--D", "--rho", "--dt", "--mthreshold"}, msg) || !read_rod_options(args, o.rod, msg))
-    throw UsageError(msg);
-  double mu = 0.0;
-  if (args.number("--mu", mu) && !(mu >= 0.0)) throw UsageError("--mu must be >= 0");
-  long long push_step = 0;
-  if (args.has("--push-step") && !integer_arg(args.value("--push-step", ""), push_step))
-    throw UsageError("--push-step '" + args.value("--push-step", "") + "' is not an integer");
-  o.out_dir = args.value("--out", ".");
-  if (o.out_dir.empty()) throw UsageError("--out needs a folder");
-  o.periodic = args.value("--periodic", "xy");
-  if (!periodic_axes(o.periodic, o.px, o.py)) throw UsageError("--periodic must be xy, x, y or none");
+  cmd.app.add_option("dumps", o.dumps, "dumps");
+  add_text(cmd, "--trace", o.trace, "FILE", "force trace of the push (required): v0, D, g, mu, rho_g, surface, dt");
+  add_text(cmd, "--out", o.out_dir, "DIR", "output folder (made if missing; default .)");
+  CLI::Option *thresholds = add_numbers(cmd, "--thresholds", 4, "F1 F2 F3 F4", "class bounds as fractions of v0 (default 1/10 1/80 1/320\n1/640), > 0 and decreasing; M_move then counts v_z > F3 v0");
+  add_positive(cmd, "--mthreshold", o.mthreshold, "F", "M_move counts v_z > F v0 instead");
+  cmd.app.add_option("--mu", o.mu, "friction for mu g M (default: trace header mu, else 0.3)")
+      ->check(non_negative_number())->type_name("MU");
+  RodArgs rod;
+  add_rod_options(cmd, rod, "fixed rod axis (dumps without rod atoms)", "fixed tip height (dumps without rod atoms)");
+  add_positive(cmd, "--D", o.D, "D", "rod diameter (default: the trace's)");
+  add_positive(cmd, "--rho", o.rho_g, "RHO", "grain density for masses without a mass column (default: trace\nheader rho_g, else 3.0)");
+  add_number(cmd, "--zs", o.z_s, "Z", "bed surface (default: the trace's surface key, else measured in\nthe first frame as compute bed/surface does)");
+  std::string push_step;
+  CLI::Option *by_time = cmd.app.add_option("--push-step", push_step, "timestep at which the push began: match the trace by time")
+                             ->type_name("N");
+  add_positive(cmd, "--dt", o.dt, "DT", "timestep size for --push-step (default: the trace's dt key)");
+  add_periodic_option(cmd, o.periodic);
+  if (!cmd.parse(argc, argv, o.help)) return o;
+  if (o.dumps.empty()) throw UsageError("no dump given");
+  if (o.trace.empty()) throw UsageError("--trace TRACE is required (v0, D, g and the drag come from it)");
+  finish_rod_options(rod, o.rod);
+  o.by_time = by_time->count() > 0;
+  if (o.by_time && !integer_arg(push_step, o.push_step))
+    throw UsageError("--push-step '" + push_step + "' is not an integer");
+  finish_periodic(o.periodic, o.px, o.py);
+  o.thresholds = take_numbers(thresholds, 4);
   // the classes' bounds as momentum_classes checks them (for a speed of 1: they scale)
-  if (args.numbers.count("--thresholds")) {
-    double mfrac = 0.0;
-    args.number("--mthreshold", mfrac);
+  if (!o.thresholds.empty()) {
     try {
-      momentum_classes(1.0, args.numbers.at("--thresholds").data(), mfrac);
+      momentum_classes(1.0, o.thresholds.data(), std::isfinite(o.mthreshold) ? o.mthreshold : 0.0);
     } catch (const std::invalid_argument &e) {
       throw UsageError(std::string("--thresholds: ") + e.what());
     }

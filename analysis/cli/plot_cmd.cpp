@@ -3,7 +3,7 @@
 // parse, make the figures (ratio and peak: read, run core/collapse_study.h, draw), write
 // KIND.json.
 #include "atomic_file.h"
-#include "options.h"
+#include "plot_options.h"
 #include "collapse_study.h"
 #include "collapse_tables.h"
 #include "ensemble_tables.h"
@@ -164,3 +164,5 @@ int granpen::cli::run_plot(const PlotOptions &po)
   std::printf("wrote %s\n", jpath.c_str());
   return (failed || !run.problems.empty()) ? EXIT_FAILED : EXIT_OK;
 }
+
+int granpen::cli::plot(int argc, char **argv) { return run_parsed(parse_plot, run_plot, argc, argv); }

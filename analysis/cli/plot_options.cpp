@@ -1,5 +1,8 @@
-// granpen plot: its command line (options.h).
-#include "options.h"
+// granpen plot: its command line (plot_options.h).
+#include "plot_options.h"
+
+#include "args.h"
+#include "ensemble_args.h"
 
 #include <algorithm>
 #include <iterator>

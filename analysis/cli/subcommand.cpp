@@ -2,6 +2,7 @@
 #include "subcommand.h"
 
 #include "args.h"
+#include "input_refused.h"
 
 #include <cstdio>
 #include <new>
@@ -163,6 +164,9 @@ int run_subcommand(const char *name, int (*fn)(int, char **), int argc, char **a
     }
     return EXIT_USAGE;
   } catch (const CLI::Error &e) {
+    report(name, e.what());
+    return EXIT_USAGE;
+  } catch (const InputRefused &e) {
     report(name, e.what());
     return EXIT_USAGE;
   } catch (const std::exception &e) {

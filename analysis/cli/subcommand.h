@@ -1,12 +1,15 @@
 // granpen subcommands: the one option parser (CLI11) and the one top-level error handler.
-// A subcommand is a parse function (options.h: words -> a typed options struct, no I/O,
-// usage errors thrown as UsageError) and a run function (subcommands.h: calls the library
-// and writes); any exception either lets go is turned into "granpen NAME: error: ..." and
-// an exit status by run_subcommand.
+// A subcommand is a parse function (NAME_options.h: words -> a typed options struct, no
+// I/O, usage errors thrown as UsageError) and a run function (NAME_cmd.cpp: calls the
+// library and writes), joined by run_parsed into its entry point (subcommands.h); any
+// exception either lets go is turned into "granpen NAME: error: ..." and an exit status
+// by run_subcommand.
 #ifndef GRANPEN_CLI_SUBCOMMAND_H
 #define GRANPEN_CLI_SUBCOMMAND_H
 
 #include <CLI/CLI.hpp>
+
+#include <cstdio>
 
 #include <stdexcept>
 #include <string>
@@ -17,6 +20,13 @@ namespace cli {
 
 // Exit statuses of every subcommand.
 enum Exit { EXIT_OK = 0, EXIT_FAILED = 1, EXIT_USAGE = 2 };
+
+// What every parse returns besides its options: --help's text when --help was asked for
+// (every other field is then its default).
+struct ParsedCommand {
+  std::string help;
+  bool help_requested() const { return !help.empty(); }
+};
 
 // A usage error (an option's value against its meaning, options that contradict each
 // other): exit 2. An empty message with a usage text: no words at all, the usage (the
@@ -65,12 +75,25 @@ class Command {
 // texts ("stod", "basic_string::_M_create", std::bad_alloc) what they mean.
 std::string user_text(const std::exception &e);
 
-// Runs fn(argc, argv) for subcommand name, the top-level handler: UsageError and CLI11's
-// errors -> "granpen NAME: error: ..." and 2; any other exception (InputError,
+// Runs fn(argc, argv) for subcommand name, the top-level handler: UsageError, CLI11's
+// errors and InputRefused (io/input_refused.h) -> "granpen NAME: error: ..." and 2; any other exception (InputError,
 // OutputError, std::bad_alloc, std::invalid_argument, ...) -> "granpen NAME: error: ..."
 // and 1, the C++ library's own terse texts ("stod", "basic_string::...") replaced by
 // what they mean.
 int run_subcommand(const char *name, int (*fn)(int, char **), int argc, char **argv);
+
+// A subcommand's entry point (subcommands.h): parse, then --help's text on stdout (exit 0)
+// or run.
+template <class Options>
+int run_parsed(Options (*parse)(int, char **), int (*run)(const Options &), int argc, char **argv)
+{
+  const Options o = parse(argc, argv);
+  if (o.help_requested()) {
+    std::fputs(o.help.c_str(), stdout);
+    return EXIT_OK;
+  }
+  return run(o);
+}
 
 }    // namespace cli
 }    // namespace granpen

@@ -1,6 +1,6 @@
 // granpen sweep SPEC [options]: run a sweep of pours and pushes (see sweep/sweep_spec.h).
 #include "atomic_file.h"
-#include "options.h"
+#include "sweep_options.h"
 #include "subcommands.h"
 #include "sweep_runner.h"
 #include "sweep_spec.h"
@@ -64,3 +64,5 @@ int granpen::cli::run_sweep_command(const SweepOptions &o)
     return EXIT_FAILED;
   }
 }
+
+int granpen::cli::sweep(int argc, char **argv) { return run_parsed(parse_sweep_command, run_sweep_command, argc, argv); }

@@ -1,5 +1,7 @@
-// granpen sweep: its command line (options.h).
-#include "options.h"
+// granpen sweep: its command line (sweep_options.h).
+#include "sweep_options.h"
+
+#include "args.h"
 
 #include <algorithm>
 #include <cstdlib>

@@ -37,22 +37,13 @@ ExpFit gammadot_length(const FlowFields &F, double radius)
   return fit_exponential(gz, gg);
 }
 
-// the first of option and trace that is given (its origin named), else `otherwise`
-double pick(const FlowParamChoice &c, double otherwise, const char *otherwise_origin, std::string &origin)
-{
-  if (std::isfinite(c.option)) return origin = "option", c.option;
-  if (std::isfinite(c.trace)) return origin = "trace", c.trace;
-  origin = otherwise_origin;
-  return otherwise;
-}
-
 double given_or(double v, double otherwise) { return std::isfinite(v) ? v : otherwise; }
 
 }    // namespace
 
-double flow_grain_density(const FlowParamChoice &rho_g, std::string &origin)
+double flow_grain_density(const ParamChoice &rho_g, std::string &origin)
 {
-  return pick(rho_g, DEFAULT_RHO_G, "default", origin);
+  return resolve(rho_g, DEFAULT_RHO_G, "default", origin);
 }
 
 FlowStudyParams flow_study_params(const FlowParamSources &s, FlowParamOrigins &from)
@@ -68,13 +59,13 @@ FlowStudyParams flow_study_params(const FlowParamSources &s, FlowParamOrigins &f
   }
   double diameters = 0;
   for (std::size_t i = 0; i < s.grains; ++i) diameters += 2.0 * s.radius[i];
-  p.d_g = pick(s.d_g, diameters / (double) s.grains, "first frame", from.d_g);
-  p.D = pick(s.D, s.rod_D, "rod atoms", from.D);
+  p.d_g = resolve(s.d_g, diameters / (double) s.grains, "first frame", from.d_g);
+  p.D = resolve(s.D, s.rod_D, "rod atoms", from.D);
   if (!std::isfinite(p.D)) throw std::invalid_argument("no rod atoms to measure D from: give --D or --trace");
-  p.v0 = pick(s.v0, nan, "none", from.v0);
-  p.g = pick(s.g, nan, "none", from.g);
+  p.v0 = resolve(s.v0, nan, "none", from.v0);
+  p.g = resolve(s.g, nan, "none", from.g);
   if (!std::isfinite(p.v0) || !std::isfinite(p.g)) from.notes.push_back("t~ undefined: no v0 or g (give --trace, or --v0 and --g)");
-  p.z_s = pick(s.z_s, nan, "first frame", from.z_s);
+  p.z_s = resolve(s.z_s, nan, "first frame", from.z_s);
   if (from.z_s == "first frame") {
     p.z_s = s.measure_z_s();
     from.notes.push_back("bed surface z_s measured in the first frame (timestep " + std::to_string(s.timestep) +

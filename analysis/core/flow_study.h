@@ -8,6 +8,7 @@
 
 #include "flow_fields.h"
 #include "linear_fit.h"
+#include "param_choice.h"
 
 #include <functional>
 #include <limits>
@@ -30,14 +31,10 @@ struct FlowStudyParams {
   double box_zlo = 0.0, box_zhi = 0.0;    // the box in z: the strip's extent
 };
 
-// The study's parameters, each from the first source that gives it: an option, the push's
-// trace header, else the first frame or a default (NaN: that source does not give it).
-struct FlowParamChoice {
-  double option = std::numeric_limits<double>::quiet_NaN();
-  double trace = std::numeric_limits<double>::quiet_NaN();
-};
+// The study's parameters, each from the first source that gives it (param_choice.h): an
+// option, the push's trace header, else the first frame or a default.
 struct FlowParamSources {
-  FlowParamChoice D, d_g, rho_g, v0, g, z_s;
+  ParamChoice D, d_g, rho_g, v0, g, z_s;
   // the first frame: its grains' radii and masses (mass null without a mass column), the
   // rod diameter from its atoms (NaN: no rod atoms), the box, its timestep, and the bed
   // surface measured on demand (as compute bed/surface does)
@@ -61,7 +58,7 @@ struct FlowParamOrigins {
 };
 
 // The grain density for masses when a frame has no mass column: option, trace, else 3.
-double flow_grain_density(const FlowParamChoice &rho_g, std::string &origin);
+double flow_grain_density(const ParamChoice &rho_g, std::string &origin);
 
 // The parameters from their sources: rho_g as flow_grain_density, but from the first
 // frame's masses over its grains' volumes when it has a mass column and neither option nor

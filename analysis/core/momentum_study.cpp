@@ -5,8 +5,26 @@
 #include "scaling_laws.h"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace granpen {
+
+MomentumStudyParams momentum_study_params(const MomentumParamSources &s, MomentumParamOrigins &from)
+{
+  MomentumStudyParams p;
+  p.classes = momentum_classes(s.v0, s.thresholds, s.mthreshold);
+  from.classes = s.thresholds ? "option" : "paper (v0/10, v0/80, v0/320, v0/640)";
+  p.v0 = s.v0, p.g = s.g;
+  p.mu = resolve(s.mu, DEFAULT_MU, "default", from.mu);
+  p.D = resolve(s.D, s.D_trace, "trace", from.D);
+  p.by_time = s.by_time;
+  if (p.by_time) {
+    p.push_step = s.push_step;
+    p.dt = resolve(s.dt, std::nan(""), "none", from.dt);
+    if (!std::isfinite(p.dt)) throw std::invalid_argument("--push-step needs --dt (the trace has no dt key)");
+  }
+  return p;
+}
 
 MomentumFrameRecord momentum_frame(const MomentumStudyParams &p, const TraceColumns &trace, const MomentumFrameInput &f)
 {

@@ -6,6 +6,7 @@
 #define GRANPEN_MOMENTUM_STUDY_H
 
 #include "momentum_classes.h"
+#include "param_choice.h"
 #include "scaling_laws.h"
 
 #include <string>
@@ -22,6 +23,28 @@ struct MomentumStudyParams {
   long long push_step = 0;
   double dt = 0.0;
 };
+
+// Where the study's parameters (all but z_s) come from (param_choice.h): the options, the
+// push's trace header, the defaults.
+struct MomentumParamSources {
+  double v0 = 0.0, g = 0.0;           // the trace's
+  ParamChoice D, mu, dt;              // D falls back on D_trace; mu on DEFAULT_MU; dt on nothing
+  double D_trace = 0.0;
+  const double *thresholds = nullptr;    // the classes' bounds F1..F4 as fractions of v0 (null: the paper's)
+  double mthreshold = 0.0;            // M_move counts v_z > mthreshold v0 (0: the classes' own bound)
+  bool by_time = false;               // F matched by time from push_step, else by depth
+  long long push_step = 0;
+};
+// Which source each came from ("option", "trace", "default"), and the classes' ("option",
+// or the paper's).
+struct MomentumParamOrigins {
+  std::string D, mu, dt, classes;
+};
+
+// The parameters but z_s (the caller's: option, trace, else the first frame). Throws
+// std::invalid_argument for classes momentum_classes refuses and for by_time without a
+// dt from option or trace.
+MomentumStudyParams momentum_study_params(const MomentumParamSources &s, MomentumParamOrigins &from);
 
 // The force trace's columns F is read from.
 struct TraceColumns {

@@ -1,28 +1,28 @@
-// granpen sweep: the runner (processes, progress, resume, manifest).
+// granpen sweep: the runner's pool: the runs of one or more sweeps, up to `jobs` at once,
+// started in order as their beds are ready, reaped, reported. The parts it runs on:
+// sweep_jobs.h (runs and resume), sweep_manifest.h, sweep_process.h, sweep_lock.h,
+// sweep_files.h.
 #include "sweep_runner.h"
 
 #include "atomic_file.h"
-#include "json_writer.h"
-#include "slurm_script.h"
 #include "errors.h"
+#include "slurm_script.h"
+#include "sweep_files.h"
+#include "sweep_jobs.h"
+#include "sweep_manifest.h"
+#include "sweep_process.h"
 
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <fcntl.h>
-#include <filesystem>
-#include <fstream>
 #include <map>
-#include <new>
 #include <signal.h>
-#include <sys/file.h>
-#include <sys/prctl.h>
 #include <sstream>
-#include <sys/stat.h>
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
@@ -46,552 +46,9 @@ std::string format_duration(double s)
   return buf;
 }
 
-
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-bool exists(const std::string &p)
-{
-  struct stat st;
-  return stat(p.c_str(), &st) == 0;
-}
-
-double mtime(const std::string &p)
-{
-  struct stat st;
-  if (stat(p.c_str(), &st) != 0) return -1.0;
-  return st.st_mtim.tv_sec + 1e-9 * st.st_mtim.tv_nsec;
-}
-
-void mkdirs(const std::string &p)
-{
-  std::string cur;
-  std::istringstream in(p);
-  std::string part;
-  if (!p.empty() && p[0] == '/') cur = "/";
-  while (std::getline(in, part, '/')) {
-    if (part.empty()) continue;
-    cur += part + "/";
-    if (mkdir(cur.c_str(), 0755) != 0 && errno != EEXIST)
-      throw InputError("cannot create folder " + cur + ": " + std::strerror(errno));
-  }
-}
-
-std::string slurp(const std::string &p)
-{
-  std::ifstream f(p);
-  std::ostringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
-
-std::string first_line_matching(const std::string &text, const std::string &prefix)
-{
-  std::istringstream in(text);
-  std::string line;
-  while (std::getline(in, line))
-    if (line.compare(0, prefix.size(), prefix) == 0) return line;
-  return "";
-}
-
-std::map<std::string, std::string> read_info(const std::string &p)
-{
-  std::map<std::string, std::string> kv;
-  std::istringstream in(slurp(p));
-  std::string line;
-  while (std::getline(in, line)) {
-    auto eq = line.find(" = ");
-    if (line.empty() || line[0] == '#' || eq == std::string::npos) continue;
-    kv[line.substr(0, eq)] = line.substr(eq + 3);
-  }
-  return kv;
-}
-
-// depth of the last row of a trace being written (z is the second column of our traces)
-double last_depth(const std::string &trace)
-{
-  std::ifstream f(trace, std::ios::ate);
-  if (!f) return NAN;
-  const std::streamoff size = f.tellg();
-  const std::streamoff back = std::min<std::streamoff>(size, 512);
-  f.seekg(size - back);
-  std::string tail(back, '\0');
-  f.read(&tail[0], back);
-  auto end = tail.find_last_not_of("\n");
-  if (end == std::string::npos) return NAN;
-  auto start = tail.rfind('\n', end);
-  std::string line = tail.substr(start == std::string::npos ? 0 : start + 1, end - start);
-  auto c1 = line.find(',');
-  if (c1 == std::string::npos || line[0] == '#' || line[0] == 't') return NAN;
-  return std::atof(line.c_str() + c1 + 1);
-}
-
-// an executable path, or a name found on PATH
-bool on_path(const std::string &prog)
-{
-  if (prog.find('/') != std::string::npos) return access(prog.c_str(), X_OK) == 0;
-  const char *path = std::getenv("PATH");
-  std::istringstream in(path ? path : "");
-  std::string dir;
-  while (std::getline(in, dir, ':'))
-    if (!dir.empty() && access((dir + "/" + prog).c_str(), X_OK) == 0) return true;
-  return false;
-}
-
-// the last progress line a pour printed ("granpen pour: chunk 5/60: ..."), shortened
-std::string pour_status(const std::string &log)
-{
-  std::ifstream f(log);
-  std::string line, last;
-  while (std::getline(f, line))
-    if (line.compare(0, 14, "granpen pour: ") == 0) last = line.substr(14);
-  auto colon = last.find(':');
-  return last.substr(0, colon);
-}
-
-struct Job {
-  PlannedRun run;
-  std::vector<std::string> argv;
-  std::string log, out, trace, info, done;
-  std::string pour_checkpoints;      // a checkpointed pour's NAME.pour (pour_checkpoint = yes)
-  std::string status = "pending";    // pending, running, done, skipped, failed
-  std::string action;                // what was done: started, resumed, restarted, already done
-  std::string error;
-  int exit_code = 0;
-  pid_t pid = -1;
-  Clock::time_point start;
-  double wall = 0.0;
-  double target_depth = 0.0;
-  int lock_fd = -1;                  // the run's lock while this runner holds it
-};
-
-void unlock(Job &j)
-{
-  if (j.lock_fd >= 0) close(j.lock_fd);
-  j.lock_fd = -1;
-}
-
-
-// Starts argv with stdout and stderr into out. The child is a process group of its own and
-// dies with the runner (PR_SET_PDEATHSIG): a runner killed with -9 leaves no LAMMPS behind
-// writing the trace and checkpoints a resumed runner writes too. The run's lock is not
-// inherited (close-on-exec): an MPI program forks helpers (Open MPI's singleton orted)
-// that would keep it held long after the run.
-pid_t spawn(const std::vector<std::string> &argv, const std::string &out)
-{
-  std::vector<char *> args;
-  for (auto &a : argv) args.push_back(const_cast<char *>(a.c_str()));
-  args.push_back(nullptr);
-  const pid_t runner = getpid();
-  pid_t pid = fork();
-  if (pid == 0) {
-    setpgid(0, 0);
-    prctl(PR_SET_PDEATHSIG, SIGKILL);
-    if (getppid() != runner) _exit(127);    // the runner died before prctl took effect
-    signal(SIGXFSZ, SIG_DFL);                // the runner ignores it; LAMMPS must not write on past the limit
-    int fd = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    if (fd >= 0) {
-      dup2(fd, 1);
-      dup2(fd, 2);
-      close(fd);
-    }
-    int devnull = open("/dev/null", O_RDONLY);
-    if (devnull >= 0) dup2(devnull, 0);
-    execvp(args[0], args.data());
-    std::fprintf(stderr, "cannot run %s: %s\n", args[0], std::strerror(errno));
-    _exit(127);
-  }
-  if (pid > 0) setpgid(pid, pid);    // on both sides: whichever runs first
-  return pid;
-}
-
-// The lock of one run, DIR/locks/ID.lock: an flock the runner holds from before the run's
-// files are looked at until the run ends (its process dies with the runner); the file
-// names the runner's pid. Returns the descriptor (close-on-exec), or -1 with holder set to the text
-// of the file (the holder's pid) when another process holds it.
-int lock_run(const std::string &path, std::string &holder)
-{
-  const int fd = open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-  if (fd < 0) throw InputError("cannot open lock file " + path + ": " + std::strerror(errno));
-  if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
-    char buf[64] = {0};
-    const ssize_t n = pread(fd, buf, sizeof buf - 1, 0);
-    holder = n > 0 ? std::string(buf, (std::size_t) n) : std::string("?");
-    while (!holder.empty() && (holder.back() == '\n' || holder.back() == ' ')) holder.pop_back();
-    close(fd);
-    return -1;
-  }
-  const std::string pid = std::to_string(getpid()) + "\n";
-  if (ftruncate(fd, 0) != 0 || pwrite(fd, pid.data(), pid.size(), 0) != (ssize_t) pid.size()) {
-    const std::string e = std::strerror(errno);
-    close(fd);
-    throw InputError("cannot write lock file " + path + ": " + e);
-  }
-  return fd;
-}
-
-// A checkpoint LAMMPS finished writing ends with the restart format's magic string
-// (lmprestart.h, checked by read_restart); one cut short by a kill or a full disk does not,
-// and is never resumed from.
-bool complete_checkpoint(const std::string &p)
-{
-  static const char magic[] = "LammpS RestartT";    // written with its '\0'
-  const int fd = open(p.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return false;
-  struct stat st;
-  char tail[sizeof magic] = {0};
-  const bool ok = fstat(fd, &st) == 0 && st.st_size >= (off_t) sizeof magic &&
-                  pread(fd, tail, sizeof magic, st.st_size - (off_t) sizeof magic) == (ssize_t) sizeof magic &&
-                  std::memcmp(tail, magic, sizeof magic) == 0;
-  close(fd);
-  return ok;
-}
-
-// "exit code N" or the signal that ended a run, with what it means when it is a known fault
-std::string exit_reason(int wstatus)
-{
-  if (WIFEXITED(wstatus)) return "exit code " + std::to_string(WEXITSTATUS(wstatus));
-  const int sig = WTERMSIG(wstatus);
-  if (sig == SIGXFSZ) return "killed by SIGXFSZ: a file reached the file size limit (ulimit -f)";
-  return "killed by signal " + std::to_string(sig) + " (" + strsignal(sig) + ")";
-}
-
-// One sweep of a pool: its runs, its folder and what its manifest keeps.
-struct Sweep {
-  SweepSpec spec;
-  std::string dir;
-  std::string label;                       // "NAME/" before run ids when a pool has several sweeps
-  std::vector<Job> jobs;
-  std::vector<Json> other_runs;            // manifest records of other sweep files of this name
-  std::map<std::string, Json> held_runs;   // manifest records of runs another process holds
-  std::string lammps_version;
-  bool reported = false;                   // its closing line printed
-};
-
-bool finished(const Job &j) { return j.status == "done" || j.status == "skipped"; }
-bool terminal(const Job &j) { return finished(j) || j.status == "failed"; }
-
-// a bed (restart and info) of another sweep, hard-linked (copied across file systems)
-void link_bed(const std::string &from_dir, const std::string &to_dir, const std::string &id)
-{
-  namespace fs = std::filesystem;
-  for (const char *ext : {".restart", ".info"}) {
-    const fs::path src = from_dir + "/beds/" + id + ext, dst = to_dir + "/beds/" + id + ext;
-    if (fs::exists(dst)) continue;
-    std::error_code ec;
-    fs::create_hard_link(src, dst, ec);
-    if (ec) fs::copy_file(src, dst, ec);
-    if (ec) throw InputError("cannot link " + src.string() + " to " + dst.string() + ": " + ec.message());
-  }
-}
-
-// the command line of one planned run
-Job make_job(const PlannedRun &r, const Sweep &sw, const RunnerOptions &opt)
-{
-  const std::string &dir = sw.dir;
-  const SweepSpec &spec = sw.spec;
-  Job j;
-  j.run = r;
-  j.log = dir + "/logs/" + r.id + ".log";
-  j.out = dir + "/logs/" + r.id + ".out";
-  std::vector<std::string> a;
-  if (!opt.mpirun.empty()) {
-    // srun counts tasks with -n, mpirun/mpiexec with -np
-    const std::string base = opt.mpirun.substr(opt.mpirun.rfind('/') + 1);
-    a = {opt.mpirun, base == "srun" ? "-n" : "-np", std::to_string(opt.ranks)};
-  }
-  a.push_back(opt.lmp);
-  auto var = [&](const std::string &k, const std::string &v) {
-    if (!v.empty()) a.insert(a.end(), {"-var", k, v});
-  };
-  if (r.kind == PlannedRun::POUR) {
-    j.info = dir + "/beds/" + r.id + ".info";
-    a.insert(a.end(), {"-in", opt.inputs + "/in.pour"});
-    var("inputs", opt.inputs);
-    var("preset", r.preset);
-    var("mu", r.mu);
-    var("seed", r.seed);
-    var("out", dir + "/beds/" + r.id);
-    if (spec.pour_checkpoint) {
-      var("checkpoint", "1");
-      j.pour_checkpoints = dir + "/beds/" + r.id + ".pour";
-    }
-    for (const auto &[k, v] : spec.set) var(k, v);
-  } else {
-    j.trace = dir + "/traces/" + r.id + ".csv";
-    j.done = j.trace + ".done";
-    a.insert(a.end(), {"-in", opt.inputs + "/in.push"});
-    var("inputs", opt.inputs);
-    var("preset", r.preset);
-    var("mu", r.mu);
-    var("bed", dir + "/beds/" + r.bed + ".restart");
-    var("v0", r.v0);
-    var("g_push", r.g);
-    var("D", r.D);
-    var("depth", r.depth);
-    var("mu_push", r.mu_push);
-    var("run", r.seed);
-    var("trace", j.trace);
-    var("checkpoint", std::to_string(opt.checkpoint));
-    var("observe", opt.inputs + "/observe/" + spec.observe + ".lmp");
-    for (const auto &[k, v] : spec.set) var(k, v);
-    for (const auto &[k, v] : spec.push_set) var(k, v);
-    var("drive_extra", "header bed " + r.bed + " header seed " + r.seed + " header preset " + r.preset);
-    j.target_depth = r.depth.empty() ? 0.0 : std::atof(r.depth.c_str());
-  }
-  a.insert(a.end(), {"-log", j.log, "-screen", "none"});
-  j.argv = a;
-  return j;
-}
-
-// A finished pour's checkpoints (NAME.pour.state, NAME.pour.STEP.restart): in.pour removes
-// the one its state names, but a kill between LAMMPS writing a restart and the deck
-// renaming the state leaves that newer restart behind, which only a listing finds.
-void remove_pour_checkpoints(const std::string &stem)    // DIR/NAME.pour
-{
-  namespace fs = std::filesystem;
-  const fs::path pour(stem);
-  const std::string prefix = pour.filename().string() + ".";
-  std::error_code ec;
-  std::vector<fs::path> left;
-  for (const auto &e : fs::directory_iterator(pour.parent_path(), ec))
-    if (e.path().filename().string().rfind(prefix, 0) == 0) left.push_back(e.path());
-  for (const auto &p : left) fs::remove(p, ec);
-}
-
-// in.pour's NAME.pour.state: LAMMPS variable commands; the phase and the saved step
-std::pair<std::string, std::string> read_pour_state(const std::string &path)
-{
-  std::ifstream in(path);
-  std::string line, phase, step;
-  while (std::getline(in, line)) {
-    std::istringstream w(line);
-    std::string cmd, name, style, value;
-    if (!(w >> cmd >> name >> style >> value) || cmd != "variable") continue;
-    if (name == "phase") phase = value;
-    if (name == "step_saved" && value.find_first_not_of("0123456789") == std::string::npos) step = value;
-  }
-  return {phase, step};
-}
-
-// What a run's files say: a finished run is skipped, an interrupted push resumed from its
-// newest complete checkpoint. `own`: this runner holds the run's lock and may move files.
-void inspect_job(Job &j, bool own)
-{
-  if (j.run.kind == PlannedRun::POUR) {
-    if (exists(j.info)) {
-      j.status = "skipped", j.action = "already done";
-      return;
-    }
-    // a checkpointed pour (pour_checkpoint = yes): resume from the chunk its state names,
-    // when the restart it names is complete; else pour again from the start
-    const std::string state = j.pour_checkpoints + ".state";
-    if (own && !j.pour_checkpoints.empty() && exists(state)) {
-      const auto kv = read_pour_state(state);
-      const std::string restart = j.pour_checkpoints + "." + kv.second + ".restart";
-      if (!kv.second.empty() && complete_checkpoint(restart)) {
-        j.argv.insert(j.argv.end() - 4, {"-var", "resume", "yes"});
-        j.action = "resumed at step " + kv.second + " (" + kv.first + ")";
-      } else {
-        std::remove(state.c_str());
-        j.action = "started (its last checkpoint was incomplete)";
-      }
-    }
-    return;
-  }
-  const std::string ca = j.trace + ".a.restart", cb = j.trace + ".b.restart";
-  const bool ok_a = complete_checkpoint(ca), ok_b = complete_checkpoint(cb);
-  switch (push_action(exists(j.done), exists(j.trace), ok_a || ok_b)) {
-    case PushAction::SKIP_DONE: j.status = "skipped"; j.action = "already done"; break;
-    case PushAction::RESUME: {
-      const std::string from = ok_a && (!ok_b || mtime(ca) >= mtime(cb)) ? ca : cb;
-      j.argv.insert(j.argv.end() - 4, {"-var", "resume", "yes", "-var", "from", from});
-      j.action = "resumed from " + from.substr(from.rfind('/') + 1);
-      if (exists(ca) != ok_a || exists(cb) != ok_b) j.action += " (the other checkpoint is incomplete)";
-      break;
-    }
-    case PushAction::RESTART_FRESH: {
-      if (!own) break;
-      // an interrupted push with no complete checkpoint: keep its partial trace, start over
-      int n = 1;
-      while (exists(j.trace + ".partial" + std::to_string(n))) ++n;
-      const std::string keep = j.trace + ".partial" + std::to_string(n);
-      if (std::rename(j.trace.c_str(), keep.c_str()) != 0)
-        throw InputError("cannot move " + j.trace + " to " + keep + ": " + std::strerror(errno));
-      j.action = "restarted (partial trace kept as " + keep.substr(keep.rfind('/') + 1) + ")";
-      break;
-    }
-    case PushAction::START: j.action = "started"; break;
-  }
-}
-
-// The runs of DIR/manifest.json: its "runs", or, when the file is not valid JSON (written
-// by hand, or by a granpen older than the atomic write), every line that is one run's
-// record on its own (the writer puts each run on one line); a warning names the file.
-std::vector<Json> manifest_runs(const std::string &path)
-{
-  std::vector<Json> runs;
-  const std::string text = slurp(path);
-  try {
-    const Json m = Json::parse(text);
-    if (m.is_object() && m.contains("runs") && m["runs"].is_array())
-      for (const auto &r : m["runs"])
-        if (r.is_object() && r.contains("id") && r["id"].is_string()) runs.push_back(r);
-    return runs;
-  } catch (const Json::exception &e) {
-    std::fprintf(stderr, "granpen sweep: warning: %s is not valid JSON (%s); keeping the runs of its lines that are\n",
-                 path.c_str(), e.what());
-  }
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) {
-    while (!line.empty() && (line.back() == ',' || line.back() == ' ')) line.pop_back();
-    const Json r = Json::parse(line, nullptr, false);
-    if (r.is_object() && r.contains("id") && r["id"].is_string()) runs.push_back(r);
-  }
-  return runs;
-}
-
-// Runs of other sweep files with the same name (sharing its beds, e.g. a v0 and a g sweep)
-// stay in the manifest, keyed by their ids; so do the records of runs another process holds.
-void keep_other_runs(Sweep &sw)
-{
-  const std::string path = sw.dir + "/manifest.json";
-  if (!exists(path)) return;
-  for (auto &run : manifest_runs(path)) {
-    const std::string id = run["id"].get<std::string>();
-    const auto planned = std::find_if(sw.jobs.begin(), sw.jobs.end(), [&](const Job &j) { return j.run.id == id; });
-    if (planned == sw.jobs.end()) sw.other_runs.push_back(std::move(run));
-    else if (planned->action == "refused") sw.held_runs[id] = std::move(run);
-  }
-}
-
-Sweep setup_sweep(const SweepTask &task, const RunnerOptions &opt)
-{
-  Sweep sw;
-  sw.spec = task.spec;
-  const std::string dir = sw.dir = opt.out_root + "/" + sw.spec.name;
-  for (const char *sub : {"/beds", "/traces", "/logs", "/locks"}) mkdirs(dir + sub);
-  for (const auto &r : plan_sweep(sw.spec)) sw.jobs.push_back(make_job(r, sw, opt));
-
-  // the runs this runner will run are locked before their files are looked at; one another
-  // process holds is refused, its files untouched
-  for (size_t k = 0; k < sw.jobs.size(); ++k) {
-    Job &j = sw.jobs[k];
-    const bool planned = opt.only_index < 0 || (int) k == opt.only_index;
-    if (!planned) {
-      inspect_job(j, false);    // read only: a pour another task may have made
-      continue;
-    }
-    std::string holder;
-    j.lock_fd = lock_run(dir + "/locks/" + j.run.id + ".lock", holder);
-    if (j.lock_fd < 0) {
-      j.status = "failed";
-      j.action = "refused";
-      j.error = "locked by another process (granpen sweep pid " + holder + ")";
-      continue;
-    }
-    inspect_job(j, true);
-    if (j.status == "skipped") unlock(j);
-  }
-
-  for (auto &j : sw.jobs) {
-    if (j.status != "skipped") continue;
-    auto kv = read_info(j.run.kind == PlannedRun::POUR ? j.info : j.done);
-    if (kv.count("wall_seconds")) j.wall = std::atof(kv["wall_seconds"].c_str());
-  }
-
-  // the LAMMPS version from any log already there (all runs may be skipped)
-  for (const auto &j : sw.jobs)
-    if (sw.lammps_version.empty() && exists(j.log)) sw.lammps_version = first_line_matching(slurp(j.log), "LAMMPS (");
-  keep_other_runs(sw);
-  return sw;
-}
-
-// A number of a .info file as JSON: as written when it is a JSON number, else its value.
-Json info_number(const std::string &text)
-{
-  const Json v = Json::parse(text, nullptr, false);
-  return v.is_number() ? v : Json(std::strtod(text.c_str(), nullptr));
-}
-
-// one run's record of the manifest
-Json manifest_run(const Sweep &sw, const Job &j)
-{
-  const auto &r = j.run;
-  Json m;
-  m["id"] = r.id;
-  m["kind"] = r.kind == PlannedRun::POUR ? "pour" : "push";
-  m["status"] = j.status;
-  m["action"] = j.action;
-  m["preset"] = r.preset;
-  m["mu"] = r.mu;
-  m["seed"] = r.seed;
-  if (r.kind == PlannedRun::POUR) {
-    auto info = exists(j.info) ? read_info(j.info) : std::map<std::string, std::string>{};
-    for (const char *k : {"z_s", "phi_0", "grains", "wall_seconds"})
-      if (info.count(k) && positive_number(info[k])) m[k] = info_number(info[k]);
-    m["bed"] = sw.dir + "/beds/" + r.id + ".restart";
-  } else {
-    m["bed"] = r.bed;
-    m["v0"] = r.v0;
-    m["g"] = r.g;
-    m["D"] = r.D;
-    m["depth"] = r.depth;
-    m["mu_push"] = r.mu_push;
-    m["trace"] = j.trace;
-  }
-  m["log"] = j.log;
-  m["wall_seconds_run"] = json_rounded("%.3f", j.wall);
-  m["exit_code"] = j.exit_code;
-  m["error"] = j.error;
-  return m;
-}
-
-// DIR/manifest.json (docs/sweeps.md), every run one line; a run another process holds
-// keeps the record that process wrote.
-Json manifest_json(const Sweep &sw)
-{
-  Json m;
-  m["sweep"] = sw.spec.name;
-  m["spec"] = sw.spec.path;
-  m["granpen"] = GRANPEN_VERSION;
-  m["lammps"] = sw.lammps_version;
-  m["runs"] = Json::array();
-  for (const auto &r : sw.other_runs) m["runs"].push_back(r);
-  for (const auto &j : sw.jobs) {
-    if (j.action == "refused") {
-      const auto held = sw.held_runs.find(j.run.id);
-      if (held != sw.held_runs.end()) m["runs"].push_back(held->second);
-      continue;
-    }
-    m["runs"].push_back(manifest_run(sw, j));
-  }
-  return m;
-}
-
-// Writes DIR/manifest.json through io/atomic_file (a temporary of this process's own:
-// SLURM tasks of one sweep write it too; every step checked). Returns "" or what failed.
-std::string write_manifest_file(const Sweep &sw)
-{
-  try {
-    write_json(sw.dir + "/manifest.json", manifest_json(sw), 1);
-  } catch (const OutputError &e) {
-    return e.what();
-  }
-  return "";
-}
-
-// A manifest that cannot be written is said once per sweep, and the sweep counts as failed;
-// the runs go on (their traces are what matters).
-bool manifest_failed = false;
-void write_manifest(const Sweep &sw)
-{
-  const std::string e = write_manifest_file(sw);
-  if (e.empty()) return;
-  if (!manifest_failed) std::fprintf(stderr, "granpen sweep %s: error: manifest: %s\n", sw.spec.name.c_str(), e.c_str());
-  manifest_failed = true;
-}
+using namespace sweep_run;
 
 // A push's cost in steps, up to a common factor: travel / (v0 dt). Pushes are started
 // longest first so that the pool ends on short ones (no core idles behind a slow push).
@@ -632,6 +89,7 @@ struct Pool {
   std::vector<RunKey> order;    // pours (every push waits for one), then pushes, longest first
   Clock::time_point t0 = Clock::now(), last_report = Clock::now();
   int running = 0;
+  bool manifest_failed = false;    // a manifest could not be written: said once, the sweeps fail
 
   Pool(const std::vector<SweepTask> &t, const RunnerOptions &o) : tasks(t), opt(o) {}
   ~Pool()
@@ -644,6 +102,7 @@ struct Pool {
   bool planned_in(size_t k) const { return opt.only_index < 0 || (int) k == opt.only_index; }
   Job &job(const RunKey &r) { return sweeps[r.first].jobs[r.second]; }
 
+  void write_manifest(const Sweep &sw);
   void plan_links();
   void plan_order();
   void start_ready();
@@ -652,6 +111,16 @@ struct Pool {
   void close_finished();
   int finish();
 };
+
+// A manifest that cannot be written is said once per pool, and the sweep counts as failed;
+// the runs go on (their traces are what matters).
+void Pool::write_manifest(const Sweep &sw)
+{
+  const std::string e = write_manifest_file(sw);
+  if (e.empty()) return;
+  if (!manifest_failed) std::fprintf(stderr, "granpen sweep %s: error: manifest: %s\n", sw.spec.name.c_str(), e.c_str());
+  manifest_failed = true;
+}
 
 void Pool::plan_links()
 {
@@ -863,7 +332,6 @@ int Pool::finish()
   }
   return failed_sweeps;
 }
-
 }    // namespace
 
 int run_sweep(const SweepSpec &spec, const RunnerOptions &opt) { return run_sweeps({{spec, ""}}, opt) ? 1 : 0; }
@@ -874,7 +342,6 @@ int run_sweeps(const std::vector<SweepTask> &tasks, const RunnerOptions &opt)
   // a file that outgrows `ulimit -f` is a write error here (EFBIG), not the runner's death;
   // its children get the default back (spawn)
   signal(SIGXFSZ, SIG_IGN);
-  manifest_failed = false;
   Pool pool(tasks, opt);
   for (const auto &t : tasks) {
     pool.sweeps.push_back(setup_sweep(t, opt));
@@ -889,7 +356,7 @@ int run_sweeps(const std::vector<SweepTask> &tasks, const RunnerOptions &opt)
     std::printf("granpen sweep %s: %d runs (%d already done) in %s, up to %d at once%s\n", sw.spec.name.c_str(),
                 planned, skipped, sw.dir.c_str(), opt.jobs,
                 pool.sweeps.size() > 1 ? (" (a pool of " + std::to_string(pool.sweeps.size()) + " sweeps)").c_str() : "");
-    write_manifest(sw);
+    pool.write_manifest(sw);
   }
   std::fflush(stdout);
 

@@ -6,14 +6,24 @@
 // The input's bytes are an argument vector, one word a line ('\n' separates words; a
 // word may be empty). The first word names the subcommand; when it names none, it picks
 // one (its bytes summed, modulo 11) and the remaining words are still the arguments. Each
-// subcommand's parse function (analysis/cli/options.h) may accept the words, answer
+// subcommand's parse function (analysis/cli/NAME_options.h) may accept the words, answer
 // --help, or throw UsageError; anything else thrown, or an accepted parse whose options
-// break the checks options.h states for them, aborts.
+// break the checks NAME_options.h states for them, aborts.
 #ifndef GRANPEN_FUZZ_CLI_BODY_H
 #define GRANPEN_FUZZ_CLI_BODY_H
 
 #include "fuzz_check.h"
-#include "options.h"
+#include "calibration_options.h"
+#include "check_options.h"
+#include "collapse_options.h"
+#include "convert_options.h"
+#include "fit_options.h"
+#include "flow_options.h"
+#include "gap_options.h"
+#include "import_options.h"
+#include "momentum_options.h"
+#include "plot_options.h"
+#include "sweep_options.h"
 
 #include <cerrno>
 #include <cmath>
@@ -41,15 +51,10 @@ inline bool periodic_matches(const std::string &p, bool x, bool y)
 {
   return (p == "xy" && x && y) || (p == "x" && x && !y) || (p == "y" && !x && y) || (p == "none" && !x && !y);
 }
-// every number read (ParsedArgs::read_numbers) is finite; those of `positive` are > 0
-inline void check_numbers(const ParsedArgs &a, const std::set<std::string> &positive)
-{
-  for (const auto &kv : a.numbers)
-    for (double v : kv.second) {
-      GRANPEN_FUZZ_CHECK(std::isfinite(v));
-      if (positive.count(kv.first)) GRANPEN_FUZZ_CHECK(v > 0.0);
-    }
-}
+// a number option of flow and momentum: NaN (not given) or finite
+inline bool not_given_or_finite(double v) { return std::isnan(v) || std::isfinite(v); }
+// NaN (not given) or > 0 and finite
+inline bool not_given_or_positive(double v) { return std::isnan(v) || positive_finite(v); }
 inline void check_rod(const granpen::RodOptions &r) { GRANPEN_FUZZ_CHECK(r.rod_type >= 1); }
 // --ensemble-bin 0 (the runs' median step) or > 0; --bootstrap 20 to 1000000; both at
 // their defaults without --ensemble (ensemble_args.h)
@@ -114,33 +119,31 @@ inline void check(const SweepOptions &o)
 }
 inline void check(const FlowOptions &o)
 {
-  GRANPEN_FUZZ_CHECK(!o.args.positional.empty() && !o.out_dir.empty());
-  check_numbers(o.args, {"--D", "--dg", "--rho", "--v0", "--g", "--dr", "--dz", "--rmax", "--profile-radius"});
+  GRANPEN_FUZZ_CHECK(!o.dumps.empty() && !o.out_dir.empty());
+  for (double v : {o.D, o.d_g, o.rho_g, o.v0, o.g, o.dr, o.dz, o.rmax, o.profile_radius, o.edge_wr, o.edge_wz})
+    GRANPEN_FUZZ_CHECK(not_given_or_positive(v));
+  GRANPEN_FUZZ_CHECK(not_given_or_finite(o.z_s));
+  GRANPEN_FUZZ_CHECK(std::isnan(o.edge_wr) == std::isnan(o.edge_wz));
   check_rod(o.rod);
   GRANPEN_FUZZ_CHECK(0.0 <= o.strip1 && o.strip1 < o.strip2 && 0.0 <= o.ann1 && o.ann1 < o.ann2);
+  GRANPEN_FUZZ_CHECK(std::isfinite(o.strip2) && std::isfinite(o.ann2));
   GRANPEN_FUZZ_CHECK(o.zlo < 0.0 && o.zlo < o.zhi && std::isfinite(o.zhi) && std::isfinite(o.ann_top));
   GRANPEN_FUZZ_CHECK(o.step_lo <= o.step_hi);
-  const auto edge = o.args.numbers.find("--edge");
-  if (edge != o.args.numbers.end()) GRANPEN_FUZZ_CHECK(edge->second.size() == 2 && edge->second[0] > 0.0 && edge->second[1] > 0.0);
   GRANPEN_FUZZ_CHECK(periodic_matches(o.periodic, o.px, o.py));
   GRANPEN_FUZZ_CHECK(!o.voronoi.empty() && !o.stress.empty());
-  if (o.args.has("--trace")) GRANPEN_FUZZ_CHECK(!o.args.value("--trace", "").empty());
 }
 inline void check(const MomentumOptions &o)
 {
-  GRANPEN_FUZZ_CHECK(!o.args.positional.empty() && !o.out_dir.empty());
-  GRANPEN_FUZZ_CHECK(!o.args.value("--trace", "").empty());
-  check_numbers(o.args, {"--D", "--rho", "--dt", "--mthreshold"});
+  GRANPEN_FUZZ_CHECK(!o.dumps.empty() && !o.out_dir.empty() && !o.trace.empty());
+  for (double v : {o.D, o.rho_g, o.dt, o.mthreshold}) GRANPEN_FUZZ_CHECK(not_given_or_positive(v));
+  GRANPEN_FUZZ_CHECK(std::isnan(o.mu) || (std::isfinite(o.mu) && o.mu >= 0.0));
+  GRANPEN_FUZZ_CHECK(not_given_or_finite(o.z_s));
   check_rod(o.rod);
-  double mu = 0.0;
-  if (o.args.number("--mu", mu)) GRANPEN_FUZZ_CHECK(mu >= 0.0);
-  const auto t = o.args.numbers.find("--thresholds");
-  if (t != o.args.numbers.end()) {
-    GRANPEN_FUZZ_CHECK(t->second.size() == 4 && t->second[3] > 0.0);
-    for (int k = 0; k < 3; ++k) GRANPEN_FUZZ_CHECK(t->second[k] > t->second[k + 1]);
+  if (!o.thresholds.empty()) {
+    GRANPEN_FUZZ_CHECK(o.thresholds.size() == 4 && o.thresholds[3] > 0.0);
+    for (int k = 0; k < 3; ++k) GRANPEN_FUZZ_CHECK(o.thresholds[k] > o.thresholds[k + 1]);
   }
-  long long step;
-  if (o.args.has("--push-step")) GRANPEN_FUZZ_CHECK(integer_arg(o.args.value("--push-step", ""), step));
+  if (!o.by_time) GRANPEN_FUZZ_CHECK(o.push_step == 0);
   GRANPEN_FUZZ_CHECK(periodic_matches(o.periodic, o.px, o.py));
 }
 inline void check(const PlotOptions &o)

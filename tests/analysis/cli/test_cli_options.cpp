@@ -1,12 +1,12 @@
-// The subcommands' parse functions (analysis/cli/options.h), driven in process: the CLI
+// The subcommands' parse functions (analysis/cli/NAME_options.h), driven in process: the CLI
 // fuzz target's body (tests/fuzz/fuzz_cli_body.h) on the committed corpus and regressions
 // and on a fixed number of seeded mutations of them (the driver CI runs without clang and
 // libFuzzer), with nothing printed; and the checks of a few options by known answers.
 #include "fuzz_cli_body.h"
-#include "options.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -174,6 +174,35 @@ TEST(CliOptions, KnownAnswers)
   EXPECT_EQ(f.step_hi, 200);
   EXPECT_EQ(f.strip1, 1.0);
   EXPECT_EQ(usage_error(parse_flow, {"d.dump", "--rod-type", "1e300"}), "--rod-type must be a positive integer");
+  // the numbers typed: given ones bound, the rest NaN (the trace's, the frame's or a default
+  // then); an option given twice refused
+  const FlowOptions ft = parse_words(parse_flow, {"d.dump", "--D", "2", "--edge", "0.1", "0.2", "--axis", "3",
+                                                  "4", "--tip", "1.5", "--rod-type", "3", "--trace", "t.csv"});
+  EXPECT_EQ(ft.D, 2.0);
+  EXPECT_EQ(ft.edge_wr, 0.1);
+  EXPECT_EQ(ft.edge_wz, 0.2);
+  EXPECT_TRUE(ft.rod.have_axis && ft.rod.have_tip);
+  EXPECT_EQ(ft.rod.axis_y, 4.0);
+  EXPECT_EQ(ft.rod.tip, 1.5);
+  EXPECT_EQ(ft.rod.rod_type, 3);
+  EXPECT_EQ(ft.trace, "t.csv");
+  EXPECT_TRUE(std::isnan(ft.d_g) && std::isnan(ft.z_s) && std::isnan(ft.dr));
+  EXPECT_EQ(usage_error(parse_flow, {"d.dump", "--axis", "1"}), "--axis needs 2 values");
+  EXPECT_EQ(usage_error(parse_flow, {"d.dump", "--strip", "1", "2", "--strip", "1", "3"}), "--strip needs 2 values");
+  EXPECT_EQ(usage_error(parse_flow, {"d.dump", "--D", "1", "--D", "2"}).compare(0, 4, "--D:"), 0);
+  EXPECT_EQ(usage_error(parse_flow, {"d.dump", "--dr", "0"}), "--dr must be > 0, got '0'");
+  EXPECT_EQ(usage_error(parse_flow, {"d.dump", "--zs", "high"}), "--zs needs a number, got 'high'");
+  EXPECT_EQ(usage_error(parse_flow, {"d.dump", "--periodic", "z"}), "--periodic must be xy, x, y or none");
+  const MomentumOptions m = parse_words(parse_momentum, {"d.dump", "--trace", "t.csv", "--mu", "0", "--push-step", "-7",
+                                                         "--thresholds", "0.2", "0.1", "0.01", "0.001"});
+  EXPECT_EQ(m.mu, 0.0);
+  EXPECT_TRUE(m.by_time);
+  EXPECT_EQ(m.push_step, -7);
+  EXPECT_EQ(m.thresholds, (std::vector<double>{0.2, 0.1, 0.01, 0.001}));
+  EXPECT_TRUE(std::isnan(m.D) && std::isnan(m.dt) && std::isnan(m.mthreshold));
+  EXPECT_EQ(usage_error(parse_momentum, {"d.dump"}), "--trace TRACE is required (v0, D, g and the drag come from it)");
+  EXPECT_EQ(usage_error(parse_momentum, {"d.dump", "--trace", "t.csv", "--push-step", "1.5"}),
+            "--push-step '1.5' is not an integer");
 
   EXPECT_EQ(usage_error(parse_momentum, {"d.dump", "--trace", "t.csv", "--thresholds", "0.1", "0.2", "0.01", "0.001"})
                 .compare(0, 14, "--thresholds: "), 0);

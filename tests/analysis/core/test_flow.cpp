@@ -1,9 +1,12 @@
 // granpen flow / momentum kernels on synthetic frames with known answers: rigid
 // translation, a simple-cubic lattice (phi from both estimators, Voronoi volume = cell
 // volume), the shear v_z = s r, an exponential v_z profile, the edge average, pooling of
-// frames; the momentum classes on hand-made velocities; the rod and the trace lookups.
+// frames; the momentum classes on hand-made velocities; the rod and the trace lookups;
+// the parameters of the two studies from option, trace header or fallback.
 #include "flow_fields.h"
 #include "momentum_classes.h"
+#include "momentum_study.h"
+#include "param_choice.h"
 #include "rod_frame.h"
 #include "voronoi_volumes.h"
 
@@ -486,4 +489,65 @@ TEST(Momentum, TraceLookupAndDragComparison)
   EXPECT_NEAR(d.ratio_mean, 1.25, 1e-12);
   EXPECT_NEAR(d.ratio_se, 0.0, 1e-12);
   EXPECT_FALSE(compare_drag({1, 2}, {1, 2}).ok);
+}
+
+// option before trace before fallback, each origin named; NaN is "not given"
+TEST(Parameters, ResolveTakesTheFirstSourceThatGivesIt)
+{
+  const double nan = std::nan("");
+  std::string origin;
+  EXPECT_EQ(resolve({2.0, 3.0}, 4.0, "default", origin), 2.0);
+  EXPECT_EQ(origin, "option");
+  EXPECT_EQ(resolve({nan, 3.0}, 4.0, "default", origin), 3.0);
+  EXPECT_EQ(origin, "trace");
+  EXPECT_EQ(resolve({nan, nan}, 4.0, "first frame", origin), 4.0);
+  EXPECT_EQ(origin, "first frame");
+  EXPECT_EQ(resolve({0.0, 3.0}, 4.0, "default", origin), 0.0);    // a zero option is given (mu = 0)
+  EXPECT_EQ(origin, "option");
+}
+
+// momentum's parameters through the same resolve: D from the option or the trace, mu
+// from option, trace or the default 0.3, dt only from option or trace, the classes the
+// paper's unless thresholds are given, M_move's bound moved by mthreshold
+TEST(Parameters, MomentumStudyParams)
+{
+  const double nan = std::nan("");
+  MomentumParamSources s;
+  s.v0 = 320.0, s.g = 981.0, s.D_trace = 2.0;
+  MomentumParamOrigins from;
+  MomentumStudyParams p = momentum_study_params(s, from);
+  EXPECT_EQ(p.D, 2.0);
+  EXPECT_EQ(from.D, "trace");
+  EXPECT_EQ(p.mu, DEFAULT_MU);
+  EXPECT_EQ(from.mu, "default");
+  EXPECT_EQ(p.classes.vmove, 1.0);    // v0/320, the paper's
+  EXPECT_EQ(from.classes.compare(0, 5, "paper"), 0);
+  EXPECT_FALSE(p.by_time);
+
+  s.D = {1.5, nan}, s.mu = {nan, 0.5}, s.mthreshold = 0.25;
+  p = momentum_study_params(s, from);
+  EXPECT_EQ(p.D, 1.5);
+  EXPECT_EQ(from.D, "option");
+  EXPECT_EQ(p.mu, 0.5);
+  EXPECT_EQ(from.mu, "trace");
+  EXPECT_EQ(p.classes.vmove, 80.0);    // 0.25 v0
+  EXPECT_EQ(p.classes.bound[0], 32.0);
+
+  const double f[4] = {0.5, 0.25, 0.125, 0.0625};
+  s.thresholds = f, s.mthreshold = 0.0;
+  p = momentum_study_params(s, from);
+  EXPECT_EQ(p.classes.bound[0], 160.0);
+  EXPECT_EQ(p.classes.vmove, 40.0);    // F3 v0
+  EXPECT_EQ(from.classes, "option");
+
+  s.by_time = true, s.push_step = 1000;
+  EXPECT_THROW(momentum_study_params(s, from), std::invalid_argument);    // no dt anywhere
+  s.dt = {nan, 1e-6};
+  p = momentum_study_params(s, from);
+  EXPECT_EQ(p.dt, 1e-6);
+  EXPECT_EQ(p.push_step, 1000);
+  EXPECT_EQ(from.dt, "trace");
+  const double bad[4] = {0.1, 0.2, 0.01, 0.001};
+  s.thresholds = bad;
+  EXPECT_THROW(momentum_study_params(s, from), std::invalid_argument);
 }
