@@ -20,6 +20,7 @@
 #include "fit_options.h"
 #include "flow_options.h"
 #include "gap_options.h"
+#include "get_options.h"
 #include "import_options.h"
 #include "momentum_options.h"
 #include "plot_options.h"
@@ -179,6 +180,26 @@ inline void check(const ImportOptions &o)
 // A usage error names what is wrong, in granpen's words: never empty (or else it carries
 // the usage), never the C++ library's own text (unless the user's own words hold it: an
 // unknown option is quoted).
+// get_options.h's checks: a file and at least one key; --missing only with has_missing
+inline void check(const GetOptions &o)
+{
+  GRANPEN_FUZZ_CHECK(!o.file.empty() && !o.keys.empty());
+  if (!o.has_missing) GRANPEN_FUZZ_CHECK(o.missing.empty());
+}
+// a finite magnitude for a library truth; as_effect only with truth outside; wall_seconds
+// -1 (not given) or >= 0
+inline void check(const GapScoreOptions &o)
+{
+  GRANPEN_FUZZ_CHECK(!o.diagnosis.empty() && !o.case_name.empty() && !o.truth.empty() && !o.magnitude_text.empty());
+  if (o.truth != "none" && o.truth != "outside") {
+    char *end = nullptr;
+    const double m = std::strtod(o.magnitude_text.c_str(), &end);
+    GRANPEN_FUZZ_CHECK(*end == '\0' && std::isfinite(m));
+  }
+  if (!o.as_effect.empty()) GRANPEN_FUZZ_CHECK(o.truth == "outside");
+  GRANPEN_FUZZ_CHECK(o.wall_seconds >= -1);
+}
+
 inline void check_usage_error(const UsageError &e, const std::vector<std::string> &words)
 {
   const std::string what = e.what();
@@ -210,7 +231,8 @@ void parse_one(Options (*parse)(int, char **), const char *name, std::vector<std
 }
 
 const char *const SUBCOMMAND_NAMES[] = {"convert", "import", "check", "fit", "calibration", "collapse",
-                                        "sweep", "flow", "momentum", "plot", "gap"};
+                                        "sweep", "flow", "momentum", "plot", "gap", "get", "gap-score"};
+const int SUBCOMMAND_COUNT = sizeof(SUBCOMMAND_NAMES) / sizeof(SUBCOMMAND_NAMES[0]);
 
 // The words of an input: split at '\n', at most 64 (more add nothing to the parsers).
 inline std::vector<std::string> cli_words(const std::string &bytes)
@@ -232,12 +254,12 @@ inline void cli_body(const std::string &bytes)
   const std::string first = words.front();
   words.erase(words.begin());
   int which = -1;
-  for (int k = 0; k < 11; ++k)
+  for (int k = 0; k < SUBCOMMAND_COUNT; ++k)
     if (first == SUBCOMMAND_NAMES[k]) which = k;
   if (which < 0) {
     unsigned sum = 0;
     for (unsigned char c : first) sum += c;
-    which = (int) (sum % 11);
+    which = (int) (sum % SUBCOMMAND_COUNT);
   }
   const char *name = SUBCOMMAND_NAMES[which];
   switch (which) {
@@ -251,7 +273,9 @@ inline void cli_body(const std::string &bytes)
     case 7: parse_one(parse_flow, name, words); break;
     case 8: parse_one(parse_momentum, name, words); break;
     case 9: parse_one(parse_plot, name, words); break;
-    default: parse_one(parse_gap, name, words); break;
+    case 10: parse_one(parse_gap, name, words); break;
+    case 11: parse_one(parse_get, name, words); break;
+    default: parse_one(parse_gap_score, name, words); break;
   }
 }
 
