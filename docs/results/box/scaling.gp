@@ -6,10 +6,10 @@ if (!exists("formats")) formats = "png svg"
 data = "scaling.dat"
 do for [fmt in formats] {
   if (fmt eq "png") {
-    set terminal pngcairo enhanced size 1300,880 font "sans,12" background rgb "white"
+    set terminal pngcairo enhanced size 1300,1260 font "sans,12" background rgb "white"
   } else {
     if (fmt ne "svg") { print "unknown format ", fmt, " (png or svg)"; exit status 1 }
-    set terminal svg enhanced size 1300,880 font "sans,12" background rgb "white"
+    set terminal svg enhanced size 1300,1260 font "sans,12" background rgb "white"
   }
   set output "scaling." . fmt
   reset
@@ -17,8 +17,8 @@ do for [fmt in formats] {
   set multiplot title "Against the box width: granpen (blue, ± its error), the paper's value (red; shaded: its error), the paper's box (dotted)" font ",14"
 
   # ---- panel 1: peak exponent (v\_c to 10 v\_c)   (paper: 2)
-  set origin 0,0.47
-  set size 0.5,0.47
+  set origin 0,0.6266666667
+  set size 0.5,0.3133333333
   set title "peak exponent (v\\_c to 10 v\\_c)   (paper: 2)"
   set xlabel "box width (cm)"
   set ylabel "peak exponent (v\\_c to 10 v\\_c)"
@@ -35,8 +35,8 @@ do for [fmt in formats] {
   # ---- panel 2: peak exponent (means above v_c)   (paper: 2)
   reset
   set encoding utf8
-  set origin 0.5,0.47
-  set size 0.5,0.47
+  set origin 0.5,0.6266666667
+  set size 0.5,0.3133333333
   set title "peak exponent (means above v_c)   (paper: 2)"
   set xlabel "box width (cm)"
   set ylabel "peak exponent (means above v_c)"
@@ -53,8 +53,8 @@ do for [fmt in formats] {
   # ---- panel 3: peak / the 8 cm box's (same bed and v0)   (paper: 1)
   reset
   set encoding utf8
-  set origin 0,0
-  set size 0.5,0.47
+  set origin 0,0.3133333333
+  set size 0.5,0.3133333333
   set title "peak / the 8 cm box's (same bed and v0)   (paper: 1)"
   set xlabel "box width (cm)"
   set ylabel "peak / the 8 cm box's (same bed and v0)"
@@ -66,6 +66,44 @@ do for [fmt in formats] {
   set label 1 "paper" at first 20, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
   set samples 400
   plot data index 2 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+       1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
+
+  # ---- panel 4: lambda\_vz / D at 50 cm/s   (paper: 0.98 ± 0.15)
+  reset
+  set encoding utf8
+  set origin 0.5,0.3133333333
+  set size 0.5,0.3133333333
+  set title "lambda\\_vz / D at 50 cm/s   (paper: 0.98 ± 0.15)"
+  set xlabel "box width (cm)"
+  set ylabel "lambda\\_vz / D at 50 cm/s"
+  set grid lc rgb "#d0d0d0"
+  set xrange [7:21]
+  set yrange [0.3637781119:1.186757177]
+  unset key
+  set object 10 rectangle from graph 0, first 0.83 to graph 1, first 1.13 behind fillcolor rgb "#d62728" fillstyle transparent solid 0.18 noborder
+  set arrow 1 from first 20, graph 0 to first 20, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
+  set label 1 "paper" at first 20, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
+  set samples 400
+  plot keyentry with filledcurves fillcolor rgb "#d62728" fillstyle transparent solid 0.36 noborder title "paper: 0.98 ± 0.15", \
+       data index 3 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+       0.98 with lines lw 1.5 dt 2 lc rgb "#d62728" notitle
+
+  # ---- panel 5: drag / (mu g M) at 50 cm/s   (paper: 1)
+  reset
+  set encoding utf8
+  set origin 0,0
+  set size 0.5,0.3133333333
+  set title "drag / (mu g M) at 50 cm/s   (paper: 1)"
+  set xlabel "box width (cm)"
+  set ylabel "drag / (mu g M) at 50 cm/s"
+  set grid lc rgb "#d0d0d0"
+  set xrange [7:21]
+  set yrange [0.8646200776:2.827628952]
+  unset key
+  set arrow 1 from first 20, graph 0 to first 20, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
+  set label 1 "paper" at first 20, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
+  set samples 400
+  plot data index 4 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
   unset multiplot
   unset multiplot
