@@ -404,6 +404,28 @@ box_bench() {
       flow_numbers "bench_box$b.v50" "$f.flow"
     else say "box $b cm: its flow push (with tables) not in $BOX/box_bench${b}_flow: skipped"; fi
   done
+  for b in 8 20; do box_alpha_D "box_bench${b}_D" "bench_box$b"; done
+  box_alpha_D box_bench20_shaft bench_box20_shaft
+}
+# alpha against D in one box (DIR under $BOX, its 2 beds x 3 or 2 diameters at 28 cm/s): the
+# depth term through the origin over z >= 2 cm (the bench row's window) per D, mean over the
+# beds, and alpha(1 cm) / alpha(2 cm) with the errors in quadrature
+box_alpha_D() { # SWEEP KEY
+  local d=$BOX/$1 key=$2 o=$OUT/$1 n want D a1 a2
+  n=$( (ls "$d"/bench_mu0.3_s1[12]_v28_g981_D*.csv 2>/dev/null || true) | wc -l)
+  case $1 in *shaft) want=4 ;; *) want=6 ;; esac
+  [ "$n" = "$want" ] || { say "$1: $n of $want pushes in $d: skipped until all are (validation/box.sh bench)"; return 0; }
+  say "$1: alpha against D (granpen fit --zmin 2)"
+  mkdir -p "$o"
+  "$CLI" fit "$d" --zmin 2 --csv "$o/fit_z2.csv" > "$o/fit_z2.txt"
+  for D in $(col "$o/fit_z2.csv" D | sort -gu); do
+    put "$key.alpha0_window.v28.D$D = $(col "$o/fit_z2.csv" alpha0 D "$D" | stats)  # granpen fit --zmin 2: k_z0 / (mu rho_g g D^2), 2 beds"
+  done
+  a1=$(nval "$key.alpha0_window.v28.D1") a2=$(nval "$key.alpha0_window.v28.D2")
+  [ -n "$a1" ] && [ -n "$a2" ] &&
+    put "$key.alpha_D1_over_D2 = $(awk -v a="$a1" -v b="$a2" -v ea="$(nerr "$key.alpha0_window.v28.D1")" -v eb="$(nerr "$key.alpha0_window.v28.D2")" \
+      'BEGIN { r = a / b; printf "%.4g +- %.2g", r, r * sqrt((ea / a) ^ 2 + (eb / b) ^ 2) }')  # the two above, the beds' spreads in quadrature"
+  return 0
 }
 if [ -d "$BOX" ]; then box_bench; else say "box series: $BOX missing, skipped"; fi
 
@@ -487,6 +509,8 @@ if ls "$BOX"/box_bench*_peak/*.csv > /dev/null 2>&1; then
     for b in 12 16 20; do row_of "peak / the 8 cm box's (same bed and v0)" "$b" "bench_box$b.peak_over_box8" 1 ""; done
     for b in 8 12 16 20; do row_of "lambda_vz / D at 50 cm/s" "$b" "bench_box$b.v50.lambda_vz_D" 0.98 0.15; done
     for b in 8 12 16 20; do row_of "drag / (mu g M) at 50 cm/s" "$b" "bench_box$b.v50.drag_over_mu_g_Mmove" 1 ""; done
+    for b in 8 20; do row_of "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s" "$b" "bench_box$b.alpha_D1_over_D2" 1 ""; done
+    row_of "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s (frictionless shaft)" 20 bench_box20_shaft.alpha_D1_over_D2 1 ""
   } > "$OUT/box.csv.partial" && mv "$OUT/box.csv.partial" "$OUT/box.csv"
   "$CLI" plot scaling "$OUT/box.csv" --out "$OUT/box" > /dev/null
 fi
