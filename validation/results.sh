@@ -384,10 +384,12 @@ if [ -d "$DG10" ]; then dg10_beds; dg10_peak; dg10_flow; dg10_D; dg10_collapse; 
 # The committed units of validation/box.sh bench (docs/presets.md, "The paper's box"): bench
 # grains in boxes of 8 to 20 cm built from the same two tiles. Per box, once all its pushes
 # are in: the peak law (key bench_boxB), the flow rows of its 50 cm/s push, and each peak over
-# the 8 cm box's push of the same bed and speed (the first contact, which the box should not
-# change: against the spread over the two beds).
+# the push of the same bed and speed in the box 8 cm narrower (the first contact, which the
+# box should not change: against the spread over the two beds). The rod stands at the box's
+# centre: a tile corner in the 8 and 16 cm boxes (2 x 2, 4 x 4 tiles), a tile centre in the
+# 12 and 20 cm ones, so only boxes 8 cm apart put the same grains under the rod.
 box_bench() {
-  local b d traces f
+  local b d traces f n
   for b in 8 12 16 20; do
     d=$BOX/box_bench${b}_peak traces=()
     for f in "$d"/bench_mu0.3_s1[12]_v*_g981_D2.0.csv; do [ -f "$f" ] && traces+=("$f"); done
@@ -395,8 +397,9 @@ box_bench() {
       say "box $b cm: the peak law on 2 beds x 5 speeds"
       put "bench_box$b.phi_0 = $(grep -h '^phi_0' "$BOX/box_bench${b}_peak"/bed_*.info 2>/dev/null | awk '{print $3}' | stats)  # bed .info files, ${b} cm box of 4 cm tiles, 2 cm columns"
       peak_law "bench_box$b" "$OUT/box_bench$b" 28 "${traces[@]}"
-      [ "$b" = 8 ] || [ ! -f "$OUT/box_bench8/collapse_peak.json" ] ||
-        put "bench_box$b.peak_over_box8 = $(peak_pairs "$OUT/box_bench$b/collapse_peak.json" "$OUT/box_bench8/collapse_peak.json" | stats)  # granpen collapse: peak / the 8 cm box's push of the same bed and v0, every v0"
+      n=$((b - 8))
+      [ "$n" -lt 8 ] || [ ! -f "$OUT/box_bench$n/collapse_peak.json" ] ||
+        put "bench_box$b.peak_over_box$n = $(peak_pairs "$OUT/box_bench$b/collapse_peak.json" "$OUT/box_bench$n/collapse_peak.json" | stats)  # granpen collapse: peak / the $n cm box's push of the same bed and v0 (the same grains under the rod), every v0"
     else say "box $b cm: ${#traces[@]} of 10 peak pushes in $d: skipped until all are (validation/box.sh bench)"; fi
     f=$BOX/box_bench${b}_flow/bench_mu0.3_s11_v50_g981_D2.0
     if [ -f "$f.csv" ] && [ -f "$f.flow/window.txt" ]; then
@@ -498,7 +501,8 @@ ratio_of() { # QUANTITY RATIO KEY1 KEY2 PAPER PAPER_ERROR
 # ---------------------------------------------------------------- against the box width
 # The four rows the box series is to settle (bench grains, D/d_g = 5; empty until a box is
 # in): box.csv, drawn by granpen plot scaling against box_cm. Errors as in scaling.csv; the
-# peak over the 8 cm box's push of the same bed and speed carries its spread over pairs.
+# peak over the push of the same bed and speed in the box 8 cm narrower carries its spread
+# over pairs.
 if ls "$BOX"/box_bench*_peak/*.csv > /dev/null 2>&1; then
   say "against the box width: box.csv (granpen plot scaling)"
   {
@@ -506,7 +510,7 @@ if ls "$BOX"/box_bench*_peak/*.csv > /dev/null 2>&1; then
     echo "quantity,box_cm,value,error,paper,paper_error,unit,label"
     for b in 8 12 16 20; do row_of "peak exponent (v_c to 10 v_c)" "$b" "bench_box$b.peak_exponent" 2 "" 1.96; done
     for b in 8 12 16 20; do row_of "peak exponent above v_c (ensemble means)" "$b" "bench_box$b.peak_exponent_ensemble_from_2vc" 2 ""; done
-    for b in 12 16 20; do row_of "peak / the 8 cm box's (same bed and v0)" "$b" "bench_box$b.peak_over_box8" 1 ""; done
+    for b in 16 20; do row_of "peak / the box 8 cm narrower's (same bed and v0)" "$b" "bench_box$b.peak_over_box$((b - 8))" 1 ""; done
     for b in 8 12 16 20; do row_of "lambda_vz / D at 50 cm/s" "$b" "bench_box$b.v50.lambda_vz_D" 0.98 0.15; done
     for b in 8 12 16 20; do row_of "drag / (mu g M) at 50 cm/s" "$b" "bench_box$b.v50.drag_over_mu_g_Mmove" 1 ""; done
     for b in 8 20; do row_of "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s" "$b" "bench_box$b.alpha_D1_over_D2" 1 ""; done

@@ -46,11 +46,11 @@ cp "$BENCH"/bench_mu0.3_s[12]_v*_g981_D2.0.csv "$BENCH"/bed_bench_mu0.3_s[12].in
 DA=$OUT/damp
 cp -r "$ST" "$DA"
 
-# ---- the box series: the 8 and 20 cm boxes' peak sweeps are the bench's own traces (beds 1
-# and 2 as the tiles 11 and 12), the 20 cm flow push the mid push's tables; 12 and 16 cm
-# missing (their parts must add no line)
+# ---- the box series: the 8, 16 and 20 cm boxes' peak sweeps are the bench's own traces
+# (beds 1 and 2 as the tiles 11 and 12), the 20 cm flow push the mid push's tables; 12 cm
+# missing (its part, and the 20 cm box's peaks over it, must add no line)
 BX=$OUT/box
-for b in 8 20; do
+for b in 8 16 20; do
   mkdir -p "$BX/box_bench${b}_peak"
   for s in 1 2; do
     cp "$BENCH/bed_bench_mu0.3_s$s.info" "$BX/box_bench${b}_peak/bed_bench_mu0.3_s1$s.info"
@@ -106,15 +106,15 @@ done
 same bench_stiff.peak_over_bench "1 +- 0 n = 8"
 same bench_damp.peak_over_bench "1 +- 0 n = 8"
 # the box series: each complete box's peak law is the bench's own (the same traces through
-# peak_law), the 20 cm box's peaks over the 8 cm box's are those of twins, its flow rows the
-# mid push's; the 12 and 16 cm boxes add no line
-for b in 8 20; do
+# peak_law), the 16 cm box's peaks over the 8 cm box's are those of twins, the 20 cm box's
+# flow rows the mid push's; the 12 cm box, and the 20 cm box's peaks over it, add no line
+for b in 8 16 20; do
   for k in peak_exponent peak_exponent_ensemble peak_exponent_local peak_exponent_from_2vc peak_z \
     peak_exponent_ensemble_from_2vc peak_inertial peak_crossover_speed; do
     same "bench_box$b.$k" "$(val "bench.$k")"
   done
 done
-same bench_box20.peak_over_box8 "1 +- 0 n = 10"
+same bench_box16.peak_over_box8 "1 +- 0 n = 10"
 for k in lambda_vz_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove; do
   same "bench_box20.v50.$k" "$(val "mid.$k")"
 done
@@ -129,11 +129,12 @@ same bench_box20.alpha_D1_over_D2 "$(awk -v a="$(val bench_box20.alpha0_window.v
   'BEGIN { r = a / b; printf "%.4g +- %.2g\n", r, r * sqrt((ea / a) ^ 2 + (eb / b) ^ 2) }')"
 grep -q "^alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s,20,$(val bench_box20.alpha_D1_over_D2 | awk '{print $1}')," "$OUT/res/box.csv" ||
   fail "box.csv lacks the 20 cm box's alpha ratio"
-! grep -q '^bench_box1[26]\.\|^bench_box8\.v50\|^bench_box8.peak_over\|^bench_box8\.alpha\|^bench_box20_shaft' "$N" || fail "an incomplete box part added lines"
+! grep -q '^bench_box12\.\|^bench_box16\.v50\|^bench_box20\.peak_over\|^bench_box8\.v50\|^bench_box8.peak_over\|^bench_box8\.alpha\|^bench_box20_shaft' "$N" || fail "an incomplete box part added lines"
 grep -q "box_bench8_D: 0 of 6 pushes" "$OUT/res.log" || fail "no note of the 8 cm box's missing D pushes"
 grep -q "box 12 cm: 0 of 10 peak pushes" "$OUT/res.log" || fail "no note of the 12 cm box's missing pushes"
-# the box table holds the 20 cm box's paired peaks and flow, and its figure was made
-grep -q "^peak / the 8 cm box's (same bed and v0),20,1,0," "$OUT/res/box.csv" || fail "box.csv lacks the 20 cm box's paired peaks: $(cat "$OUT/res/box.csv")"
+# the box table holds the 16 cm box's paired peaks, the 20 cm box's flow, and its figure was made
+grep -q "^peak / the box 8 cm narrower's (same bed and v0),16,1,0," "$OUT/res/box.csv" || fail "box.csv lacks the 16 cm box's paired peaks: $(cat "$OUT/res/box.csv")"
+grep -q "^peak / the box 8 cm narrower's (same bed and v0),20,," "$OUT/res/box.csv" || fail "box.csv has a 20 cm paired peak without the 12 cm box"
 grep -q "^lambda_vz / D at 50 cm/s,20,$(val mid.lambda_vz_D | awk '{print $1}')," "$OUT/res/box.csv" || fail "box.csv lacks the 20 cm box's lambda_vz"
 [ -s "$OUT/res/box/scaling.gp" ] || fail "no box figure"
 # the flow rows of each dg10 speed: the mid push's, from the same tables
