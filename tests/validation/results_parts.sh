@@ -115,7 +115,7 @@ for b in 8 16 20; do
   done
 done
 same bench_box16.peak_over_box8 "1 +- 0 n = 10"
-for k in lambda_vz_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove; do
+for k in lambda_vz_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove M_move M_slow; do
   same "bench_box20.v50.$k" "$(val "mid.$k")"
 done
 # alpha against D in the 20 cm box: the bench's own lines for D = 1 and 2 (the same traces,
@@ -139,7 +139,7 @@ grep -q "^lambda_vz / D at 50 cm/s,20,$(val mid.lambda_vz_D | awk '{print $1}'),
 [ -s "$OUT/res/box/scaling.gp" ] || fail "no box figure"
 # the flow rows of each dg10 speed: the mid push's, from the same tables
 for v in 40 100 200; do
-  for k in lambda_vz_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove; do
+  for k in lambda_vz_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove M_move M_slow; do
     same "dg10.v$v.$k" "$(val "mid.$k")"
   done
 done
