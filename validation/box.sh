@@ -6,7 +6,9 @@
 #           data/sims/box_bench/beds): per box the peak sweep (five speeds, two beds, 1.5 cm)
 #           and one flow push with dumps (50 cm/s, 4 cm); the widest and narrowest boxes
 #           first, so that the trend shows before the whole series is in. About 1.5
-#           core-hours in all (docs/presets.md, "The box series").
+#           core-hours in all (docs/presets.md, "The box series"). Then alpha against D in
+#           the 8 and 20 cm boxes: D = 1, 2, 3 cm at 28 cm/s, 4 cm deep, two beds (about
+#           2.2e10 atom-steps, 1.7 core-hours).
 #
 #   validation/box.sh bench [--out DIR] [--units N] [--ranks N] [--commit] [--status]
 set -euo pipefail
@@ -18,6 +20,7 @@ case $series in
   bench)
     sweeps=""
     for kind in peak flow; do for b in 8 20 12 16; do sweeps="$sweeps $S/box_bench${b}_$kind.sweep"; done; done
+    sweeps="$sweeps $S/box_bench8_D.sweep $S/box_bench20_D.sweep"
     exec "$ROOT/validation/campaign.sh" --data "$ROOT/data/sims/box_bench" --sweeps "${sweeps# }" --tip "1 3" "$@" ;;
   *) echo "box.sh: no series '$series' (bench)" >&2; exit 2 ;;
 esac

@@ -232,6 +232,10 @@ flow_numbers() {
   put "$key.phi_below_face = $(awk -F, 'NR > 1 { p = $4 } END { printf "%.4g\n", p }' "$dir/flow/flow_profile_below.csv")  # ... the bin nearest the tip (the rod's face)"
   put "$key.surface_flux_sign_change_t = $(jget "$dir/surface/flow.json" surface.crossing_t_tilde)  # granpen flow: t~ where v_z of the strip's top grain layer (0.5-1.5 cm from the shaft) last turns from up to down"
   put "$key.drag_over_mu_g_Mmove = $(jget "$mj" drag.k) +- $(jget "$mj" drag.k_se)  # F = k mu g M(v_z > v0/320), granpen momentum"
+  # the moving mass and its slow class (v0/320 to v0/80), mean over the frames with the tip
+  # 1 to 4 cm deep: what the fixed threshold counts, which grows with the box
+  put "$key.M_move = $("$CLI" get "$mj" 'frames[*].z_tip' 'frames[*].M_move' | awk '$1 >= 1 - 1e-6 && $1 <= 4 + 1e-6 { print $2 }' | stats)  # g, granpen momentum, frames with the tip 1 to 4 cm deep"
+  put "$key.M_slow = $("$CLI" get "$mj" 'frames[*].z_tip' 'frames[*].M_slow' | awk '$1 >= 1 - 1e-6 && $1 <= 4 + 1e-6 { print $2 }' | stats)  # g, the same frames, v0/320 < v_z <= v0/80"
 }
 
 # the flow of one push (mid, 90 cm/s, g = 981, D = 2, seed 1) from its dumps
@@ -384,10 +388,12 @@ if [ -d "$DG10" ]; then dg10_beds; dg10_peak; dg10_flow; dg10_D; dg10_collapse; 
 # The committed units of validation/box.sh bench (docs/presets.md, "The paper's box"): bench
 # grains in boxes of 8 to 20 cm built from the same two tiles. Per box, once all its pushes
 # are in: the peak law (key bench_boxB), the flow rows of its 50 cm/s push, and each peak over
-# the 8 cm box's push of the same bed and speed (the first contact, which the box should not
-# change: against the spread over the two beds).
+# the push of the same bed and speed in the box 8 cm narrower (the first contact, which the
+# box should not change: against the spread over the two beds). The rod stands at the box's
+# centre: a tile corner in the 8 and 16 cm boxes (2 x 2, 4 x 4 tiles), a tile centre in the
+# 12 and 20 cm ones, so only boxes 8 cm apart put the same grains under the rod.
 box_bench() {
-  local b d traces f
+  local b d traces f n
   for b in 8 12 16 20; do
     d=$BOX/box_bench${b}_peak traces=()
     for f in "$d"/bench_mu0.3_s1[12]_v*_g981_D2.0.csv; do [ -f "$f" ] && traces+=("$f"); done
@@ -395,8 +401,9 @@ box_bench() {
       say "box $b cm: the peak law on 2 beds x 5 speeds"
       put "bench_box$b.phi_0 = $(grep -h '^phi_0' "$BOX/box_bench${b}_peak"/bed_*.info 2>/dev/null | awk '{print $3}' | stats)  # bed .info files, ${b} cm box of 4 cm tiles, 2 cm columns"
       peak_law "bench_box$b" "$OUT/box_bench$b" 28 "${traces[@]}"
-      [ "$b" = 8 ] || [ ! -f "$OUT/box_bench8/collapse_peak.json" ] ||
-        put "bench_box$b.peak_over_box8 = $(peak_pairs "$OUT/box_bench$b/collapse_peak.json" "$OUT/box_bench8/collapse_peak.json" | stats)  # granpen collapse: peak / the 8 cm box's push of the same bed and v0, every v0"
+      n=$((b - 8))
+      [ "$n" -lt 8 ] || [ ! -f "$OUT/box_bench$n/collapse_peak.json" ] ||
+        put "bench_box$b.peak_over_box$n = $(peak_pairs "$OUT/box_bench$b/collapse_peak.json" "$OUT/box_bench$n/collapse_peak.json" | stats)  # granpen collapse: peak / the $n cm box's push of the same bed and v0 (the same grains under the rod), every v0"
     else say "box $b cm: ${#traces[@]} of 10 peak pushes in $d: skipped until all are (validation/box.sh bench)"; fi
     f=$BOX/box_bench${b}_flow/bench_mu0.3_s11_v50_g981_D2.0
     if [ -f "$f.csv" ] && [ -f "$f.flow/window.txt" ]; then
@@ -404,6 +411,28 @@ box_bench() {
       flow_numbers "bench_box$b.v50" "$f.flow"
     else say "box $b cm: its flow push (with tables) not in $BOX/box_bench${b}_flow: skipped"; fi
   done
+  for b in 8 20; do box_alpha_D "box_bench${b}_D" "bench_box$b"; done
+  box_alpha_D box_bench20_shaft bench_box20_shaft
+}
+# alpha against D in one box (DIR under $BOX, its 2 beds x 3 or 2 diameters at 28 cm/s): the
+# depth term through the origin over z >= 2 cm (the bench row's window) per D, mean over the
+# beds, and alpha(1 cm) / alpha(2 cm) with the errors in quadrature
+box_alpha_D() { # SWEEP KEY
+  local d=$BOX/$1 key=$2 o=$OUT/$1 n want D a1 a2
+  n=$( (ls "$d"/bench_mu0.3_s1[12]_v28_g981_D*.csv 2>/dev/null || true) | wc -l)
+  case $1 in *shaft) want=4 ;; *) want=6 ;; esac
+  [ "$n" = "$want" ] || { say "$1: $n of $want pushes in $d: skipped until all are (validation/box.sh bench)"; return 0; }
+  say "$1: alpha against D (granpen fit --zmin 2)"
+  mkdir -p "$o"
+  "$CLI" fit "$d" --zmin 2 --csv "$o/fit_z2.csv" > "$o/fit_z2.txt"
+  for D in $(col "$o/fit_z2.csv" D | sort -gu); do
+    put "$key.alpha0_window.v28.D$D = $(col "$o/fit_z2.csv" alpha0 D "$D" | stats)  # granpen fit --zmin 2: k_z0 / (mu rho_g g D^2), 2 beds"
+  done
+  a1=$(nval "$key.alpha0_window.v28.D1") a2=$(nval "$key.alpha0_window.v28.D2")
+  [ -n "$a1" ] && [ -n "$a2" ] &&
+    put "$key.alpha_D1_over_D2 = $(awk -v a="$a1" -v b="$a2" -v ea="$(nerr "$key.alpha0_window.v28.D1")" -v eb="$(nerr "$key.alpha0_window.v28.D2")" \
+      'BEGIN { r = a / b; printf "%.4g +- %.2g", r, r * sqrt((ea / a) ^ 2 + (eb / b) ^ 2) }')  # the two above, the beds' spreads in quadrature"
+  return 0
 }
 if [ -d "$BOX" ]; then box_bench; else say "box series: $BOX missing, skipped"; fi
 
@@ -476,7 +505,8 @@ ratio_of() { # QUANTITY RATIO KEY1 KEY2 PAPER PAPER_ERROR
 # ---------------------------------------------------------------- against the box width
 # The four rows the box series is to settle (bench grains, D/d_g = 5; empty until a box is
 # in): box.csv, drawn by granpen plot scaling against box_cm. Errors as in scaling.csv; the
-# peak over the 8 cm box's push of the same bed and speed carries its spread over pairs.
+# peak over the push of the same bed and speed in the box 8 cm narrower carries its spread
+# over pairs.
 if ls "$BOX"/box_bench*_peak/*.csv > /dev/null 2>&1; then
   say "against the box width: box.csv (granpen plot scaling)"
   {
@@ -484,9 +514,11 @@ if ls "$BOX"/box_bench*_peak/*.csv > /dev/null 2>&1; then
     echo "quantity,box_cm,value,error,paper,paper_error,unit,label"
     for b in 8 12 16 20; do row_of "peak exponent (v_c to 10 v_c)" "$b" "bench_box$b.peak_exponent" 2 "" 1.96; done
     for b in 8 12 16 20; do row_of "peak exponent above v_c (ensemble means)" "$b" "bench_box$b.peak_exponent_ensemble_from_2vc" 2 ""; done
-    for b in 12 16 20; do row_of "peak / the 8 cm box's (same bed and v0)" "$b" "bench_box$b.peak_over_box8" 1 ""; done
+    for b in 16 20; do row_of "peak / the box 8 cm narrower's (same bed and v0)" "$b" "bench_box$b.peak_over_box$((b - 8))" 1 ""; done
     for b in 8 12 16 20; do row_of "lambda_vz / D at 50 cm/s" "$b" "bench_box$b.v50.lambda_vz_D" 0.98 0.15; done
     for b in 8 12 16 20; do row_of "drag / (mu g M) at 50 cm/s" "$b" "bench_box$b.v50.drag_over_mu_g_Mmove" 1 ""; done
+    for b in 8 20; do row_of "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s" "$b" "bench_box$b.alpha_D1_over_D2" 1 ""; done
+    row_of "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s (frictionless shaft)" 20 bench_box20_shaft.alpha_D1_over_D2 1 ""
   } > "$OUT/box.csv.partial" && mv "$OUT/box.csv.partial" "$OUT/box.csv"
   "$CLI" plot scaling "$OUT/box.csv" --out "$OUT/box" > /dev/null
 fi

@@ -46,11 +46,11 @@ cp "$BENCH"/bench_mu0.3_s[12]_v*_g981_D2.0.csv "$BENCH"/bed_bench_mu0.3_s[12].in
 DA=$OUT/damp
 cp -r "$ST" "$DA"
 
-# ---- the box series: the 8 and 20 cm boxes' peak sweeps are the bench's own traces (beds 1
-# and 2 as the tiles 11 and 12), the 20 cm flow push the mid push's tables; 12 and 16 cm
-# missing (their parts must add no line)
+# ---- the box series: the 8, 16 and 20 cm boxes' peak sweeps are the bench's own traces
+# (beds 1 and 2 as the tiles 11 and 12), the 20 cm flow push the mid push's tables; 12 cm
+# missing (its part, and the 20 cm box's peaks over it, must add no line)
 BX=$OUT/box
-for b in 8 20; do
+for b in 8 16 20; do
   mkdir -p "$BX/box_bench${b}_peak"
   for s in 1 2; do
     cp "$BENCH/bed_bench_mu0.3_s$s.info" "$BX/box_bench${b}_peak/bed_bench_mu0.3_s1$s.info"
@@ -64,6 +64,15 @@ mkdir -p "$BX/box_bench20_flow/$id.flow"
 stand_in "$MID/mid_mu0.3_s1_v90_g981_D2.0.csv" "$BX/box_bench20_flow/$id.csv" 50
 cp -r "$ROOT/docs/results/mid/flow" "$ROOT/docs/results/mid/surface" "$ROOT/docs/results/mid/momentum" \
   "$ROOT/docs/results/mid/window.txt" "$BX/box_bench20_flow/$id.flow/"
+# alpha against D in the 20 cm box: the bench's D = 1 and 2 cm pushes at 28 cm/s (beds 1 and 2
+# as the tiles 11 and 12), and its 2 cm pushes read as D = 3 cm; the 8 cm box's D sweep and the
+# frictionless shaft missing (they must add no line)
+mkdir -p "$BX/box_bench20_D"
+for s in 1 2; do
+  cp "$BENCH/bed_bench_mu0.3_s$s.info" "$BX/box_bench20_D/bed_bench_mu0.3_s1$s.info"
+  for D in 1.0 2.0; do cp "$BENCH/bench_mu0.3_s${s}_v28_g981_D$D.csv" "$BX/box_bench20_D/bench_mu0.3_s1${s}_v28_g981_D$D.csv"; done
+  stand_in "$BENCH/bench_mu0.3_s${s}_v28_g981_D2.0.csv" "$BX/box_bench20_D/bench_mu0.3_s1${s}_v28_g981_D3.0.csv" 28 3
+done
 
 GRANPEN_CLI=$CLI "$ROOT/validation/results.sh" --out "$OUT/res" --dumps /nonexistent --dg10 "$DG" --stiff "$ST" --damp "$DA" \
   --box "$BX" > "$OUT/res.log" 2>&1 || { cat "$OUT/res.log"; fail "results.sh failed"; }
@@ -71,6 +80,9 @@ N=$OUT/res/numbers.txt
 val() { awk -v k="$1" '$1 == k { sub(/  #.*/, ""); sub(/^[^=]*= /, ""); print; exit }' "$N"; }
 same() { [ "$(val "$1")" = "$2" ] || fail "$1 = '$(val "$1")', expected '$2'"; }
 num() { "$CLI" get "$1" "$2"; }    # the value at key path $2 of granpen's JSON $1
+# COLUMN of granpen fit's CSV for one trace: fit_col TRACE COLUMN FIT_OPTION...
+fit_col() { "$CLI" fit "$1" "${@:3}" --csv "$OUT/w.csv" > /dev/null
+  awk -F, -v col="$2" 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next } { print $i[col] }' "$OUT/w.csv"; }
 
 # the peak law: granpen collapse on the 15 files directly
 "$CLI" collapse "$DG"/dg10_peak/*.csv --alpha 35 --tbin 0.25 --json "$OUT/direct.json" > /dev/null
@@ -94,27 +106,40 @@ done
 same bench_stiff.peak_over_bench "1 +- 0 n = 8"
 same bench_damp.peak_over_bench "1 +- 0 n = 8"
 # the box series: each complete box's peak law is the bench's own (the same traces through
-# peak_law), the 20 cm box's peaks over the 8 cm box's are those of twins, its flow rows the
-# mid push's; the 12 and 16 cm boxes add no line
-for b in 8 20; do
+# peak_law), the 16 cm box's peaks over the 8 cm box's are those of twins, the 20 cm box's
+# flow rows the mid push's; the 12 cm box, and the 20 cm box's peaks over it, add no line
+for b in 8 16 20; do
   for k in peak_exponent peak_exponent_ensemble peak_exponent_local peak_exponent_from_2vc peak_z \
     peak_exponent_ensemble_from_2vc peak_inertial peak_crossover_speed; do
     same "bench_box$b.$k" "$(val "bench.$k")"
   done
 done
-same bench_box20.peak_over_box8 "1 +- 0 n = 10"
-for k in lambda_vz_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove; do
+same bench_box16.peak_over_box8 "1 +- 0 n = 10"
+for k in lambda_vz_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove M_move M_slow; do
   same "bench_box20.v50.$k" "$(val "mid.$k")"
 done
-! grep -q '^bench_box1[26]\.\|^bench_box8\.v50\|^bench_box8.peak_over' "$N" || fail "an incomplete box part added lines"
+# alpha against D in the 20 cm box: the bench's own lines for D = 1 and 2 (the same traces,
+# the same window), D = 3 from granpen fit on the two stand-ins directly, and the ratio with
+# the beds' spreads in quadrature
+for D in 1 2; do same "bench_box20.alpha0_window.v28.D$D" "$(val "bench.alpha0_window.v28.g981.D$D")"; done
+same bench_box20.alpha0_window.v28.D3 "$(for s in 1 2; do fit_col "$BX/box_bench20_D/bench_mu0.3_s1${s}_v28_g981_D3.0.csv" alpha0 --zmin 2; done |
+  awk '{ s += $1; ss += $1 * $1; n++ } END { m = s / n; printf "%.4g +- %.2g n = %d\n", m, sqrt((ss - n * m * m) / (n - 1)), n }')"
+same bench_box20.alpha_D1_over_D2 "$(awk -v a="$(val bench_box20.alpha0_window.v28.D1 | awk '{print $1}')" -v ea="$(val bench_box20.alpha0_window.v28.D1 | awk '{print $3}')" \
+  -v b="$(val bench_box20.alpha0_window.v28.D2 | awk '{print $1}')" -v eb="$(val bench_box20.alpha0_window.v28.D2 | awk '{print $3}')" \
+  'BEGIN { r = a / b; printf "%.4g +- %.2g\n", r, r * sqrt((ea / a) ^ 2 + (eb / b) ^ 2) }')"
+grep -q "^alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s,20,$(val bench_box20.alpha_D1_over_D2 | awk '{print $1}')," "$OUT/res/box.csv" ||
+  fail "box.csv lacks the 20 cm box's alpha ratio"
+! grep -q '^bench_box12\.\|^bench_box16\.v50\|^bench_box20\.peak_over\|^bench_box8\.v50\|^bench_box8.peak_over\|^bench_box8\.alpha\|^bench_box20_shaft' "$N" || fail "an incomplete box part added lines"
+grep -q "box_bench8_D: 0 of 6 pushes" "$OUT/res.log" || fail "no note of the 8 cm box's missing D pushes"
 grep -q "box 12 cm: 0 of 10 peak pushes" "$OUT/res.log" || fail "no note of the 12 cm box's missing pushes"
-# the box table holds the 20 cm box's paired peaks and flow, and its figure was made
-grep -q "^peak / the 8 cm box's (same bed and v0),20,1,0," "$OUT/res/box.csv" || fail "box.csv lacks the 20 cm box's paired peaks: $(cat "$OUT/res/box.csv")"
+# the box table holds the 16 cm box's paired peaks, the 20 cm box's flow, and its figure was made
+grep -q "^peak / the box 8 cm narrower's (same bed and v0),16,1,0," "$OUT/res/box.csv" || fail "box.csv lacks the 16 cm box's paired peaks: $(cat "$OUT/res/box.csv")"
+grep -q "^peak / the box 8 cm narrower's (same bed and v0),20,," "$OUT/res/box.csv" || fail "box.csv has a 20 cm paired peak without the 12 cm box"
 grep -q "^lambda_vz / D at 50 cm/s,20,$(val mid.lambda_vz_D | awk '{print $1}')," "$OUT/res/box.csv" || fail "box.csv lacks the 20 cm box's lambda_vz"
 [ -s "$OUT/res/box/scaling.gp" ] || fail "no box figure"
 # the flow rows of each dg10 speed: the mid push's, from the same tables
 for v in 40 100 200; do
-  for k in lambda_vz_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove; do
+  for k in lambda_vz_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove M_move M_slow; do
     same "dg10.v$v.$k" "$(val "mid.$k")"
   done
 done
@@ -125,9 +150,6 @@ same dg10.alpha0_window.v100.D2 "$(alpha0 "$DG/dg10_flow/dg10_mu0.3_s1_v100_g981
 same dg10.alpha0_window.v40.D2 "$(alpha0 "$DG/dg10_flow/dg10_mu0.3_s1_v40_g981_D2.0.csv")"
 same dg10.alpha0_window.v100.D1 "$(alpha0 "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D1.0.csv")"
 # the D ratio over a 1 cm window: granpen fit on the two files over that window directly
-# COLUMN of granpen fit's CSV for one trace: fit_col TRACE COLUMN FIT_OPTION...
-fit_col() { "$CLI" fit "$1" "${@:3}" --csv "$OUT/w.csv" > /dev/null
-  awk -F, -v col="$2" 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next } { print $i[col] }' "$OUT/w.csv"; }
 a1=$(fit_col "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D1.0.csv" alpha0 --zmin 3 --zmax 4)
 a2=$(fit_col "$DG/dg10_flow/dg10_mu0.3_s1_v100_g981_D2.0.csv" alpha0 --zmin 3 --zmax 4)
 same dg10.alpha0_ratio_D1_D2.z3-4 "$(awk -v a="$a1" -v b="$a2" 'BEGIN { printf "%.3g\n", a / b }')"

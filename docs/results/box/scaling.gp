@@ -50,17 +50,17 @@ do for [fmt in formats] {
   plot data index 1 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        2 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 2"
 
-  # ---- panel 3: peak / the 8 cm box's (same bed and v0)   (paper: 1)
+  # ---- panel 3: peak / the box 8 cm narrower's (same bed and v0)   (paper: 1)
   reset
   set encoding utf8
   set origin 0,0.3133333333
   set size 0.5,0.3133333333
-  set title "peak / the 8 cm box's (same bed and v0)   (paper: 1)"
+  set title "peak / the box 8 cm narrower's (same bed and v0)   (paper: 1)"
   set xlabel "box width (cm)"
-  set ylabel "peak / the 8 cm box's (same bed and v0)"
+  set ylabel "peak / the box 8 cm narrower's (same bed and v0)"
   set grid lc rgb "#d0d0d0"
   set xrange [7:21]
-  set yrange [0.7826:1.0842]
+  set yrange [0.90138:1.05682]
   unset key
   set arrow 1 from first 20, graph 0 to first 20, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
   set label 1 "paper" at first 20, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
@@ -98,7 +98,7 @@ do for [fmt in formats] {
   set ylabel "drag / (mu g M) at 50 cm/s"
   set grid lc rgb "#d0d0d0"
   set xrange [7:21]
-  set yrange [0.8646200776:2.827628952]
+  set yrange [0.5031366132:2.854405505]
   unset key
   set arrow 1 from first 20, graph 0 to first 20, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
   set label 1 "paper" at first 20, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
