@@ -8,7 +8,9 @@
 #           first, so that the trend shows before the whole series is in. About 1.5
 #           core-hours in all (docs/presets.md, "The box series"). Then alpha against D in
 #           the 8 and 20 cm boxes: D = 1, 2, 3 cm at 28 cm/s, 4 cm deep, two beds (about
-#           2.2e10 atom-steps, 1.7 core-hours).
+#           2.2e10 atom-steps, 1.7 core-hours), each followed by the same pushes of D = 1
+#           and 2 cm with a frictionless shaft (box_bench{8,20}_shaft: beds rebuilt with the
+#           shaft's atom type, mu_shaft 0; 1.5e10 atom-steps, 1.2 core-hours).
 #
 #   validation/box.sh bench [--out DIR] [--units N] [--ranks N] [--commit] [--status]
 set -euo pipefail
@@ -20,7 +22,7 @@ case $series in
   bench)
     sweeps=""
     for kind in peak flow; do for b in 8 20 12 16; do sweeps="$sweeps $S/box_bench${b}_$kind.sweep"; done; done
-    sweeps="$sweeps $S/box_bench8_D.sweep $S/box_bench20_D.sweep"
+    for b in 8 20; do sweeps="$sweeps $S/box_bench${b}_D.sweep $S/box_bench${b}_shaft.sweep"; done
     exec "$ROOT/validation/campaign.sh" --data "$ROOT/data/sims/box_bench" --sweeps "${sweeps# }" --tip "1 3" "$@" ;;
   *) echo "box.sh: no series '$series' (bench)" >&2; exit 2 ;;
 esac

@@ -8,7 +8,8 @@
 #           are copied to DATA/beds; a later session rebuilds the bed from them in seconds
 #           (in.pour -var from_tile) instead of pouring it again. A committed tile may serve
 #           a wider box: the sweep's `set` gives tile, box (and surface_grid), and the bed is
-#           rebuilt as tile x tile copies (in.pour checks that the box is tile x the tile's side).
+#           rebuilt as tile x tile copies (in.pour checks that the box is tile x the tile's side);
+#           its rod_types (2: the shaft's own atom type, in.push mu_shaft) goes to the rebuild too.
 #   a push  its trace goes to DATA/SWEEP/ID.csv (SWEEP: the sweep file's name); a push whose
 #           trace is there is never rerun. A push of a sweep with observe = dump (dumps of
 #           every atom, hundreds of MB, not committed) is followed by validation/push_flow.sh
@@ -127,7 +128,9 @@ for f in $SWEEPS; do
         # the sweep's own tile count and box (a wider box of the same tile), else the tile's
         read -r -a widen < <(set_vars "$f" tile box surface_grid)
         [ "${#widen[@]}" -gt 0 ] || widen=(-var tile "$tile")
-        "$LMP" -in "$INPUTS/in.pour" -var inputs "$INPUTS" -var preset "$preset" -var mu "$mu" "${widen[@]}" \
+        # and its rod types (rod_types 2: the shaft's type 3 for in.push mu_shaft)
+        read -r -a rods < <(set_vars "$f" rod_types)
+        "$LMP" -in "$INPUTS/in.pour" -var inputs "$INPUTS" -var preset "$preset" -var mu "$mu" "${widen[@]}" "${rods[@]}" \
           -var from_tile "$DATA/beds/$id" -var out "$dir/beds/$id" -log "$dir/beds/$id.rebuild.log" -screen none >/dev/null \
           || { echo "campaign.sh: rebuilding $id from its tile failed: $(grep -m1 '^ERROR' "$dir/beds/$id.rebuild.log") ($dir/beds/$id.rebuild.log)" >&2; exit 1; }
         echo "campaign.sh: $name: bed $id rebuilt from $DATA/beds/$id.tile.data.gz"

@@ -412,7 +412,7 @@ box_bench() {
     else say "box $b cm: its flow push (with tables) not in $BOX/box_bench${b}_flow: skipped"; fi
   done
   for b in 8 20; do box_alpha_D "box_bench${b}_D" "bench_box$b"; done
-  box_alpha_D box_bench20_shaft bench_box20_shaft
+  for b in 8 20; do box_alpha_D "box_bench${b}_shaft" "bench_box${b}_shaft"; done
 }
 # alpha against D in one box (DIR under $BOX, its 2 beds x 3 or 2 diameters at 28 cm/s): the
 # depth term through the origin over z >= 2 cm (the bench row's window) per D, mean over the
@@ -518,7 +518,7 @@ if ls "$BOX"/box_bench*_peak/*.csv > /dev/null 2>&1; then
     for b in 8 12 16 20; do row_of "lambda_vz / D at 50 cm/s" "$b" "bench_box$b.v50.lambda_vz_D" 0.98 0.15; done
     for b in 8 12 16 20; do row_of "drag / (mu g M) at 50 cm/s" "$b" "bench_box$b.v50.drag_over_mu_g_Mmove" 1 ""; done
     for b in 8 20; do row_of "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s" "$b" "bench_box$b.alpha_D1_over_D2" 1 ""; done
-    row_of "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s (frictionless shaft)" 20 bench_box20_shaft.alpha_D1_over_D2 1 ""
+    for b in 8 20; do row_of "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s (frictionless shaft)" "$b" "bench_box${b}_shaft.alpha_D1_over_D2" 1 ""; done
   } > "$OUT/box.csv.partial" && mv "$OUT/box.csv.partial" "$OUT/box.csv"
   "$CLI" plot scaling "$OUT/box.csv" --out "$OUT/box" > /dev/null
 fi

@@ -43,6 +43,8 @@ refused in.push "ERROR: the friction mu = -0.1 is negative" -var mu_push -0.1
 refused in.push "ERROR: mu_roll = -0.1 is negative" -var mu_roll -0.1
 refused in.push "ERROR: cohesion = -300 is negative" -var cohesion -300
 refused in.push "ERROR: the rod-grain friction mu_rod = -0.2 is negative" -var dmu_rod -0.5
+refused in.push "ERROR: the shaft-grain friction mu_shaft = -0.1 is negative" -var mu_shaft -0.1
+refused in.push "ERROR: the shaft-grain friction mu_shaft = -1e-9 is negative" -var mu_shaft -1e-9
 refused in.pour "ERROR: mu_wall = -0.2 is negative" -var walls 1 -var mu_wall -0.2
 refused in.pour "ERROR: mu_roll = -1 is negative" -var mu_roll -1
 refused in.pour "ERROR: walls = 2 is neither 0" -var walls 2
@@ -55,5 +57,7 @@ refused in.pour "ERROR: d_g = 0.4, rho_g = 3.0 and lat = -0.5 must be positive" 
 refused in.pour "ERROR: lat = 0.2 cm is below the grain diameter" -var lat 0.2
 refused in.pour "ERROR: dt_pour = -5e-6 is not a positive time step" -var dt_pour -5e-6
 refused in.pour "ERROR: surface_grid = 2.5 is not a whole number" -var surface_grid 2.5
+refused in.pour "ERROR: rod_types = 3 is neither 1" -var rod_types 3
+refused in.pour "ERROR: rod_types = 0 is neither 1" -var rod_types 0
 echo "$n knobs out of range tried, $fails failures"
 [ "$fails" = 0 ] && echo "deck knobs refused by name"

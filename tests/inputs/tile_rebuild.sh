@@ -16,7 +16,8 @@
 #     (read_data turns densities back into masses; a few ulp).
 #  3. the rebuild from the data file (from_tile) gives the poured bed's grains, z_s and
 #     phi_0 (NAME.info of each) to 1e-12 relative, for the same reason (both are built from
-#     the same file; this checks that from_tile reads the tile and its info as written).
+#     the same file; this checks that from_tile reads the tile and its info as written);
+#     so does the rebuild with the rod shaft's atom type (-var rod_types 2).
 #  4. refusals: from_tile of another mu or preset, of a stem with no tile, into a box that is
 #     not a whole number of tiles, and with a tile count that does not make the box, end with
 #     a named ERROR and exit status 1, writing no bed.
@@ -32,7 +33,7 @@
 set -euo pipefail
 LMP=$1 INPUTS=$2 WORK=$3
 mkdir -p "$WORK"; cd "$WORK"
-rm -f tile.* rebuilt.* refused.* check.*
+rm -f tile.* rebuilt.* rebuilt3.* types.* refused.* check.*
 fail() { echo "FAIL: $*"; exit 1; }
 info() { awk -F' = ' -v k="$2" '$1 == k {print $2}' "$1"; }
 # |a - b| <= rtol * |b|
@@ -77,6 +78,18 @@ for k in z_s phi_0; do
   close "$(info rebuilt.info $k)" "$(info tile.info $k)" 1e-12 || fail "the rebuilt bed's $k $(info rebuilt.info $k) is not the poured bed's $(info tile.info $k)"
 done
 [ "$(info rebuilt.info seed)" = "$(info tile.tile.info seed)" ] || fail "the rebuilt bed's seed is not the tile's"
+# ... and with the shaft's atom type (-var rod_types 2: read_data extra/atom/types 1): the same
+# grains in the same places (an empty type adds nothing), so the same z_s and phi_0 (1e-12, as
+# above), the third type in the box, and rod_types = 2 in its info
+"$LMP" -in "$INPUTS/in.pour" -var inputs "$INPUTS" -var preset tiny -var tile 2 -var from_tile tile -var rod_types 2 \
+  -var out rebuilt3 -log rebuilt3.log -screen none >/dev/null || fail "the rebuild with rod_types 2 failed (rebuilt3.log)"
+for k in z_s phi_0; do
+  close "$(info rebuilt3.info $k)" "$(info tile.info $k)" 1e-12 || fail "the rebuilt bed with rod_types 2 has $k $(info rebuilt3.info $k), not the poured bed's $(info tile.info $k)"
+done
+[ "$(info rebuilt3.info rod_types)" = 2 ] && [ "$(info rebuilt.info rod_types)" = 1 ] || fail "rod_types in the infos: $(info rebuilt3.info rod_types) and $(info rebuilt.info rod_types), not 2 and 1"
+printf 'read_restart ${bed}\ninfo system out log\n' > types.lmp
+"$LMP" -in types.lmp -var bed rebuilt3.restart -log types.log -screen none >/dev/null || fail "reading rebuilt3.restart failed (types.log)"
+grep -Eq "^Atoms += +1936, +types = +3," types.log || fail "the bed rebuilt with rod_types 2 is not 1936 atoms of 3 types: $(grep '^Atoms' types.log)"
 
 # 4. refusals
 set +e

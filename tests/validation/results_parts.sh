@@ -129,7 +129,7 @@ same bench_box20.alpha_D1_over_D2 "$(awk -v a="$(val bench_box20.alpha0_window.v
   'BEGIN { r = a / b; printf "%.4g +- %.2g\n", r, r * sqrt((ea / a) ^ 2 + (eb / b) ^ 2) }')"
 grep -q "^alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s,20,$(val bench_box20.alpha_D1_over_D2 | awk '{print $1}')," "$OUT/res/box.csv" ||
   fail "box.csv lacks the 20 cm box's alpha ratio"
-! grep -q '^bench_box12\.\|^bench_box16\.v50\|^bench_box20\.peak_over\|^bench_box8\.v50\|^bench_box8.peak_over\|^bench_box8\.alpha\|^bench_box20_shaft' "$N" || fail "an incomplete box part added lines"
+! grep -q '^bench_box12\.\|^bench_box16\.v50\|^bench_box20\.peak_over\|^bench_box8\.v50\|^bench_box8.peak_over\|^bench_box8\.alpha\|^bench_box8_shaft\|^bench_box20_shaft' "$N" || fail "an incomplete box part added lines"
 grep -q "box_bench8_D: 0 of 6 pushes" "$OUT/res.log" || fail "no note of the 8 cm box's missing D pushes"
 grep -q "box 12 cm: 0 of 10 peak pushes" "$OUT/res.log" || fail "no note of the 12 cm box's missing pushes"
 # the box table holds the 16 cm box's paired peaks, the 20 cm box's flow, and its figure was made
