@@ -10,7 +10,7 @@
 # with a self-test.
 #   io_reads_writes.sh [--allow FILE] [--self-test] [ROOT]
 # Exit: 0 no call outside the list, 1 some (each printed as file:line: code), 2 usage.
-# Needs only sh, find, awk and grep.
+# Needs only sh, find, awk and grep (and code_lines.sh beside it).
 set -u
 root=.
 allow=
@@ -29,19 +29,8 @@ KERNELS='fit_trace|fit_ensemble|fit_exponential|linear_fit|linear_fit_origin|dom
 # a call: the name (not part of a longer one, nor a member) and its opening parenthesis
 CALL="(^|[^A-Za-z0-9_.>])($KERNELS) *\\("
 
-# FILE:LINE: CODE for every line of code (comments and string literals blanked) of
-# ROOT/analysis/io
-code_lines() {
-  find "$1/analysis/io" \( -name '*.cpp' -o -name '*.h' \) | sort | while read -r f; do
-    awk -v name="${f#"$1"/}" '
-      { l = $0
-        if (inc) { if (l ~ /\*\//) { sub(/.*\*\//, "", l); inc = 0 } else next }
-        gsub(/"([^"\\]|\\.)*"/, "\"\"", l)
-        while (l ~ /\/\*/) { if (l ~ /\/\*.*\*\//) sub(/\/\*([^*]|\*+[^*\/])*\*+\//, "", l); else { sub(/\/\*.*/, "", l); inc = 1 } }
-        sub(/\/\/.*/, "", l)
-        if (l ~ /[^ \t]/) print name ":" FNR ": " l }' "$f"
-  done
-}
+# code_lines ROOT EXCLUDE DIR...: FILE:LINE: CODE, comments and string literals blanked
+. "$(dirname "$0")/code_lines.sh"
 
 # "path kernel" of each call
 calls_of() {
@@ -55,7 +44,7 @@ calls_of() {
 
 check() {
   [ -d "$1/analysis/io" ] || { echo "io_reads_writes.sh: $1 has no analysis/io" >&2; return 2; }
-  code=$(code_lines "$1")
+  code=$(code_lines "$1" "" analysis/io)
   allowed=
   [ -n "$2" ] && allowed=$(grep -v -E '^[[:space:]]*(#|$)' "$2" | awk '{ print $1, $2 }' | sort -u)
   found=$(calls_of "$code")
