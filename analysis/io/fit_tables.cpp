@@ -122,9 +122,10 @@ std::string results_csv(const std::vector<FitResult> &results)
 
 }    // namespace
 
-FitResult fit_trace_file(const std::string &file, const FitWindow &w)
+FitTraceRead read_fit_trace(const std::string &file, const FitWindow &w)
 {
-  FitResult r;
+  FitTraceRead out;
+  FitResult &r = out.result;
   r.file = file;
   const Trace tr = to_cgs(read_trace(file));
   std::string msg;
@@ -135,15 +136,15 @@ FitResult fit_trace_file(const std::string &file, const FitWindow &w)
   if (w.mu > 0) r.mu = w.mu, r.mu_src = "option";
   if (w.rho_g > 0) r.rho_g = w.rho_g, r.rho_src = "option";
   r.v0 = tr.v0, r.D = tr.D, r.g = tr.g;
-  TraceFitParams p;
+  TraceFitParams &p = out.trace.params;
   // a t~ window: z at least this trace's depth of that t~
   p.zlo = w.tmin > 0 ? depth_at_t_tilde(w.tmin, tr.v0, tr.g, tr.D) : w.zmin;
   p.zhi = w.zmax;
   p.v0 = tr.v0, p.D = tr.D, p.g = tr.g;
   p.mu = r.mu, p.rho_g = r.rho_g, p.d_g = r.d_g;
   p.shorten_window = true;    // a window beyond the data: its deeper half, with a note
-  r.fit = fit_trace(tr.z, tr.F, p);
-  return r;
+  out.trace.name = file, out.trace.z = tr.z, out.trace.F = tr.F;
+  return out;
 }
 
 Json fit_results_json(const std::vector<FitResult> &results, const std::vector<FitFailure> &failures, const FitWindow &w)
