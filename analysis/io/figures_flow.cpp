@@ -6,6 +6,7 @@
 
 #include "csv_table.h"
 #include "flow_fields.h"
+#include "json_path.h"
 #include "json_text.h"
 #include "momentum_classes.h"
 #include "errors.h"
@@ -93,32 +94,27 @@ int find_index(const std::vector<double> &grid, double x)
   return it == grid.end() ? (int) grid.size() - 1 : (int) (it - grid.begin());
 }
 
-// a number after "key": in DIR/flow.json's "parameters" (granpen flow writes D, the
-// annulus radii, ...), NaN when absent; index picks an element of an array value
+// a number of DIR/flow.json's "parameters" (granpen flow writes D, the annulus radii, ...),
+// NaN when the file, the key or the number is absent; index picks an element of an array
 double flow_parameter(const std::string &dir, const std::string &key, int index = -1)
 {
-  std::ifstream in(fs::path(dir) / "flow.json", std::ios::binary);
-  if (!in) return NAN;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  const std::string j = ss.str();
-  const auto p = j.find("\"parameters\"");
-  if (p == std::string::npos) return NAN;
-  auto k = j.find("\"" + key + "\": ", p);
-  if (k == std::string::npos) return NAN;
-  k += key.size() + 4;
-  if (index >= 0) {
-    if (j[k] != '[') return NAN;
-    ++k;
-    for (int i = 0; i < index; ++i) {
-      k = j.find(',', k);
-      if (k == std::string::npos) return NAN;
-      ++k;
+  const fs::path file = fs::path(dir) / "flow.json";
+  if (!fs::is_regular_file(file)) return NAN;
+  try {
+    const Json doc = read_json_file(file.string());
+    const auto p = doc.find("parameters");
+    if (p == doc.end() || !p->is_object()) return NAN;
+    const auto k = p->find(key);
+    if (k == p->end()) return NAN;
+    const Json *v = &*k;
+    if (index >= 0) {
+      if (!v->is_array() || (std::size_t) index >= v->size()) return NAN;
+      v = &(*v)[(std::size_t) index];
     }
+    return v->is_number() ? v->get<double>() : NAN;
+  } catch (const InputError &) {
+    return NAN;    // not JSON: as absent (the figure then says where D came from)
   }
-  char *end = nullptr;
-  const double v = std::strtod(j.c_str() + k, &end);
-  return end != j.c_str() + k ? v : NAN;
 }
 
 // the rod diameter: --D, else granpen flow's flow.json, else a `# D = ` header key,
