@@ -10,8 +10,10 @@
 #include "gap_features.h"
 #include "gap_inputs.h"
 #include "gap_plan.h"
-#include "gap_residual.h"
+#include "gap_limits.h"
 #include "gap_report.h"
+#include "gap_residual.h"
+#include "gap_result.h"
 #include "gap_sims.h"
 #include "gap_where.h"
 #include "gap_which.h"
@@ -24,6 +26,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -147,22 +150,29 @@ int run_array_task(const std::vector<SimRequest> &req, RunnerOptions runner, int
   return run_sweeps({req[t.request]}, runner) == 0 ? 0 : 1;
 }
 
-// The confirmation and the verdict that stands: the confirmation asks for its runs, the
-// simulate stage runs them, and it is asked again until it needs none; then the verdict from
-// the fits' evidence and the confirmation's result.
-Confirmation confirm_and_decide(const std::map<std::string, const Effect *> &by_name, const FittedCandidates &fitted,
-                                const Features &f, const Alignment &al, const SimContext &sim, bool fit_only, Diagnosis &d)
+// Stage 9 with stage 3 between its calls: the confirmation asks for its runs, the simulate
+// stage runs them, and it is asked again until it needs none.
+Confirmation confirm_with_runs(const std::map<std::string, const Effect *> &by_name, const FittedCandidates &fitted,
+                               const VerdictDecision &fits_verdict, const WhereResult &where, const Features &f,
+                               const Alignment &al, const SimContext &sim, bool fit_only)
 {
   StageRuns simulated;
-  ConfirmStep step = confirm_top_effect(by_name, fitted.data, f, al, fit_only, d, simulated);
+  ConfirmStep step = confirm_top_effect(by_name, fitted, fits_verdict, where, f, al, fit_only, simulated);
   while (step.need) {
     simulate_needed(*step.need, *by_name.at(step.need->effect), sim, simulated);
-    step = confirm_top_effect(by_name, fitted.data, f, al, fit_only, d, simulated);
+    step = confirm_top_effect(by_name, fitted, fits_verdict, where, f, al, fit_only, simulated);
   }
-  record_confirmation(step.done, d);
-  const VerdictDecision verdict = decide_verdict(fitted.evidence, &step.done.outcome);
-  record_verdict(verdict, confirmation_verdict_notes(verdict, fitted.evidence, step.done.outcome), d);
   return std::move(step.done);
+}
+
+// what the confirm stage says it does, from the fits' verdict
+std::string confirm_message(const VerdictDecision &fits_verdict, const std::vector<EffectFit> &ranking, bool fit_only)
+{
+  if (fits_verdict.between_knots && !ranking.empty())
+    return "simulating " + ranking[0].name + " between its knots on fresh seeds";
+  if (fits_verdict.verdict != Verdict::explained && fits_verdict.verdict != Verdict::scale_only) return "no effect to confirm";
+  if (fit_only) return "not confirming (--fit-only)";
+  return "confirming " + ranking[0].name + " on fresh seeds";
 }
 
 }    // namespace
@@ -190,7 +200,7 @@ int run_gap(const GapOptions &given, const GapProgressFn &fn)
 int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
 {
   const Progress progress{fn};
-  // validate: nothing is started or written before the inputs pass
+  // 1 validate: nothing is started or written before the inputs pass
   const Scenario sc = load_scenario(given);
   const auto effects = choose_effects(given.effects);
   MeasuredData measured = read_measured(given.real, sc);
@@ -200,13 +210,13 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
                format_text("%zu measured runs at %zu speeds (%s cm/s) against scenario %s", measured.files.size(),
                       measured.runs.size(), joined(measured.v0s).c_str(), sc.name.c_str()));
 
-  // the plan, before anything is simulated; nothing more when it exceeds --budget
+  // 2 plan, before anything is simulated; nothing more when it exceeds --budget
   if (!plan_within_budget(given, sc, signature_requests(sc.name, measured.v0s, effects), given.cache + "/" + sc.name,
                           progress))
     return GAP_OVER_BUDGET;
   const GapOptions opt = for_scenario(given, sc);
 
-  // plan and simulate: the baseline and every effect knot (cached)
+  // 3 simulate: the baseline and every effect knot (cached)
   const RunnerOptions runner = cache_runner(opt);
   const std::string &cache = runner.out_root;
   progress.say(GapProgress::STEP, "simulate",
@@ -216,60 +226,56 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   if (run_requests(plan.requests, runner) != 0)
     throw InputError("some simulations failed: see the manifests under " + cache + " (rerun to retry them)");
 
-  // align and bin, features and the noise model
+  // 4 align and bin, 5 features and the noise model
   progress.say(GapProgress::STEP, "align", "comparing ensembles", 2, 4);
   SimulatedRuns sims = load_simulations(cache, effects);
   const Alignment al = align_and_bin(measured.runs, sims, sc.depth);
-  Diagnosis d;
-  d.scenario = sc.name;
-  d.real_dir = opt.real;
-  d.real_files = measured.files;
-  d.notes = measured.notes;
-  d.notes.insert(d.notes.end(), al.notes.begin(), al.notes.end());
-  d.grid = al.grid;
-  d.peak_end = peak_regime_end(sc.D);
   const Features f = build_features(measured.runs, sims, effects, al.grid, measured.files.size());
-  d.notes.insert(d.notes.end(), f.notes.begin(), f.notes.end());
-  d.n_reference = f.n_reference;
   for (const auto &line : feature_dump(f)) progress.say(GapProgress::DEBUG, "features", line);
 
-  // where
-  gap_curves(f, al.grid, d);
-  regimes(f, sims.fresh, sc, al.grid, d);
-  observable_findings(f, measured.runs, sims, sc, al.grid, d);
-  gap_significance(f, al.grid, d);
+  // 6 where: the gap curves, the regimes, the observables, the omnibus test
+  const WhereResult where = where_stage(f, measured.runs, sims, sc, al.grid);
 
-  // which: every effect's magnitude, explained fraction, leave-one-speed-out; the verdict
+  // 7 which: every effect's magnitude, explained fraction, leave-one-speed-out
   progress.say(GapProgress::STEP, "which", format_text("fitting %zu candidate effects", effects.size()), 3, 4);
   std::map<std::string, const Effect *> by_name;
   for (const Effect *e : effects) by_name[e->name] = e;
-  const FittedCandidates fitted = fit_candidates(effects, f, [&](const std::string &sweep) { return mean_phi0(cache, sweep); }, d);
-  const auto &data = fitted.data;
-  for (std::size_t i = 0; i < d.ranking.size(); ++i) {
-    const EffectFit &r = d.ranking[i];
+  const FittedCandidates fitted =
+      fit_candidates(effects, f, [&](const std::string &sweep) { return mean_phi0(cache, sweep); }, where.omnibus);
+  const std::vector<EffectFit> &ranking = fitted.evidence.ranking;
+  for (std::size_t i = 0; i < ranking.size(); ++i) {
+    const EffectFit &r = ranking[i];
     progress.say(GapProgress::DETAIL, "which",
                  format_text("%-20s magnitude %-10s explained %5.2f  held-out %5.2f  chi2 %.1f -> %.1f  lr %.1f (threshold %.1f)",
                         r.name.c_str(), printf_number("%.4g", r.magnitude).c_str(), r.explained, r.heldout_explained, r.chi2_0,
                         r.chi2, r.lr, r.lr_threshold),
-                 (int) i + 1, (int) d.ranking.size());
+                 (int) i + 1, (int) ranking.size());
   }
 
-  // confirm: the top effect on fresh seeds
-  progress.say(GapProgress::STEP, "confirm",
-               d.between_knots && !d.ranking.empty() ? "simulating " + d.ranking[0].name + " between its knots on fresh seeds"
-               : d.verdict != Verdict::explained && d.verdict != Verdict::scale_only ? "no effect to confirm"
-               : opt.fit_only                        ? "not confirming (--fit-only)"
-                                                     : "confirming " + d.ranking[0].name + " on fresh seeds",
-               4, 4);
-  after_is_before(sims.fresh, d);
-  const Confirmation confirmation =
-      confirm_and_decide(by_name, fitted, f, al, SimContext{sc.name, measured.v0s, runner}, opt.fit_only, d);
-  const RunsBySpeed &after = confirmation.after_runs;
-  how_blind(effects, data, f, d);    // after the confirmation: the next measurement follows the final verdict
+  // 8 verdict on the fits alone: what the confirmation simulates
+  const VerdictDecision fits_verdict = decide_verdict(fitted.evidence);
 
-  // report: what the gap left over, G per regime, the output
-  residual_stage(f, measured.runs, sims.fresh, after, data, al.grid, d);
-  d.gap_by_regime = gap_by_regime(al.grid, d.peak_end, d.speeds);
+  // 9 confirm: the top effect on fresh seeds (3 simulate runs what it asks for)
+  progress.say(GapProgress::STEP, "confirm", confirm_message(fits_verdict, ranking, opt.fit_only), 4, 4);
+  const Confirmation confirmation = confirm_with_runs(by_name, fitted, fits_verdict, where, f, al,
+                                                      SimContext{sc.name, measured.v0s, runner}, opt.fit_only);
+
+  // 8 verdict that stands: the fits' evidence and the confirmation's result
+  const VerdictDecision verdict = decide_verdict(fitted.evidence, &confirmation.outcome);
+
+  // 10 limits: how blind (the next measurement follows the verdict that stands)
+  const Blindness blind = how_blind(effects, fitted.data, f, ranking, verdict, confirmation.named_magnitude());
+
+  // 11 residual: what the gap left over
+  const double peak_end = peak_regime_end(sc.D);
+  std::optional<Residual> residual =
+      residual_stage(f, measured.runs, sims.fresh, al.grid, peak_end, where, fitted, verdict, confirmation);
+
+  // 12 record, 13 report
+  DiagnosisInputs in{sc.name, opt.real, measured.files, measured.notes, al.grid, peak_end, f.n_reference};
+  in.notes.insert(in.notes.end(), al.notes.begin(), al.notes.end());
+  in.notes.insert(in.notes.end(), f.notes.begin(), f.notes.end());
+  const Diagnosis d = assemble_diagnosis(in, where, fitted, fits_verdict, confirmation, verdict, blind, std::move(residual));
   write_gap_output(d, opt.out);
   progress.say(GapProgress::INFO, "report",
                format_text("verdict %s%s; G_all %.3f -> %.3f (%d measured runs per speed at least, %d simulated); %s",
