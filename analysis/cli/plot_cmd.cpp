@@ -100,6 +100,13 @@ void flow_figures(const std::vector<std::string> &inputs, granpen::figures::Run 
   granpen::figures::plot_flow(inputs, t, granpen::run_flow_table_study(t.columns), run);
 }
 
+// momentum: the drag table read, F compared with mu g M (core), the figures
+void momentum_figures(const std::vector<std::string> &inputs, granpen::figures::Run &run)
+{
+  const granpen::figures::MomentumDragTable t = granpen::figures::read_momentum_drag_table(inputs[0], run.opt);
+  granpen::figures::plot_momentum(inputs, t, granpen::compare_drag(t.mu_g_M, t.F), run);
+}
+
 // the study's traces, named by their files
 std::vector<granpen::CollapseTrace> study_traces(const std::vector<granpen::figures::TraceIn> &traces,
                                                  const granpen::DepthTerm &dt)
@@ -180,7 +187,7 @@ int granpen::cli::run_plot(const PlotOptions &po)
   else if (kind == "peak") peak(inputs, run);
   else if (kind == "kz") fitted(inputs, run, FitKind::kz);
   else if (kind == "flow") flow_figures(inputs, run);
-  else if (kind == "momentum") plot_momentum(inputs, run);
+  else if (kind == "momentum") momentum_figures(inputs, run);
   else plot_scaling(inputs, run);
 
   const int failed = report_figures(run);

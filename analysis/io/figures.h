@@ -15,6 +15,7 @@
 #include "ensemble_fit.h"
 #include "fit_study.h"
 #include "flow_table_study.h"
+#include "momentum_classes.h"
 #include "json_writer.h"
 #include "plot_writer.h"
 
@@ -118,7 +119,18 @@ FlowFitTables read_flow_fit_tables(const std::string &dir, const Options &o);
 // The figures of DIR (inputs[0]): heat maps, the profile and the edge (drawn with the study's
 // fits of t), strip, annulus, surface.
 void plot_flow(const std::vector<std::string> &inputs, const FlowFitTables &t, const FlowTableStudy &st, Run &run);
-void plot_momentum(const std::vector<std::string> &inputs, Run &run);
+// granpen plot momentum's drag table (t~, F, mu g M), read from DIR, with what reading it
+// noted or found wrong (told when it is drawn); the CLI compares F with mu g M
+// (core/momentum_classes.h compare_drag) and hands the comparison to plot_momentum.
+struct MomentumDragTable {
+  bool read = false;    // there, with its columns
+  std::string path;
+  std::vector<double> t_tilde, F, mu_g_M;
+  std::vector<std::string> notes, problems;
+};
+MomentumDragTable read_momentum_drag_table(const std::string &dir, const Options &o);
+// The figures of DIR (inputs[0]): the classes against t~, and F against mu g M with cmp.
+void plot_momentum(const std::vector<std::string> &inputs, const MomentumDragTable &t, const DragComparison &cmp, Run &run);
 void plot_scaling(const std::vector<std::string> &inputs, Run &run);
 
 // A power of ten for an axis of values up to maxabs: factor 10^e (e >= 3, else 1)

@@ -1,7 +1,8 @@
 // granpen analysis: the figures of granpen plot flow DIR and granpen plot momentum DIR,
 // from the tables written by granpen flow --out DIR and granpen momentum (figures.h). The fits drawn are the
 // library's, as the tables' writers use them: the flow table study's (core/flow_table_study.h,
-// run by the CLI on the tables read here) and core/momentum_classes.h compare_drag.
+// run by the CLI on the tables read here) and core/momentum_classes.h compare_drag (also the
+// CLI's: the drag figure draws the comparison it is given).
 #include "figures.h"
 
 #include "csv_table.h"
@@ -549,13 +550,13 @@ void momentum_classes_figure(const std::string &dir, Run &run)
                   1500, 600, {a, b}, 0.74);
 }
 
-void momentum_drag_figure(const std::string &dir, Run &run)
+// F against mu g M from the table read (t) and the comparison the CLI made of it (cmp)
+void momentum_drag_figure(const MomentumDragTable &t, const DragComparison &cmp, Run &run)
 {
-  CsvTable t;
-  std::vector<double> tt, F, M;
-  const auto columns = [&] { tt = t.numbers("t_tilde"), F = t.numbers("F"), M = t.numbers("mu_g_M"); };
-  if (!read_table(dir, "momentum_drag.csv", {"t_tilde", "F", "mu_g_M"}, run, t, columns)) return;
-  const DragComparison cmp = compare_drag(M, F);
+  run.notes.insert(run.notes.end(), t.notes.begin(), t.notes.end());
+  run.problems.insert(run.problems.end(), t.problems.begin(), t.problems.end());
+  if (!t.read) return;
+  const std::vector<double> &tt = t.t_tilde, &F = t.F, &M = t.mu_g_M;
   // one unit for both axes (the 1:1 line is then the diagonal of equal numbers); each
   // axis over its own data, so that points far from 1:1 stay readable
   double top = 0, ftop = 0, mtop = 0;
@@ -664,12 +665,27 @@ void plot_flow(const std::vector<std::string> &inputs, const FlowFitTables &t, c
                                  "flow_annulus.csv, flow_surface.csv is there (granpen flow --out writes them)");
 }
 
-void plot_momentum(const std::vector<std::string> &inputs, Run &run)
+MomentumDragTable read_momentum_drag_table(const std::string &dir, const Options &o)
+{
+  MomentumDragTable out;
+  Run said;    // what reading the table notes or finds wrong, told when it is drawn
+  said.opt = o;
+  CsvTable t;
+  const auto columns = [&] { out.t_tilde = t.numbers("t_tilde"), out.F = t.numbers("F"), out.mu_g_M = t.numbers("mu_g_M"); };
+  if (read_table(dir, "momentum_drag.csv", {"t_tilde", "F", "mu_g_M"}, said, t, columns)) {
+    out.read = true;
+    out.path = t.path;
+  }
+  out.notes = said.notes, out.problems = said.problems;
+  return out;
+}
+
+void plot_momentum(const std::vector<std::string> &inputs, const MomentumDragTable &t, const DragComparison &cmp, Run &run)
 {
   if (!folder_ok(inputs, run)) return;
   const std::string &dir = inputs[0];
   momentum_classes_figure(dir, run);
-  momentum_drag_figure(dir, run);
+  momentum_drag_figure(t, cmp, run);
   if (run.figures.empty() && run.problems.empty())
     run.problems.push_back(dir + ": neither momentum_classes.csv nor momentum_drag.csv is there");
 }

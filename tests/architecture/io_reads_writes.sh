@@ -3,7 +3,7 @@
 # analysis/core (issue 32: io reads and writes; the studies of core compute, the CLI calls
 # them and hands the results to io's writers and figures). The kernels: fit_trace,
 # fit_ensemble, fit_exponential, linear_fit(_origin), dominant_wavelength, ensemble_mean,
-# average_ensembles, collapse, collapse_ensembles, peak_law_of_means, ensemble_depth_term,
+# average_ensembles, collapse, collapse_ensembles, peak_law_of_means, ensemble_depth_term, compare_drag,
 # calibration_table and the stages of the studies (core/collapse_study.h, fit_study.h,
 # flow_table_study.h, calibration_study.h). Comments and string literals are not code. An
 # allow-list file (one "path kernel" a line, # comments) can name calls still to be moved
@@ -26,7 +26,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 
-KERNELS='fit_trace|fit_ensemble|fit_exponential|linear_fit|linear_fit_origin|dominant_wavelength|ensemble_mean|average_ensembles|collapse|collapse_ensembles|peak_law_of_means|ensemble_depth_term|calibration_table|run_collapse_study|collapse_depth_terms|collapse_ensemble_means|peaks_of_traces|peaks_of_ensembles|run_fit_study|fit_study_trace|fit_ensemble_runs|run_flow_table_study|fit_edge_line|run_calibration_study|fit_calibration_push'
+KERNELS='fit_trace|fit_ensemble|fit_exponential|linear_fit|linear_fit_origin|dominant_wavelength|ensemble_mean|average_ensembles|collapse|collapse_ensembles|peak_law_of_means|ensemble_depth_term|calibration_table|run_collapse_study|collapse_depth_terms|collapse_ensemble_means|peaks_of_traces|peaks_of_ensembles|run_fit_study|fit_study_trace|fit_ensemble_runs|run_flow_table_study|fit_edge_line|run_calibration_study|fit_calibration_push|compare_drag'
 # a call: the name (not part of a longer one, nor a member) and its opening parenthesis
 CALL="(^|[^A-Za-z0-9_.>])($KERNELS) *\\("
 
