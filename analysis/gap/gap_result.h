@@ -2,6 +2,7 @@
 #ifndef GRANPEN_GAP_RESULT_H
 #define GRANPEN_GAP_RESULT_H
 
+#include "gap_adaptive.h"
 #include "gap_data.h"
 #include "gap_fit.h"
 #include "gap_limits.h"
@@ -106,6 +107,7 @@ struct Diagnosis {
   std::optional<NextMeasurement> next;
   FalseAlarms false_alarms;
   std::optional<Residual> residual;          // what the gap left over (none for a `none`)
+  PlanRecord plan;                           // the plan's range, what this run spent, what it simulated and skipped and why
 };
 
 // The tie's candidates as a sentence names them: "a or b", "a, b or c".
