@@ -46,8 +46,8 @@ std::string confirm_sweep(const Effect &e, double a, const std::string &tag,
 // alone (docs/gap.md, "The plan's cost").
 constexpr double PROBE_POUR_STEPS = 110000;     // bench bed 1 poured (its .info, 2026-11-22)
 constexpr double PROBE_POUR_SECONDS = 69.9;     // ... on one core alone, 2026-11-22
-// 16 one-rank pushes side by side on a 16-core node (issue 37); on the 2-core development
-// machine 0.95 as well within its noise (docs/gap.md, "The plan's cost")
+// 16 one-rank pushes side by side on a 16-core node (issue 37); not measured on the 2-core
+// development machine, which other work kept at a load of about 7 (docs/gap.md)
 constexpr double SIDE_BY_SIDE_SPEED = 0.95;
 
 // A run's cost per atom-step against the bench law's (gran/hertz/history, factor 1): pair
