@@ -211,7 +211,9 @@ std::vector<const Effect *> simulate_adaptively(const Scenario &sc, const Measur
   Diagnosis seen_d;
   gap_significance(f, al.grid, seen_d);
   fit_candidates(cheap, f, [&](const std::string &sweep) { return mean_phi0(cache, sweep); }, seen_d);
+  // the whole squared gap in the fits' weights (no cheap candidate fitted: not known, no bound)
   CheapStageSeen seen;
+  seen.chi2_0 = seen_d.ranking.empty() ? INFINITY : 0.0;
   for (const EffectFit &r : seen_d.ranking) seen.chi2_0 = std::max(seen.chi2_0, r.chi2_0);
   if (!seen_d.ranking.empty()) seen.best = seen_d.ranking[0].name, seen.best_evidence = lr_evidence(seen_d.ranking[0]);
   seen.best_explains = seen_d.verdict == Verdict::explained || seen_d.verdict == Verdict::scale_only;
@@ -315,7 +317,7 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   plan_simulations(sc, measured.v0s, all_effects, cache, opt.local);    // refuses a plan for a cluster
   fs::create_directories(cache);
   const std::vector<const Effect *> effects = simulate_adaptively(sc, measured, all_effects, runner, plan_record);
-  for (const auto &dec : plan_record.decisions) progress.say(GapProgress::DETAIL, "plan", dec.effect + ": " + dec.why);
+  for (const auto &dec : plan_record.decisions) progress.say(GapProgress::INFO, "plan", dec.effect + ": " + dec.why);
 
   // align and bin, features and the noise model
   progress.say(GapProgress::STEP, "align", "comparing ensembles", 2, 4);
