@@ -8,6 +8,7 @@
 #ifndef GRANPEN_GAP_RESULT_H
 #define GRANPEN_GAP_RESULT_H
 
+#include "gap_adaptive.h"
 #include "gap_confirm.h"
 #include "gap_data.h"
 #include "gap_fit.h"
@@ -83,6 +84,7 @@ struct Diagnosis {
   std::optional<NextMeasurement> next;
   FalseAlarms false_alarms;
   std::optional<Residual> residual;          // what the gap left over (none for a `none`)
+  PlanRecord plan;                           // the plan's range, what this run spent, what it simulated and skipped and why
 };
 
 // What the record says of the inputs, and the notes of the stages before "where" (validate,
@@ -93,6 +95,7 @@ struct DiagnosisInputs {
   GapGrid grid;
   double peak_end = 0;                      // 0.35 D
   int n_reference = 0;                      // reference beds per speed (fewest)
+  PlanRecord plan;                          // stages 2-3: the plan's range, what was simulated, skipped, spent
 };
 
 // The record, from the stages' results: where (6), the fits (7) and their verdict (8), the

@@ -64,6 +64,48 @@
 #include <random>
 #include <string>
 
+// The synthetic world's cost, for bench/gap_cost.sh --synthetic only (off unless
+// GRANPEN_FAKE_LMP_WORK is set): a run does a fixed amount of arithmetic, as a LAMMPS run
+// does a fixed amount of work, so that it takes longer on a slower or busier machine and
+// side by side with another. Its work is LAMMPS's as the plan counts it (analysis/gap/
+// gap_plan.h, docs/gap.md "The plan's cost"): atom-steps (grains from the preset's lattice;
+// a pour 0.6 s at dt_pour, a push gap + depth + a ramp's travel at v0 and dt_push) times the
+// route's measured cost per atom-step (JKR cohesion 2.1, rolling friction 1.5), at
+// GRANPEN_FAKE_LMP_WORK iterations per 1e6 of them. So it checks the plan's counting of the
+// runs a diagnosis makes and its wall-time model, not the rates, which bench checks on LAMMPS.
+static std::map<std::string, std::string> preset_vars(const std::string &path)
+{
+  std::map<std::string, std::string> v;
+  std::ifstream in(path);
+  std::string word, name, style, value;
+  while (in >> word)
+    if (word == "variable" && in >> name >> style >> value && style == "index") v[name] = value;
+  return v;
+}
+
+static double burn(double iterations)
+{
+  volatile double x = 1.0;
+  for (double i = 0; i < iterations; i += 1) x = x * 1.0000001 + 1e-9;
+  return x;
+}
+
+static void spend_work(std::map<std::string, std::string> &var, bool pour)
+{
+  const char *work = std::getenv("GRANPEN_FAKE_LMP_WORK");
+  if (!work) return;
+  auto p = preset_vars(var["inputs"] + "/presets/" + var["preset"] + ".lmp");
+  for (const auto &[k, v] : var) p[k] = v;    // the command line's -var override the preset's
+  auto num = [&](const char *k, double d) { return p.count(k) ? std::atof(p[k].c_str()) : d; };
+  const double lat = num("lat", 1), box = num("box", 1), lo = num("fill_lo", 0);
+  const double across = std::floor((box - 2.0 * lo) / lat + 1.0);
+  const double grains = across * across * std::floor((num("zfill_hi", 1) - num("zfill_lo", 0)) / lat + 1.0);
+  const double steps = pour ? 0.6 / num("dt_pour", 5e-6)
+                            : (num("gap", 0.5) + num("depth", 4) + num("ramp", 0)) / num("v0", 100) / num("dt_push", 2e-6);
+  const double route = num("cohesion", 0) != 0 ? 2.1 : num("mu_roll", 0) != 0 ? 1.5 : 1.0;
+  burn(std::atof(work) * grains * steps * route / 1e6);
+}
+
 // the pour's packing fraction from its friction (docs/calibration.md: 0.594 -> 0.574 for
 // mu 0.1 -> 0.5): the .info's phi_0 and the push's packing law share it
 static double phi_pour(double mu) { return 0.58 - 0.05 * (mu - 0.3); }
@@ -77,6 +119,7 @@ int main(int argc, char **argv)
   std::ofstream L(log.empty() ? "/dev/null" : log);
   L << "LAMMPS (fake_lmp: granpen's synthetic world for tests)\n";
   if (in.size() >= 7 && in.compare(in.size() - 7, 7, "in.pour") == 0) {
+    spend_work(var, true);
     const std::string out = var["out"];
     std::ofstream(out + ".restart") << "fake bed\n";
     // the bed field's key: the pour's settings (every variable but where it runs and writes,
@@ -92,6 +135,7 @@ int main(int argc, char **argv)
     L << "granpen pour: bed " << out << ".restart\n";
     return 0;
   }
+  spend_work(var, false);
   // a push: the bed's seed from its file name (..._sSEED.restart), the pour friction from its .info
   const std::string bed = var["bed"];
   const auto s = bed.rfind("_s");

@@ -211,10 +211,10 @@ TEST(GapPlan, RequestsAndTheirCostFromWhatTheCacheLacks)
   EXPECT_EQ(p.requests[3].spec.name, "measurement_chain_10");
   // by hand: grains on the lattice, 8 x 8 across ((4 - 2 x 0.25) / 0.5 + 1) and 5 high;
   // 6 pours of 0.6 s (the knots reuse the baseline's beds), (2 + 4 + 2 x 2) beds pushed
-  // 2.5 cm at each speed; 1.1e7 atom-steps per core-second
+  // 2.5 cm at each speed; a probe pour (6300 grains, 110000 steps) is 69.9 core-seconds
   const double grains = 8 * 8 * 5;
   const double steps = 6 * 0.6 / 5e-6 + 10 * (2.5 / 50 + 2.5 / 100) / 2e-6;
-  EXPECT_NEAR(p.core_hours, grains * steps / (1.1e7 * 3600), 1e-9 * p.core_hours);    // rounding only
+  EXPECT_NEAR(p.core_hours, grains * steps / (6300.0 * 110000) * 69.9 / 3600, 1e-9 * p.core_hours);    // rounding only
   // a done push is not counted again
   const auto pending = pending_runs(p.requests[0], cache.path.string());
   ASSERT_EQ(pending.size(), 6u);    // 2 pours, 4 pushes
@@ -318,8 +318,66 @@ TEST(GapPlan, CostInProbePoursIsAtomStepsOverTheProbePours)
   const double steps = 6 * 0.6 / 5e-6 + 10 * (2.5 / 50 + 2.5 / 100) / 2e-6;
   EXPECT_NEAR(c.atom_steps, 320 * steps, 1e-9 * c.atom_steps);
   EXPECT_NEAR(c.probe_pours, c.atom_steps / (1000.0 * PROBE_POUR_STEPS), 1e-12 * c.probe_pours);
-  EXPECT_NEAR(c.core_hours, estimate_core_hours(sc, req, cache.path.string()), 1e-12 * c.core_hours);
-  EXPECT_NE(plan_summary(c).find("6 pours, 20 pushes"), std::string::npos) << plan_summary(c);
+  // one unit: core-hours are the probe pours of core time at the probe's 2026-11-22 speed
+  EXPECT_NEAR(c.core_hours, c.probe_pours * PROBE_POUR_SECONDS / 3600.0, 1e-12 * c.core_hours);
+  // without the bench preset's grains, the probe pour's own (6300, its .info)
+  EXPECT_NEAR(estimate_core_hours(sc, req, cache.path.string()), c.atom_steps / (6300.0 * PROBE_POUR_STEPS) * 69.9 / 3600.0,
+              1e-12 * c.core_hours);
+  EXPECT_NE(plan_summary(c, 2).find("6 pours, 20 pushes"), std::string::npos) << plan_summary(c, 2);
+  EXPECT_NE(plan_summary(c, 2).find("probe pours of core time"), std::string::npos) << plan_summary(c, 2);
+  // wall time: alone, the core time; side by side, spread over the jobs at 0.95 of their speed
+  EXPECT_NEAR(wall_probe_pours(c, 1), c.probe_pours, 1e-12);
+  EXPECT_NEAR(wall_probe_pours(c, 2), c.probe_pours / (2 * 0.95), 1e-12);
+  // ... never below the longest pour and push one after the other
+  EXPECT_NEAR(wall_probe_pours(c, 1000), (c.longest_pour + c.longest_push) / 0.95, 1e-12);
+  // as an empty cache runs them: the same (nothing is in this cache)
+  const PlanCost cold = cold_cost(sc, req, 1000.0);
+  EXPECT_EQ(cold.pours, 6);
+  EXPECT_EQ(cold.pushes, 20);
+  EXPECT_NEAR(cold.probe_pours, c.probe_pours, 1e-12 * c.probe_pours);
+}
+
+TEST(GapPlan, EachRunCountedAtItsOwnTimeStepTravelAndRoute)
+{
+  // 320 grains (hand_scenario's lattice); a pour 0.6 s, a push gap + depth = 2.5 cm at v0
+  const Scenario sc = hand_scenario();
+  TempDir cache("plan_routes");
+  const double probe = 1000.0 * PROBE_POUR_STEPS;
+  auto knot = [&](const char *effect, double a) {
+    return plan_cost(sc, {effect_request(sc.name, *find_effect(effect), a, {"100"}, {"1"}, "k")}, cache.path.string(), 1000.0);
+  };
+  // the bench law: factor 1
+  EXPECT_NEAR(knot("polydispersity", 0.25).probe_pours, 320 * (0.6 / 5e-6 + 2.5 / 100 / 2e-6) / probe, 1e-12);
+  // pair granular's routes: JKR cohesion 2.1, rolling friction 1.5 (measured, docs/gap.md)
+  EXPECT_NEAR(knot("cohesion", 1000).probe_pours, 2.1 * 320 * (0.6 / 5e-6 + 2.5 / 100 / 2e-6) / probe, 1e-12);
+  EXPECT_NEAR(knot("rolling_resistance", 0.1).probe_pours, 1.5 * 320 * (0.6 / 5e-6 + 2.5 / 100 / 2e-6) / probe, 1e-12);
+  // stiffer contacts at their own, shorter time steps: 10^0.6 stiffer, steps 10^(-0.24) as long
+  // (the push's rounded to a whole number of steps per 1e-4 s: 1e-4 / ceil(50 / 0.575))
+  const double dt_scale = std::pow(10.0, -0.24), dt_push = 1e-4 / std::ceil(50.0 / dt_scale);
+  EXPECT_NEAR(knot("contact_stiffness", 0.6).probe_pours, 320 * (0.6 / (5e-6 * dt_scale) + 2.5 / 100 / dt_push) / probe, 1e-9);
+  // a ramp of 1.6 cm: its travel once more at v0 (linear from rest: twice the time over it)
+  const PlanCost ramp = plan_cost(sc, {effect_request(sc.name, *find_effect("actuator_ramp"), 1.6, {"100"}, {"1"}, "r")},
+                                  cache.path.string(), 1000.0);
+  EXPECT_NEAR(ramp.probe_pours, 320 * (0.6 / 5e-6 + (2.5 + 1.6) / 100 / 2e-6) / probe, 1e-12);
+}
+
+TEST(GapPlan, TheMostAConfirmationAddsIsTheCostliestEffectsConfirmRefineAndHeldOut)
+{
+  const Scenario sc = hand_scenario();
+  TempDir cache("plan_confirm");
+  const std::vector<std::string> v0{"50", "100"};
+  const std::vector<const Effect *> lib{find_effect("measurement_chain"), find_effect("cohesion")};
+  const PlanCost most = confirmation_most(sc, v0, lib, cache.path.string(), 1000.0);
+  // cohesion (pour-level, JKR): 4 fresh beds confirm at both speeds, the slowest held out at its
+  // own magnitude on the same seeds (its own sweep: 4 pours, 4 pushes), 4 more refine both
+  EXPECT_EQ(most.pours, 12);
+  EXPECT_EQ(most.pushes, 8 + 4 + 8);
+  const PlanCost cohesion = cold_cost(sc, largest_confirmation(sc.name, *find_effect("cohesion"), 3000, v0), 1000.0);
+  EXPECT_NEAR(most.probe_pours, cohesion.probe_pours, 1e-12);
+  // the mount's, the baseline pushed into fresh beds, costs less
+  const PlanCost mount = cold_cost(sc, largest_confirmation(sc.name, *find_effect("measurement_chain"), 10, v0), 1000.0);
+  EXPECT_LT(mount.probe_pours, most.probe_pours);
+  EXPECT_EQ(confirmation_most(sc, v0, {}, cache.path.string(), 1000.0).probe_pours, 0.0);
 }
 
 #endif
@@ -1287,8 +1345,9 @@ TEST(GapReport, DiagnosisJsonKeysAndValuesAsTheHandBuiltWriterWroteThem)
   std::vector<std::string> added;
   for (auto it = now.begin(); it != now.end(); ++it)
     if (!before.contains(it.key())) added.push_back(it.key());
+  // (and issue 37's plan: the cost range, what was spent, what was simulated and skipped)
   EXPECT_EQ(added, (std::vector<std::string>{"detection_limits", "false_alarms", "gap_parts", "knot_bends", "look_alikes",
-                                             "next_measurement", "residual", "scale_only", "thresholds", "tie"}));
+                                             "next_measurement", "plan", "residual", "scale_only", "thresholds", "tie"}));
   // written through the atomic writer: no temporary left beside it
   for (const auto &e : fs::directory_iterator(dir.path))
     EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
