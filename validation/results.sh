@@ -427,6 +427,8 @@ box_alpha_D() { # SWEEP KEY
   "$CLI" fit "$d" --zmin 2 --csv "$o/fit_z2.csv" > "$o/fit_z2.txt"
   for D in $(col "$o/fit_z2.csv" D | sort -gu); do
     put "$key.alpha0_window.v28.D$D = $(col "$o/fit_z2.csv" alpha0 D "$D" | stats)  # granpen fit --zmin 2: k_z0 / (mu rho_g g D^2), 2 beds"
+    put "$key.alpha_a.v28.D$D = $(col "$o/fit_z2.csv" alpha_a D "$D" | stats)  # granpen fit --zmin 2, F = a z + b z^2: a / (mu rho_g g D^2), 2 beds"
+    put "$key.beta_b.v28.D$D = $(col "$o/fit_z2.csv" beta_b D "$D" | stats)  # ... b / (mu rho_g g D): the shaft-like term"
   done
   a1=$(nval "$key.alpha0_window.v28.D1") a2=$(nval "$key.alpha0_window.v28.D2")
   [ -n "$a1" ] && [ -n "$a2" ] &&

@@ -69,6 +69,9 @@ Json fit_json(const FitResult &r)
   t["intercept_se"] = n(f.intercept_se), t["rms"] = n(f.rms);
   t["alpha_ok"] = f.alpha_ok, t["alpha"] = n(f.alpha), t["alpha_se"] = n(f.alpha_se), t["k_z0"] = n(f.k_z0);
   t["k_z0_se"] = n(f.k_z0_se), t["alpha0"] = n(f.alpha0), t["alpha0_se"] = n(f.alpha0_se);
+  t["quad_ok"] = f.quad_ok, t["quad_a"] = n(f.quad_a), t["quad_a_se"] = n(f.quad_a_se), t["quad_b"] = n(f.quad_b);
+  t["quad_b_se"] = n(f.quad_b_se), t["alpha_a"] = n(f.alpha_a), t["alpha_a_se"] = n(f.alpha_a_se);
+  t["beta_b"] = n(f.beta_b), t["beta_b_se"] = n(f.beta_b_se);
   t["peak_ok"] = f.peak_ok, t["n_peak"] = f.n_peak, t["peak_zmax"] = n(f.peak_zmax), t["peak_F"] = n(f.peak_F);
   t["peak_z"] = n(f.peak_z);
   t["wavelength_ok"] = f.wavelength_ok, t["wavelength"] = n(f.wavelength), t["wavelength_d_g"] = n(f.wavelength_dg);
@@ -103,7 +106,7 @@ std::string results_csv(const std::vector<FitResult> &results)
   o << "file,v0,D,g,mu,mu_source,rho_g,rho_g_source,d_g,d_g_source,zlo,zhi,n_window,z_first,z_last,"
        "slope_ok,k_z,k_z_se,intercept,intercept_se,rms,alpha_ok,alpha,alpha_se,"
        "peak_ok,peak_F,peak_z,wavelength_ok,wavelength,wavelength_d_g,spectrum_length,power_fraction,"
-       "k_z0,k_z0_se,alpha0,alpha0_se\n";
+       "k_z0,k_z0_se,alpha0,alpha0_se,quad_ok,quad_a,quad_a_se,quad_b,quad_b_se,alpha_a,alpha_a_se,beta_b,beta_b_se\n";
   for (const auto &r : results) {
     const TraceFit &f = r.fit;
     const auto n = [](double v) { return num(v); };
@@ -115,7 +118,9 @@ std::string results_csv(const std::vector<FitResult> &results)
       << n(f.alpha_se) << ',' << f.peak_ok << ',' << n(f.peak_F) << ',' << n(f.peak_z) << ','
       << f.wavelength_ok << ',' << n(f.wavelength) << ',' << n(f.wavelength_dg) << ','
       << n(f.spectrum.length) << ',' << n(f.spectrum.power_fraction) << ',' << n(f.k_z0) << ',' << n(f.k_z0_se) << ','
-      << n(f.alpha0) << ',' << n(f.alpha0_se) << '\n';
+      << n(f.alpha0) << ',' << n(f.alpha0_se) << ',' << f.quad_ok << ',' << n(f.quad_a) << ',' << n(f.quad_a_se) << ','
+      << n(f.quad_b) << ',' << n(f.quad_b_se) << ',' << n(f.alpha_a) << ',' << n(f.alpha_a_se) << ',' << n(f.beta_b) << ','
+      << n(f.beta_b_se) << '\n';
   }
   return o.str();
 }
