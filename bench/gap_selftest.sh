@@ -2,6 +2,7 @@
 # granpen gap, checked on data whose effect is withheld (issue: gap diagnosis).
 #   bench/gap_selftest.sh [--scenario bench|tiny] [--jobs N] [--cases LIST] [--effects LIST] [--v0 "50 100 200"]
 #                         [--seeds "101 102 103 104"] [--measured-only]   (make the measured data only)
+#                         [--max-mean-cost P]   (fail when the mean cold cost per case exceeds P probe pours)
 # For each case it makes "measured" data: a sweep of the scenario with one effect at a
 # magnitude the diagnosis is not told (or none, or an effect outside the library: grains
 # lighter than the header says), on beds no diagnosis uses (seeds 101 to 104); every trace's
@@ -17,7 +18,7 @@
 # to runs/gap_selftest/SCENARIO/table.md (docs/gap-validation.md quotes it).
 set -euo pipefail
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-SCEN=bench JOBS=2 CASES="" EFFECTS="" V0="50 100 200" MEASURED_ONLY=no SEEDS="101 102 103 104"
+SCEN=bench JOBS=2 CASES="" EFFECTS="" V0="50 100 200" MEASURED_ONLY=no SEEDS="101 102 103 104" MAX_MEAN_COST=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --scenario) SCEN=$2; shift 2 ;;
@@ -27,6 +28,7 @@ while [ $# -gt 0 ]; do
     --v0) V0=$2; shift 2 ;;
     --seeds) SEEDS=$2; shift 2 ;;
     --measured-only) MEASURED_ONLY=yes; shift ;;
+    --max-mean-cost) MAX_MEAN_COST=$2; shift 2 ;;
     *) echo "gap_selftest: unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -115,6 +117,8 @@ TABLE=$WORK/table.md
 echo "| case | truth | true magnitude | detection limit | verdict | top effect | fitted magnitude | G before | G after | held-out v0 | held-out G before | held-out G after | chi^2 excess removed | wall s | pass |" > "$TABLE"
 echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|" >> "$TABLE"
 fails=0
+COSTS=$WORK/costs.txt    # case, the plan's least and most, the cold cost spent (probe pours of core time)
+: > "$COSTS"
 while IFS='|' read -r name truth mag keys; do
   [ -n "$CASES" ] && ! [[ ",$CASES," == *",$name,"* ]] && continue
   echo "gap_selftest: case $name: making the measured data"
@@ -136,7 +140,21 @@ while IFS='|' read -r name truth mag keys; do
   [ "$rc" = 0 ] || [ "$rc" = 3 ] || { echo "gap_selftest: scoring $name failed: $(cat "$WORK/score_$name.log")" >&2; fails=$((fails + 1)); continue; }
   echo "$row" | tee -a "$TABLE"
   [ "$rc" = 0 ] || fails=$((fails + 1))
+  # the cost, counted as a cold cache runs it (diagnosis.json plan, in probe pours of core
+  # time), and the plan's range, which must hold it
+  read -r least most spent <<< "$("$CLI" get "$out/diagnosis.json" plan.least plan.most plan.spent | tr '\n' ' ')"
+  echo "$name $least $most $spent" >> "$COSTS"
+  if ! awk -v l="$least" -v m="$most" -v s="$spent" 'BEGIN { exit !(l <= s * 1.000001 && s <= m * 1.000001) }'; then
+    echo "gap_selftest: $name: cold cost $spent probe pours outside the plan's range $least to $most" >&2; fails=$((fails + 1))
+  fi
 done < <(all_cases)
+if [ "$MEASURED_ONLY" != yes ] && [ -s "$COSTS" ]; then
+  mean=$(awk '{ s += $4; n++ } END { printf "%.2f", s / n }' "$COSTS")
+  echo "gap_selftest: mean cold cost per case $mean probe pours of core time over $(wc -l < "$COSTS") case(s) (plan range per case: $COSTS)"
+  if [ -n "$MAX_MEAN_COST" ] && awk -v m="$mean" -v x="$MAX_MEAN_COST" 'BEGIN { exit !(m > x) }'; then
+    echo "gap_selftest: the mean cold cost $mean exceeds --max-mean-cost $MAX_MEAN_COST: a cost regression" >&2; fails=$((fails + 1))
+  fi
+fi
 if [ "$MEASURED_ONLY" = yes ]; then echo "gap_selftest: measured data in $WORK/real_*"
 else echo "gap_selftest: table in $TABLE; $fails case(s) failed"; fi
 [ "$fails" = 0 ]

@@ -234,8 +234,10 @@ flow_numbers() {
   put "$key.drag_over_mu_g_Mmove = $(jget "$mj" drag.k) +- $(jget "$mj" drag.k_se)  # F = k mu g M(v_z > v0/320), granpen momentum"
   # the moving mass and its slow class (v0/320 to v0/80), mean over the frames with the tip
   # 1 to 4 cm deep: what the fixed threshold counts, which grows with the box
-  put "$key.M_move = $("$CLI" get "$mj" 'frames[*].z_tip' 'frames[*].M_move' | awk '$1 >= 1 - 1e-6 && $1 <= 4 + 1e-6 { print $2 }' | stats)  # g, granpen momentum, frames with the tip 1 to 4 cm deep"
-  put "$key.M_slow = $("$CLI" get "$mj" 'frames[*].z_tip' 'frames[*].M_slow' | awk '$1 >= 1 - 1e-6 && $1 <= 4 + 1e-6 { print $2 }' | stats)  # g, the same frames, v0/320 < v_z <= v0/80"
+  local masses
+  masses=$("$CLI" get "$mj" 'frames[*].z_tip' 'frames[*].M_move' 'frames[*].M_slow' | awk '$1 >= 1 - 1e-6 && $1 <= 4 + 1e-6')
+  put "$key.M_move = $(printf '%s' "$masses" | awk '{ print $2 }' | stats)  # g, granpen momentum, frames with the tip 1 to 4 cm deep"
+  put "$key.M_slow = $(printf '%s' "$masses" | awk '{ print $3 }' | stats)  # g, the same frames, v0/320 < v_z <= v0/80"
 }
 
 # the flow of one push (mid, 90 cm/s, g = 981, D = 2, seed 1) from its dumps
@@ -427,6 +429,8 @@ box_alpha_D() { # SWEEP KEY
   "$CLI" fit "$d" --zmin 2 --csv "$o/fit_z2.csv" > "$o/fit_z2.txt"
   for D in $(col "$o/fit_z2.csv" D | sort -gu); do
     put "$key.alpha0_window.v28.D$D = $(col "$o/fit_z2.csv" alpha0 D "$D" | stats)  # granpen fit --zmin 2: k_z0 / (mu rho_g g D^2), 2 beds"
+    put "$key.alpha_a.v28.D$D = $(col "$o/fit_z2.csv" alpha_a D "$D" | stats)  # granpen fit --zmin 2, F = a z + b z^2: a / (mu rho_g g D^2), 2 beds"
+    put "$key.beta_b.v28.D$D = $(col "$o/fit_z2.csv" beta_b D "$D" | stats)  # ... b / (mu rho_g g D): the shaft-like term"
   done
   a1=$(nval "$key.alpha0_window.v28.D1") a2=$(nval "$key.alpha0_window.v28.D2")
   [ -n "$a1" ] && [ -n "$a2" ] &&

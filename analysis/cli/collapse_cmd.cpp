@@ -5,6 +5,7 @@
 #include "collapse_options.h"
 #include "collapse.h"
 #include "collapse_study.h"
+#include "ensemble_groups.h"
 #include "ensemble_tables.h"
 #include "json_text.h"
 #include "collapse_tables.h"
@@ -158,10 +159,7 @@ int granpen::cli::run_collapse(const CollapseOptions &o)
     if (!output.second.empty()) refuse_overwriting_inputs(output.second, output.first, files);
   const std::vector<Trace> traces = read_traces(files, problems);
   std::vector<TraceGroup> groups;
-  if (ens.on) {
-    groups = group_traces(traces, ens.mean.v0_tolerance);
-    average_groups(groups, ens.mean, ens_problems);
-  }
+  if (ens.on) groups = averaged_groups(traces, ens.mean, ens_problems);
   CollapseStages stages;
   stages.peaks = true;
   stages.ensembles = stages.ensemble_peaks = ens.on;

@@ -1,7 +1,10 @@
 // granpen fit TRACE...: the paper's observables of each force trace: the depth term
-// k_z and alpha, the transient peak, the fluctuation wavelength (core/trace_fit.h).
+// k_z and alpha, the transient peak, the fluctuation wavelength: read (io/fit_tables.h),
+// fit (core/fit_study.h), print and write.
 #include "fit_options.h"
+#include "ensemble_groups.h"
 #include "ensemble_tables.h"
+#include "fit_study.h"
 #include "atomic_file.h"
 #include "subcommand.h"
 #include "json_text.h"
@@ -19,6 +22,7 @@
 #include <sstream>
 #include <limits>
 #include <map>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -104,13 +108,18 @@ std::vector<granpen::TraceGroup> fit_ensembles(const std::vector<FitResult> &res
   std::vector<std::string> files, problems;
   std::map<std::string, const FitResult *> by_file;
   for (const auto &r : results) files.push_back(r.file), by_file[r.file] = &r;
-  auto groups = group_traces(read_traces(files, problems), ens.mean.v0_tolerance);
-  average_groups(groups, ens.mean, problems);
+  auto groups = cli::averaged_groups(read_traces(files, problems), ens.mean, problems);
   for (const auto &p : problems) std::printf("granpen fit: %s\n", p.c_str());
-  for (const auto &g : groups) {
-    const EnsembleFit e = fit_ensemble(g.mean, by_file.at(g.traces.front().path)->fit.params, ens.boot);
-    print_ensemble(g, e);
-    out.push_back(ensemble_fit_json(g, e));
+  std::vector<FitStudyEnsemble> means;
+  for (const auto &g : groups) means.push_back({g.label(), g.mean, by_file.at(g.traces.front().path)->fit.params});
+  FitStages st;
+  st.fits = false, st.ensemble_fits = true;
+  FitStudyParams sp;
+  sp.boot = ens.boot;
+  const FitStudy s = run_fit_study({}, means, sp, st);
+  for (std::size_t i = 0; i < groups.size(); ++i) {
+    print_ensemble(groups[i], s.ensembles[i]);
+    out.push_back(ensemble_fit_json(groups[i], s.ensembles[i]));
   }
   return groups;
 }
@@ -142,16 +151,31 @@ int granpen::cli::run_fit(const FitOptions &o)
               tmin > 0 ? ("t~ >= " + json_number("%g", tmin) + (std::isfinite(zmax) ? ", z <= " + json_number("%g", zmax) + " cm" : std::string())).c_str()
                        : window_text(zmin, zmax).c_str(), files.size(),
               files.size() == 1 ? "" : "s");
+  std::vector<FitStudyTrace> read;
   for (const auto &file : files) {
     try {
-      results.push_back(fit_trace_file(file, w));
+      FitTraceRead r = read_fit_trace(file, w);
+      results.push_back(std::move(r.result));
+      read.push_back(std::move(r.trace));
     } catch (std::exception &e) {    // one bad trace: the others are still fitted
       std::fprintf(stderr, "granpen fit: %s\n", user_text(e).c_str());
       failures.push_back({file, user_text(e)});
+    }
+  }
+  const FitStudy s = run_fit_study(read, {}, {}, FitStages{});
+  std::vector<FitResult> fitted;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    if (s.fits[i].refused) {    // arrays the fit refuses: a failure of that file, as one unread
+      const std::string why = user_text(std::invalid_argument(s.fits[i].why));
+      std::fprintf(stderr, "granpen fit: %s\n", why.c_str());
+      failures.push_back({results[i].file, why});
       continue;
     }
-    print_result(results.back());
+    results[i].fit = s.fits[i].fit;
+    print_result(results[i]);
+    fitted.push_back(results[i]);
   }
+  results = std::move(fitted);
 
   Json ensembles = Json::array();
   std::vector<TraceGroup> groups;

@@ -1,13 +1,16 @@
 // granpen plot KIND INPUTS... --out DIR: the paper's figure types as gnuplot scripts
 // with their data beside them, run to PNG and SVG (io/figures.h, io/plot_writer.h):
-// parse, make the figures (ratio and peak: read, run core/collapse_study.h, draw), write
-// KIND.json.
+// parse, make the figures (read; run the study: ratio and peak core/collapse_study.h, force
+// and kz core/fit_study.h, flow core/flow_table_study.h; draw), write KIND.json.
 #include "atomic_file.h"
 #include "plot_options.h"
 #include "collapse_study.h"
 #include "collapse_tables.h"
+#include "ensemble_groups.h"
 #include "ensemble_tables.h"
 #include "figures.h"
+#include "fit_study.h"
+#include "flow_table_study.h"
 #include "json_writer.h"
 #include "subcommands.h"
 
@@ -65,9 +68,43 @@ std::vector<granpen::TraceGroup> averaged_groups(const std::vector<granpen::figu
 {
   std::vector<granpen::Trace> tr;
   for (const auto &t : traces) tr.push_back(t.tr);
-  auto groups = granpen::group_traces(tr, run.opt.ens.v0_tolerance);
-  granpen::average_groups(groups, run.opt.ens, run.problems);
-  return groups;
+  return granpen::cli::averaged_groups(tr, run.opt.ens, run.problems);
+}
+
+// force and kz: the fit study of the traces (kind: the window of the figure), or with
+// --ensemble of their groups' means (kz: and of each run on its mean's bins)
+void fitted(const std::vector<std::string> &inputs, granpen::figures::Run &run, granpen::figures::FitKind kind)
+{
+  using namespace granpen;
+  const auto traces = figures::load_traces(inputs, run);
+  if (traces.empty()) return;
+  const bool ens = run.opt.ensemble;
+  std::vector<TraceGroup> groups;
+  if (ens) groups = averaged_groups(traces, run);
+  FitStages st;
+  st.fits = !ens, st.ensemble_fits = ens, st.run_fits = ens && kind == figures::FitKind::kz;
+  FitStudyParams sp;
+  sp.boot = run.opt.boot;
+  const FitStudy s = run_fit_study(ens ? std::vector<FitStudyTrace>() : figures::fit_study_traces(traces, run.opt, kind),
+                                   figures::fit_study_ensembles(groups, run.opt, kind), sp, st);
+  for (const auto &f : s.fits)    // arrays the fit refuses: the command's error, as the kernel's
+    if (f.refused) throw std::invalid_argument(f.why);
+  if (kind == figures::FitKind::peak) figures::plot_force(traces, groups, s, run);
+  else figures::plot_kz(traces, groups, s, run);
+}
+
+// flow: the tables of granpen flow read, the flow table study's fits of them, the figures
+void flow_figures(const std::vector<std::string> &inputs, granpen::figures::Run &run)
+{
+  const granpen::figures::FlowFitTables t = granpen::figures::read_flow_fit_tables(inputs[0], run.opt);
+  granpen::figures::plot_flow(inputs, t, granpen::run_flow_table_study(t.columns), run);
+}
+
+// momentum: the drag table read, F compared with mu g M (core), the figures
+void momentum_figures(const std::vector<std::string> &inputs, granpen::figures::Run &run)
+{
+  const granpen::figures::MomentumDragTable t = granpen::figures::read_momentum_drag_table(inputs[0], run.opt);
+  granpen::figures::plot_momentum(inputs, t, granpen::compare_drag(t.mu_g_M, t.F), run);
 }
 
 // the study's traces, named by their files
@@ -145,12 +182,12 @@ int granpen::cli::run_plot(const PlotOptions &po)
   }
   refuse_overwriting_inputs((fs::path(o.out) / (kind + ".json")).string(), "--out", input_files);
 
-  if (kind == "force") plot_force(inputs, run);
+  if (kind == "force") fitted(inputs, run, FitKind::peak);
   else if (kind == "ratio") ratio(inputs, run);
   else if (kind == "peak") peak(inputs, run);
-  else if (kind == "kz") plot_kz(inputs, run);
-  else if (kind == "flow") plot_flow(inputs, run);
-  else if (kind == "momentum") plot_momentum(inputs, run);
+  else if (kind == "kz") fitted(inputs, run, FitKind::kz);
+  else if (kind == "flow") flow_figures(inputs, run);
+  else if (kind == "momentum") momentum_figures(inputs, run);
   else plot_scaling(inputs, run);
 
   const int failed = report_figures(run);

@@ -96,4 +96,38 @@ LinearFit linear_fit_origin(const std::vector<double> &x, const std::vector<doub
   return f;
 }
 
+QuadraticFit quadratic_fit_origin(const std::vector<double> &x, const std::vector<double> &y)
+{
+  check_input(x, y, "quadratic_fit_origin");
+  const std::size_t n = x.size();
+  // scaled by the largest |x| so that x^4 sums stay well inside double range
+  double m = 0.0;
+  for (double v : x) m = std::max(m, std::fabs(v));
+  if (!(m > 0.0)) throw std::invalid_argument("quadratic_fit_origin: every x is 0");
+  double s2 = 0.0, s3 = 0.0, s4 = 0.0, sy1 = 0.0, sy2 = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double u = x[i] / m;
+    s2 += u * u, s3 += u * u * u, s4 += u * u * u * u, sy1 += u * y[i], sy2 += u * u * y[i];
+  }
+  const double det = s2 * s4 - s3 * s3;
+  // det = sum over pairs of u_i^2 u_j^2 (u_i - u_j)^2 / 2: zero unless two distinct nonzero x
+  if (!(det > 1e-12 * s2 * s4))
+    throw std::invalid_argument("quadratic_fit_origin: fewer than 2 distinct nonzero x");
+  const double au = (s4 * sy1 - s3 * sy2) / det, bu = (s2 * sy2 - s3 * sy1) / det;    // in u
+  QuadraticFit f;
+  f.n = n;
+  f.a = au / m;
+  f.b = bu / (m * m);
+  double ssr = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = y[i] - f.a * x[i] - f.b * x[i] * x[i];
+    ssr += r * r;
+  }
+  const double var = n > 2 ? ssr / (double) (n - 2) : 0.0;
+  f.se_a = std::sqrt(var * s4 / det) / m;
+  f.se_b = std::sqrt(var * s2 / det) / (m * m);
+  f.rms = std::sqrt(ssr / (double) n);
+  return f;
+}
+
 }    // namespace granpen

@@ -1,7 +1,8 @@
 /* -*- c++ -*- ----------------------------------------------------------
    granpen analysis: ordinary least squares on plain arrays.
-   y = a + b x (linear_fit) and y = b x (linear_fit_origin), with the
-   standard errors of the parameters from the residual variance.
+   y = a + b x (linear_fit), y = b x (linear_fit_origin) and y = a x + b x^2
+   (quadratic_fit_origin), with the standard errors of the parameters from the
+   residual variance.
 ------------------------------------------------------------------------- */
 
 #ifndef GRANPEN_LINEAR_FIT_H
@@ -30,6 +31,19 @@ LinearFit linear_fit(const std::vector<double> &x, const std::vector<double> &y)
 // std::invalid_argument for arrays of different lengths, fewer than 3 points,
 // non-finite values or zero spread of x about the origin (every x = 0).
 LinearFit linear_fit_origin(const std::vector<double> &x, const std::vector<double> &y);
+
+// y = a x + b x^2 (through the origin: a depth-linear and a depth-squared force, e.g. a
+// tip's and a shaft's side friction). The 2 x 2 normal equations in sum x^2, x^3, x^4;
+// se from s^2 = sum r^2 / (n - 2) times the inverse's diagonal. Throws
+// std::invalid_argument for arrays of different lengths, fewer than 3 points, non-finite
+// values or fewer than 2 distinct nonzero x (the two terms cannot be told apart).
+struct QuadraticFit {
+  double a = 0.0, b = 0.0;          // y = a x + b x^2
+  double se_a = 0.0, se_b = 0.0;
+  double rms = 0.0;                 // sqrt(sum r^2 / n)
+  std::size_t n = 0;
+};
+QuadraticFit quadratic_fit_origin(const std::vector<double> &x, const std::vector<double> &y);
 
 }    // namespace granpen
 

@@ -228,6 +228,9 @@ TraceFit fit_trace(const std::vector<double> &z, const std::vector<double> &F, c
       for (std::size_t i = 0; i < zw.size(); ++i) ss += (Fw[i] - r.k_z0 * zw[i]) * (Fw[i] - r.k_z0 * zw[i]);
       r.k_z0_se = std::sqrt(ss / (zw.size() - 1) / szz);
     }
+    const QuadraticFit q = quadratic_fit_origin(zw, Fw);    // linear_fit passed: >= 3 points, 2 distinct z
+    r.quad_ok = true;
+    r.quad_a = q.a, r.quad_a_se = q.se_a, r.quad_b = q.b, r.quad_b_se = q.se_b;
   } catch (std::invalid_argument &) {
     r.notes.push_back("k_z undefined: " + std::to_string(zw.size()) + " points in the window z = " +
                       fmt(wlo) + ".." + (std::isfinite(whi) ? fmt(whi) : std::string("end")) +
@@ -242,6 +245,10 @@ TraceFit fit_trace(const std::vector<double> &z, const std::vector<double> &F, c
     r.alpha_se = r.k_z_se / scale;
     r.alpha0 = r.k_z0 / scale;
     r.alpha0_se = r.k_z0_se / scale;
+    if (r.quad_ok) {
+      r.alpha_a = r.quad_a / scale, r.alpha_a_se = r.quad_a_se / scale;
+      r.beta_b = r.quad_b * p.D / scale, r.beta_b_se = r.quad_b_se * p.D / scale;    // scale / D = mu rho_g g D
+    }
   } else if (r.slope_ok) {
     r.notes.push_back("alpha undefined: mu rho_g g D^2 = " + fmt(scale) + " is not positive");
   } else {

@@ -87,6 +87,16 @@ struct TraceFit {
   double k_z0 = 0.0, k_z0_se = 0.0;      // sum F z / sum z^2, dyne/cm
   double alpha0 = 0.0, alpha0_se = 0.0;  // k_z0 / (mu rho_g g D^2) (with alpha_ok)
 
+  // F = a z + b z^2 over the same window (through the origin): a depth-linear term and a
+  // depth-squared one, as a side friction on the buried shaft grows (D z^2 against the
+  // tip's D^2 z); alpha_a = a / (mu rho_g g D^2) is alpha's kind, beta_b = b / (mu rho_g g D)
+  // the shaft-like term per unit of perimeter's scale (with alpha_ok)
+  bool quad_ok = false;
+  double quad_a = 0.0, quad_a_se = 0.0;    // dyne/cm
+  double quad_b = 0.0, quad_b_se = 0.0;    // dyne/cm^2
+  double alpha_a = 0.0, alpha_a_se = 0.0;
+  double beta_b = 0.0, beta_b_se = 0.0;
+
   // transient peak over 0 < z < 0.7 R
   bool peak_ok = false;
   std::size_t n_peak = 0;              // points in that range

@@ -15,8 +15,16 @@ using TH = GapThresholds;
 
 std::string fmt(double v, const char *f = "%.4g") { return printf_number(f, v); }
 
+// What the confirmation test reads of the stages before: the fits' route (targeted: by one
+// effect's likelihood ratio) and the omnibus test's chi^2 over its features.
+struct Before {
+  bool targeted = false;
+  double chi2_0 = 0;
+  std::size_t nfeatures = 0;
+};
+
 // the fraction of the gap's chi^2 excess that fresh runs with chi^2 chi2a remove
-double excess_removed(const Diagnosis &d, double chi2a)
+double excess_removed(const Before &d, double chi2a)
 {
   const double P = (double) d.nfeatures, excess0 = d.chi2_0 - P;
   return excess0 > 0 ? 1.0 - std::max(0.0, chi2a - P) / excess0 : 0.0;
@@ -33,7 +41,7 @@ double heldout_gap(RunsBySpeed &runs, std::size_t hs, const Features &f, const A
 
 // The runs that decide the confirmation: their chi^2, excess removed and projection are
 // the confirmation's numbers; returns whether they confirm.
-bool decide_by(const AfterRuns &runs, const Diagnosis &d, Confirmation &c)
+bool decide_by(const AfterRuns &runs, const Before &d, Confirmation &c)
 {
   c.outcome.chi2_after = runs.chi2;
   c.confirmed_fraction = excess_removed(d, runs.chi2);
@@ -54,7 +62,7 @@ void adopt(AfterRuns runs, RunsBySpeed &&aligned, Confirmation &c)
 // as the "after" (the first runs' magnitude kept as the record's). False: the runs are
 // needed first (step.need says which).
 bool second_runs(SecondRuns rec, const std::string &what, const EffectData &ed, const Features &f, const Alignment &al,
-                 const Diagnosis &d, const StageRuns &given, ConfirmStep &step, bool &confirmed)
+                 const Before &d, const StageRuns &given, ConfirmStep &step, bool &confirmed)
 {
   Confirmation &c = step.done;
   if (!given.count("refine")) {
@@ -149,21 +157,6 @@ bool first_runs(const EffectFit &top, std::size_t hs, bool between, const Effect
 
 double AfterRuns::sigma() const { return uu > 0 ? num / std::sqrt(uu) : 0.0; }
 
-void after_is_before(const RunsBySpeed &fresh, Diagnosis &d)
-{
-  for (auto &c : d.speeds)
-    c.corr = c.base, c.corr_se = c.base_se, c.G_after = c.G_before, c.Gs_after = c.Gs_before, c.n_corr = c.n_base;
-  d.gap_after = d.gap_before;
-  d.parts_after = d.parts_before;
-  for (const auto &r : fresh)
-    for (const auto &x : r.second) d.baseline_files.push_back(x.path);
-  std::size_t hs = 0;
-  for (std::size_t s = 0; s < d.speeds.size(); ++s)
-    if (d.speeds[s].all_before() > d.speeds[hs].all_before()) hs = s;
-  d.heldout_v0 = d.speeds.empty() ? 0.0 : d.speeds[hs].v0;
-  d.heldout_before = d.heldout_after = d.speeds.empty() ? 0.0 : d.speeds[hs].all_before();
-}
-
 AfterRuns evaluate_after(RunsBySpeed &runs, double a, const EffectData &ed, const Features &f, const Alignment &al)
 {
   const GapGrid &grid = al.grid;
@@ -220,25 +213,24 @@ bool confirms(bool targeted, double chi2_0, std::size_t nfeatures, double proj_b
                   : chi2_0 - chi2a > noise && removed >= TH::confirm_excess_removed;
 }
 
-bool confirms(const Diagnosis &d, double chi2a, double proj_a)
-{
-  return confirms(d.targeted, d.chi2_0, d.nfeatures, d.proj_before, chi2a, proj_a);
-}
-
-ConfirmStep confirm_top_effect(const std::map<std::string, const Effect *> &by_name,
-                               const std::map<std::string, EffectData> &data, const Features &f, const Alignment &al,
-                               bool fit_only, const Diagnosis &d, const StageRuns &given)
+ConfirmStep confirm_top_effect(const std::map<std::string, const Effect *> &by_name, const FittedCandidates &fitted,
+                               const VerdictDecision &fits_verdict, const WhereResult &where, const Features &f,
+                               const Alignment &al, bool fit_only, const StageRuns &given)
 {
   ConfirmStep step;
   Confirmation &c = step.done;
   using Kind = ConfirmationResult::Kind;
-  const bool between = d.verdict == Verdict::unexplained && d.between_knots && !d.ranking.empty();
+  const std::vector<EffectFit> &ranking = fitted.evidence.ranking;
+  const Verdict verdict = fits_verdict.verdict;
+  const bool between = verdict == Verdict::unexplained && fits_verdict.between_knots && !ranking.empty();
   // a scale_only verdict is confirmed as an explained one: its scale on fresh runs
-  if (d.verdict != Verdict::explained && d.verdict != Verdict::scale_only && !between) return step;
-  const EffectFit &top = d.ranking[0];
+  if (verdict != Verdict::explained && verdict != Verdict::scale_only && !between) return step;
+  const Before d{fits_verdict.targeted, where.omnibus.chi2_0, where.omnibus.nfeatures};
+  const double gap_before = where.before.gap, heldout_before = where.heldout.gap;
+  const EffectFit &top = ranking[0];
   const Effect &e = *by_name.at(top.name);
-  const EffectData &ed = data.at(e.name);
-  c.outcome.gap_before = d.gap_before, c.outcome.heldout_before = d.heldout_before;
+  const EffectData &ed = fitted.data.at(e.name);
+  c.outcome.gap_before = gap_before, c.outcome.heldout_before = heldout_before;
   if (between && !away_from_knots(top, ed)) return c.outcome.kind = Kind::at_knot, step;
   if (between && fit_only) return c.outcome.kind = Kind::fit_only, step;
   c.effect = e.name, c.unit = e.unit;
@@ -246,7 +238,7 @@ ConfirmStep confirm_top_effect(const std::map<std::string, const Effect *> &by_n
   if (fit_only) return c.outcome.kind = Kind::fit_only, step;
   c.outcome.kind = Kind::simulated;
   std::size_t hs = 0;
-  while (hs + 1 < f.nspeeds() && f.speeds[hs] != d.heldout_v0) ++hs;
+  while (hs + 1 < f.nspeeds() && f.speeds[hs] != where.heldout.v0) ++hs;
   c.tested_effect = e.name;
   AfterRuns first;
   RunsBySpeed corr;
@@ -255,7 +247,7 @@ ConfirmStep confirm_top_effect(const std::map<std::string, const Effect *> &by_n
   c.after_runs = corr;
   if (const auto refine = refinement(ed, first, confirmed, c)) {
     if (!second_runs(*refine, "refining", ed, f, al, d, given, step, confirmed)) return step;
-  } else if (between && !between_knots_explains(confirmed, d.gap_before, first.all(), d.heldout_before, c.heldout_after)) {
+  } else if (between && !between_knots_explains(confirmed, gap_before, first.all(), heldout_before, c.heldout_after)) {
     // between knots and short: refit with the first runs as a knot, and simulate once more
     // where that fit lands (any move: this is the last try before unexplained)
     const EffectFit refit = fit_effect(f.target, with_runs_as_knot(ed, c.magnitude, corr, f, al.grid));
@@ -272,13 +264,15 @@ ConfirmStep confirm_top_effect(const std::map<std::string, const Effect *> &by_n
   }
   // a transform effect's "after" is computed: the output writes its traces transformed
   if (by_transform(e, c.magnitude)) c.corrected_effect = e.name, c.corrected_magnitude = c.magnitude;
+  const Effect *derived = c.corrected_effect.empty() ? nullptr : find_effect(c.corrected_effect);
+  if (derived && derived->transform && !c.after.files.empty())
+    c.corrected_traces = transformed_trace_files(c.after.files, *derived, c.corrected_magnitude);
   c.outcome.magnitude = c.magnitude;
   c.outcome.confirmed = confirmed;
   c.outcome.heldout_after = c.heldout_after;
   return step;
 }
 
-// the note of a second simulation, from its record
 std::string second_runs_note(const SecondRuns &r)
 {
   const AfterRuns &s = r.second;
@@ -293,41 +287,6 @@ std::string second_runs_note(const SecondRuns &r)
          ", simulated on " + std::to_string(REFINE_SEEDS.size()) + " more fresh beds: chi^2 " + fmt(s.chi2, "%.1f") + ", G_all " +
          fmt(s.all(), "%.3f") + ", " + fmt(s.sigma(), "%.2f") + " sigma; gap after and the corrected traces are these" +
          (r.decides ? "; they decide the confirmation" : "");
-}
-
-void record_confirmation(const Confirmation &c, Diagnosis &d)
-{
-  if (!c.effect.empty()) d.magnitude = c.magnitude, d.magnitude_unit = c.unit;
-  if (c.outcome.kind != ConfirmationResult::Kind::simulated) return;
-  d.tested_effect = c.tested_effect;
-  d.heldout_magnitude = c.heldout_magnitude;
-  d.heldout_after = c.heldout_after;
-  d.proj_before = c.outcome.proj_before;
-  d.proj_after = c.outcome.proj_after;
-  d.chi2_after = c.outcome.chi2_after;
-  d.confirmed_fraction = c.confirmed_fraction;
-  d.gap_after = c.after.all();
-  d.parts_after = GapParts{c.after.G, c.after.G_spec, d.n_real_min, c.after.runs};
-  d.corrected_files = c.after.files;
-  for (std::size_t s = 0; s < d.speeds.size() && s < c.after.speeds.size(); ++s) {
-    auto &curve = d.speeds[s];
-    const SpeedAfter &a = c.after.speeds[s];
-    curve.n_corr = a.n;
-    for (std::size_t b = 0; b < a.mean.size(); ++b) curve.corr[b] = a.mean[b], curve.corr_se[b] = a.se[b];
-    curve.G_after = a.G, curve.Gs_after = a.G_spec;
-  }
-  if (c.second) {
-    d.refined = true;
-    d.refined_from = c.second->first_magnitude;
-    d.gap_after_first = c.second->first_gap;
-    d.proj_refined = c.second->second.sigma();
-    d.notes.push_back(second_runs_note(*c.second));
-  }
-  d.corrected_effect = c.corrected_effect;
-  d.corrected_magnitude = c.corrected_magnitude;
-  const Effect *derived = c.corrected_effect.empty() ? nullptr : find_effect(c.corrected_effect);
-  if (derived && derived->transform && !d.corrected_files.empty())
-    d.corrected_traces = transformed_trace_files(d.corrected_files, *derived, c.corrected_magnitude);
 }
 
 }    // namespace granpen

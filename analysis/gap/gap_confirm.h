@@ -12,9 +12,10 @@
 #include "gap_align.h"
 #include "gap_features.h"
 #include "gap_fit.h"
-#include "gap_result.h"
 #include "gap_sims.h"
 #include "gap_verdict.h"
+#include "gap_where.h"
+#include "gap_which.h"
 
 #include <map>
 #include <optional>
@@ -22,11 +23,6 @@
 #include <vector>
 
 namespace granpen {
-
-// The "after" set to the "before" (the corrected curves the baseline's, G_all and its parts
-// after = before), the reference runs as the baseline files, and the held-out speed: the one
-// with the largest G_all.
-void after_is_before(const RunsBySpeed &fresh, Diagnosis &d);
 
 // Fresh runs at magnitude a against the measurement: G and G_spec after (means over speeds;
 // runs: the fewest per speed), chi^2 over every feature, and the gap along the effect's
@@ -59,7 +55,6 @@ double signature_sigma(const EffectData &ed, double a, const Features &f);
 // least confirm_projection_drop2 and chi^2 does not grow beyond its noise (gap_thresholds.h).
 // The numbers: the route (targeted), chi^2 before over nfeatures, the projection before.
 bool confirms(bool targeted, double chi2_0, std::size_t nfeatures, double proj_before, double chi2a, double proj_a);
-bool confirms(const Diagnosis &d, double chi2a, double proj_a);    // the numbers of d
 
 // A second simulation after the first runs fell short (the record its note is made from):
 // refine (the first runs left a significant part along the signature: linear response) or
@@ -84,8 +79,13 @@ struct Confirmation {
   std::optional<SecondRuns> second;
   AfterRuns after;               // the runs adopted as the "after"
   RunsBySpeed after_runs;        // ... aligned (empty when nothing was simulated)
-  std::string corrected_effect;  // a transform effect's "after": the output transforms its traces
+  std::string corrected_effect;  // a transform effect's "after": the output writes its traces transformed
   double corrected_magnitude = 0;
+  // ... and those transformed runs as the files of OUT/corrected/ (name, text), made here so
+  // that the report only writes them
+  std::vector<std::pair<std::string, std::string>> corrected_traces;
+  // the magnitude the diagnosis names: this one when an effect was named at one, else 0
+  double named_magnitude() const { return effect.empty() ? 0.0 : magnitude; }
 };
 
 // One call of the stage: either the runs it needs next, or (need empty) its result.
@@ -100,15 +100,15 @@ struct ConfirmStep {
 // magnitude away from every knot, judges the top candidate there the same way; when those
 // first runs do not explain the gap they become a knot, every speed is fitted again with
 // them, and the new magnitude is simulated once more on REFINE_SEEDS; those runs decide.
-// d: the fits' state (ranking, verdict, the gap before); given: the runs simulated so far
-// for earlier steps (by tag).
-ConfirmStep confirm_top_effect(const std::map<std::string, const Effect *> &by_name,
-                               const std::map<std::string, EffectData> &data, const Features &f, const Alignment &al,
-                               bool fit_only, const Diagnosis &d, const StageRuns &given);
+// Reads the fits (ranking, model data, the omnibus test), the fits' verdict (what to
+// confirm, by which route) and the where stage (the gap before, the held-out speed); given:
+// the runs simulated so far for earlier steps (by tag).
+ConfirmStep confirm_top_effect(const std::map<std::string, const Effect *> &by_name, const FittedCandidates &fitted,
+                               const VerdictDecision &fits_verdict, const WhereResult &where, const Features &f,
+                               const Alignment &al, bool fit_only, const StageRuns &given);
 
-// The confirmation's numbers into the diagnosis (magnitude, gap after, corrected curves and
-// files, the refinement, its note); not the verdict (gap_verdict.h, record_verdict).
-void record_confirmation(const Confirmation &c, Diagnosis &d);
+// The note of a second simulation (refined, or refitted between knots), from its record.
+std::string second_runs_note(const SecondRuns &r);
 
 }    // namespace granpen
 

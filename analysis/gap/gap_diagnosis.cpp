@@ -3,6 +3,7 @@
 #include "gap_diagnosis.h"
 
 #include "effects.h"
+#include "gap_adaptive.h"
 #include "gap_align.h"
 #include "scaling_laws.h"
 #include "gap_confirm.h"
@@ -10,9 +11,12 @@
 #include "gap_features.h"
 #include "gap_inputs.h"
 #include "gap_plan.h"
-#include "gap_residual.h"
+#include "gap_limits.h"
 #include "gap_report.h"
+#include "gap_residual.h"
+#include "gap_result.h"
 #include "gap_sims.h"
+#include "gap_thresholds.h"
 #include "gap_where.h"
 #include "gap_which.h"
 #include "scenario.h"
@@ -20,10 +24,12 @@
 #include "slurm_script.h"
 #include "text_util.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -68,23 +74,60 @@ GapOptions for_scenario(const GapOptions &opt, const Scenario &sc)
   return o;
 }
 
-// The plan before anything is simulated: printed; false when it exceeds --budget (said).
-bool plan_within_budget(const GapOptions &given, const Scenario &sc, const std::vector<SimRequest> &req,
-                        const std::string &cache, const Progress &progress)
+// the grains of the probe pour (bench's bed 1), or 0 when the inputs lack the bench preset
+// (plan_cost then takes the probe's .info)
+double probe_grains(const GapOptions &opt)
 {
-  double probe_grains = 0;
   try {
-    probe_grains = preset_grains(read_scenario(given.runner.inputs, "bench"));
+    return preset_grains(read_scenario(opt.runner.inputs, "bench"));
   } catch (InputError &) {
-    // an inputs folder without the bench preset: the plan in core-hours only
+    return 0;
   }
-  const PlanCost c = plan_cost(sc, req, cache, probe_grains);
-  progress.say(GapProgress::INFO, "plan", "plan: " + plan_summary(c) + " (scenario " + sc.name + ")");
-  if (given.budget < 0 || c.core_hours <= given.budget) return true;
+}
+
+// The plan before anything is simulated, printed in its one unit (probe pours of core time,
+// wall time at --jobs from it): every knot, and, for a diagnosis, its range (the cheap stage
+// alone, to every knot with the costliest confirmation). false when its most exceeds --budget.
+bool plan_within_budget(const GapOptions &given, const Scenario &sc, const std::vector<std::string> &v0s,
+                        const std::vector<const Effect *> &effects, bool diagnosis, const Progress &progress, PlanRecord *record = nullptr)
+{
+  const std::string cache = given.cache + "/" + sc.name;
+  const int jobs = given.runner.jobs;
+  const double probe = probe_grains(given);
+  const PlanCost all = plan_cost(sc, signature_requests(sc.name, v0s, effects), cache, probe);
+  progress.say(GapProgress::INFO, "plan", "plan: " + plan_summary(all, jobs) + " (scenario " + sc.name + ")");
+  PlanCost most = all;
+  if (diagnosis) {
+    std::vector<const Effect *> cheap;
+    for (const Effect *e : effects)
+      if (!e->pour_level) cheap.push_back(e);
+    // from what the cache lacks (printed, --budget); the record's as a cold cache runs it, to
+    // hold what this run spent counted the same way
+    auto range = [&](const std::string &from) {
+      return std::make_pair(plan_cost(sc, signature_requests(sc.name, v0s, cheap), from, probe),
+                            plan_cost(sc, signature_requests(sc.name, v0s, effects), from, probe) +
+                                confirmation_most(sc, v0s, effects, from, probe));
+    };
+    const auto [least, most_now] = range(cache);
+    const auto [cold_least, cold_most] = range("");
+    most = most_now;
+    PlanRecord r;
+    r.jobs = jobs;
+    r.least = cold_least.probe_pours, r.most = cold_most.probe_pours;
+    r.wall_least = wall_probe_pours(cold_least, jobs), r.wall_most = wall_probe_pours(cold_most, jobs);
+    r.decides = "which pour-level candidates the cheap stage leaves able to change the verdict (each simulated unless its bound, "
+                "the squared gap along its signature or, its direction unknown, the whole squared gap, stays below its threshold), "
+                "then whether an effect is confirmed, which, and whether its magnitude is refined";
+    progress.say(GapProgress::INFO, "plan",
+                 "plan: from " + cost_phrase(least, jobs) + " (the cheap stage alone) to " + cost_phrase(most, jobs) +
+                     " (every knot and the costliest confirmation); where a run lands: " + r.decides);
+    if (record) *record = r;
+  }
+  if (given.budget < 0 || most.core_hours <= given.budget) return true;
   progress.say(GapProgress::INFO, "plan",
-               format_text("the plan's %.3g core-hours exceed --budget %.3g: stopping before anything starts "
+               format_text("the plan's %.3g core-hours%s exceed --budget %.3g: stopping before anything starts "
                            "(raise --budget, narrow --effects or the speeds, or use --slurm)",
-                           c.core_hours, given.budget));
+                           most.core_hours, diagnosis ? " at most" : "", given.budget));
   return false;
 }
 
@@ -103,7 +146,7 @@ RunnerOptions cache_runner(const GapOptions &opt)
 int write_cluster_script(const GapOptions &opt, const Scenario &sc, const std::vector<SimRequest> &req,
                          const RunnerOptions &runner, const Progress &progress)
 {
-  const PlanCost c = plan_cost(sc, req, runner.out_root, 0.0);
+  const PlanCost c = plan_cost(sc, req, runner.out_root, probe_grains(opt));
   const ArrayTasks tasks = array_tasks(req);
   const std::string abs_cache = fs::absolute(opt.cache).string(), abs_inputs = fs::absolute(opt.runner.inputs).string();
   const std::string lmp = opt.runner.lmp.find('/') == std::string::npos ? opt.runner.lmp : fs::absolute(opt.runner.lmp).string();
@@ -119,7 +162,7 @@ int write_cluster_script(const GapOptions &opt, const Scenario &sc, const std::v
   const int np = (int) tasks.pours.size(), nq = (int) tasks.pushes.size();
   const std::vector<std::string> what = {
       "granpen gap: the " + sc.name + " cache (" + std::to_string(req.size()) + " sweeps; still to run: " +
-          plan_summary(c) + " at 1.1e7 atom-steps/s/core).",
+          plan_summary(c, (int) tasks.pours.size() + (int) tasks.pushes.size()) + ").",
       "Submit with `bash " + opt.slurm + "` on the cluster: " + std::to_string(np) + " pours as one job array, then " +
           std::to_string(nq) + " pushes as a second array that starts when every pour has succeeded.",
       "Each task runs one planned run on " + std::to_string(runner.ranks) +
@@ -147,22 +190,94 @@ int run_array_task(const std::vector<SimRequest> &req, RunnerOptions runner, int
   return run_sweeps({req[t.request]}, runner) == 0 ? 0 : 1;
 }
 
-// The confirmation and the verdict that stands: the confirmation asks for its runs, the
-// simulate stage runs them, and it is asked again until it needs none; then the verdict from
-// the fits' evidence and the confirmation's result.
-Confirmation confirm_and_decide(const std::map<std::string, const Effect *> &by_name, const FittedCandidates &fitted,
-                                const Features &f, const Alignment &al, const SimContext &sim, bool fit_only, Diagnosis &d)
+// The signature simulations, bought adaptively (gap_adaptive.h): the cheap stage first (the
+// baseline, the reference beds, the push-only knots; the transforms cost nothing), fitted on a
+// record of its own; then each pour-level candidate whose bound can still change the verdict.
+// Returns the effects simulated, in library order; the decisions go to record.
+std::vector<const Effect *> simulate_adaptively(const Scenario &sc, const MeasuredData &measured,
+                                                const std::vector<const Effect *> &effects, const RunnerOptions &runner,
+                                                PlanRecord &record)
+{
+  const std::string &cache = runner.out_root;
+  auto run = [&](const std::vector<const Effect *> &which) {
+    if (run_requests(signature_requests(sc.name, measured.v0s, which), runner) != 0)
+      throw InputError("some simulations failed: see the manifests under " + cache + " (rerun to retry them)");
+  };
+  std::vector<const Effect *> cheap, pour;
+  for (const Effect *e : effects) (e->pour_level ? pour : cheap).push_back(e);
+  run(cheap);
+  if (pour.empty()) return cheap;
+  SimulatedRuns sims = load_simulations(cache, cheap);
+  RunsBySpeed real = measured.runs;    // aligned here on a copy: the diagnosis aligns its own
+  const Alignment al = align_and_bin(real, sims, sc.depth);
+  const Features f = build_features(real, sims, cheap, al.grid, measured.files.size());
+  const FittedCandidates seen_fit = fit_candidates(cheap, f, [&](const std::string &sweep) { return mean_phi0(cache, sweep); },
+                                                   gap_significance(f, al.grid));
+  const std::vector<EffectFit> &seen_rank = seen_fit.evidence.ranking;
+  const VerdictDecision seen_verdict = decide_verdict(seen_fit.evidence);
+  // the whole squared gap in the fits' weights (no cheap candidate fitted: not known, no bound)
+  CheapStageSeen seen;
+  seen.chi2_0 = seen_rank.empty() ? INFINITY : 0.0;
+  for (const EffectFit &r : seen_rank) seen.chi2_0 = std::max(seen.chi2_0, r.chi2_0);
+  if (!seen_rank.empty()) seen.best = seen_rank[0].name, seen.best_evidence = lr_evidence(seen_rank[0]);
+  seen.best_explains = seen_verdict.verdict == Verdict::explained || seen_verdict.verdict == Verdict::scale_only;
+  seen.best_is_scale = seen_verdict.verdict == Verdict::scale_only;
+  std::vector<PourCandidate> candidates;
+  for (const Effect *e : pour)
+    candidates.push_back({e->name, plan_cost(sc, signature_requests(sc.name, measured.v0s, {e}), cache, 0.0).probe_pours, std::nullopt});
+  record.decisions = decide_purchases(seen, candidates, GapThresholds::lr_chi2_1_p1e4, GapThresholds::evidence_margin);
+  std::vector<const Effect *> bought, out;
+  for (const PurchaseDecision &d : record.decisions)
+    if (d.simulate) bought.push_back(find_effect(d.effect));
+  run(bought);
+  for (const Effect *e : effects)
+    if (!e->pour_level || std::find(bought.begin(), bought.end(), e) != bought.end()) out.push_back(e);
+  return out;
+}
+
+// What the diagnosis spent, counted as a cold cache runs it: the signature simulations of
+// the effects simulated and the confirmation's runs (asked), in the plan's unit.
+void record_spent(const Scenario &sc, const GapOptions &opt, const std::vector<std::string> &v0s,
+                  const std::vector<const Effect *> &simulated, const std::vector<SimRequest> &asked, PlanRecord &record)
+{
+  std::vector<SimRequest> all = signature_requests(sc.name, v0s, simulated);
+  for (const SimRequest &r : asked)
+    if (std::none_of(all.begin(), all.end(), [&](const SimRequest &q) { return q.spec.name == r.spec.name; })) {
+      all.push_back(r);
+      record.confirmation.push_back(r.spec.name);
+    }
+  const PlanCost spent = cold_cost(sc, all, probe_grains(opt));
+  record.spent = spent.probe_pours;
+  record.wall_spent = wall_probe_pours(spent, record.jobs);
+  record.core_hours_spent = spent.core_hours;
+}
+
+// Stage 9 with stage 3 between its calls: the confirmation asks for its runs, the simulate
+// stage runs them, and it is asked again until it needs none; the runs asked are kept in
+// asked (the plan's record counts them).
+Confirmation confirm_with_runs(const std::map<std::string, const Effect *> &by_name, const FittedCandidates &fitted,
+                               const VerdictDecision &fits_verdict, const WhereResult &where, const Features &f,
+                               const Alignment &al, const SimContext &sim, bool fit_only, std::vector<SimRequest> &asked)
 {
   StageRuns simulated;
-  ConfirmStep step = confirm_top_effect(by_name, fitted.data, f, al, fit_only, d, simulated);
+  ConfirmStep step = confirm_top_effect(by_name, fitted, fits_verdict, where, f, al, fit_only, simulated);
   while (step.need) {
-    simulate_needed(*step.need, *by_name.at(step.need->effect), sim, simulated);
-    step = confirm_top_effect(by_name, fitted.data, f, al, fit_only, d, simulated);
+    const Effect &e = *by_name.at(step.need->effect);
+    for (auto &r : needed_requests(*step.need, e, sim)) asked.push_back(std::move(r));
+    simulate_needed(*step.need, e, sim, simulated);
+    step = confirm_top_effect(by_name, fitted, fits_verdict, where, f, al, fit_only, simulated);
   }
-  record_confirmation(step.done, d);
-  const VerdictDecision verdict = decide_verdict(fitted.evidence, &step.done.outcome);
-  record_verdict(verdict, confirmation_verdict_notes(verdict, fitted.evidence, step.done.outcome), d);
   return std::move(step.done);
+}
+
+// what the confirm stage says it does, from the fits' verdict
+std::string confirm_message(const VerdictDecision &fits_verdict, const std::vector<EffectFit> &ranking, bool fit_only)
+{
+  if (fits_verdict.between_knots && !ranking.empty())
+    return "simulating " + ranking[0].name + " between its knots on fresh seeds";
+  if (fits_verdict.verdict != Verdict::explained && fits_verdict.verdict != Verdict::scale_only) return "no effect to confirm";
+  if (fit_only) return "not confirming (--fit-only)";
+  return "confirming " + ranking[0].name + " on fresh seeds";
 }
 
 }    // namespace
@@ -174,8 +289,7 @@ int run_gap(const GapOptions &given, const GapProgressFn &fn)
   const Scenario sc = load_scenario(given);
   const auto effects = choose_effects(given.effects);
   const std::vector<std::string> v0 = checked_speeds(given.v0, sc);
-  if (!plan_within_budget(given, sc, signature_requests(sc.name, v0, effects), given.cache + "/" + sc.name, progress))
-    return GAP_OVER_BUDGET;
+  if (!plan_within_budget(given, sc, v0, effects, false, progress)) return GAP_OVER_BUDGET;
   const GapOptions opt = for_scenario(given, sc);
   const RunnerOptions runner = cache_runner(opt);
   fs::create_directories(runner.out_root);
@@ -190,9 +304,9 @@ int run_gap(const GapOptions &given, const GapProgressFn &fn)
 int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
 {
   const Progress progress{fn};
-  // validate: nothing is started or written before the inputs pass
+  // 1 validate: nothing is started or written before the inputs pass
   const Scenario sc = load_scenario(given);
-  const auto effects = choose_effects(given.effects);
+  const auto all_effects = choose_effects(given.effects);
   MeasuredData measured = read_measured(given.real, sc);
   check_output_path(given.out, given.real, given.cache);
   for (const auto &n : measured.notes) progress.say(GapProgress::WARNING, "validate", n);
@@ -200,76 +314,75 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
                format_text("%zu measured runs at %zu speeds (%s cm/s) against scenario %s", measured.files.size(),
                       measured.runs.size(), joined(measured.v0s).c_str(), sc.name.c_str()));
 
-  // the plan, before anything is simulated; nothing more when it exceeds --budget
-  if (!plan_within_budget(given, sc, signature_requests(sc.name, measured.v0s, effects), given.cache + "/" + sc.name,
-                          progress))
-    return GAP_OVER_BUDGET;
+  // 2 plan, before anything is simulated: its range; nothing more when it exceeds --budget
+  PlanRecord plan_record;
+  if (!plan_within_budget(given, sc, measured.v0s, all_effects, true, progress, &plan_record)) return GAP_OVER_BUDGET;
   const GapOptions opt = for_scenario(given, sc);
 
-  // plan and simulate: the baseline and every effect knot (cached)
+  // 3 simulate: the cheap stage, then the pour-level candidates that can still change the
+  // verdict (gap_adaptive.h; cached)
   const RunnerOptions runner = cache_runner(opt);
   const std::string &cache = runner.out_root;
   progress.say(GapProgress::STEP, "simulate",
-               format_text("simulations of the baseline and %zu candidate effects (cache %s)", effects.size(), cache.c_str()), 1, 4);
-  const SimulationPlan plan = plan_simulations(sc, measured.v0s, effects, cache, opt.local);
+               format_text("simulations of the baseline and %zu candidate effects (cache %s)", all_effects.size(), cache.c_str()), 1, 4);
+  plan_simulations(sc, measured.v0s, all_effects, cache, opt.local);    // refuses a plan for a cluster
   fs::create_directories(cache);
-  if (run_requests(plan.requests, runner) != 0)
-    throw InputError("some simulations failed: see the manifests under " + cache + " (rerun to retry them)");
+  const std::vector<const Effect *> effects = simulate_adaptively(sc, measured, all_effects, runner, plan_record);
+  for (const auto &dec : plan_record.decisions) progress.say(GapProgress::INFO, "plan", dec.effect + ": " + dec.why);
 
-  // align and bin, features and the noise model
+  // 4 align and bin, 5 features and the noise model
   progress.say(GapProgress::STEP, "align", "comparing ensembles", 2, 4);
   SimulatedRuns sims = load_simulations(cache, effects);
   const Alignment al = align_and_bin(measured.runs, sims, sc.depth);
-  Diagnosis d;
-  d.scenario = sc.name;
-  d.real_dir = opt.real;
-  d.real_files = measured.files;
-  d.notes = measured.notes;
-  d.notes.insert(d.notes.end(), al.notes.begin(), al.notes.end());
-  d.grid = al.grid;
-  d.peak_end = peak_regime_end(sc.D);
   const Features f = build_features(measured.runs, sims, effects, al.grid, measured.files.size());
-  d.notes.insert(d.notes.end(), f.notes.begin(), f.notes.end());
-  d.n_reference = f.n_reference;
   for (const auto &line : feature_dump(f)) progress.say(GapProgress::DEBUG, "features", line);
 
-  // where
-  gap_curves(f, al.grid, d);
-  regimes(f, sims.fresh, sc, al.grid, d);
-  observable_findings(f, measured.runs, sims, sc, al.grid, d);
-  gap_significance(f, al.grid, d);
+  // 6 where: the gap curves, the regimes, the observables, the omnibus test
+  const WhereResult where = where_stage(f, measured.runs, sims, sc, al.grid);
 
-  // which: every effect's magnitude, explained fraction, leave-one-speed-out; the verdict
+  // 7 which: every effect's magnitude, explained fraction, leave-one-speed-out
   progress.say(GapProgress::STEP, "which", format_text("fitting %zu candidate effects", effects.size()), 3, 4);
   std::map<std::string, const Effect *> by_name;
   for (const Effect *e : effects) by_name[e->name] = e;
-  const FittedCandidates fitted = fit_candidates(effects, f, [&](const std::string &sweep) { return mean_phi0(cache, sweep); }, d);
-  const auto &data = fitted.data;
-  for (std::size_t i = 0; i < d.ranking.size(); ++i) {
-    const EffectFit &r = d.ranking[i];
+  const FittedCandidates fitted =
+      fit_candidates(effects, f, [&](const std::string &sweep) { return mean_phi0(cache, sweep); }, where.omnibus);
+  const std::vector<EffectFit> &ranking = fitted.evidence.ranking;
+  for (std::size_t i = 0; i < ranking.size(); ++i) {
+    const EffectFit &r = ranking[i];
     progress.say(GapProgress::DETAIL, "which",
                  format_text("%-20s magnitude %-10s explained %5.2f  held-out %5.2f  chi2 %.1f -> %.1f  lr %.1f (threshold %.1f)",
                         r.name.c_str(), printf_number("%.4g", r.magnitude).c_str(), r.explained, r.heldout_explained, r.chi2_0,
                         r.chi2, r.lr, r.lr_threshold),
-                 (int) i + 1, (int) d.ranking.size());
+                 (int) i + 1, (int) ranking.size());
   }
 
-  // confirm: the top effect on fresh seeds
-  progress.say(GapProgress::STEP, "confirm",
-               d.between_knots && !d.ranking.empty() ? "simulating " + d.ranking[0].name + " between its knots on fresh seeds"
-               : d.verdict != Verdict::explained && d.verdict != Verdict::scale_only ? "no effect to confirm"
-               : opt.fit_only                        ? "not confirming (--fit-only)"
-                                                     : "confirming " + d.ranking[0].name + " on fresh seeds",
-               4, 4);
-  after_is_before(sims.fresh, d);
-  const Confirmation confirmation =
-      confirm_and_decide(by_name, fitted, f, al, SimContext{sc.name, measured.v0s, runner}, opt.fit_only, d);
-  const RunsBySpeed &after = confirmation.after_runs;
-  how_blind(effects, data, f, d);    // after the confirmation: the next measurement follows the final verdict
+  // 8 verdict on the fits alone: what the confirmation simulates
+  const VerdictDecision fits_verdict = decide_verdict(fitted.evidence);
 
-  // report: what the gap left over, G per regime, the output
-  residual_stage(f, measured.runs, sims.fresh, after, data, al.grid, d);
-  d.gap_by_regime = gap_by_regime(al.grid, d.peak_end, d.speeds);
+  // 9 confirm: the top effect on fresh seeds (3 simulate runs what it asks for)
+  progress.say(GapProgress::STEP, "confirm", confirm_message(fits_verdict, ranking, opt.fit_only), 4, 4);
+  std::vector<SimRequest> asked;
+  const Confirmation confirmation = confirm_with_runs(by_name, fitted, fits_verdict, where, f, al,
+                                                      SimContext{sc.name, measured.v0s, runner}, opt.fit_only, asked);
+  record_spent(sc, opt, measured.v0s, effects, asked, plan_record);
+
+  // 8 verdict that stands: the fits' evidence and the confirmation's result
+  const VerdictDecision verdict = decide_verdict(fitted.evidence, &confirmation.outcome);
+
+  // 10 limits: how blind (the next measurement follows the verdict that stands)
+  const Blindness blind = how_blind(effects, fitted.data, f, ranking, verdict, confirmation.named_magnitude());
+
+  // 11 residual: what the gap left over
+  const double peak_end = peak_regime_end(sc.D);
+  std::optional<Residual> residual =
+      residual_stage(f, measured.runs, sims.fresh, al.grid, peak_end, where, fitted, verdict, confirmation);
+
+  // 12 record, 13 report
+  DiagnosisInputs in{sc.name, opt.real, measured.files, measured.notes, al.grid, peak_end, f.n_reference};
+  in.notes.insert(in.notes.end(), al.notes.begin(), al.notes.end());
+  in.notes.insert(in.notes.end(), f.notes.begin(), f.notes.end());
+  in.plan = std::move(plan_record);
+  const Diagnosis d = assemble_diagnosis(in, where, fitted, fits_verdict, confirmation, verdict, blind, std::move(residual));
   write_gap_output(d, opt.out);
   progress.say(GapProgress::INFO, "report",
                format_text("verdict %s%s; G_all %.3f -> %.3f (%d measured runs per speed at least, %d simulated); %s",

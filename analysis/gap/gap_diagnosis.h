@@ -7,8 +7,9 @@
 //    6 where (gap_where.h)            7 which: the fits (gap_which.h)
 //    8 verdict (gap_verdict.h: the one owner; on the fits, then with the confirmation)
 //    9 confirm (gap_confirm.h: asks 3 for its runs, returns a typed result to 8)
-//   10 limits (gap_limits.h)         11 residual (gap_residual.h)
-//   12 report (gap_report.h)
+//   10 limits: how blind (gap_limits.h)   11 residual (gap_residual.h)
+//   12 record: the Diagnosis, assembled once from the results (gap_result.h)
+//   13 report: a pure function of the record (gap_report.h)
 // The thresholds are one table (gap_thresholds.h); the numerics are in gap_data.h and
 // gap_fit.h. Progress goes through a callback (gap_progress.h): the library prints nothing.
 #ifndef GRANPEN_GAP_DIAGNOSIS_H

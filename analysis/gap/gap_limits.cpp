@@ -1,6 +1,8 @@
 // granpen gap, stage 10 (limits): see gap_limits.h.
 #include "gap_limits.h"
 
+#include "gap_which.h"
+
 #include "text_util.h"
 
 #include <algorithm>
@@ -304,6 +306,28 @@ ScaleFinding scale_finding(const EffectFit &scale, double magnitude, const std::
     cause.runs = m;
     out.causes.push_back(cause);
   }
+  return out;
+}
+
+Blindness how_blind(const std::vector<const Effect *> &effects, const std::map<std::string, EffectData> &data,
+                    const Features &f, const std::vector<EffectFit> &ranking, const VerdictDecision &verdict,
+                    double magnitude)
+{
+  Blindness out;
+  std::map<std::string, const Effect *> by_name;
+  for (const Effect *e : effects) {
+    by_name[e->name] = e;
+    const auto it = std::find_if(ranking.begin(), ranking.end(), [&](const EffectFit &x) { return x.name == e->name; });
+    if (it != ranking.end()) out.limits.push_back(detection_limit(*e, data.at(e->name), *it, f));
+    if (data.count(e->name))
+      for (const KnotBend &b : knot_bends(data.at(e->name), f.target)) out.knot_bends.push_back(b);
+  }
+  out.look_alikes = look_alikes(ranking, data, by_name, f);
+  out.next = next_measurement(ranking, data, f, verdict.verdict);
+  out.false_alarms = null_false_alarms(effects, data, ranking, f);
+  const auto scale = std::find_if(ranking.begin(), ranking.end(), [&](const EffectFit &x) { return x.name == verdict.scale_effect; });
+  if (verdict.verdict == Verdict::scale_only && scale != ranking.end())
+    out.scale_only = scale_finding(*scale, magnitude, ranking, data, by_name, f);
   return out;
 }
 

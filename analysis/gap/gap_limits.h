@@ -9,8 +9,10 @@
 // - look-alikes: per pair of candidates, the angle between their signatures in whitened
 //   feature space and how far apart their fitted predictions lie at the data's noise;
 // - the next measurement: the speed and number of further runs that would best separate
-//   the top two candidates, or detect the most likely undetected one.
-// docs/gap.md, "How blind" and "Look-alikes".
+//   the top two candidates, or detect the most likely undetected one;
+// - the false alarms: the null replicates put through the fits' verdict.
+// how_blind returns them all as the stage's result (Blindness), after the verdict that
+// stands (the next measurement follows it). docs/gap.md, "How blind" and "Look-alikes".
 #ifndef GRANPEN_GAP_LIMITS_H
 #define GRANPEN_GAP_LIMITS_H
 
@@ -141,6 +143,30 @@ struct ScaleFinding {
 ScaleFinding scale_finding(const EffectFit &scale, double magnitude, const std::vector<EffectFit> &ranking,
                            const std::map<std::string, EffectData> &data, const std::map<std::string, const Effect *> &effects,
                            const Features &f);
+
+// Verdicts of the null replicates (the reference beds split into a no-effect measurement and
+// its reference), each put through the verdict with thresholds calibrated on the others.
+struct FalseAlarms {
+  int replicates = 0, not_none = 0;
+  std::map<std::string, int> verdicts;
+  double rate() const { return replicates ? (double) not_none / replicates : 0.0; }
+};
+
+// The stage's result: how blind the diagnosis was.
+struct Blindness {
+  std::vector<DetectionLimit> limits;        // every effect of the ranking, in library order
+  std::vector<LookAlike> look_alikes;        // every pair of the ranking
+  std::vector<KnotBend> knot_bends;          // per interior knot: what it adds at this noise (cost design)
+  std::optional<NextMeasurement> next;       // after the verdict that stands
+  FalseAlarms false_alarms;                  // the null replicates through the fits' verdict
+  std::optional<ScaleFinding> scale_only;    // scale_only: the scale as confirmed, and what can do it
+};
+
+// The stage, from the effects' model data, the fits' ranking (best first), the verdict that
+// stands and the magnitude it names (the confirmed one: refined when it was).
+Blindness how_blind(const std::vector<const Effect *> &effects, const std::map<std::string, EffectData> &data,
+                    const Features &f, const std::vector<EffectFit> &ranking, const VerdictDecision &verdict,
+                    double magnitude);
 
 }    // namespace granpen
 

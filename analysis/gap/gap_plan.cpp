@@ -4,6 +4,7 @@
 #include "text_util.h"
 #include "errors.h"    // InputError
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -61,37 +62,155 @@ double preset_grains(const Scenario &sc)
   return across * across * std::floor((sc.number("zfill_hi") - sc.number("zfill_lo")) / lat + 1.0);
 }
 
-PlanCost plan_cost(const Scenario &sc, const std::vector<SimRequest> &requests, const std::string &cache,
-                   double probe_grains)
+namespace {
+
+// a deck variable of a request (its pour and push keys, then its push keys alone), or "" 
+std::string request_var(const SimRequest &r, const std::string &key)
+{
+  for (const auto *vars : {&r.spec.set, &r.spec.push_set})
+    for (const auto &[k, v] : *vars)
+      if (k == key) return v;
+  return "";
+}
+
+double request_number(const SimRequest &r, const std::string &key, double fallback)
+{
+  const std::string v = request_var(r, key);
+  return v.empty() ? fallback : std::atof(v.c_str());
+}
+
+// the grains of the probe pour when the bench preset cannot be read (its .info)
+constexpr double PROBE_POUR_GRAINS = 6300;
+
+}    // namespace
+
+double route_cost_factor(const SimRequest &r)
+{
+  // knots' CPU s over their counted atom-steps, bench cold cache 2026-11-27 (docs/gap.md,
+  // "The plan's cost"): cohesion's 2 knots (JKR) 1217 s for 7.25 probe pours counted, rolling
+  // resistance's (sds) 886 s, at a probe pour of 76.6 s and runs side by side at 0.95
+  if (request_number(r, "cohesion", 0) != 0) return 2.1;
+  if (request_number(r, "mu_roll", 0) != 0) return 1.5;
+  return 1.0;
+}
+
+namespace {
+
+// the cost of the given runs of the requests (each request's runs from runs_of)
+template <class RunsOf>
+PlanCost runs_cost(const Scenario &sc, const std::vector<SimRequest> &requests, double probe_grains, RunsOf runs_of)
 {
   const double grains = preset_grains(sc);
+  const double probe = (probe_grains > 0 ? probe_grains : PROBE_POUR_GRAINS) * PROBE_POUR_STEPS;
   PlanCost c;
-  for (const auto &r : requests)
-    for (const auto &run : pending_runs(r, cache)) {
-      if (run.kind == PlannedRun::POUR) {
-        ++c.pours;
-        c.atom_steps += grains * 0.6 / sc.number("dt_pour");
-      } else {
-        ++c.pushes;
-        c.atom_steps += grains * (sc.gap + sc.depth) / std::atof(run.v0.c_str()) / sc.number("dt_push");
-      }
+  for (const auto &r : requests) {
+    const double factor = route_cost_factor(r);
+    // each run at its own time step (contact_stiffness scales them); a ramp adds its travel
+    // at half the speed, i.e. its travel at v0 (fix rod/drive ramp)
+    const double dt_pour = request_number(r, "dt_pour", sc.number("dt_pour"));
+    const double dt_push = request_number(r, "dt_push", sc.number("dt_push"));
+    const double travel = sc.gap + sc.depth + request_number(r, "ramp", 0);
+    for (const auto &run : runs_of(r)) {
+      const bool pour = run.kind == PlannedRun::POUR;
+      const double steps = grains * (pour ? 0.6 / dt_pour : travel / std::atof(run.v0.c_str()) / dt_push);
+      const double pp = steps * factor / probe;
+      ++(pour ? c.pours : c.pushes);
+      c.atom_steps += steps;
+      c.probe_pours += pp;
+      double &longest = pour ? c.longest_pour : c.longest_push;
+      longest = std::max(longest, pp);
     }
-  c.core_hours = c.atom_steps / (1.1e7 * 3600.0);
-  if (probe_grains > 0) c.probe_pours = c.atom_steps / (probe_grains * PROBE_POUR_STEPS);
+  }
+  c.core_hours = c.probe_pours * PROBE_POUR_SECONDS / 3600.0;
   return c;
 }
 
-std::string plan_summary(const PlanCost &c)
+}    // namespace
+
+PlanCost cold_cost(const Scenario &sc, const std::vector<SimRequest> &requests, double probe_grains)
+{
+  return runs_cost(sc, requests, probe_grains, [](const SimRequest &r) {
+    std::vector<PlannedRun> runs;
+    for (const auto &run : plan_sweep(r.spec))
+      if (run.kind == PlannedRun::PUSH || r.beds_from.empty()) runs.push_back(run);
+    return runs;
+  });
+}
+
+PlanCost plan_cost(const Scenario &sc, const std::vector<SimRequest> &requests, const std::string &cache,
+                   double probe_grains)
+{
+  if (cache.empty()) return cold_cost(sc, requests, probe_grains);
+  return runs_cost(sc, requests, probe_grains, [&](const SimRequest &r) { return pending_runs(r, cache); });
+}
+
+PlanCost operator+(const PlanCost &a, const PlanCost &b)
+{
+  PlanCost c = a;
+  c.pours += b.pours, c.pushes += b.pushes;
+  c.atom_steps += b.atom_steps, c.core_hours += b.core_hours, c.probe_pours += b.probe_pours;
+  c.longest_pour = std::max(a.longest_pour, b.longest_pour);
+  c.longest_push = std::max(a.longest_push, b.longest_push);
+  return c;
+}
+
+double wall_probe_pours(const PlanCost &c, int jobs)
+{
+  if (c.probe_pours <= 0) return 0;
+  const int n = std::max(1, jobs);
+  const double speed = n > 1 ? SIDE_BY_SIDE_SPEED : 1.0;
+  return std::max(c.probe_pours / (n * speed), (c.longest_pour + c.longest_push) / speed);
+}
+
+std::string cost_phrase(const PlanCost &c, int jobs)
+{
+  return printf_number("%.3g", c.probe_pours) + " probe pours of core time (" + printf_number("%.3g", c.core_hours) +
+         " core-hours), " + printf_number("%.3g", wall_probe_pours(c, jobs)) + " of wall time at --jobs " +
+         std::to_string(std::max(1, jobs));
+}
+
+std::string plan_summary(const PlanCost &c, int jobs)
 {
   return std::to_string(c.pours) + " pours, " + std::to_string(c.pushes) + " pushes, " +
-         printf_number("%.3g", c.atom_steps) + " atom-steps: about " +
-         (c.probe_pours > 0 ? printf_number("%.3g", c.probe_pours) + " probe pours, " : std::string()) +
-         printf_number("%.3g", c.core_hours) + " core-hours";
+         printf_number("%.3g", c.atom_steps) + " atom-steps: about " + cost_phrase(c, jobs);
 }
 
 double estimate_core_hours(const Scenario &sc, const std::vector<SimRequest> &requests, const std::string &cache)
 {
   return plan_cost(sc, requests, cache, 0.0).core_hours;
+}
+
+std::vector<SimRequest> largest_confirmation(const std::string &scenario, const Effect &e, double a,
+                                             const std::vector<std::string> &v0)
+{
+  std::string slowest;
+  for (const auto &v : v0)
+    if (slowest.empty() || std::atof(v.c_str()) < std::atof(slowest.c_str())) slowest = v;
+  std::vector<SimRequest> out;
+  auto add = [&](std::vector<SimRequest> more) {
+    for (auto &r : more)
+      if (std::none_of(out.begin(), out.end(), [&](const SimRequest &q) { return q.spec.name == r.spec.name; }))
+        out.push_back(std::move(r));
+  };
+  add(confirm_requests(scenario, e, a, v0, "confirm"));
+  if (!slowest.empty()) add(confirm_requests(scenario, e, a, {slowest}, "heldout"));
+  add(confirm_requests(scenario, e, a, v0, "refine", REFINE_SEEDS));
+  return out;
+}
+
+PlanCost confirmation_most(const Scenario &sc, const std::vector<std::string> &v0,
+                           const std::vector<const Effect *> &effects, const std::string &cache, double probe_grains)
+{
+  PlanCost most;
+  for (const Effect *e : effects) {
+    if (e->knots.empty()) continue;
+    const auto [lo, hi] = std::minmax_element(e->knots.begin(), e->knots.end());
+    for (double a : {*lo, *hi}) {
+      const PlanCost c = plan_cost(sc, largest_confirmation(sc.name, *e, a, v0), cache, probe_grains);
+      if (c.probe_pours > most.probe_pours) most = c;
+    }
+  }
+  return most;
 }
 
 ArrayTasks array_tasks(const std::vector<SimRequest> &requests)

@@ -37,27 +37,63 @@ std::vector<SimRequest> confirm_requests(const std::string &scenario, const Effe
 std::string confirm_sweep(const Effect &e, double a, const std::string &tag,
                           const std::vector<std::string> &seeds = CONFIRM_SEEDS);
 
-// Core-hours of the runs of the requests not yet done in the cache (1.1e7 atom-steps
-// per second per core, docs/presets.md; grains from the preset's lattice, a pour 0.6 s
-// of simulated time).
-double estimate_core_hours(const Scenario &sc, const std::vector<SimRequest> &requests, const std::string &cache);
+// The plan's one unit of cost is core time: the seconds the runs take on one core, each
+// alone, in probe pours (bench/common.sh's probe_pour: bed 1 of the bench scenario poured
+// alone, PROBE_POUR_STEPS steps of its grains, PROBE_POUR_SECONDS on 2026-11-22). A probe
+// pour measured on another machine turns it into that machine's seconds; core-hours are the
+// same figure at the 2026-11-22 speed (what --budget and --slurm count). Wall time at
+// --jobs N follows from it: N runs side by side each go at SIDE_BY_SIDE_SPEED of their speed
+// alone (docs/gap.md, "The plan's cost").
+constexpr double PROBE_POUR_STEPS = 110000;     // bench bed 1 poured (its .info, 2026-11-22)
+constexpr double PROBE_POUR_SECONDS = 69.9;     // ... on one core alone, 2026-11-22
+// 16 one-rank pushes side by side on a 16-core node (issue 37); not measured on the 2-core
+// development machine, which other work kept at a load of about 7 (docs/gap.md)
+constexpr double SIDE_BY_SIDE_SPEED = 0.95;
+
+// A run's cost per atom-step against the bench law's (gran/hertz/history, factor 1): pair
+// granular's routes, measured on the bench cold cache of 2026-11-27 (docs/gap.md): the
+// knots' CPU seconds over their counted atom-steps, the bench law's own beds taken as 1.
+double route_cost_factor(const SimRequest &r);
 
 // What the runs of the requests not yet done in the cache cost, before anything is
 // simulated: counted from the preset (grains from its lattice, a pour 0.6 s of simulated
-// time, a push gap + depth at v0), in atom-steps; in core-hours at 1.1e7 atom-steps per
-// second per core (docs/presets.md); and in probe pours (bench/common.sh: bed 1 of the
-// bench scenario, PROBE_POUR_STEPS steps of its grains), the machine unit of issue 21,
-// when probe_grains > 0.
+// time, a push gap + depth (+ a ramp's travel) at v0, each at its own time step), in
+// atom-steps, and in core time (probe pours: atom-steps times the route's cost factor over
+// the probe pour's; probe_grains: the bench preset's grains), also as core-hours. An empty
+// cache path: every run, as an empty cache would run them (cold_cost).
 struct PlanCost {
   int pours = 0, pushes = 0;
   double atom_steps = 0, core_hours = 0, probe_pours = 0;
+  double longest_pour = 0, longest_push = 0;    // probe pours of one run (the wall time's floor)
 };
-constexpr double PROBE_POUR_STEPS = 110000;    // bench bed 1 poured (its .info, 2026-11-22)
 double preset_grains(const Scenario &sc);     // the grains the pour deck creates
 PlanCost plan_cost(const Scenario &sc, const std::vector<SimRequest> &requests, const std::string &cache,
                    double probe_grains);
-// "N pours, M pushes, A atom-steps: about P probe pours, H core-hours"
-std::string plan_summary(const PlanCost &c);
+// The same for every run of the requests, as an empty cache would run them (what a
+// diagnosis spent, counted cold; a sweep on another's beds pours nothing).
+PlanCost cold_cost(const Scenario &sc, const std::vector<SimRequest> &requests, double probe_grains);
+// Core-hours of the runs of the requests not yet done in the cache (plan_cost's).
+double estimate_core_hours(const Scenario &sc, const std::vector<SimRequest> &requests, const std::string &cache);
+// The wall time of a cost run as one pool of `jobs` processes, in probe pours: the core time
+// spread over the jobs at their side-by-side speed, and at least the longest pour and push.
+double wall_probe_pours(const PlanCost &c, int jobs);
+// A cost in the plan's unit: "P probe pours of core time (H core-hours), W of wall time at --jobs N"
+std::string cost_phrase(const PlanCost &c, int jobs);
+// "N pours, M pushes, A atom-steps: about P probe pours of core time (H core-hours), W of wall time at --jobs N"
+std::string plan_summary(const PlanCost &c, int jobs = 1);
+// Two costs added (counts, atom-steps, core time; the longest runs of either).
+PlanCost operator+(const PlanCost &a, const PlanCost &b);
+
+// The runs a confirmation asks for (docs/gap.md, step 3), of effect e at magnitude a: the
+// confirming runs on every speed, the held-out speed's at its own magnitude, and one
+// refinement or refit between knots on four more fresh beds. With the slowest speed held
+// out and e's outermost knot, the most e's confirmation can cost.
+std::vector<SimRequest> largest_confirmation(const std::string &scenario, const Effect &e, double a,
+                                             const std::vector<std::string> &v0);
+// The most any effect's confirmation can add to the plan (0 without effects): the costliest
+// of largest_confirmation over the effects at their outermost knots, what the cache lacks.
+PlanCost confirmation_most(const Scenario &sc, const std::vector<std::string> &v0,
+                           const std::vector<const Effect *> &effects, const std::string &cache, double probe_grains);
 
 // The requests' runs as the tasks of SLURM job arrays, in one index space (--slurm, and
 // `gap --prepare-only --only K`, which runs task K): every pour of the requests that pour

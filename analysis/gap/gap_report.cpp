@@ -110,6 +110,19 @@ Json parts_json(const GapParts &p)
               {"runs_sim", p.runs_sim}};
 }
 
+// the plan's record (gap_adaptive.h): its range, what this run spent, what it simulated and skipped
+Json plan_json(const PlanRecord &p)
+{
+  Json decisions = Json::array();
+  for (const auto &x : p.decisions)
+    decisions.push_back(Json{{"effect", x.effect}, {"simulated", x.simulate}, {"bound", num(x.bound)}, {"needed", num(x.needed)},
+                             {"cost", num(x.cost)}, {"why", x.why}});
+  return Json{{"unit", "probe pours of core time"}, {"jobs", p.jobs}, {"least", num(p.least)}, {"most", num(p.most)},
+              {"spent", num(p.spent)}, {"wall_least", num(p.wall_least)}, {"wall_most", num(p.wall_most)},
+              {"wall_spent", num(p.wall_spent)}, {"core_hours_spent", num(p.core_hours_spent)}, {"decides", p.decides},
+              {"pour_level", decisions}, {"confirmation", p.confirmation}};
+}
+
 Json optional_number(const std::optional<double> &v) { return v ? num(*v) : Json(); }
 
 Json limits_json(const Diagnosis &d)
@@ -257,6 +270,7 @@ Json diagnosis_json(const Diagnosis &d)
   j["next_measurement"] = next_json(d.next);
   j["residual"] = residual_json(d.residual);
   j["notes"] = d.notes;
+  j["plan"] = plan_json(d.plan);
   // the rules' thresholds the verdict was decided by (gap_thresholds.h)
   Json thresholds = Json::object();
   for (const auto &[name, value] : gap_threshold_table()) thresholds[name] = num(value, "%.6g");
@@ -685,6 +699,7 @@ std::string report_markdown(const Diagnosis &d, const std::vector<std::string> &
                             const std::vector<std::string> &failures)
 {
   std::string md = md_summary(d) + md_scale_only(d) + md_where(d) + md_which(d) + md_blind(d) + md_residual(d);
+  md += "\n## Cost\n\n" + plan_record_text(d.plan) + "\n";
   md += format_text("\n## Notes\n\n");
   for (const auto &n : d.notes) md += format_text("- %s\n", n.c_str());
   md += format_text("\n## Figures\n\n");

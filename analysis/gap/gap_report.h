@@ -1,4 +1,4 @@
-// granpen gap, stage 12 (report): a pure function of the results, the output folder:
+// granpen gap, stage 13 (report): a pure function of the record (gap_result.h), the output folder:
 // diagnosis.json (exact names; other tools read them), report.md with its figures
 // (io/plot_writer.h), baseline/ and corrected/ (the simulated traces before and after).
 #ifndef GRANPEN_GAP_REPORT_H

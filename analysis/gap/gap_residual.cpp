@@ -2,7 +2,6 @@
 #include "gap_residual.h"
 
 #include "gap_features.h"
-#include "gap_result.h"
 #include "gap_metric.h"
 #include "text_util.h"
 
@@ -236,19 +235,26 @@ std::vector<const TraceRun *> pointers(const std::vector<TraceRun> &runs)
 
 }    // namespace
 
-void residual_stage(const Features &f, const RunsBySpeed &real, const RunsBySpeed &fresh, const RunsBySpeed &after,
-                    const std::map<std::string, EffectData> &data, const GapGrid &grid, Diagnosis &d)
+std::optional<Residual> residual_stage(const Features &f, const RunsBySpeed &real, const RunsBySpeed &fresh,
+                                       const GapGrid &grid, double peak_end, const WhereResult &where,
+                                       const FittedCandidates &fitted, const VerdictDecision &verdict,
+                                       const Confirmation &confirmation)
 {
-  if (d.verdict == Verdict::none) return;
+  if (verdict.verdict == Verdict::none) return std::nullopt;
   std::vector<double> z_transient_end;
-  for (const auto &c : d.speeds) z_transient_end.push_back(c.z_transient_end);
+  for (const auto &c : where.before.speeds) z_transient_end.push_back(c.z_transient_end);
   // a scale_only verdict is judged against its confirming runs as an explained one
-  const bool explained = d.verdict == Verdict::explained || d.verdict == Verdict::scale_only;
+  const bool explained = verdict.verdict == Verdict::explained || verdict.verdict == Verdict::scale_only;
   // after scale_only the scale candidate is the one the residual is left by
-  const std::string &named = d.verdict == Verdict::scale_only ? d.scale_effect : d.top_effect;
-  ResidualContext ctx{f.speeds, z_transient_end, d.peak_end, "", d.verdict, named, d.tested_effect, d.ranking, d.n_null, d.candidates};
-  const bool fitted = explained && after.empty() && data.count(named);
-  ctx.against = explained && !after.empty() ? "corrected" : fitted ? "fitted" : "baseline";
+  const std::string &named = verdict.verdict == Verdict::scale_only ? verdict.scale_effect : verdict.top_effect;
+  const std::map<std::string, EffectData> &data = fitted.data;
+  const RunsBySpeed &after = confirmation.after_runs;
+  ResidualContext ctx{f.speeds,          z_transient_end,           peak_end,
+                      "",                verdict.verdict,           named,
+                      confirmation.tested_effect, fitted.evidence.ranking, fitted.evidence.n_null,
+                      verdict.candidates};
+  const bool fitted_model = explained && after.empty() && data.count(named);
+  ctx.against = explained && !after.empty() ? "corrected" : fitted_model ? "fitted" : "baseline";
   ResidualSide R, M;
   for (std::size_t s = 0; s < f.nspeeds(); ++s) {
     const double v = f.speeds[s];
@@ -256,16 +262,16 @@ void residual_stage(const Features &f, const RunsBySpeed &real, const RunsBySpee
     if (ctx.against == "corrected") {
       const Ensemble eC = ensemble_of(after.at(v), grid, v);
       M.mean.push_back(eC.mean), M.err.push_back(model_err(eC, f.cv2[s])), M.runs.push_back(pointers(after.at(v)));
-    } else if (fitted) {
+    } else if (fitted_model) {
       // --fit-only: the fitted model's prediction (no runs: no periodogram)
       std::vector<double> m, var;
-      effect_predict(data.at(named), d.magnitude, s, m, var);
+      effect_predict(data.at(named), confirmation.named_magnitude(), s, m, var);
       M.mean.push_back(m), M.err.push_back(var);
     } else {
       M.mean.push_back(f.fresh[s].mean), M.err.push_back(f.fresh_err[s]), M.runs.push_back(pointers(fresh.at(v)));
     }
   }
-  d.residual = describe_residual(R, M, grid, ctx);
+  return describe_residual(R, M, grid, ctx);
 }
 
 }    // namespace granpen

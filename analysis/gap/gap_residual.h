@@ -10,12 +10,14 @@
 #ifndef GRANPEN_GAP_RESIDUAL_H
 #define GRANPEN_GAP_RESIDUAL_H
 
+#include "gap_confirm.h"
 #include "gap_data.h"
 #include "gap_fit.h"
 #include "gap_runs.h"
 #include "gap_verdict.h"
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -90,14 +92,14 @@ Residual describe_residual(const ResidualSide &real, const ResidualSide &model, 
 // Why a candidate was not the answer: the shortfalls the verdict recorded for it (ctx.records).
 std::string why_rejected(const EffectFit &fit, const ResidualContext &ctx);
 
-struct Diagnosis;
-struct Features;
-
-// The stage: d.residual for every verdict but `none`, against the runs the verdict leaves as
-// the model (after: the confirming runs, empty when none were simulated; then an explained
-// verdict's fitted prediction (data: the effects' model data), else the reference beds).
-void residual_stage(const Features &f, const RunsBySpeed &real, const RunsBySpeed &fresh, const RunsBySpeed &after,
-                    const std::map<std::string, EffectData> &data, const GapGrid &grid, Diagnosis &d);
+// The stage: for every verdict but `none` (the verdict that stands), the residual against the
+// runs it leaves as the model: the confirmation's runs when it simulated some; else an
+// explained verdict's fitted prediction (the fits' model data at the named magnitude); else
+// the reference beds (fresh). The regimes: where.before's z_transient_end and peak_end.
+std::optional<Residual> residual_stage(const Features &f, const RunsBySpeed &real, const RunsBySpeed &fresh,
+                                       const GapGrid &grid, double peak_end, const WhereResult &where,
+                                       const FittedCandidates &fitted, const VerdictDecision &verdict,
+                                       const Confirmation &confirmation);
 
 }    // namespace granpen
 

@@ -1,12 +1,22 @@
-// granpen gap: everything a diagnosis found, as the report writer needs it.
+// granpen gap, stage 12 (record): everything a diagnosis found, as the report writer needs
+// it (gap_report.h, stage 13, a pure function of it). assemble_diagnosis makes the record once,
+// from the stages' typed results, after the last of them: the one function here (with
+// record_verdict, gap_verdict.cpp, the verdict's one writer) that fills a Diagnosis. It
+// copies, but for G per regime before and after (gap_by_regime, from the curves before and
+// the confirmation's after) and the sentences the verdict's record and a second simulation's
+// record make (gap_verdict.h, gap_confirm.h).
 #ifndef GRANPEN_GAP_RESULT_H
 #define GRANPEN_GAP_RESULT_H
 
+#include "gap_adaptive.h"
+#include "gap_confirm.h"
 #include "gap_data.h"
 #include "gap_fit.h"
 #include "gap_limits.h"
 #include "gap_residual.h"
 #include "gap_verdict.h"
+#include "gap_where.h"
+#include "gap_which.h"
 
 #include <map>
 #include <optional>
@@ -14,38 +24,6 @@
 #include <vector>
 
 namespace granpen {
-
-struct Finding {
-  std::string regime, observable;
-  double v0 = 0, real = 0, sim = 0, real_se = 0, sim_se = 0, zscore = 0;
-  bool significant = false;
-};
-
-struct SpeedCurves {           // per speed, on the grid's bin centres
-  double v0 = 0;
-  int n_real = 0, n_base = 0, n_corr = 0;
-  std::vector<double> z, real, real_se, base, base_se, corr, corr_se, gap, band;
-  double G_before = 0, G_after = 0;      // G: the bin means (gap-metric v1)
-  double Gs_before = 0, Gs_after = 0;    // G_spec: the fluctuation spectrum's bands (v2)
-  double all_before() const { return gap_all(G_before, Gs_before); }
-  double all_after() const { return gap_all(G_after, Gs_after); }
-  double z_transient_end = 0;  // peak: z <= 0.35 D; transient: up to this; linear: beyond
-};
-
-// The overall gap's two parts (means over speeds) and the runs per speed behind them (fewest).
-struct GapParts {
-  double G = 0, G_spec = 0;
-  int runs_real = 0, runs_sim = 0;
-  double all() const { return gap_all(G, G_spec); }
-};
-
-// Verdicts of the null replicates (the reference beds split into a no-effect measurement and
-// its reference), each put through the verdict with thresholds calibrated on the others.
-struct FalseAlarms {
-  int replicates = 0, not_none = 0;
-  std::map<std::string, int> verdicts;
-  double rate() const { return replicates ? (double) not_none / replicates : 0.0; }
-};
 
 struct Diagnosis {
   std::string scenario, real_dir;
@@ -57,8 +35,8 @@ struct Diagnosis {
   // transform effect, effects.h: the baseline's traces filtered); "": the files as they are
   std::string corrected_effect;
   double corrected_magnitude = 0;
-  // ... and those transformed runs as the files of OUT/corrected/ (name, text; computed by
-  // the confirmation's record, so that the report only writes them)
+  // ... and those transformed runs as the files of OUT/corrected/ (name, text; made by the
+  // confirmation, so that the report only writes them)
   std::vector<std::pair<std::string, std::string>> corrected_traces;
   double chi2_0 = 0, p_value = 1;
   double chi2_after = 0, confirmed_fraction = 0;    // the fresh runs of the tested effect
@@ -83,7 +61,7 @@ struct Diagnosis {
   std::vector<Finding> where;
   std::vector<EffectFit> ranking;           // best first
   std::map<std::string, std::string> magnitude_note;    // effect -> e.g. "phi_0 shift -0.012"
-  Verdict verdict = Verdict::none;           // set by gap_verdict.cpp alone (record_verdict)
+  Verdict verdict = Verdict::none;           // written by gap_verdict.cpp alone (record_verdict)
   std::string top_effect;                    // "" = null; verdict tie: see tie
   std::string scale_effect;                  // scale_only: the scale candidate that explains the gap (no physical effect)
   std::optional<ScaleFinding> scale_only;    // scale_only: the scale and what can do it (gap_limits.h)
@@ -106,7 +84,30 @@ struct Diagnosis {
   std::optional<NextMeasurement> next;
   FalseAlarms false_alarms;
   std::optional<Residual> residual;          // what the gap left over (none for a `none`)
+  PlanRecord plan;                           // the plan's range, what this run spent, what it simulated and skipped and why
 };
+
+// What the record says of the inputs, and the notes of the stages before "where" (validate,
+// align, features: in that order).
+struct DiagnosisInputs {
+  std::string scenario, real_dir;
+  std::vector<std::string> real_files, notes;
+  GapGrid grid;
+  double peak_end = 0;                      // 0.35 D
+  int n_reference = 0;                      // reference beds per speed (fewest)
+  PlanRecord plan;                          // stages 2-3: the plan's range, what was simulated, skipped, spent
+};
+
+// The record, from the stages' results: where (6), the fits (7) and their verdict (8), the
+// confirmation (9), the verdict that stands (8 again), how blind (10), the residual (11).
+Diagnosis assemble_diagnosis(const DiagnosisInputs &in, const WhereResult &where, const FittedCandidates &fitted,
+                             const VerdictDecision &fits_verdict, const Confirmation &confirmation,
+                             const VerdictDecision &verdict, const Blindness &blind, std::optional<Residual> residual);
+
+// The decision into the record (the verdict, its effect or tie, the routes, the flags), with
+// the sentences that say why appended to its notes: the one writer of d.verdict, defined
+// beside decide_verdict (gap_verdict.cpp).
+void record_verdict(const VerdictDecision &v, const std::vector<std::string> &notes, Diagnosis &d);
 
 // The tie's candidates as a sentence names them: "a or b", "a, b or c".
 inline std::string tie_names(const std::vector<std::string> &tie)

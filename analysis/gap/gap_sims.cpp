@@ -127,7 +127,7 @@ double mean_phi0(const std::string &cache, const std::string &sweep)
   return n ? s / n : NAN;
 }
 
-void simulate_needed(const RunsNeeded &need, const Effect &e, const SimContext &sim, StageRuns &given)
+std::vector<SimRequest> needed_requests(const RunsNeeded &need, const Effect &e, const SimContext &sim)
 {
   std::vector<SimRequest> req;
   for (const RunSet &set : need.sets) {
@@ -136,6 +136,12 @@ void simulate_needed(const RunsNeeded &need, const Effect &e, const SimContext &
       if (std::none_of(req.begin(), req.begin() + (long) earlier, [&](const SimRequest &q) { return q.spec.name == r.spec.name; }))
         req.push_back(r);
   }
+  return req;
+}
+
+void simulate_needed(const RunsNeeded &need, const Effect &e, const SimContext &sim, StageRuns &given)
+{
+  const std::vector<SimRequest> req = needed_requests(need, e, sim);
   if (run_requests(req, sim.runner) != 0)
     throw InputError(need.what + " simulations failed: see the manifests under " + sim.runner.out_root + " (rerun to retry)");
   for (const RunSet &set : need.sets) {

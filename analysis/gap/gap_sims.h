@@ -98,6 +98,10 @@ struct RunsNeeded {
 // The runs given back, by tag, as loaded (not aligned; a transform effect's transformed).
 using StageRuns = std::map<std::string, RunsBySpeed>;
 
+// The sweeps a later stage's request runs (gap_plan.h, confirm_requests; a sweep that an
+// earlier set already asks for, as a push-only effect's shared fresh beds, once).
+std::vector<SimRequest> needed_requests(const RunsNeeded &need, const Effect &e, const SimContext &sim);
+
 // The simulate stage for a later stage's request: the sets' sweeps (gap_plan.h,
 // confirm_requests; a sweep that an earlier set already asks for, as a push-only effect's
 // shared fresh beds, once) run as one pool, then loaded into `given` by tag; throws

@@ -158,8 +158,6 @@ struct CandidateRecord {
   std::vector<Shortfall> shortfalls;
 };
 
-struct Diagnosis;
-
 // The decision and its record.
 struct VerdictDecision {
   Verdict verdict = Verdict::none;
@@ -185,9 +183,7 @@ std::vector<std::string> fits_verdict_notes(const VerdictDecision &v, const FitE
 std::vector<std::string> confirmation_verdict_notes(const VerdictDecision &v, const FitEvidence &fits,
                                                     const ConfirmationResult &c);
 
-// The decision into the diagnosis (the verdict, its effect or tie, the routes, the flags),
-// with the sentences that say why appended to its notes: the one writer of d.verdict.
-void record_verdict(const VerdictDecision &v, const std::vector<std::string> &notes, Diagnosis &d);
+// (The decision into the record, record_verdict, is declared with the record, gap_result.h.)
 
 }    // namespace granpen
 

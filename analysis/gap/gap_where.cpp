@@ -1,5 +1,7 @@
 // granpen gap, stage 6 (where): see gap_where.h.
 #include "gap_where.h"
+#include "gap_fit.h"
+#include "gap_thresholds.h"
 #include "scaling_laws.h"
 
 #include "text_util.h"
@@ -39,17 +41,18 @@ Observations observations(const std::vector<TraceRun> &runs, double v, const Sce
 
 }    // namespace
 
-void gap_curves(const Features &f, const GapGrid &grid, Diagnosis &d)
+GapCurves gap_curves(const Features &f, const GapGrid &grid)
 {
   const std::size_t ns = f.nspeeds(), nb = grid.nbins();
-  d.n_real_min = 1 << 30;
+  GapCurves out;
+  out.n_real_min = 1 << 30;
   GapParts parts;
   for (std::size_t s = 0; s < ns; ++s) {
     SpeedCurves c;
     c.v0 = f.speeds[s];
     c.n_real = (int) f.real[s].n();
     c.n_base = (int) f.fresh[s].n();
-    d.n_real_min = std::min(d.n_real_min, c.n_real);
+    out.n_real_min = std::min(out.n_real_min, c.n_real);
     const auto errB = model_err(f.fresh[s], f.cv2[s]);
     for (std::size_t b = 0; b < nb; ++b) {
       c.z.push_back(grid.centre(b));
@@ -63,16 +66,18 @@ void gap_curves(const Features &f, const GapGrid &grid, Diagnosis &d)
     c.G_before = gap_metric(f.real[s], f.fresh[s], 0, nb);
     c.Gs_before = s < f.spec_real.size() && s < f.spec_fresh.size() ? debiased_gap(f.spec_real[s], f.spec_fresh[s]) : 0.0;
     parts.G += c.G_before / ns, parts.G_spec += c.Gs_before / ns;
-    d.speeds.push_back(c);
+    out.speeds.push_back(c);
   }
-  d.n_sim = f.n_reference;    // the baseline the gap is measured against: the reference beds
-  parts.runs_real = d.n_real_min, parts.runs_sim = d.n_sim;
-  d.parts_before = parts;
-  d.gap_before = parts.all();
+  out.n_sim = f.n_reference;    // the baseline the gap is measured against: the reference beds
+  parts.runs_real = out.n_real_min, parts.runs_sim = out.n_sim;
+  out.parts = parts;
+  out.gap = parts.all();
+  return out;
 }
 
-void regimes(const Features &f, const RunsBySpeed &fresh, const Scenario &sc, const GapGrid &grid, Diagnosis &d)
+std::vector<double> transient_ends(const Features &f, const RunsBySpeed &fresh, const Scenario &sc, const GapGrid &grid)
 {
+  std::vector<double> ends;
   for (std::size_t s = 0; s < f.nspeeds(); ++s) {
     const double v = f.speeds[s];
     const auto &runs = fresh.at(v);
@@ -82,19 +87,21 @@ void regimes(const Features &f, const RunsBySpeed &fresh, const Scenario &sc, co
       if (o.crossed) ts.push_back(o.t_star);
     }
     const double zc = ts.size() == runs.size() && !ts.empty() ? depth_at_t_tilde(mean_of(ts), v, sc.g, sc.D) : grid.zmax;
-    d.speeds[s].z_transient_end = std::clamp(zc, peak_regime_end(sc.D), grid.zmax);
+    ends.push_back(std::clamp(zc, peak_regime_end(sc.D), grid.zmax));
   }
+  return ends;
 }
 
-void observable_findings(const Features &f, const RunsBySpeed &real, const SimulatedRuns &sims, const Scenario &sc,
-                         const GapGrid &grid, Diagnosis &d)
+ObservableFindings observable_findings(const Features &f, const RunsBySpeed &real, const SimulatedRuns &sims,
+                                       const Scenario &sc, const GapGrid &grid, const std::vector<double> &z_transient_end)
 {
   const std::map<std::string, std::string> regime = {{"peak_F", "peak"},     {"peak_z", "peak"},
                                                      {"excess", "transient"}, {"t_star", "transient"},
                                                      {"k_z", "linear"},       {"fluct", "linear"},
                                                      {"wavelength", "linear"}};
+  ObservableFindings out;
   for (std::size_t s = 0; s < f.nspeeds(); ++s) {
-    const double v = f.speeds[s], zt = d.speeds[s].z_transient_end;
+    const double v = f.speeds[s], zt = z_transient_end[s];
     const Observations oR = observations(real.at(v), v, sc, grid, zt), oB = observations(sims.fresh.at(v), v, sc, grid, zt);
     std::map<std::string, std::pair<double, int>> pooled;    // sum of squares, dof
     auto pool = [&](const Observations &o) {
@@ -116,8 +123,8 @@ void observable_findings(const Features &f, const RunsBySpeed &real, const Simul
       if (!(var1 > 0.0) || std::sqrt(var1) <= 1e-9 * level) {
         // every run gave the same value (t_star lands on the grid's bins): a z-score would
         // divide by 0, or by the rounding of the mean (1e-16 of it) when the values are equal
-        d.notes.push_back("where: " + name + " at v0 = " + printf_number("%g", v) +
-                          " has no scatter over the simulated runs (all equal): no z-score");
+        out.notes.push_back("where: " + name + " at v0 = " + printf_number("%g", v) +
+                            " has no scatter over the simulated runs (all equal): no z-score");
         continue;
       }
       const std::vector<double> &xr = oR.at(name), &xb = oB.at(name);
@@ -131,11 +138,12 @@ void observable_findings(const Features &f, const RunsBySpeed &real, const Simul
       w.sim_se = std::sqrt(var1 / xb.size());
       w.zscore = (w.real - w.sim) / std::sqrt(w.real_se * w.real_se + w.sim_se * w.sim_se + 1e-300);
       w.significant = std::abs(w.zscore) > 3.0;
-      d.where.push_back(w);
+      out.findings.push_back(w);
     }
   }
-  std::sort(d.where.begin(), d.where.end(),
+  std::sort(out.findings.begin(), out.findings.end(),
             [](const Finding &a, const Finding &b) { return std::abs(a.zscore) > std::abs(b.zscore); });
+  return out;
 }
 
 double omnibus_chi2(const Target &t, const Features &f)
@@ -154,12 +162,43 @@ double omnibus_chi2(const Target &t, const Features &f)
   return effect_chi2(t, null, 0.0, all);
 }
 
-void gap_significance(const Features &f, const GapGrid &grid, Diagnosis &d)
+Significance gap_significance(const Features &f, const GapGrid &grid)
 {
-  d.chi2_0 = omnibus_chi2(f.target, f);
-  d.nfeatures = f.nspeeds() * grid.nfeatures();
-  d.p_value = chi2_sf(d.chi2_0, (double) d.nfeatures);
-  d.significant = d.p_value < GapThresholds::significance_p;
+  Significance out;
+  out.chi2_0 = omnibus_chi2(f.target, f);
+  out.nfeatures = f.nspeeds() * grid.nfeatures();
+  out.p_value = chi2_sf(out.chi2_0, (double) out.nfeatures);
+  out.significant = out.p_value < GapThresholds::significance_p;
+  return out;
+}
+
+HeldOut heldout_speed(const std::vector<SpeedCurves> &speeds)
+{
+  std::size_t hs = 0;
+  for (std::size_t s = 0; s < speeds.size(); ++s)
+    if (speeds[s].all_before() > speeds[hs].all_before()) hs = s;
+  HeldOut h;
+  h.index = hs;
+  h.v0 = speeds.empty() ? 0.0 : speeds[hs].v0;
+  h.gap = speeds.empty() ? 0.0 : speeds[hs].all_before();
+  return h;
+}
+
+WhereResult where_stage(const Features &f, const RunsBySpeed &real, const SimulatedRuns &sims, const Scenario &sc,
+                        const GapGrid &grid)
+{
+  WhereResult w;
+  w.before = gap_curves(f, grid);
+  const std::vector<double> ends = transient_ends(f, sims.fresh, sc, grid);
+  for (std::size_t s = 0; s < w.before.speeds.size() && s < ends.size(); ++s) w.before.speeds[s].z_transient_end = ends[s];
+  ObservableFindings found = observable_findings(f, real, sims, sc, grid, ends);
+  w.findings = std::move(found.findings);
+  w.notes = std::move(found.notes);
+  w.omnibus = gap_significance(f, grid);
+  w.heldout = heldout_speed(w.before.speeds);
+  for (const auto &r : sims.fresh)
+    for (const auto &x : r.second) w.baseline_files.push_back(x.path);
+  return w;
 }
 
 RegimeGaps gap_by_regime(const GapGrid &grid, double peak_end, const std::vector<SpeedCurves> &speeds)

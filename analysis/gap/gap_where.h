@@ -1,37 +1,103 @@
 // granpen gap, stage 6 (where): the gap against the baseline on the reference beds (what
 // the fits see; four beds, as many as the confirmation has, so that G before and after
 // share a noise floor): the gap curve and G per speed, the regimes from the baseline's
-// crossover, the paper's observables per regime with z-scores, and the omnibus chi^2 over
-// every feature. docs/gap.md, "Where" 6-8. Each function fills its part of the Diagnosis.
+// crossover, the paper's observables per regime with z-scores, the omnibus chi^2 over every
+// feature, and the held-out speed. docs/gap.md, "Where" 6-8. where_stage returns it all as
+// a WhereResult; the functions it is made of each return their part.
 #ifndef GRANPEN_GAP_WHERE_H
 #define GRANPEN_GAP_WHERE_H
 
+#include "gap_data.h"
 #include "gap_features.h"
-#include "gap_result.h"
 #include "gap_runs.h"
 #include "gap_sims.h"
 #include "scenario.h"
 
+#include <cstddef>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
 namespace granpen {
 
-// d.speeds (the curves before, G and G_spec per speed; z_transient_end unset), d.parts_before,
-// d.gap_before (G_all), d.n_real_min, d.n_sim.
-void gap_curves(const Features &f, const GapGrid &grid, Diagnosis &d);
+struct Finding {
+  std::string regime, observable;
+  double v0 = 0, real = 0, sim = 0, real_se = 0, sim_se = 0, zscore = 0;
+  bool significant = false;
+};
 
-// d.speeds[s].z_transient_end: the reference runs' mean crossover depth t~* v0 sqrt(D/g)
-// (z_max when any run does not cross), kept within [0.35 D, z_max].
-void regimes(const Features &f, const RunsBySpeed &fresh, const Scenario &sc, const GapGrid &grid, Diagnosis &d);
+struct SpeedCurves {           // per speed, on the grid's bin centres
+  double v0 = 0;
+  int n_real = 0, n_base = 0, n_corr = 0;
+  std::vector<double> z, real, real_se, base, base_se, corr, corr_se, gap, band;
+  double G_before = 0, G_after = 0;      // G: the bin means (gap-metric v1)
+  double Gs_before = 0, Gs_after = 0;    // G_spec: the fluctuation spectrum's bands (v2)
+  double all_before() const { return gap_all(G_before, Gs_before); }
+  double all_after() const { return gap_all(G_after, Gs_after); }
+  double z_transient_end = 0;  // peak: z <= 0.35 D; transient: up to this; linear: beyond
+};
 
-// d.where: each observable's measured and simulated means with standard errors from the
-// run-to-run variance pooled over every simulated ensemble, |z| first.
-void observable_findings(const Features &f, const RunsBySpeed &real, const SimulatedRuns &sims, const Scenario &sc,
-                         const GapGrid &grid, Diagnosis &d);
+// The overall gap's two parts (means over speeds) and the runs per speed behind them (fewest).
+struct GapParts {
+  double G = 0, G_spec = 0;
+  int runs_real = 0, runs_sim = 0;
+  double all() const { return gap_all(G, G_spec); }
+};
+
+// The curves before (the "after" unset: the confirmation's), G and G_spec per speed and their
+// means, the runs behind them (measured: the fewest per speed; simulated: the reference beds).
+struct GapCurves {
+  std::vector<SpeedCurves> speeds;       // z_transient_end unset (transient_ends)
+  GapParts parts;
+  double gap = 0;                        // G_all, mean over speeds
+  int n_real_min = 0, n_sim = 0;
+};
+GapCurves gap_curves(const Features &f, const GapGrid &grid);
+
+// Per speed: the reference runs' mean crossover depth t~* v0 sqrt(D/g) (z_max when any run
+// does not cross), kept within [0.35 D, z_max]: where the transient regime ends.
+std::vector<double> transient_ends(const Features &f, const RunsBySpeed &fresh, const Scenario &sc, const GapGrid &grid);
+
+// Each observable's measured and simulated means with standard errors from the run-to-run
+// variance pooled over every simulated ensemble, |z| first; a note for each observable
+// without scatter (no z-score). z_transient_end: per speed (transient_ends).
+struct ObservableFindings {
+  std::vector<Finding> findings;
+  std::vector<std::string> notes;
+};
+ObservableFindings observable_findings(const Features &f, const RunsBySpeed &real, const SimulatedRuns &sims,
+                                       const Scenario &sc, const GapGrid &grid, const std::vector<double> &z_transient_end);
 
 // chi^2 of a measurement's means against the reference beds' over every feature.
 double omnibus_chi2(const Target &t, const Features &f);
 
-// d.chi2_0, d.nfeatures, d.p_value, d.significant (p < 0.001).
-void gap_significance(const Features &f, const GapGrid &grid, Diagnosis &d);
+// The omnibus test: chi^2 over every feature, its p-value, significant below significance_p.
+struct Significance {
+  double chi2_0 = 0, p_value = 1;
+  std::size_t nfeatures = 0;
+  bool significant = false;
+};
+Significance gap_significance(const Features &f, const GapGrid &grid);
+
+// The held-out speed the confirmation judges a fit by: the one with the largest G_all.
+struct HeldOut {
+  std::size_t index = 0;
+  double v0 = 0, gap = 0;                // gap: its G_all before
+};
+HeldOut heldout_speed(const std::vector<SpeedCurves> &speeds);
+
+// The stage's result.
+struct WhereResult {
+  GapCurves before;                      // with each speed's z_transient_end
+  std::vector<Finding> findings;         // |z| first
+  std::vector<std::string> notes;        // observables without scatter
+  Significance omnibus;
+  HeldOut heldout;
+  std::vector<std::string> baseline_files;    // the reference runs (OUT/baseline), by speed
+};
+WhereResult where_stage(const Features &f, const RunsBySpeed &real, const SimulatedRuns &sims, const Scenario &sc,
+                        const GapGrid &grid);
 
 // G per regime before and after (peak: z <= peak_end; transient: up to each speed's
 // z_transient_end; linear: beyond): the mean over speeds of G restricted to the regime's

@@ -126,25 +126,6 @@ FalseAlarms null_false_alarms(const std::vector<const Effect *> &effects, const 
   return fa;
 }
 
-void how_blind(const std::vector<const Effect *> &effects, const std::map<std::string, EffectData> &data,
-               const Features &f, Diagnosis &d)
-{
-  std::map<std::string, const Effect *> by_name;
-  for (const Effect *e : effects) {
-    by_name[e->name] = e;
-    const auto it = std::find_if(d.ranking.begin(), d.ranking.end(), [&](const EffectFit &x) { return x.name == e->name; });
-    if (it != d.ranking.end()) d.limits.push_back(detection_limit(*e, data.at(e->name), *it, f));
-    if (data.count(e->name))
-      for (const KnotBend &b : knot_bends(data.at(e->name), f.target)) d.knot_bends.push_back(b);
-  }
-  d.look_alikes = look_alikes(d.ranking, data, by_name, f);
-  d.next = next_measurement(d.ranking, data, f, d.verdict);
-  const auto scale = std::find_if(d.ranking.begin(), d.ranking.end(), [&](const EffectFit &x) { return x.name == d.scale_effect; });
-  // the scale as confirmed (record_confirmation: refined when it was)
-  if (d.verdict == Verdict::scale_only && scale != d.ranking.end())
-    d.scale_only = scale_finding(*scale, d.magnitude, d.ranking, data, by_name, f);
-}
-
 std::string packing_note(const EffectData &ed, double a, const std::vector<double> &phi, double phi_baseline)
 {
   std::size_t i = 0;
@@ -156,7 +137,7 @@ std::string packing_note(const EffectData &ed, double a, const std::vector<doubl
 }
 
 FittedCandidates fit_candidates(const std::vector<const Effect *> &effects, const Features &f,
-                                const std::function<double(const std::string &)> &phi0, Diagnosis &d)
+                                const std::function<double(const std::string &)> &phi0, const Significance &omnibus)
 {
   FittedCandidates out;
   std::vector<EffectFit> fits;
@@ -167,23 +148,18 @@ FittedCandidates fit_candidates(const std::vector<const Effect *> &effects, cons
       // packing: the phi_0 the fitted pour friction makes, interpolated between the beds'
       std::vector<double> phi;
       for (const auto &[a, name] : knot_sweeps(*e)) phi.push_back(phi0(name.empty() ? "baseline" : name));
-      d.magnitude_note[e->name] = packing_note(ed, fits.back().magnitude, phi, phi0("baseline"));
+      out.magnitude_note[e->name] = packing_note(ed, fits.back().magnitude, phi, phi0("baseline"));
     }
     out.data[e->name] = std::move(ed);
   }
-  d.n_null = (int) f.nulls.size();
   // the top two told apart by the data, not only by the evidence margin (gap_verdict.h)
   const NoiseFactors now(f.target.mean.size(), 1.0);
   const auto &data = out.data;
-  out.evidence = fit_evidence(d.significant, std::move(fits), [&](const EffectFit &a, const EffectFit &b) {
+  out.evidence = fit_evidence(omnibus.significant, std::move(fits), [&](const EffectFit &a, const EffectFit &b) {
     return prediction_separation2(data.at(a.name), a.magnitude, data.at(b.name), b.magnitude, f.target, now);
   });
-  out.evidence.chi2_0 = d.chi2_0, out.evidence.p_value = d.p_value, out.evidence.nfeatures = d.nfeatures;
-  out.evidence.n_null = d.n_null;
-  d.ranking = out.evidence.ranking;
-  const VerdictDecision v = decide_verdict(out.evidence);
-  record_verdict(v, fits_verdict_notes(v, out.evidence), d);
-  d.false_alarms = null_false_alarms(effects, out.data, d.ranking, f);
+  out.evidence.chi2_0 = omnibus.chi2_0, out.evidence.p_value = omnibus.p_value, out.evidence.nfeatures = omnibus.nfeatures;
+  out.evidence.n_null = (int) f.nulls.size();
   return out;
 }
 

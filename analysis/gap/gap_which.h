@@ -1,15 +1,16 @@
 // granpen gap, stage 7 (which): every candidate effect's model from its knots' ensembles
 // (referenced to the reference beds), fitted to the measured gap, scored by leaving one
-// speed out, and calibrated on the null replicates (its likelihood ratio's threshold);
-// then the verdict (gap_verdict.h). docs/gap.md, "Which".
+// speed out, and calibrated on the null replicates (its likelihood ratio's threshold): the
+// fits' evidence, which the verdict (stage 8, gap_verdict.h) reads. docs/gap.md, "Which".
 #ifndef GRANPEN_GAP_WHICH_H
 #define GRANPEN_GAP_WHICH_H
 
 #include "effects.h"
 #include "gap_features.h"
 #include "gap_fit.h"
-#include "gap_result.h"
+#include "gap_limits.h"
 #include "gap_verdict.h"
+#include "gap_where.h"
 
 #include <functional>
 #include <map>
@@ -35,28 +36,24 @@ EffectFit fit_candidate(const EffectData &ed, const Features &f);
 FalseAlarms null_false_alarms(const std::vector<const Effect *> &effects, const std::map<std::string, EffectData> &data,
                               const std::vector<EffectFit> &fits, const Features &f);
 
-// How blind the diagnosis was (gap_limits.h): d.limits (every effect, in library order),
-// d.look_alikes (every pair of the ranking) and d.next, from the model data and the fits.
-void how_blind(const std::vector<const Effect *> &effects, const std::map<std::string, EffectData> &data,
-               const Features &f, Diagnosis &d);
-
 // Packing's note for the report: the phi_0 its fitted pour friction (0.3 + magnitude)
 // makes, interpolated between the knots' beds (phi0: each knot's mean, knot 0 first),
 // against the baseline's.
 std::string packing_note(const EffectData &ed, double magnitude, const std::vector<double> &phi0, double phi0_baseline);
 
-// The stage's result: the effects' model data by name (for the confirmation) and the
-// fits' evidence the verdict reads (gap_verdict.h).
+// The stage's result: the effects' model data by name (for the confirmation and the
+// limits), the fits' evidence the verdict reads (gap_verdict.h), and per effect a note on its
+// fitted magnitude for the report (packing: the phi_0 it makes).
 struct FittedCandidates {
   std::map<std::string, EffectData> data;
   FitEvidence evidence;
+  std::map<std::string, std::string> magnitude_note;    // effect -> e.g. "pour friction 0.120: phi_0 ..."
 };
 
-// Fits every effect (d.ranking, d.magnitude_note, d.n_null) and takes the fits' verdict
-// (decide_verdict, recorded into d). phi0(sweep): the mean phi_0 of a sweep's beds (for
-// packing's note).
+// Fits every effect against the measured gap; omnibus: the where stage's test (the evidence
+// carries it). phi0(sweep): the mean phi_0 of a sweep's beds (for packing's note).
 FittedCandidates fit_candidates(const std::vector<const Effect *> &effects, const Features &f,
-                                const std::function<double(const std::string &)> &phi0, Diagnosis &d);
+                                const std::function<double(const std::string &)> &phi0, const Significance &omnibus);
 
 }    // namespace granpen
 

@@ -104,28 +104,36 @@ std::vector<TraceGroup> group_traces(const std::vector<Trace> &traces, double v0
   return out;
 }
 
-void average_groups(std::vector<TraceGroup> &groups, const EnsembleParams &p, std::vector<std::string> &problems)
+std::vector<EnsembleRuns> ensemble_runs(const std::vector<TraceGroup> &groups)
 {
+  std::vector<EnsembleRuns> out;
+  for (const auto &g : groups) {
+    EnsembleRuns e;
+    e.name = g.label();
+    for (const auto &t : g.traces) e.z.push_back(t.z), e.F.push_back(t.F);
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+
+void keep_averaged(std::vector<TraceGroup> &groups, const EnsembleAveraging &a, const EnsembleParams &p,
+                   std::vector<std::string> &problems)
+{
+  // a given bin too fine for the runs' depths: the option named
+  if (a.bin_too_fine && a.too_fine < groups.size())
+    throw InputError("--ensemble-bin " + json_number("%g", p.bin) + " cm makes " +
+                     json_number("%.3g", (a.z_hi - a.z_lo) / p.bin) + " bins over z = " + json_number("%.4g", a.z_lo) +
+                     ".." + json_number("%.4g", a.z_hi) + " cm of ensemble " + groups[a.too_fine].label() +
+                     ", more than " + std::to_string(kMaxEnsembleBins) + ": give a wider bin");
   std::vector<TraceGroup> kept;
-  for (auto &g : groups) {
-    // a given bin too fine for the runs' depths: the option named, before any memory is taken
-    double lo = INFINITY, hi = -INFINITY;
-    for (const auto &t : g.traces)
-      for (double z : t.z) lo = std::min(lo, z), hi = std::max(hi, z);
-    if (p.bin > 0.0 && (hi - lo) / p.bin > (double) kMaxEnsembleBins)
-      throw InputError("--ensemble-bin " + json_number("%g", p.bin) + " cm makes " + json_number("%.3g", (hi - lo) / p.bin) +
-                       " bins over z = " + json_number("%.4g", lo) + ".." + json_number("%.4g", hi) + " cm of ensemble " +
-                       g.label() + ", more than " + std::to_string(kMaxEnsembleBins) + ": give a wider bin");
-    std::vector<std::vector<double>> z, F;
-    for (const auto &t : g.traces) z.push_back(t.z), F.push_back(t.F);
-    try {
-      g.mean = ensemble_mean(z, F, p);
+  for (std::size_t i = 0; i < groups.size() && i < a.ensembles.size(); ++i) {
+    TraceGroup &g = groups[i];
+    if (a.ensembles[i].ok) {
+      g.mean = a.ensembles[i].mean;
       kept.push_back(std::move(g));
-    } catch (std::invalid_argument &e) {
-      std::string why = e.what();
-      why = why.substr(why.find(": ") == std::string::npos ? 0 : why.find(": ") + 2);
-      problems.push_back("ensemble " + g.label() + " (" + std::to_string(g.traces.size()) + " runs): " + why +
-                         "; left out");
+    } else {
+      problems.push_back("ensemble " + g.label() + " (" + std::to_string(g.traces.size()) + " runs): " +
+                         a.ensembles[i].why + "; left out");
     }
   }
   groups = std::move(kept);

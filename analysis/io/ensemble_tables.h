@@ -1,11 +1,12 @@
 // granpen analysis: ensembles of trace files for granpen fit, collapse and plot --ensemble:
-// traces grouped by case (same v0, g and D), each group's ensemble mean
-// (core/ensemble_average.h), and the files they write: the mean curves as CSV, the
+// traces grouped by case (same v0, g and D), each group's ensemble mean as
+// core/ensemble_averaging.h gives it, and the files they write: the mean curves as CSV, the
 // alignment and the estimates (core/ensemble_fit.h) as JSON.
 #ifndef GRANPEN_ENSEMBLE_TABLES_H
 #define GRANPEN_ENSEMBLE_TABLES_H
 
 #include "ensemble_average.h"
+#include "ensemble_averaging.h"
 #include "ensemble_fit.h"
 #include "json_writer.h"
 #include "trace_reader.h"
@@ -20,7 +21,7 @@ struct TraceGroup {
   double v0_min = 0.0, v0_max = 0.0;    // the runs' v0 range
   double v0_tolerance = 0.0;            // the grouping's (0: equal v0)
   std::vector<Trace> traces;            // cgs, in the order given
-  EnsembleMean mean;                    // set by average_groups
+  EnsembleMean mean;                    // set by keep_averaged
   std::string label() const;            // "v0 = 100 cm/s, g = 981 cm/s^2, D = 2 cm"
 };
 
@@ -36,11 +37,14 @@ std::vector<TraceGroup> group_traces(const std::vector<Trace> &traces, double v0
 // Reads the files (cgs); an unreadable file is a line in problems naming it.
 std::vector<Trace> read_traces(const std::vector<std::string> &files, std::vector<std::string> &problems);
 
-// Sets each group's ensemble mean; a group that cannot be averaged (runs that share no
-// depth) is a line in problems and removed.
-// Throws InputError when p.bin (--ensemble-bin) makes more than kMaxEnsembleBins bins over
-// a group's depths.
-void average_groups(std::vector<TraceGroup> &groups, const EnsembleParams &p, std::vector<std::string> &problems);
+// The groups' runs (cgs), each named by its label: the input of average_ensembles.
+std::vector<EnsembleRuns> ensemble_runs(const std::vector<TraceGroup> &groups);
+// Each group's mean from a (the averaging of ensemble_runs(groups) with p); a group that
+// could not be averaged (runs that share no depth) is a line in problems and removed.
+// Throws InputError naming --ensemble-bin when a refused p.bin (more than kMaxEnsembleBins
+// bins over a group's depths).
+void keep_averaged(std::vector<TraceGroup> &groups, const EnsembleAveraging &a, const EnsembleParams &p,
+                   std::vector<std::string> &problems);
 
 // One line per group saying what the averaging did: runs, bins, range, the largest onset
 // shift, and its notes.

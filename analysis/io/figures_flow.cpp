@@ -1,13 +1,14 @@
 // granpen analysis: the figures of granpen plot flow DIR and granpen plot momentum DIR,
 // from the tables written by granpen flow --out DIR and granpen momentum (figures.h). The fits drawn are the
-// library's (core/flow_fields.h fit_exponential, core/momentum_classes.h compare_drag,
-// core/linear_fit.h), as the tables' writers use them.
+// library's, as the tables' writers use them: the flow table study's (core/flow_table_study.h,
+// run by the CLI on the tables read here) and core/momentum_classes.h compare_drag (also the
+// CLI's: the drag figure draws the comparison it is given).
 #include "figures.h"
 
 #include "csv_table.h"
 #include "flow_fields.h"
+#include "json_path.h"
 #include "json_text.h"
-#include "linear_fit.h"
 #include "momentum_classes.h"
 #include "errors.h"
 
@@ -94,32 +95,27 @@ int find_index(const std::vector<double> &grid, double x)
   return it == grid.end() ? (int) grid.size() - 1 : (int) (it - grid.begin());
 }
 
-// a number after "key": in DIR/flow.json's "parameters" (granpen flow writes D, the
-// annulus radii, ...), NaN when absent; index picks an element of an array value
+// a number of DIR/flow.json's "parameters" (granpen flow writes D, the annulus radii, ...),
+// NaN when the file, the key or the number is absent; index picks an element of an array
 double flow_parameter(const std::string &dir, const std::string &key, int index = -1)
 {
-  std::ifstream in(fs::path(dir) / "flow.json", std::ios::binary);
-  if (!in) return NAN;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  const std::string j = ss.str();
-  const auto p = j.find("\"parameters\"");
-  if (p == std::string::npos) return NAN;
-  auto k = j.find("\"" + key + "\": ", p);
-  if (k == std::string::npos) return NAN;
-  k += key.size() + 4;
-  if (index >= 0) {
-    if (j[k] != '[') return NAN;
-    ++k;
-    for (int i = 0; i < index; ++i) {
-      k = j.find(',', k);
-      if (k == std::string::npos) return NAN;
-      ++k;
+  const fs::path file = fs::path(dir) / "flow.json";
+  if (!fs::is_regular_file(file)) return NAN;
+  try {
+    const Json doc = read_json_file(file.string());
+    const auto p = doc.find("parameters");
+    if (p == doc.end() || !p->is_object()) return NAN;
+    const auto k = p->find(key);
+    if (k == p->end()) return NAN;
+    const Json *v = &*k;
+    if (index >= 0) {
+      if (!v->is_array() || (std::size_t) index >= v->size()) return NAN;
+      v = &(*v)[(std::size_t) index];
     }
+    return v->is_number() ? v->get<double>() : NAN;
+  } catch (const InputError &) {
+    return NAN;    // not JSON: as absent (the figure then says where D came from)
   }
-  char *end = nullptr;
-  const double v = std::strtod(j.c_str() + k, &end);
-  return end != j.c_str() + k ? v : NAN;
 }
 
 // the rod diameter: --D, else granpen flow's flow.json, else a `# D = ` header key,
@@ -255,16 +251,21 @@ void flow_heatmaps(const std::string &dir, Run &run)
 
 // ---------------------------------------------------------------- profile below the face
 
-void flow_profile(const std::string &dir, Run &run)
+// what reading a table noted or found wrong, told now (as it was read, in the figures' order)
+void tell(const FlowFitTable &t, Run &run)
 {
-  CsvTable t;
-  std::vector<double> z, vz, se, phi;
-  const auto columns = [&] { z = t.numbers("z", false), vz = t.numbers("vz"), se = t.numbers("vz_se"), phi = t.numbers("phi"); };
-  if (!read_table(dir, "flow_profile_below.csv", {"z", "vz", "vz_se", "phi"}, run, t, columns)) return;
-  const double D = rod_diameter(dir, t, run);
-  for (double &s : se)
-    if (!std::isfinite(s)) s = 0.0;
-  const ExpFit fit = fit_exponential(z, vz, se);
+  run.notes.insert(run.notes.end(), t.notes.begin(), t.notes.end());
+  run.problems.insert(run.problems.end(), t.problems.begin(), t.problems.end());
+}
+
+void flow_profile(const FlowFitTables &tables, const ExpFit &fit, Run &run)
+{
+  tell(tables.profile, run);
+  if (!tables.profile.read) return;
+  const std::string &path = tables.profile.path;
+  const std::vector<double> &z = tables.columns.z, &vz = tables.columns.vz, &se = tables.columns.vz_se;
+  const std::vector<double> &phi = tables.profile_phi;
+  const double D = tables.profile.D;
   SeriesPanel a, b;
   a.title = "(a) |v_z| below the face";
   a.xlabel = b.xlabel = "z − z_{tip} (cm; below the rod face)";
@@ -304,12 +305,12 @@ void flow_profile(const std::string &dir, Run &run)
     profile = {{"fit_ok", true}, {"A", num("%.6g", fit.A)}, {"lambda", num("%.6g", fit.lambda)},
                {"lambda_se", num("%.6g", fit.lambda_se)}, {"lambda_over_D", num("%.6g", fit.lambda / D)}, {"n", fit.n}};
   } else {
-    run.notes.push_back(t.path + ": no exponential fit: " + fit.note);
+    run.notes.push_back(path + ": no exponential fit: " + fit.note);
     title += " (no exponential fit: " + fit.note + ")";
   }
   run.make_series("flow_profile",
                   title,
-                  "granpen plot flow: v_z and phi below the rod face (" + t.path +
+                  "granpen plot flow: v_z and phi below the rod face (" + path +
                   "), |v_z| on a log axis with the weighted\nexponential fit of the library (fit_exponential, as granpen flow).",
                   1300, 560, {a, b});
   run.numbers["profile"] = profile;
@@ -317,12 +318,10 @@ void flow_profile(const std::string &dir, Run &run)
 
 // ---------------------------------------------------------------- phi against I at the edge
 
-void flow_phi_I(const std::string &dir, Run &run)
+void flow_phi_I(const FlowFitTables &tables, const EdgeLine &e, Run &run)
 {
-  CsvTable t;
-  std::vector<double> I, phi;
-  const auto columns = [&] { I = t.numbers("I"), phi = t.numbers("phi"); };
-  if (!read_table(dir, "flow_edge_phi_I.csv", {"I", "phi"}, run, t, columns)) return;
+  tell(tables.edge, run);
+  if (!tables.edge.read) return;
   SeriesPanel p;
   p.xlabel = "inertial number I";
   p.ylabel = "packing fraction φ at the rod edge (r = R)";
@@ -330,10 +329,8 @@ void flow_phi_I(const std::string &dir, Run &run)
   p.xmin = 0;
   PlotSeries s;
   s.style = "points", s.title = "this run", s.colour = plot_colour(0);
-  std::vector<double> x, y;
-  for (std::size_t i = 0; i < I.size(); ++i)
-    if (std::isfinite(I[i]) && std::isfinite(phi[i])) x.push_back(I[i]), y.push_back(phi[i]);
-  s.x = x, s.y = y;
+  const std::vector<double> &x = e.I;
+  s.x = e.I, s.y = e.phi;
   p.series.push_back(s);
   PlotGuide paper;
   paper.expression = "0.57 - 0.35*x";
@@ -342,9 +339,8 @@ void flow_phi_I(const std::string &dir, Run &run)
   p.guides.push_back(paper);
   Json edge = {{"n", x.size()}};
   std::string title = "Packing fraction against inertial number at the rod edge";
-  const auto xd = distinct(x);
-  if (x.size() >= 3 && xd.size() >= 2) {
-    const LinearFit lf = linear_fit(x, y);
+  if (e.ok) {
+    const LinearFit &lf = e.fit;
     PlotGuide g;
     g.expression = gp_number(lf.a) + " + " + gp_number(lf.b) + "*x";
     g.title = "fit: φ = " + fmt("%.3f", lf.a) + (lf.b < 0 ? " − " : " + ") + fmt("%.3f", std::fabs(lf.b)) + " I";
@@ -359,7 +355,7 @@ void flow_phi_I(const std::string &dir, Run &run)
   }
   run.make_series("flow_phi_I",
                   title,
-                  "granpen plot flow: phi against I at the rod's bottom edge (" + t.path +
+                  "granpen plot flow: phi against I at the rod's bottom edge (" + tables.edge.path +
                   "), the paper's line phi = 0.57 - 0.35 I and a least-squares line.",
                   1100, 620, {p});
   run.numbers["edge"] = edge;
@@ -554,13 +550,13 @@ void momentum_classes_figure(const std::string &dir, Run &run)
                   1500, 600, {a, b}, 0.74);
 }
 
-void momentum_drag_figure(const std::string &dir, Run &run)
+// F against mu g M from the table read (t) and the comparison the CLI made of it (cmp)
+void momentum_drag_figure(const MomentumDragTable &t, const DragComparison &cmp, Run &run)
 {
-  CsvTable t;
-  std::vector<double> tt, F, M;
-  const auto columns = [&] { tt = t.numbers("t_tilde"), F = t.numbers("F"), M = t.numbers("mu_g_M"); };
-  if (!read_table(dir, "momentum_drag.csv", {"t_tilde", "F", "mu_g_M"}, run, t, columns)) return;
-  const DragComparison cmp = compare_drag(M, F);
+  run.notes.insert(run.notes.end(), t.notes.begin(), t.notes.end());
+  run.problems.insert(run.problems.end(), t.problems.begin(), t.problems.end());
+  if (!t.read) return;
+  const std::vector<double> &tt = t.t_tilde, &F = t.F, &M = t.mu_g_M;
   // one unit for both axes (the 1:1 line is then the diagonal of equal numbers); each
   // axis over its own data, so that points far from 1:1 stay readable
   double top = 0, ftop = 0, mtop = 0;
@@ -626,13 +622,41 @@ bool folder_ok(const std::vector<std::string> &inputs, Run &run)
 
 }    // namespace
 
-void plot_flow(const std::vector<std::string> &inputs, Run &run)
+FlowFitTables read_flow_fit_tables(const std::string &dir, const Options &o)
+{
+  FlowFitTables out;
+  FlowTableColumns &c = out.columns;
+  Run said;    // what reading each table notes or finds wrong, kept with it
+  said.opt = o;
+  CsvTable t;
+  const auto profile = [&] {
+    c.z = t.numbers("z", false), c.vz = t.numbers("vz"), c.vz_se = t.numbers("vz_se"), out.profile_phi = t.numbers("phi");
+  };
+  if (read_table(dir, "flow_profile_below.csv", {"z", "vz", "vz_se", "phi"}, said, t, profile)) {
+    out.profile.read = c.has_profile = true;
+    out.profile.path = t.path;
+    out.profile.D = rod_diameter(dir, t, said);
+    for (double &s : c.vz_se)    // an unknown standard error: drawn and weighted as 0
+      if (!std::isfinite(s)) s = 0.0;
+  }
+  out.profile.notes = said.notes, out.profile.problems = said.problems;
+  said.notes.clear(), said.problems.clear();
+  const auto edge = [&] { c.I = t.numbers("I"), c.phi = t.numbers("phi"); };
+  if (read_table(dir, "flow_edge_phi_I.csv", {"I", "phi"}, said, t, edge)) {
+    out.edge.read = c.has_edge = true;
+    out.edge.path = t.path;
+  }
+  out.edge.notes = said.notes, out.edge.problems = said.problems;
+  return out;
+}
+
+void plot_flow(const std::vector<std::string> &inputs, const FlowFitTables &t, const FlowTableStudy &st, Run &run)
 {
   if (!folder_ok(inputs, run)) return;
   const std::string &dir = inputs[0];
   flow_heatmaps(dir, run);
-  flow_profile(dir, run);
-  flow_phi_I(dir, run);
+  flow_profile(t, st.profile, run);
+  flow_phi_I(t, st.edge, run);
   flow_strip(dir, run);
   flow_annulus(dir, run);
   flow_surface(dir, run);
@@ -641,12 +665,27 @@ void plot_flow(const std::vector<std::string> &inputs, Run &run)
                                  "flow_annulus.csv, flow_surface.csv is there (granpen flow --out writes them)");
 }
 
-void plot_momentum(const std::vector<std::string> &inputs, Run &run)
+MomentumDragTable read_momentum_drag_table(const std::string &dir, const Options &o)
+{
+  MomentumDragTable out;
+  Run said;    // what reading the table notes or finds wrong, told when it is drawn
+  said.opt = o;
+  CsvTable t;
+  const auto columns = [&] { out.t_tilde = t.numbers("t_tilde"), out.F = t.numbers("F"), out.mu_g_M = t.numbers("mu_g_M"); };
+  if (read_table(dir, "momentum_drag.csv", {"t_tilde", "F", "mu_g_M"}, said, t, columns)) {
+    out.read = true;
+    out.path = t.path;
+  }
+  out.notes = said.notes, out.problems = said.problems;
+  return out;
+}
+
+void plot_momentum(const std::vector<std::string> &inputs, const MomentumDragTable &t, const DragComparison &cmp, Run &run)
 {
   if (!folder_ok(inputs, run)) return;
   const std::string &dir = inputs[0];
   momentum_classes_figure(dir, run);
-  momentum_drag_figure(dir, run);
+  momentum_drag_figure(t, cmp, run);
   if (run.figures.empty() && run.problems.empty())
     run.problems.push_back(dir + ": neither momentum_classes.csv nor momentum_drag.csv is there");
 }

@@ -1,16 +1,14 @@
 // granpen analysis: the paper's figure types of force traces (force, ratio, peak, kz) as
 // gnuplot scripts with their data beside them (io/figures.h, io/plot_writer.h). ratio and
-// peak draw the collapse study they are given (core/collapse_study.h, as granpen collapse);
-// force and kz still fit (core/trace_fit.h, core/ensemble_fit.h), as granpen fit.
+// peak draw the collapse study they are given (core/collapse_study.h, as granpen collapse),
+// force and kz the fit study (core/fit_study.h, as granpen fit); the CLI runs the studies.
 #include "figures.h"
 
 #include "collapse_tables.h"
 #include "ensemble_tables.h"
 #include "json_text.h"
-#include "linear_fit.h"
 #include "scaling_laws.h"
 #include "trace_files.h"
-#include "trace_fit.h"
 #include "trace_reader.h"
 
 #include <algorithm>
@@ -97,6 +95,41 @@ std::vector<TraceIn> load_traces(const std::vector<std::string> &inputs, Run &ru
     }
   }
   if (out.empty() && run.problems.empty()) run.problems.push_back("no trace given");
+  return out;
+}
+
+TraceFitParams fit_params_of(const Options &o, FitKind w, double v0, double D, double g)
+{
+  TraceFitParams fp;
+  if (w == FitKind::kz) {
+    fp.zlo = o.kz_zmin, fp.zhi = o.kz_zmax;
+    fp.shorten_window = true;
+  }
+  fp.v0 = v0, fp.D = D, fp.g = g;
+  return fp;
+}
+
+std::vector<FitStudyTrace> fit_study_traces(const std::vector<TraceIn> &traces, const Options &o, FitKind w)
+{
+  std::vector<FitStudyTrace> out;
+  for (const auto &t : traces) {
+    FitStudyTrace f;
+    f.name = t.file, f.z = t.tr.z, f.F = t.tr.F;
+    f.params = fit_params_of(o, w, t.tr.v0, t.tr.D, t.tr.g);
+    out.push_back(std::move(f));
+  }
+  return out;
+}
+
+std::vector<FitStudyEnsemble> fit_study_ensembles(const std::vector<TraceGroup> &groups, const Options &o, FitKind w)
+{
+  std::vector<FitStudyEnsemble> out;
+  for (const auto &g : groups) {
+    FitStudyEnsemble e;
+    e.name = g.label(), e.mean = g.mean;
+    e.params = fit_params_of(o, w, g.v0, g.D, g.g);
+    out.push_back(std::move(e));
+  }
   return out;
 }
 
@@ -302,14 +335,10 @@ PlotSeries inset_part(const PlotSeries &s, double zpeak)
 }
 
 // --ensemble: the groups of (v0, g, D), averaged; the mean +- se per group and its peak
-// (fit_ensemble's, with its standard error)
-void force_ensembles(const std::vector<TraceIn> &traces, double factor, double zpeak, Run &run, SeriesPanel &main,
-                     SeriesPanel &inset, Json &json_runs)
+// (the study's ensemble fit, with its standard error)
+void force_ensembles(const std::vector<TraceGroup> &groups, const FitStudy &st, double factor, double zpeak, Run &run,
+                     SeriesPanel &main, SeriesPanel &inset, Json &json_runs)
 {
-  std::vector<Trace> tr;
-  for (const auto &t : traces) tr.push_back(t.tr);
-  auto groups = group_traces(tr, run.opt.ens.v0_tolerance);
-  average_groups(groups, run.opt.ens, run.problems);
   bool several_cases = false;
   for (const auto &g : groups) several_cases |= g.g != groups.front().g || g.D != groups.front().D;
   for (std::size_t gi = 0; gi < groups.size(); ++gi) {
@@ -324,9 +353,7 @@ void force_ensembles(const std::vector<TraceIn> &traces, double factor, double z
           s.band_hi.push_back((m.mean[k] + m.se[k]) / factor);
     main.series.push_back(s);
     inset.series.push_back(inset_part(s, zpeak));
-    TraceFitParams fp;
-    fp.D = g.D, fp.g = g.g, fp.v0 = g.v0;
-    const EnsembleFit e = fit_ensemble(m, fp, run.opt.boot);
+    const EnsembleFit &e = st.ensembles[gi];
     PlotSeries peak;
     peak.style = "points", peak.colour = s.colour, peak.point_type = 7, peak.point_size = 1.3;
     if (e.peak_F.ok) {
@@ -342,8 +369,8 @@ void force_ensembles(const std::vector<TraceIn> &traces, double factor, double z
 }
 
 // without --ensemble: per v0, the mean and range of its runs (or every run), the peaks
-void force_groups(const std::vector<TraceIn> &traces, double factor, double zpeak, Run &run, SeriesPanel &main,
-                  SeriesPanel &inset, Json &json_runs)
+void force_groups(const std::vector<TraceIn> &traces, const FitStudy &st, double factor, double zpeak, Run &run,
+                  SeriesPanel &main, SeriesPanel &inset, Json &json_runs)
 {
   const auto groups = by_speed(traces);
   const bool mean_mode = !run.opt.each;
@@ -355,14 +382,12 @@ void force_groups(const std::vector<TraceIn> &traces, double factor, double zpea
     for (int i : g) can_mean = can_mean && increasing(traces[i].tr.z);
     if (mean_mode && g.size() > 1 && !can_mean)
       run.notes.push_back(v0_text(v0) + ": depth not increasing in every run; each run drawn");
-    // the peaks (trace_fit's definition, as granpen fit and collapse)
+    // the peaks (the study's fits: trace_fit's definition, as granpen fit and collapse)
     PlotSeries peaks;
     peaks.style = "points", peaks.colour = colour, peaks.point_type = 7, peaks.point_size = 1.3;
     for (int i : g) {
       const auto &t = traces[i];
-      TraceFitParams fp;
-      fp.D = t.tr.D, fp.g = t.tr.g, fp.v0 = t.tr.v0;
-      const TraceFit fit = fit_trace(t.tr.z, t.tr.F, fp);
+      const TraceFit &fit = st.fits[i].fit;
       if (fit.peak_ok) peaks.x.push_back(fit.peak_z), peaks.y.push_back(fit.peak_F / factor);
       json_runs.push_back({{"file", t.file}, {"v0", num("%.10g", v0)}, {"peak_F", num("%.6g", fit.peak_F)},
                            {"peak_z", num("%.6g", fit.peak_z)}});
@@ -400,9 +425,8 @@ void legend_per_speed(SeriesPanel &main)
 
 }    // namespace
 
-void plot_force(const std::vector<std::string> &inputs, Run &run)
+void plot_force(const std::vector<TraceIn> &traces, const std::vector<TraceGroup> &groups, const FitStudy &st, Run &run)
 {
-  const auto traces = load_traces(inputs, run);
   if (traces.empty()) return;
   double Dmax = 0, Fmax = 0;
   for (const auto &t : traces) {
@@ -440,8 +464,8 @@ void plot_force(const std::vector<std::string> &inputs, Run &run)
   inset.extra = "set mxtics 2\nset tics font \",11\"\nset title font \",11\"\nset xlabel font \",11\"\nset ylabel font \",11\"\n";
 
   Json json_runs = Json::array();
-  if (ens) force_ensembles(traces, ys.factor, zpeak, run, main, inset, json_runs);
-  else force_groups(traces, ys.factor, zpeak, run, main, inset, json_runs);
+  if (ens) force_ensembles(groups, st, ys.factor, zpeak, run, main, inset, json_runs);
+  else force_groups(traces, st, ys.factor, zpeak, run, main, inset, json_runs);
   if (!ens && mean_mode && std::none_of(main.series.begin(), main.series.end(),
                                         [](const PlotSeries &s) { return !s.band_lo.empty(); }))
     main.key_title = "every run (no v_0 has several)";    // no mean, no band to explain
@@ -799,19 +823,13 @@ struct K {
 };
 
 // --ensemble: k_z of each ensemble's mean +- its se over runs (one group per ensemble), and
-// each run's own k_z in singles
-void ensemble_kz(const std::vector<TraceIn> &traces, Run &run, std::vector<std::vector<K>> &per, PlotSeries &singles,
-                 Json &json_fits)
+// each run's own k_z in singles (the study's run fits)
+void ensemble_kz(const std::vector<TraceGroup> &groups, const FitStudy &st, Run &run, std::vector<std::vector<K>> &per,
+                 PlotSeries &singles, Json &json_fits)
 {
-  std::vector<Trace> tr;
-  for (const auto &t : traces) tr.push_back(t.tr);
-  auto groups = group_traces(tr, run.opt.ens.v0_tolerance);
-  average_groups(groups, run.opt.ens, run.problems);
-  for (const auto &g : groups) {
-    TraceFitParams fp;
-    fp.zlo = run.opt.kz_zmin, fp.zhi = run.opt.kz_zmax, fp.v0 = g.v0, fp.D = g.D, fp.g = g.g;
-    fp.shorten_window = true;
-    const EnsembleFit e = fit_ensemble(g.mean, fp, run.opt.boot);
+  for (std::size_t gi = 0; gi < groups.size(); ++gi) {
+    const TraceGroup &g = groups[gi];
+    const EnsembleFit &e = st.ensembles[gi];
     if (!e.k_z.ok) {
       run.notes.push_back("ensemble " + g.label() + ": k_z undefined on its mean; left out");
       continue;
@@ -822,18 +840,15 @@ void ensemble_kz(const std::vector<TraceIn> &traces, Run &run, std::vector<std::
     j["k_z"] = estimate_json(e.k_z);
     json_fits.push_back(j);
     // each run on the ensemble's aligned bins: their mean is the ensemble's k_z (a linear fit)
-    for (const auto &F : g.mean.per_run) {
-      const TraceFit f = fit_trace(g.mean.z, F, fp);
+    for (const TraceFit &f : st.run_fits[gi])
       if (f.slope_ok) singles.x.push_back(g.v0), singles.y.push_back(f.k_z);
-    }
   }
 }
 
 }    // namespace
 
-void plot_kz(const std::vector<std::string> &inputs, Run &run)
+void plot_kz(const std::vector<TraceIn> &traces, const std::vector<TraceGroup> &ensembles, const FitStudy &st, Run &run)
 {
-  const auto traces = load_traces(inputs, run);
   if (traces.empty()) return;
   const auto groups = by_speed(traces);
   std::vector<std::vector<K>> per(groups.size());
@@ -845,7 +860,7 @@ void plot_kz(const std::vector<std::string> &inputs, Run &run)
   singles.style = "points", singles.colour = "#808080", singles.point_type = 6, singles.point_size = 0.9;
   if (run.opt.ensemble) {
     per.clear();
-    ensemble_kz(traces, run, per, singles, json_fits);
+    ensemble_kz(ensembles, st, run, per, singles, json_fits);
     for (const auto &g : per)
       for (const auto &k : g) {
         kmax = std::max(kmax, std::fabs(k.k) + k.se);
@@ -857,10 +872,7 @@ void plot_kz(const std::vector<std::string> &inputs, Run &run)
   for (std::size_t gi = 0; gi < groups.size() && !run.opt.ensemble; ++gi)
     for (int i : groups[gi]) {
       const auto &t = traces[i];
-      TraceFitParams fp;
-      fp.zlo = run.opt.kz_zmin, fp.zhi = run.opt.kz_zmax, fp.v0 = t.tr.v0, fp.D = t.tr.D, fp.g = t.tr.g;
-      fp.shorten_window = true;
-      const TraceFit fit = fit_trace(t.tr.z, t.tr.F, fp);
+      const TraceFit &fit = st.fits[i].fit;
       if (fit.window_shortened) run.notes.push_back(t.file + ": " + fit.notes.front());
       if (!fit.slope_ok) {
         run.notes.push_back(t.file + ": k_z undefined over the window, left out: " +

@@ -69,6 +69,9 @@ Json fit_json(const FitResult &r)
   t["intercept_se"] = n(f.intercept_se), t["rms"] = n(f.rms);
   t["alpha_ok"] = f.alpha_ok, t["alpha"] = n(f.alpha), t["alpha_se"] = n(f.alpha_se), t["k_z0"] = n(f.k_z0);
   t["k_z0_se"] = n(f.k_z0_se), t["alpha0"] = n(f.alpha0), t["alpha0_se"] = n(f.alpha0_se);
+  t["quad_ok"] = f.quad_ok, t["quad_a"] = n(f.quad_a), t["quad_a_se"] = n(f.quad_a_se), t["quad_b"] = n(f.quad_b);
+  t["quad_b_se"] = n(f.quad_b_se), t["alpha_a"] = n(f.alpha_a), t["alpha_a_se"] = n(f.alpha_a_se);
+  t["beta_b"] = n(f.beta_b), t["beta_b_se"] = n(f.beta_b_se);
   t["peak_ok"] = f.peak_ok, t["n_peak"] = f.n_peak, t["peak_zmax"] = n(f.peak_zmax), t["peak_F"] = n(f.peak_F);
   t["peak_z"] = n(f.peak_z);
   t["wavelength_ok"] = f.wavelength_ok, t["wavelength"] = n(f.wavelength), t["wavelength_d_g"] = n(f.wavelength_dg);
@@ -103,7 +106,7 @@ std::string results_csv(const std::vector<FitResult> &results)
   o << "file,v0,D,g,mu,mu_source,rho_g,rho_g_source,d_g,d_g_source,zlo,zhi,n_window,z_first,z_last,"
        "slope_ok,k_z,k_z_se,intercept,intercept_se,rms,alpha_ok,alpha,alpha_se,"
        "peak_ok,peak_F,peak_z,wavelength_ok,wavelength,wavelength_d_g,spectrum_length,power_fraction,"
-       "k_z0,k_z0_se,alpha0,alpha0_se\n";
+       "k_z0,k_z0_se,alpha0,alpha0_se,quad_ok,quad_a,quad_a_se,quad_b,quad_b_se,alpha_a,alpha_a_se,beta_b,beta_b_se\n";
   for (const auto &r : results) {
     const TraceFit &f = r.fit;
     const auto n = [](double v) { return num(v); };
@@ -115,16 +118,19 @@ std::string results_csv(const std::vector<FitResult> &results)
       << n(f.alpha_se) << ',' << f.peak_ok << ',' << n(f.peak_F) << ',' << n(f.peak_z) << ','
       << f.wavelength_ok << ',' << n(f.wavelength) << ',' << n(f.wavelength_dg) << ','
       << n(f.spectrum.length) << ',' << n(f.spectrum.power_fraction) << ',' << n(f.k_z0) << ',' << n(f.k_z0_se) << ','
-      << n(f.alpha0) << ',' << n(f.alpha0_se) << '\n';
+      << n(f.alpha0) << ',' << n(f.alpha0_se) << ',' << f.quad_ok << ',' << n(f.quad_a) << ',' << n(f.quad_a_se) << ','
+      << n(f.quad_b) << ',' << n(f.quad_b_se) << ',' << n(f.alpha_a) << ',' << n(f.alpha_a_se) << ',' << n(f.beta_b) << ','
+      << n(f.beta_b_se) << '\n';
   }
   return o.str();
 }
 
 }    // namespace
 
-FitResult fit_trace_file(const std::string &file, const FitWindow &w)
+FitTraceRead read_fit_trace(const std::string &file, const FitWindow &w)
 {
-  FitResult r;
+  FitTraceRead out;
+  FitResult &r = out.result;
   r.file = file;
   const Trace tr = to_cgs(read_trace(file));
   std::string msg;
@@ -135,15 +141,15 @@ FitResult fit_trace_file(const std::string &file, const FitWindow &w)
   if (w.mu > 0) r.mu = w.mu, r.mu_src = "option";
   if (w.rho_g > 0) r.rho_g = w.rho_g, r.rho_src = "option";
   r.v0 = tr.v0, r.D = tr.D, r.g = tr.g;
-  TraceFitParams p;
+  TraceFitParams &p = out.trace.params;
   // a t~ window: z at least this trace's depth of that t~
   p.zlo = w.tmin > 0 ? depth_at_t_tilde(w.tmin, tr.v0, tr.g, tr.D) : w.zmin;
   p.zhi = w.zmax;
   p.v0 = tr.v0, p.D = tr.D, p.g = tr.g;
   p.mu = r.mu, p.rho_g = r.rho_g, p.d_g = r.d_g;
   p.shorten_window = true;    // a window beyond the data: its deeper half, with a note
-  r.fit = fit_trace(tr.z, tr.F, p);
-  return r;
+  out.trace.name = file, out.trace.z = tr.z, out.trace.F = tr.F;
+  return out;
 }
 
 Json fit_results_json(const std::vector<FitResult> &results, const std::vector<FitFailure> &failures, const FitWindow &w)

@@ -1,9 +1,11 @@
-// granpen analysis: granpen fit's per-trace fit (a trace file read, its header's mu,
-// rho_g and d_g or the defaults, core/trace_fit.h over a window) and its result files:
-// JSON (units cgs; undefined values 0 with a false *_ok flag) and one CSV row per trace.
+// granpen analysis: granpen fit's traces read for the fit (a trace file, its header's mu,
+// rho_g and d_g or the defaults, the window: the input of core/fit_study.h, which fits) and
+// its result files: JSON (units cgs; undefined values 0 with a false *_ok flag) and one CSV
+// row per trace.
 #ifndef GRANPEN_FIT_TABLES_H
 #define GRANPEN_FIT_TABLES_H
 
+#include "fit_study.h"
 #include "json_writer.h"
 #include "trace_fit.h"
 
@@ -17,7 +19,7 @@ struct FitResult {
   double v0 = 0, D = 0, g = 0;
   double mu = 0, rho_g = 0, d_g = 0;
   std::string mu_src, rho_src, dg_src;    // "option", "header" or "default"
-  TraceFit fit;
+  TraceFit fit;                           // the fit study's
 };
 
 struct FitFailure {
@@ -31,8 +33,14 @@ struct FitWindow {
   double mu = 0.0, rho_g = 0.0;
 };
 
-// Reads and fits one trace (cgs); throws InputError naming the file.
-FitResult fit_trace_file(const std::string &path, const FitWindow &w);
+// One trace read for the fit (cgs): its record (fit not yet set) and the fit study's input
+// (the window's start from --tmin a depth of this trace; a window beyond the data shortened).
+struct FitTraceRead {
+  FitResult result;
+  FitStudyTrace trace;
+};
+// Throws InputError naming the file.
+FitTraceRead read_fit_trace(const std::string &path, const FitWindow &w);
 
 Json fit_results_json(const std::vector<FitResult> &results, const std::vector<FitFailure> &failures, const FitWindow &w);
 std::string fit_results_csv(const std::vector<FitResult> &results);

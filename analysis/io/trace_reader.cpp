@@ -286,6 +286,17 @@ Trace read_trace(const std::string &path)
   return parse_stream(in, path, kMaxTraceRows);
 }
 
+Trace read_trace_header(const std::string &path)
+{
+  require_regular_file(path);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open trace file (" + std::strerror(errno) + ")");
+  TraceParser p(in, path);    // reads and checks the header's lines, no row
+  Trace tr = p.header();
+  tr.path = path;
+  return tr;
+}
+
 TraceSummary scan_trace(const std::string &path)
 {
   require_regular_file(path);

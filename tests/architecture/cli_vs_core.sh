@@ -16,16 +16,10 @@ while [ $# -gt 0 ]; do
   esac
 done
 
-# lines of code of the .cpp and .h files in ROOT/DIR (not below it)
-loc() {
-  find "$1/$2" -maxdepth 1 \( -name '*.cpp' -o -name '*.h' \) -exec cat {} + | awk '
-    { l = $0
-      if (inc) { if (l ~ /\*\//) { sub(/.*\*\//, "", l); inc = 0 } else next }
-      while (l ~ /\/\*/) { if (l ~ /\/\*.*\*\//) sub(/\/\*([^*]|\*+[^*\/])*\*+\//, "", l); else { sub(/\/\*.*/, "", l); inc = 1 } }
-      sub(/\/\/.*/, "", l)
-      if (l ~ /[^ \t]/) n++ }
-    END { print n + 0 }'
-}
+# lines of code of the .cpp and .h files in ROOT/DIR (code_lines.sh: comments, string
+# literals' text and blank lines do not count)
+. "$(dirname "$0")/code_lines.sh"
+loc() { code_lines "$1" "" "$2" | wc -l | tr -d ' '; }
 
 check() {
   [ -d "$1/analysis/cli" ] && [ -d "$1/analysis/core" ] || { echo "cli_vs_core.sh: $1 has no analysis/cli and analysis/core" >&2; return 2; }

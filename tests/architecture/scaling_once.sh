@@ -7,7 +7,7 @@
 # architecture_scaling_once, with a self-test.
 #   scaling_once.sh [--self-test] [ROOT]
 # Exit: 0 none outside the kernel, 1 some (each printed as file:line: code), 2 usage.
-# Needs only sh, find, awk and grep.
+# Needs only sh, find, awk and grep (and code_lines.sh beside it).
 set -u
 root=.
 self_test=no
@@ -25,25 +25,13 @@ T_TILDE='sqrt *\([^()]*\b(g|gmag)\b *\/ *[^()]*\b(D|dia|diameter)\b[^()]*\)|sqrt
 F_Z='\bmu\b[^;=]*\*[^;=]*\brho(_g)?\b|\brho(_g)?\b[^;=]*\*[^;=]*\bmu\b'
 PEAK_END='\b0\.35 *\*|\* *0\.35\b'
 
-# FILE:LINE: CODE for every line of code (comments and string literals blanked) of the
-# .cpp and .h files under ROOT's src, launcher and analysis but the kernel's own
-code_lines() {
-  for d in src launcher analysis; do [ -d "$1/$d" ] && find "$1/$d" \( -name '*.cpp' -o -name '*.h' \); done |
-    grep -v -E '(^|/)src/scaling_laws\.(h|cpp)$' | sort | while read -r f; do
-      awk -v name="${f#"$1"/}" '
-        { l = $0
-          if (inc) { if (l ~ /\*\//) { sub(/.*\*\//, "", l); inc = 0 } else next }
-          gsub(/"([^"\\]|\\.)*"/, "\"\"", l)
-          while (l ~ /\/\*/) { if (l ~ /\/\*.*\*\//) sub(/\/\*([^*]|\*+[^*\/])*\*+\//, "", l); else { sub(/\/\*.*/, "", l); inc = 1 } }
-          sub(/\/\/.*/, "", l)
-          if (l ~ /[^ \t]/) print name ":" FNR ": " l }' "$f"
-    done
-}
+# code_lines ROOT EXCLUDE DIR...: FILE:LINE: CODE, comments and string literals blanked
+. "$(dirname "$0")/code_lines.sh"
 
 check() {
   [ -d "$1/src" ] || { echo "scaling_once.sh: $1 has no src/" >&2; return 2; }
   [ -f "$1/src/scaling_laws.cpp" ] || { echo "scaling_once.sh: $1 has no src/scaling_laws.cpp" >&2; return 2; }
-  code=$(code_lines "$1")
+  code=$(code_lines "$1" '(^|/)src/scaling_laws\.(h|cpp)$' src launcher analysis)
   bad=0
   for rel in "t~:$T_TILDE" "F_z:$F_Z" "peak end:$PEAK_END"; do
     name=${rel%%:*} pattern=${rel#*:}

@@ -92,12 +92,8 @@ cat > "$WORK/in.installed_plugin_push" <<'DECK'
 include ${granpen_prefix}/share/granpen/plugin.lmp
 include ${inputs}/in.push
 DECK
-COMMON=(-var inputs "$P/share/granpen/inputs" -var preset tiny -var bed "$BED" -var v0 100 -var depth 1.0)
-cd "$WORK"
-"$LMP_GRANPEN" -in "$P/share/granpen/inputs/in.push" "${COMMON[@]}" -var trace lmp_granpen.csv -log lmp_granpen.log -screen none
-"$LBUILD/lmp" -var granpen_prefix "$P" -in in.installed_plugin_push "${COMMON[@]}" -var trace plugin.csv -log plugin.log -screen none
-grep -qi "loading plugin" plugin.log || { echo "FAIL: the installed plugin was not loaded"; tail -20 plugin.log; exit 1; }
 # the same styles, compiled by the recipe's Release flags, on the same LAMMPS: the trace agrees
-# to round-off (1e-12 of the force, as the plugin test)
-"$TRACE_AGREE" lmp_granpen.csv plugin.csv --rtol 1e-12 --min-rows 100
+# to round-off (1e-12 of the force), as in the plugin test (the one push-and-compare of both)
+"$ROOT/tests/launcher/plugin_push_agrees.sh" "$WORK" "$LMP_GRANPEN" "$LBUILD/lmp" "$P/share/granpen/inputs" "$BED" \
+  "$TRACE_AGREE" "$WORK/in.installed_plugin_push" -var granpen_prefix "$P"
 echo "ok: the recipe's build.sh built and installed the plugin; loaded from the moved prefix it gives lmp_granpen's trace"

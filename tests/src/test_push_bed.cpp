@@ -3,6 +3,7 @@
 // force before contact and with depth. (Restart and decomposition consistency
 // are deck-level tests across processes: see tests/inputs/CMakeLists.txt.)
 #include "lmp_session.h"
+#include "trace_header.h"
 #include "trace_reader.h"
 
 #include <gtest/gtest.h>
@@ -142,13 +143,12 @@ TEST_F(PushBed, SurfaceAutoMeasuresOnTheGridItIsGiven)
               "run 1 post no"});
     }
     MPI_Barrier(MPI_COMM_WORLD);
-    // the header alone (one step gives too few rows for the trace reader's checks)
-    std::ifstream in(trace);
-    std::string line, key = "# surface = ";
-    bool found = false;
-    while (std::getline(in, line) && !found)
-      if (line.compare(0, key.size(), key) == 0) measured[k] = std::stod(line.substr(key.size())), found = true;
-    ASSERT_TRUE(found) << trace << " has no surface key";
+    // the header alone (one step gives too few rows for read_trace), checked as read_trace
+    // checks it
+    const granpen::Trace header = granpen::read_trace_header(trace);
+    const auto surface = header.keys.find("surface");
+    ASSERT_TRUE(surface != header.keys.end()) << trace << " has no surface key";
+    measured[k] = std::stod(surface->second);
     // the header prints the fix's z_s to 10 significant digits (trace_writer's num): the same
     // number to that rounding, half a unit of the 10th digit at most
     EXPECT_NEAR(measured[k], from_compute, 1e-9 * std::fabs(from_compute)) << "grid " << n;

@@ -124,6 +124,13 @@ done
 for D in 1 2; do same "bench_box20.alpha0_window.v28.D$D" "$(val "bench.alpha0_window.v28.g981.D$D")"; done
 same bench_box20.alpha0_window.v28.D3 "$(for s in 1 2; do fit_col "$BX/box_bench20_D/bench_mu0.3_s1${s}_v28_g981_D3.0.csv" alpha0 --zmin 2; done |
   awk '{ s += $1; ss += $1 * $1; n++ } END { m = s / n; printf "%.4g +- %.2g n = %d\n", m, sqrt((ss - n * m * m) / (n - 1)), n }')"
+# ... and the two-term fit's terms, from the same granpen fit on the files directly
+for D in 1 2 3; do
+  for k in alpha_a beta_b; do
+    same "bench_box20.$k.v28.D$D" "$(for s in 1 2; do fit_col "$BX/box_bench20_D/bench_mu0.3_s1${s}_v28_g981_D$D.0.csv" "$k" --zmin 2; done |
+      awk '{ s += $1; ss += $1 * $1; n++ } END { m = s / n; printf "%.4g +- %.2g n = %d\n", m, sqrt((ss - n * m * m) / (n - 1)), n }')"
+  done
+done
 same bench_box20.alpha_D1_over_D2 "$(awk -v a="$(val bench_box20.alpha0_window.v28.D1 | awk '{print $1}')" -v ea="$(val bench_box20.alpha0_window.v28.D1 | awk '{print $3}')" \
   -v b="$(val bench_box20.alpha0_window.v28.D2 | awk '{print $1}')" -v eb="$(val bench_box20.alpha0_window.v28.D2 | awk '{print $3}')" \
   'BEGIN { r = a / b; printf "%.4g +- %.2g\n", r, r * sqrt((ea / a) ^ 2 + (eb / b) ^ 2) }')"

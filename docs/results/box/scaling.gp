@@ -6,10 +6,10 @@ if (!exists("formats")) formats = "png svg"
 data = "scaling.dat"
 do for [fmt in formats] {
   if (fmt eq "png") {
-    set terminal pngcairo enhanced size 1300,1260 font "sans,12" background rgb "white"
+    set terminal pngcairo enhanced size 1300,1640 font "sans,12" background rgb "white"
   } else {
     if (fmt ne "svg") { print "unknown format ", fmt, " (png or svg)"; exit status 1 }
-    set terminal svg enhanced size 1300,1260 font "sans,12" background rgb "white"
+    set terminal svg enhanced size 1300,1640 font "sans,12" background rgb "white"
   }
   set output "scaling." . fmt
   reset
@@ -17,8 +17,8 @@ do for [fmt in formats] {
   set multiplot title "Against the box width: granpen (blue, ± its error), the paper's value (red; shaded: its error), the paper's box (dotted)" font ",14"
 
   # ---- panel 1: peak exponent (v\_c to 10 v\_c)   (paper: 2)
-  set origin 0,0.6266666667
-  set size 0.5,0.3133333333
+  set origin 0,0.705
+  set size 0.5,0.235
   set title "peak exponent (v\\_c to 10 v\\_c)   (paper: 2)"
   set xlabel "box width (cm)"
   set ylabel "peak exponent (v\\_c to 10 v\\_c)"
@@ -35,8 +35,8 @@ do for [fmt in formats] {
   # ---- panel 2: peak exponent (means above v_c)   (paper: 2)
   reset
   set encoding utf8
-  set origin 0.5,0.6266666667
-  set size 0.5,0.3133333333
+  set origin 0.5,0.705
+  set size 0.5,0.235
   set title "peak exponent (means above v_c)   (paper: 2)"
   set xlabel "box width (cm)"
   set ylabel "peak exponent (means above v_c)"
@@ -53,8 +53,8 @@ do for [fmt in formats] {
   # ---- panel 3: peak / the box 8 cm narrower's (same bed and v0)   (paper: 1)
   reset
   set encoding utf8
-  set origin 0,0.3133333333
-  set size 0.5,0.3133333333
+  set origin 0,0.47
+  set size 0.5,0.235
   set title "peak / the box 8 cm narrower's (same bed and v0)   (paper: 1)"
   set xlabel "box width (cm)"
   set ylabel "peak / the box 8 cm narrower's (same bed and v0)"
@@ -71,8 +71,8 @@ do for [fmt in formats] {
   # ---- panel 4: lambda\_vz / D at 50 cm/s   (paper: 0.98 ± 0.15)
   reset
   set encoding utf8
-  set origin 0.5,0.3133333333
-  set size 0.5,0.3133333333
+  set origin 0.5,0.47
+  set size 0.5,0.235
   set title "lambda\\_vz / D at 50 cm/s   (paper: 0.98 ± 0.15)"
   set xlabel "box width (cm)"
   set ylabel "lambda\\_vz / D at 50 cm/s"
@@ -91,8 +91,8 @@ do for [fmt in formats] {
   # ---- panel 5: drag / (mu g M) at 50 cm/s   (paper: 1)
   reset
   set encoding utf8
-  set origin 0,0
-  set size 0.5,0.3133333333
+  set origin 0,0.235
+  set size 0.5,0.235
   set title "drag / (mu g M) at 50 cm/s   (paper: 1)"
   set xlabel "box width (cm)"
   set ylabel "drag / (mu g M) at 50 cm/s"
@@ -104,6 +104,42 @@ do for [fmt in formats] {
   set label 1 "paper" at first 20, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
   set samples 400
   plot data index 4 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+       1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
+
+  # ---- panel 6: alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s   (paper: 1)
+  reset
+  set encoding utf8
+  set origin 0.5,0.235
+  set size 0.5,0.235
+  set title "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s   (paper: 1)"
+  set xlabel "box width (cm)"
+  set ylabel "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s"
+  set grid lc rgb "#d0d0d0"
+  set xrange [7:21]
+  set yrange [0.93272:1.90828]
+  unset key
+  set arrow 1 from first 20, graph 0 to first 20, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
+  set label 1 "paper" at first 20, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
+  set samples 400
+  plot data index 5 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
+       1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
+
+  # ---- panel 7: alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s (frictionless shaft)   (paper: 1)
+  reset
+  set encoding utf8
+  set origin 0,0
+  set size 0.5,0.235
+  set title "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s (frictionless shaft)   (paper: 1)"
+  set xlabel "box width (cm)"
+  set ylabel "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s (frictionless shaft)"
+  set grid lc rgb "#d0d0d0"
+  set xrange [7:21]
+  set yrange [0.94512:1.74088]
+  unset key
+  set arrow 1 from first 20, graph 0 to first 20, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
+  set label 1 "paper" at first 20, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
+  set samples 400
+  plot data index 6 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
   unset multiplot
   unset multiplot

@@ -166,6 +166,85 @@ TEST(TraceFit, DepthTermThroughTheOrigin)
   EXPECT_NEAR(g.k_z0_se, 0.0, 1e-6);
 }
 
+TEST(QuadraticFit, ExactQuadraticAndHandComputedStandardErrors)
+{
+  // y = 3 x + 2 x^2 exactly: the parameters to round-off, no residual
+  const std::vector<double> x = {1, 2, 3, 4, 5};
+  std::vector<double> y;
+  for (double v : x) y.push_back(3 * v + 2 * v * v);
+  const QuadraticFit f = quadratic_fit_origin(x, y);
+  EXPECT_NEAR(f.a, 3.0, 1e-12);
+  EXPECT_NEAR(f.b, 2.0, 1e-12);
+  EXPECT_NEAR(f.rms, 0.0, 1e-11);
+  // by hand for x = 1, 2, 3 and y = 1, 2, 4: sums x^2 = 14, x^3 = 36, x^4 = 98, xy = 17,
+  // x^2 y = 45; det = 14 98 - 36^2 = 76; a = (98 17 - 36 45) / 76 = 46/76,
+  // b = (14 45 - 36 17) / 76 = 18/76; residuals 1 - 64/76, 2 - 164/76, 4 - 300/76
+  const QuadraticFit h = quadratic_fit_origin({1, 2, 3}, {1, 2, 4});
+  EXPECT_NEAR(h.a, 46.0 / 76.0, 1e-12);
+  EXPECT_NEAR(h.b, 18.0 / 76.0, 1e-12);
+  const double r1 = 1 - 64.0 / 76, r2 = 2 - 164.0 / 76, r3 = 4 - 300.0 / 76;
+  const double s2 = (r1 * r1 + r2 * r2 + r3 * r3) / 1.0;    // n - 2 = 1
+  EXPECT_NEAR(h.se_a, std::sqrt(s2 * 98.0 / 76.0), 1e-12);
+  EXPECT_NEAR(h.se_b, std::sqrt(s2 * 14.0 / 76.0), 1e-12);
+}
+
+TEST(QuadraticFit, AgreesWithTheLineOfYOverXOnExactDataAndRecoversNoisyTerms)
+{
+  // another route on exact data: y / x = a + b x is a line
+  const auto x = grid(0.5, 5.0, 0.05);
+  std::vector<double> y, yx;
+  for (double v : x) y.push_back(1.0e5 * v + 2.0e4 * v * v), yx.push_back(y.back() / v);
+  const QuadraticFit q = quadratic_fit_origin(x, y);
+  const LinearFit l = linear_fit(x, yx);
+  EXPECT_NEAR(q.a, l.a, 1e-9 * l.a);
+  EXPECT_NEAR(q.b, l.b, 1e-9 * l.b);
+  // with noise: within 3 standard errors, and the errors of the right size (Monte Carlo
+  // over 200 draws: the spread of a over the draws matches the mean se to 20%, the size
+  // 200 draws resolve)
+  std::mt19937 rng(11);
+  std::normal_distribution<double> noise(0.0, 500.0);
+  double sa = 0, saa = 0, se = 0;
+  const int draws = 200;
+  for (int k = 0; k < draws; ++k) {
+    std::vector<double> yn;
+    for (double v : y) yn.push_back(v + noise(rng));
+    const QuadraticFit f = quadratic_fit_origin(x, yn);
+    sa += f.a, saa += f.a * f.a, se += f.se_a;
+  }
+  const double mean = sa / draws, sd = std::sqrt((saa - draws * mean * mean) / (draws - 1));
+  EXPECT_LT(std::fabs(mean - 1.0e5), 3.0 * sd / std::sqrt((double) draws));
+  EXPECT_NEAR(sd / (se / draws), 1.0, 0.2);
+}
+
+TEST(QuadraticFit, RejectsWhatCannotTellTheTermsApart)
+{
+  EXPECT_THROW(quadratic_fit_origin({1, 2}, {1, 2}), std::invalid_argument);        // 2 points
+  EXPECT_THROW(quadratic_fit_origin({2, 2, 2}, {1, 2, 3}), std::invalid_argument);  // one x
+  EXPECT_THROW(quadratic_fit_origin({0, 0, 0}, {1, 2, 3}), std::invalid_argument);  // every x 0
+  EXPECT_THROW(quadratic_fit_origin({0, 2, 2}, {1, 2, 3}), std::invalid_argument);  // one nonzero x
+  EXPECT_THROW(quadratic_fit_origin({1, 2, NAN}, {1, 2, 3}), std::invalid_argument);
+}
+
+TEST(TraceFit, DepthLinearAndSquaredTerms)
+{
+  // F = a z + b z^2 with a the paper's alpha = 35 and b a shaft-like term of beta = 4: the
+  // fit gives them back, alpha_a = 35 and beta_b = 4 to round-off
+  TraceFitParams p;
+  p.zlo = 1.0, p.mu = 0.3, p.rho_g = 3.0, p.g = 981.0, p.D = 2.0;
+  const double a = 35.0 * p.mu * p.rho_g * p.g * p.D * p.D, b = 4.0 * p.mu * p.rho_g * p.g * p.D;
+  const std::vector<double> z = grid(-0.5, 5.0, 0.01);
+  std::vector<double> F;
+  for (double v : z) F.push_back(v > 0 ? a * v + b * v * v : 0.0);
+  const TraceFit f = fit_trace(z, F, p);
+  ASSERT_TRUE(f.quad_ok);
+  EXPECT_NEAR(f.quad_a, a, 1e-9 * a);
+  EXPECT_NEAR(f.quad_b, b, 1e-9 * b);
+  EXPECT_NEAR(f.alpha_a, 35.0, 1e-9);
+  EXPECT_NEAR(f.beta_b, 4.0, 1e-9);
+  // the line through the origin over z >= 1 takes the z^2 term into a larger alpha0
+  EXPECT_GT(f.alpha0, 35.0 + 4.0);
+}
+
 TEST(TraceFit, FindsInsertedPeak)
 {
   TraceFitParams p;

@@ -18,10 +18,16 @@ done
 "$cli" gap --real "$real" --scenario tiny --out "$out" --cache "$synth/tiny/cache" --lmp "$lmp" --inputs "$inputs" \
   > "$synth/scale.log" 2>&1 || { echo "gap failed: $synth/scale.log"; exit 1; }
 j=$out/diagnosis.json
-# the diagnosis's values asked of granpen get (as the test's pass pattern reads them)
-verdict=$("$cli" get "$j" verdict)
+# the diagnosis's values asked of granpen get in one call, a tab between them (as the test's
+# pass pattern reads them); scale_only.scale may be missing ("none"), and so, with one call,
+# may the verdict and the tie: always written, a missing one matches no pass pattern
+values=$("$cli" get "$j" verdict tie scale_only.scale --missing none)
+tab=$(printf '\t')
+IFS=$tab read -r verdict tie scale <<VALUES
+$values
+VALUES
 echo "\"verdict\": \"$verdict\""
-echo "\"tie\": $("$cli" get "$j" tie)"
-echo "scale $("$cli" get "$j" scale_only.scale --missing none)"
+echo "\"tie\": $tie"
+echo "scale $scale"
 sed -n '/^## In short/,/^# \|^Scenario/p' "$out/report.md" | head -12
 [ "$verdict" != explained ]

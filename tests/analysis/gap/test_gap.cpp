@@ -277,7 +277,7 @@ Diagnosis significance(bool omnibus, std::vector<EffectFit> ranking)
   d.significant = omnibus, d.chi2_0 = omnibus ? 200 : 70, d.nfeatures = 66, d.ranking = std::move(ranking);
   return d;
 }
-// the fits' verdict of a hand-made diagnosis, taken as the which stage takes it (fit_candidates)
+// the fits' verdict of a hand-made diagnosis, as the diagnosis takes it (fit_candidates, decide_verdict)
 void judge_fits(Diagnosis &d, const Separation2 &separation2 = {})
 {
   FitEvidence ev = fit_evidence(d.significant, d.ranking, separation2);

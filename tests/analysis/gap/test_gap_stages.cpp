@@ -211,10 +211,10 @@ TEST(GapPlan, RequestsAndTheirCostFromWhatTheCacheLacks)
   EXPECT_EQ(p.requests[3].spec.name, "measurement_chain_10");
   // by hand: grains on the lattice, 8 x 8 across ((4 - 2 x 0.25) / 0.5 + 1) and 5 high;
   // 6 pours of 0.6 s (the knots reuse the baseline's beds), (2 + 4 + 2 x 2) beds pushed
-  // 2.5 cm at each speed; 1.1e7 atom-steps per core-second
+  // 2.5 cm at each speed; a probe pour (6300 grains, 110000 steps) is 69.9 core-seconds
   const double grains = 8 * 8 * 5;
   const double steps = 6 * 0.6 / 5e-6 + 10 * (2.5 / 50 + 2.5 / 100) / 2e-6;
-  EXPECT_NEAR(p.core_hours, grains * steps / (1.1e7 * 3600), 1e-9 * p.core_hours);    // rounding only
+  EXPECT_NEAR(p.core_hours, grains * steps / (6300.0 * 110000) * 69.9 / 3600, 1e-9 * p.core_hours);    // rounding only
   // a done push is not counted again
   const auto pending = pending_runs(p.requests[0], cache.path.string());
   ASSERT_EQ(pending.size(), 6u);    // 2 pours, 4 pushes
@@ -318,8 +318,66 @@ TEST(GapPlan, CostInProbePoursIsAtomStepsOverTheProbePours)
   const double steps = 6 * 0.6 / 5e-6 + 10 * (2.5 / 50 + 2.5 / 100) / 2e-6;
   EXPECT_NEAR(c.atom_steps, 320 * steps, 1e-9 * c.atom_steps);
   EXPECT_NEAR(c.probe_pours, c.atom_steps / (1000.0 * PROBE_POUR_STEPS), 1e-12 * c.probe_pours);
-  EXPECT_NEAR(c.core_hours, estimate_core_hours(sc, req, cache.path.string()), 1e-12 * c.core_hours);
-  EXPECT_NE(plan_summary(c).find("6 pours, 20 pushes"), std::string::npos) << plan_summary(c);
+  // one unit: core-hours are the probe pours of core time at the probe's 2026-11-22 speed
+  EXPECT_NEAR(c.core_hours, c.probe_pours * PROBE_POUR_SECONDS / 3600.0, 1e-12 * c.core_hours);
+  // without the bench preset's grains, the probe pour's own (6300, its .info)
+  EXPECT_NEAR(estimate_core_hours(sc, req, cache.path.string()), c.atom_steps / (6300.0 * PROBE_POUR_STEPS) * 69.9 / 3600.0,
+              1e-12 * c.core_hours);
+  EXPECT_NE(plan_summary(c, 2).find("6 pours, 20 pushes"), std::string::npos) << plan_summary(c, 2);
+  EXPECT_NE(plan_summary(c, 2).find("probe pours of core time"), std::string::npos) << plan_summary(c, 2);
+  // wall time: alone, the core time; side by side, spread over the jobs at 0.95 of their speed
+  EXPECT_NEAR(wall_probe_pours(c, 1), c.probe_pours, 1e-12);
+  EXPECT_NEAR(wall_probe_pours(c, 2), c.probe_pours / (2 * 0.95), 1e-12);
+  // ... never below the longest pour and push one after the other
+  EXPECT_NEAR(wall_probe_pours(c, 1000), (c.longest_pour + c.longest_push) / 0.95, 1e-12);
+  // as an empty cache runs them: the same (nothing is in this cache)
+  const PlanCost cold = cold_cost(sc, req, 1000.0);
+  EXPECT_EQ(cold.pours, 6);
+  EXPECT_EQ(cold.pushes, 20);
+  EXPECT_NEAR(cold.probe_pours, c.probe_pours, 1e-12 * c.probe_pours);
+}
+
+TEST(GapPlan, EachRunCountedAtItsOwnTimeStepTravelAndRoute)
+{
+  // 320 grains (hand_scenario's lattice); a pour 0.6 s, a push gap + depth = 2.5 cm at v0
+  const Scenario sc = hand_scenario();
+  TempDir cache("plan_routes");
+  const double probe = 1000.0 * PROBE_POUR_STEPS;
+  auto knot = [&](const char *effect, double a) {
+    return plan_cost(sc, {effect_request(sc.name, *find_effect(effect), a, {"100"}, {"1"}, "k")}, cache.path.string(), 1000.0);
+  };
+  // the bench law: factor 1
+  EXPECT_NEAR(knot("polydispersity", 0.25).probe_pours, 320 * (0.6 / 5e-6 + 2.5 / 100 / 2e-6) / probe, 1e-12);
+  // pair granular's routes: JKR cohesion 2.1, rolling friction 1.5 (measured, docs/gap.md)
+  EXPECT_NEAR(knot("cohesion", 1000).probe_pours, 2.1 * 320 * (0.6 / 5e-6 + 2.5 / 100 / 2e-6) / probe, 1e-12);
+  EXPECT_NEAR(knot("rolling_resistance", 0.1).probe_pours, 1.5 * 320 * (0.6 / 5e-6 + 2.5 / 100 / 2e-6) / probe, 1e-12);
+  // stiffer contacts at their own, shorter time steps: 10^0.6 stiffer, steps 10^(-0.24) as long
+  // (the push's rounded to a whole number of steps per 1e-4 s: 1e-4 / ceil(50 / 0.575))
+  const double dt_scale = std::pow(10.0, -0.24), dt_push = 1e-4 / std::ceil(50.0 / dt_scale);
+  EXPECT_NEAR(knot("contact_stiffness", 0.6).probe_pours, 320 * (0.6 / (5e-6 * dt_scale) + 2.5 / 100 / dt_push) / probe, 1e-9);
+  // a ramp of 1.6 cm: its travel once more at v0 (linear from rest: twice the time over it)
+  const PlanCost ramp = plan_cost(sc, {effect_request(sc.name, *find_effect("actuator_ramp"), 1.6, {"100"}, {"1"}, "r")},
+                                  cache.path.string(), 1000.0);
+  EXPECT_NEAR(ramp.probe_pours, 320 * (0.6 / 5e-6 + (2.5 + 1.6) / 100 / 2e-6) / probe, 1e-12);
+}
+
+TEST(GapPlan, TheMostAConfirmationAddsIsTheCostliestEffectsConfirmRefineAndHeldOut)
+{
+  const Scenario sc = hand_scenario();
+  TempDir cache("plan_confirm");
+  const std::vector<std::string> v0{"50", "100"};
+  const std::vector<const Effect *> lib{find_effect("measurement_chain"), find_effect("cohesion")};
+  const PlanCost most = confirmation_most(sc, v0, lib, cache.path.string(), 1000.0);
+  // cohesion (pour-level, JKR): 4 fresh beds confirm at both speeds, the slowest held out at its
+  // own magnitude on the same seeds (its own sweep: 4 pours, 4 pushes), 4 more refine both
+  EXPECT_EQ(most.pours, 12);
+  EXPECT_EQ(most.pushes, 8 + 4 + 8);
+  const PlanCost cohesion = cold_cost(sc, largest_confirmation(sc.name, *find_effect("cohesion"), 3000, v0), 1000.0);
+  EXPECT_NEAR(most.probe_pours, cohesion.probe_pours, 1e-12);
+  // the mount's, the baseline pushed into fresh beds, costs less
+  const PlanCost mount = cold_cost(sc, largest_confirmation(sc.name, *find_effect("measurement_chain"), 10, v0), 1000.0);
+  EXPECT_LT(mount.probe_pours, most.probe_pours);
+  EXPECT_EQ(confirmation_most(sc, v0, {}, cache.path.string(), 1000.0).probe_pours, 0.0);
 }
 
 #endif
@@ -568,27 +626,30 @@ TEST(GapWhere, CurvesAndSignificanceOnAHandMadeFeatureSet)
   GapGrid grid;
   grid.zmax = 0.5;
   ASSERT_EQ(grid.nfeatures(), 6u);
-  Diagnosis d;
-  gap_curves(h.f, grid, d);
+  const GapCurves d = gap_curves(h.f, grid);
   ASSERT_EQ(d.speeds.size(), 2u);
   // both bins 5 above a reference of 100, no scatter in either ensemble (two equal runs):
   // G = sqrt(2 x 5^2 / (2 x 105^2)) = 5 / 105 at each speed; rounding only
   EXPECT_NEAR(d.speeds[0].G_before, 5.0 / 105.0, 1e-12);
-  EXPECT_NEAR(d.gap_before, 5.0 / 105.0, 1e-12);
+  EXPECT_NEAR(d.gap, 5.0 / 105.0, 1e-12);
   EXPECT_EQ(d.speeds[1].gap, (std::vector<double>{5.0, 5.0}));
   EXPECT_NEAR(d.speeds[0].band[0], 2.0 * std::sqrt(1e-4 * 105 * 105 / 2 + 0.5), 1e-12);
   EXPECT_EQ(d.n_real_min, 2);
   EXPECT_EQ(d.n_sim, 4);
-  gap_significance(h.f, grid, d);
+  const Significance sig = gap_significance(h.f, grid);
   // chi^2 = 2 speeds x 3 features x 5^2 / (1e-4 x 105^2 / 2 + 0.5)
-  EXPECT_NEAR(d.chi2_0, 150.0 / (1e-4 * 105 * 105 / 2 + 0.5), 1e-9);
-  EXPECT_EQ(d.nfeatures, 12u);
-  EXPECT_LT(d.p_value, 1e-20);
-  EXPECT_TRUE(d.significant);
-  Diagnosis d0;
-  gap_significance(HandMade(0.0).f, grid, d0);
-  EXPECT_EQ(d0.chi2_0, 0.0);
-  EXPECT_FALSE(d0.significant);
+  EXPECT_NEAR(sig.chi2_0, 150.0 / (1e-4 * 105 * 105 / 2 + 0.5), 1e-9);
+  EXPECT_EQ(sig.nfeatures, 12u);
+  EXPECT_LT(sig.p_value, 1e-20);
+  EXPECT_TRUE(sig.significant);
+  const Significance sig0 = gap_significance(HandMade(0.0).f, grid);
+  EXPECT_EQ(sig0.chi2_0, 0.0);
+  EXPECT_FALSE(sig0.significant);
+  // the held-out speed: the one with the largest G_all (both alike here: the first)
+  const HeldOut held = heldout_speed(d.speeds);
+  EXPECT_EQ(held.index, 0u);
+  EXPECT_EQ(held.v0, d.speeds[0].v0);
+  EXPECT_EQ(held.gap, d.speeds[0].all_before());
 }
 
 TEST(GapWhere, AnObservableWithoutScatterGetsANoteNotAZScore)
@@ -620,14 +681,13 @@ TEST(GapWhere, AnObservableWithoutScatterGetsANoteNotAZScore)
   RunsBySpeed real{{v, {run(1.3), run(1.35)}}};
   SimulatedRuns sims;
   sims.fresh[v] = {run(0.95), run(1.0), run(1.05)};
-  Diagnosis d;
-  d.speeds.resize(1);
-  regimes(f, sims.fresh, sc, grid, d);
-  observable_findings(f, real, sims, sc, grid, d);
+  const std::vector<double> ends = transient_ends(f, sims.fresh, sc, grid);
+  ASSERT_EQ(ends.size(), 1u);
+  const ObservableFindings d = observable_findings(f, real, sims, sc, grid, ends);
   // the independent route: t_star of each simulated run, straight from the kernel
   std::vector<double> ts;
   for (const auto &r : sims.fresh[v]) {
-    const auto o = run_observables(r.z, r.F, v, sc.D, sc.g, sc.d_g, grid, d.speeds[0].z_transient_end);
+    const auto o = run_observables(r.z, r.F, v, sc.D, sc.g, sc.d_g, grid, ends[0]);
     if (o.crossed) ts.push_back(o.t_star);
   }
   ASSERT_EQ(ts.size(), 3u) << "the shape must cross over, or the test checks nothing";
@@ -640,7 +700,7 @@ TEST(GapWhere, AnObservableWithoutScatterGetsANoteNotAZScore)
   EXPECT_TRUE(noted("t_star"));
   EXPECT_FALSE(noted("peak_F"));
   bool peak_found = false;
-  for (const auto &w : d.where) {
+  for (const auto &w : d.findings) {
     EXPECT_NE(w.observable, "t_star");
     // every z-score a finite number of standard errors: at most |1.35 - 1| / (0.05 / sqrt 3)
     // ~ 12 for a force, far below the 1e150 a zero variance gave
@@ -657,13 +717,16 @@ TEST(GapWhere, AnObservableWithoutScatterGetsANoteNotAZScore)
 TEST(GapWhich, TheVerdictOnAHandMadeFeatureSet)
 {
   HandMade h(0.5);
-  Diagnosis d;
-  d.significant = true;    // the omnibus route: chi^2 about 150 over 12 features (by hand)
-  d.nfeatures = 12;
-  const auto data = fit_candidates({&h.ea, &h.eb}, h.f, [](const std::string &) { return NAN; }, d).data;
+  Significance omnibus;
+  omnibus.significant = true;    // the omnibus route: chi^2 about 150 over 12 features (by hand)
+  omnibus.nfeatures = 12;
+  const FittedCandidates fitted = fit_candidates({&h.ea, &h.eb}, h.f, [](const std::string &) { return NAN; }, omnibus);
+  const auto &data = fitted.data;
+  const FitEvidence &d = fitted.evidence;
+  const VerdictDecision v = decide_verdict(d);
   ASSERT_EQ(d.ranking.size(), 2u);
-  EXPECT_EQ(d.verdict, Verdict::explained);
-  EXPECT_EQ(d.top_effect, "a");
+  EXPECT_EQ(v.verdict, Verdict::explained);
+  EXPECT_EQ(v.top_effect, "a");
   // the model is linear between the knots 0 and 1 and the data noise-free: exact
   EXPECT_NEAR(d.ranking[0].magnitude, 0.5, 1e-3);
   EXPECT_GT(d.ranking[0].explained, 0.99);
@@ -672,15 +735,16 @@ TEST(GapWhich, TheVerdictOnAHandMadeFeatureSet)
   EXPECT_EQ(d.ranking[1].name, "b");
   EXPECT_LT(d.ranking[1].explained, 0.01);
   EXPECT_EQ(d.n_null, 2);
+  EXPECT_EQ(d.nfeatures, 12u);    // the omnibus test's, carried for the verdict's sentences
   EXPECT_EQ(data.count("a"), 1u);
   EXPECT_EQ(data.count("b"), 1u);
 
   // no gap at all, and the omnibus test finds none: none
   HandMade z(0.0);
-  Diagnosis dz;
-  fit_candidates({&z.ea, &z.eb}, z.f, [](const std::string &) { return NAN; }, dz);
-  EXPECT_EQ(dz.verdict, Verdict::none);
-  EXPECT_TRUE(dz.top_effect.empty());
+  const VerdictDecision vz =
+      decide_verdict(fit_candidates({&z.ea, &z.eb}, z.f, [](const std::string &) { return NAN; }, Significance{}).evidence);
+  EXPECT_EQ(vz.verdict, Verdict::none);
+  EXPECT_TRUE(vz.top_effect.empty());
 }
 
 TEST(GapConfirm, TheGapAlongTheSignatureAndTheConfirmationTest)
@@ -695,17 +759,15 @@ TEST(GapConfirm, TheGapAlongTheSignatureAndTheConfirmationTest)
   HandMade z(0.0);
   EXPECT_NEAR(signature_sigma(effect_data(z.ea, z.f), 0.5, z.f), 0.0, 1e-12);
   // omnibus route: chi^2 150 over 12 features, noise 3 sqrt(24) = 14.7
-  Diagnosis d;
-  d.chi2_0 = 150, d.nfeatures = 12;
-  EXPECT_TRUE(confirms(d, 20.0, 0.0));      // excess 138 -> 8: 94% removed
-  EXPECT_FALSE(confirms(d, 140.0, 0.0));    // within the noise of chi^2
-  EXPECT_FALSE(confirms(d, 120.0, 0.0));    // beyond the noise, but 22% of the excess removed (< 25%)
+  auto omnibus = [](double chi2a) { return confirms(false, 150.0, 12, 0.0, chi2a, 0.0); };
+  EXPECT_TRUE(omnibus(20.0));      // excess 138 -> 8: 94% removed
+  EXPECT_FALSE(omnibus(140.0));    // within the noise of chi^2
+  EXPECT_FALSE(omnibus(120.0));    // beyond the noise, but 22% of the excess removed (< 25%)
   // targeted route: the squared projection must drop by 9 without chi^2 growing beyond its noise
-  d.targeted = true;
-  d.proj_before = 4.0;
-  EXPECT_TRUE(confirms(d, 150.0, 2.0));     // 16 -> 4
-  EXPECT_FALSE(confirms(d, 150.0, 3.0));    // 16 -> 9: 7 only
-  EXPECT_FALSE(confirms(d, 170.0, 0.0));    // chi^2 up by 20 > 14.7
+  auto targeted = [](double chi2a, double proj_a) { return confirms(true, 150.0, 12, 4.0, chi2a, proj_a); };
+  EXPECT_TRUE(targeted(150.0, 2.0));     // 16 -> 4
+  EXPECT_FALSE(targeted(150.0, 3.0));    // 16 -> 9: 7 only
+  EXPECT_FALSE(targeted(170.0, 0.0));    // chi^2 up by 20 > 14.7
   // the confirmation is kept only when G_all shrinks to half at most: the side walls case in
   // the faithful synthetic world passed chi^2 with packing while G_all grew 0.118 -> 0.139,
   // the friction case with polydispersity while it went 0.088 -> 0.074 (confident wrong
@@ -795,14 +857,17 @@ TEST(GapLimits, LookAlikesAreATieWithTheRunsThatCannotSeparateThem)
   // a and c have the same signature's shape (c twice as strong), b an orthogonal one: a and c
   // both explain the gap with the same evidence, so the answer is a tie naming both
   HandMade h(0.5);
-  Diagnosis d;
-  d.significant = true;
-  d.nfeatures = 12;
-  const auto data = fit_candidates({&h.ea, &h.eb, &h.ec}, h.f, [](const std::string &) { return NAN; }, d).data;
-  EXPECT_EQ(d.verdict, Verdict::tie);
-  EXPECT_TRUE(d.top_effect.empty());
-  ASSERT_EQ(d.tie.size(), 2u);
-  EXPECT_EQ(std::set<std::string>(d.tie.begin(), d.tie.end()), (std::set<std::string>{"a", "c"}));
+  Significance omnibus;
+  omnibus.significant = true;
+  omnibus.nfeatures = 12;
+  const FittedCandidates fitted = fit_candidates({&h.ea, &h.eb, &h.ec}, h.f, [](const std::string &) { return NAN; }, omnibus);
+  const auto &data = fitted.data;
+  const FitEvidence &d = fitted.evidence;
+  const VerdictDecision v = decide_verdict(d);
+  EXPECT_EQ(v.verdict, Verdict::tie);
+  EXPECT_TRUE(v.top_effect.empty());
+  ASSERT_EQ(v.tie.size(), 2u);
+  EXPECT_EQ(std::set<std::string>(v.tie.begin(), v.tie.end()), (std::set<std::string>{"a", "c"}));
   const std::map<std::string, const Effect *> by_name{{"a", &h.ea}, {"b", &h.eb}, {"c", &h.ec}};
   const auto pairs = look_alikes(d.ranking, data, by_name, h.f);
   ASSERT_EQ(pairs.size(), 3u);
@@ -829,7 +894,7 @@ TEST(GapLimits, LookAlikesAreATieWithTheRunsThatCannotSeparateThem)
     }
   }
   // what would separate them: nothing the measurement can do (they predict the same)
-  const auto next = next_measurement(d.ranking, data, h.f, d.verdict);
+  const auto next = next_measurement(d.ranking, data, h.f, v.verdict);
   ASSERT_TRUE(next.has_value());
   EXPECT_EQ(next->goal, "separate");
   EXPECT_EQ(std::set<std::string>(next->effects.begin(), next->effects.end()), (std::set<std::string>{"a", "c"}));
@@ -846,14 +911,17 @@ TEST(GapLimits, TheNextMeasurementDetectsTheUndetectedCandidate)
   // c m^2, so sqrt(lr / c) (a little above 0.5: the measured ratio has no knot noise taken off)
   HandMade h(0.5);
   noisier(h, 100);
-  Diagnosis d;
-  d.nfeatures = 12;
-  const auto data = fit_candidates({&h.ea, &h.eb}, h.f, [](const std::string &) { return NAN; }, d).data;
-  EXPECT_EQ(d.verdict, Verdict::none);
+  Significance omnibus;
+  omnibus.nfeatures = 12;
+  const FittedCandidates fitted = fit_candidates({&h.ea, &h.eb}, h.f, [](const std::string &) { return NAN; }, omnibus);
+  const auto &data = fitted.data;
+  const FitEvidence &d = fitted.evidence;
+  const VerdictDecision v = decide_verdict(d);
+  EXPECT_EQ(v.verdict, Verdict::none);
   const EffectFit &a = d.ranking[0].name == "a" ? d.ranking[0] : d.ranking[1];
   ASSERT_FALSE(a.detected);
   EXPECT_NEAR(a.magnitude, 0.5, 1e-3);
-  const auto next = next_measurement(d.ranking, data, h.f, d.verdict);
+  const auto next = next_measurement(d.ranking, data, h.f, v.verdict);
   ASSERT_TRUE(next.has_value());
   EXPECT_EQ(next->goal, "detect");
   EXPECT_EQ(next->effects, (std::vector<std::string>{"a"}));
@@ -1277,8 +1345,9 @@ TEST(GapReport, DiagnosisJsonKeysAndValuesAsTheHandBuiltWriterWroteThem)
   std::vector<std::string> added;
   for (auto it = now.begin(); it != now.end(); ++it)
     if (!before.contains(it.key())) added.push_back(it.key());
+  // (and issue 37's plan: the cost range, what was spent, what was simulated and skipped)
   EXPECT_EQ(added, (std::vector<std::string>{"detection_limits", "false_alarms", "gap_parts", "knot_bends", "look_alikes",
-                                             "next_measurement", "residual", "scale_only", "thresholds", "tie"}));
+                                             "next_measurement", "plan", "residual", "scale_only", "thresholds", "tie"}));
   // written through the atomic writer: no temporary left beside it
   for (const auto &e : fs::directory_iterator(dir.path))
     EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
@@ -1406,4 +1475,73 @@ TEST(GapReport, GapByRegimeEndsThePeakAtTheDiagnosisPeakEnd)
   ASSERT_TRUE(by_regime.count("transient"));
   EXPECT_EQ(by_regime["peak"].first, 0.0);
   EXPECT_GT(by_regime["transient"].first, 0.0);
+}
+
+// The record (stage 12) is the stages' results put together once: until a confirmation has
+// simulated, the "after" is the "before" (the corrected curves the baseline's, G and the
+// held-out G unchanged); once it has, the after is its runs'. The notes keep the order the
+// stages said them in, and G per regime comes from the curves the record holds.
+TEST(GapRecord, TheRecordIsTheStagesResultsAndAfterIsBeforeUntilRunsAreSimulated)
+{
+  GapGrid grid;
+  grid.zmax = 0.5;    // two bins of 0.25 cm: centres 0.125 and 0.375
+  WhereResult where;
+  SpeedCurves c;
+  c.v0 = 100, c.n_real = 8, c.n_base = 4;
+  c.z = {0.125, 0.375}, c.real = {110, 110}, c.base = {100, 100}, c.base_se = {1, 1}, c.gap = {10, 10};
+  c.G_before = 0.1, c.z_transient_end = 0.5;
+  where.before.speeds = {c};
+  where.before.parts = GapParts{0.1, 0.0, 8, 4};
+  where.before.gap = 0.1, where.before.n_real_min = 8, where.before.n_sim = 4;
+  where.notes = {"where: a note"};
+  where.omnibus = Significance{50.0, 1e-5, 12, true};
+  where.heldout = HeldOut{0, 100, 0.1};
+  where.baseline_files = {"ref.csv"};
+  FittedCandidates fitted;
+  EffectFit a;
+  a.name = "a", a.lr = 1, a.lr_threshold = 15;    // not detected: the fits' verdict is none
+  fitted.evidence = fit_evidence(false, {a});
+  fitted.evidence.n_null = 2;
+  const VerdictDecision fits_verdict = decide_verdict(fitted.evidence);
+  ASSERT_EQ(fits_verdict.verdict, Verdict::none);
+  DiagnosisInputs in{"hand", "real", {"m.csv"}, {"input: a note"}, grid, 0.2, 4};
+  const Confirmation nothing;
+  const Diagnosis d = assemble_diagnosis(in, where, fitted, fits_verdict, nothing, fits_verdict, Blindness{}, std::nullopt);
+  EXPECT_EQ(d.verdict, Verdict::none);
+  EXPECT_EQ(d.gap_before, 0.1);
+  EXPECT_EQ(d.gap_after, 0.1);
+  EXPECT_EQ(d.heldout_after, d.heldout_before);
+  EXPECT_EQ(d.speeds[0].corr, c.base);
+  EXPECT_EQ(d.speeds[0].n_corr, 4);
+  EXPECT_TRUE(d.corrected_files.empty());
+  EXPECT_EQ(d.baseline_files, where.baseline_files);
+  EXPECT_EQ(d.n_null, 2);
+  EXPECT_EQ(d.chi2_0, 50.0);
+  // the inputs' note, where's, then the fits' verdict's sentences (none: within the noise)
+  ASSERT_GE(d.notes.size(), 3u);
+  EXPECT_EQ(d.notes[0], "input: a note");
+  EXPECT_EQ(d.notes[1], "where: a note");
+  EXPECT_EQ(d.notes[2].rfind("verdict: the gap is within the noise", 0), 0u) << d.notes[2];
+  // peak_end 0.2: bin 0 the peak, bin 1 the transient; before and after alike
+  ASSERT_TRUE(d.gap_by_regime.count("peak"));
+  EXPECT_EQ(d.gap_by_regime.at("peak").first, d.gap_by_regime.at("peak").second);
+
+  // a confirmation that simulated: its runs are the after (the corrected curve closes the gap)
+  Confirmation ran;
+  ran.outcome.kind = ConfirmationResult::Kind::simulated;
+  ran.effect = ran.tested_effect = "a", ran.unit = "u", ran.magnitude = 0.4;
+  SpeedAfter after;
+  after.n = 4, after.mean = {110, 110}, after.se = {1, 1}, after.G = 0.0;
+  ran.after.speeds = {after};
+  ran.after.runs = 4;
+  ran.after.files = {"confirm.csv"};
+  const Diagnosis e = assemble_diagnosis(in, where, fitted, fits_verdict, ran, fits_verdict, Blindness{}, std::nullopt);
+  EXPECT_EQ(e.gap_after, ran.after.all());
+  EXPECT_EQ(e.speeds[0].corr, after.mean);
+  EXPECT_EQ(e.corrected_files, ran.after.files);
+  EXPECT_EQ(e.tested_effect, "a");
+  EXPECT_EQ(e.magnitude, 0.4);
+  EXPECT_EQ(e.magnitude_unit, "u");
+  EXPECT_GT(e.gap_by_regime.at("peak").first, 0.0);
+  EXPECT_EQ(e.gap_by_regime.at("peak").second, 0.0);    // measured = corrected: no gap after
 }

@@ -1,5 +1,6 @@
 // Trace writer and reader: a round trip, unit conversion, and every
 // rejection the format demands, each naming file and line.
+#include "trace_header.h"
 #include "trace_reader.h"
 #include "trace_writer.h"
 
@@ -255,6 +256,35 @@ TEST(TraceIO, ScanAgreesWithReadAndKeepsNoRows)
     EXPECT_TRUE(std::regex_search(e.what(), std::regex(":57: row has 4 fields, expected 3"))) << e.what();
   }
   std::remove(path.c_str());
+}
+
+// The header alone: of a trace of one row (too few for read_trace) its keys and columns as
+// read_trace gives them for the same header with enough rows; a broken header is the same
+// named error; a missing file is named.
+TEST(TraceIO, HeaderAloneAgreesWithReadAndChecksTheHeader)
+{
+  const std::string path = testing::TempDir() + "granpen_header.csv";
+  const auto write = [&](const std::string &text) { std::ofstream(path) << text; };
+  write(good_header() + "t,z,F\n" + rows(1));
+  EXPECT_THROW(read_trace(path), InputError);    // one row: not a trace to read_trace
+  const Trace h = read_trace_header(path);
+  write(good_header() + "t,z,F\n" + rows(20));
+  const Trace t = read_trace(path);
+  EXPECT_EQ(h.keys, t.keys);
+  EXPECT_EQ(h.columns, t.columns);
+  EXPECT_EQ(h.units, t.units);
+  EXPECT_EQ(h.v0, t.v0);
+  EXPECT_EQ(h.path, path);
+  EXPECT_TRUE(h.t.empty() && h.z.empty() && h.F.empty());
+  write("# granpen-trace v1\n# units = cgs\n# v0 = 100\n# v0 = 50\n# D = 2\n# g = 981\nt,z,F\n");
+  try {
+    read_trace_header(path);
+    FAIL() << "accepted a key given twice";
+  } catch (InputError &e) {
+    EXPECT_TRUE(std::regex_search(e.what(), std::regex(":4: header key 'v0' given twice"))) << e.what();
+  }
+  std::remove(path.c_str());
+  EXPECT_THROW(read_trace_header(path), InputError);
 }
 
 TEST(TraceIO, ALineLongerThanTheLimitIsNamedNotAllocated)
