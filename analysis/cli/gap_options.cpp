@@ -106,7 +106,7 @@ granpen::cli::GapCommandOptions granpen::cli::parse_gap(int argc, char **argv)
   if (go.list_effects) return go;
   const bool prepares = opt.prepare_only || !opt.slurm.empty() || !opt.write_prior.empty();
   if (opt.scenario.empty() || (!prepares && (opt.real.empty() || opt.out.empty())) || (prepares && opt.v0.empty()))
-    throw UsageError("needs --scenario and either --real and --out, or --prepare-only (or --slurm) and --v0");
+    throw UsageError("needs --scenario and either --real and --out, or --prepare-only (or --slurm, or --write-prior) and --v0");
   if (opt.only_task >= 0 && !opt.prepare_only) throw UsageError("--only K needs --prepare-only (it is what a --slurm array task runs)");
   if (!opt.prior_seeds.empty() && opt.write_prior.empty()) throw UsageError("--prior-seeds needs --write-prior");
   return go;
