@@ -3,6 +3,10 @@
 #   bench/gap_selftest.sh [--scenario bench|tiny] [--jobs N] [--cases LIST] [--effects LIST] [--v0 "50 100 200"]
 #                         [--seeds "101 102 103 104"] [--measured-only]   (make the measured data only)
 #                         [--max-mean-cost P]   (fail when the mean cold cost per case exceeds P probe pours)
+#                         [--prior-seeds "41 42"]   (a signature prior of the scenario on those beds, written
+#                                                    once by `granpen gap --write-prior` in its own cache and
+#                                                    given to every diagnosis: docs/gap.md, "The adaptive plan")
+#                         [--no-prior]   (every diagnosis without a prior, even the scenario's committed one)
 # For each case it makes "measured" data: a sweep of the scenario with one effect at a
 # magnitude the diagnosis is not told (or none, or an effect outside the library: grains
 # lighter than the header says), on beds no diagnosis uses (seeds 101 to 104); every trace's
@@ -18,7 +22,7 @@
 # to runs/gap_selftest/SCENARIO/table.md (docs/gap-validation.md quotes it).
 set -euo pipefail
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-SCEN=bench JOBS=2 CASES="" EFFECTS="" V0="50 100 200" MEASURED_ONLY=no SEEDS="101 102 103 104" MAX_MEAN_COST=""
+SCEN=bench JOBS=2 CASES="" EFFECTS="" V0="50 100 200" MEASURED_ONLY=no SEEDS="101 102 103 104" MAX_MEAN_COST="" PRIOR_SEEDS="" NO_PRIOR=no
 while [ $# -gt 0 ]; do
   case "$1" in
     --scenario) SCEN=$2; shift 2 ;;
@@ -29,6 +33,8 @@ while [ $# -gt 0 ]; do
     --seeds) SEEDS=$2; shift 2 ;;
     --measured-only) MEASURED_ONLY=yes; shift ;;
     --max-mean-cost) MAX_MEAN_COST=$2; shift 2 ;;
+    --prior-seeds) PRIOR_SEEDS=$2; shift 2 ;;
+    --no-prior) NO_PRIOR=yes; shift ;;
     *) echo "gap_selftest: unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -117,6 +123,16 @@ TABLE=$WORK/table.md
 echo "| case | truth | true magnitude | detection limit | verdict | top effect | fitted magnitude | G before | G after | held-out v0 | held-out G before | held-out G after | chi^2 excess removed | wall s | pass |" > "$TABLE"
 echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|" >> "$TABLE"
 fails=0
+# the signature prior: made once (its cost is the scenario's, not a diagnosis's: not counted)
+PRIOR_ARGS=()
+[ "$NO_PRIOR" = yes ] && PRIOR_ARGS=(--prior none)
+if [ -n "$PRIOR_SEEDS" ] && [ "$MEASURED_ONLY" != yes ]; then
+  echo "gap_selftest: the signature prior on seeds $PRIOR_SEEDS"
+  "$CLI" gap --write-prior "$WORK/prior.json" --scenario "$SCEN" --v0 "$V0" --prior-seeds "$PRIOR_SEEDS" \
+    --cache "$WORK/prior_cache" --jobs "$JOBS" > "$WORK/prior.log" 2>&1 \
+    || { echo "gap_selftest: writing the prior failed: $WORK/prior.log" >&2; exit 1; }
+  PRIOR_ARGS=(--prior "$WORK/prior.json")
+fi
 COSTS=$WORK/costs.txt    # case, the plan's least and most, the cold cost spent (probe pours of core time)
 : > "$COSTS"
 while IFS='|' read -r name truth mag keys; do
@@ -128,6 +144,7 @@ while IFS='|' read -r name truth mag keys; do
   echo "gap_selftest: case $name: diagnosing blind"
   args=(gap --real "$WORK/real_$name" --scenario "$SCEN" --out "$out" --jobs "$JOBS" --cache "$WORK/cache")
   [ -n "$EFFECTS" ] && args+=(--effects "$EFFECTS")
+  args+=("${PRIOR_ARGS[@]}")
   t0=$(date +%s)
   "$CLI" "${args[@]}" > "$WORK/diag_$name.log" 2>&1 || { echo "gap_selftest: gap failed on $name: $WORK/diag_$name.log" >&2; fails=$((fails + 1)); continue; }
   secs=$(( $(date +%s) - t0 ))

@@ -11,6 +11,7 @@
 #include "gap_features.h"
 #include "gap_inputs.h"
 #include "gap_plan.h"
+#include "gap_prior.h"
 #include "gap_limits.h"
 #include "gap_report.h"
 #include "gap_residual.h"
@@ -116,7 +117,8 @@ bool plan_within_budget(const GapOptions &given, const Scenario &sc, const std::
     r.least = cold_least.probe_pours, r.most = cold_most.probe_pours;
     r.wall_least = wall_probe_pours(cold_least, jobs), r.wall_most = wall_probe_pours(cold_most, jobs);
     r.decides = "which pour-level candidates the cheap stage leaves able to change the verdict (each simulated unless its bound, "
-                "the squared gap along its signature or, its direction unknown, the whole squared gap, stays below its threshold), "
+                "with a signature prior the gap's squared projection on its knots' signatures and the scale plus the prior's "
+                "margins, without one the whole squared gap, stays below its threshold), "
                 "then whether an effect is confirmed, which, and whether its magnitude is refined";
     progress.say(GapProgress::INFO, "plan",
                  "plan: from " + cost_phrase(least, jobs) + " (the cheap stage alone) to " + cost_phrase(most, jobs) +
@@ -196,7 +198,7 @@ int run_array_task(const std::vector<SimRequest> &req, RunnerOptions runner, int
 // Returns the effects simulated, in library order; the decisions go to record.
 std::vector<const Effect *> simulate_adaptively(const Scenario &sc, const MeasuredData &measured,
                                                 const std::vector<const Effect *> &effects, const RunnerOptions &runner,
-                                                PlanRecord &record)
+                                                const std::optional<SignaturePrior> &prior, PlanRecord &record)
 {
   const std::string &cache = runner.out_root;
   auto run = [&](const std::vector<const Effect *> &which) {
@@ -223,8 +225,12 @@ std::vector<const Effect *> simulate_adaptively(const Scenario &sc, const Measur
   seen.best_explains = seen_verdict.verdict == Verdict::explained || seen_verdict.verdict == Verdict::scale_only;
   seen.best_is_scale = seen_verdict.verdict == Verdict::scale_only;
   std::vector<PourCandidate> candidates;
-  for (const Effect *e : pour)
-    candidates.push_back({e->name, plan_cost(sc, signature_requests(sc.name, measured.v0s, {e}), cache, 0.0).probe_pours, std::nullopt});
+  for (const Effect *e : pour) {
+    PourCandidate c{e->name, plan_cost(sc, signature_requests(sc.name, measured.v0s, {e}), cache, 0.0).probe_pours, std::nullopt};
+    // with a signature prior its direction is known before its knots (gap_prior.h)
+    if (prior) c.prior = candidate_prior_bound(*prior, *e, f, al.grid, GapThresholds::calibration_scale_bound, c.no_prior);
+    candidates.push_back(c);
+  }
   record.decisions = decide_purchases(seen, candidates, GapThresholds::lr_chi2_1_p1e4, GapThresholds::evidence_margin);
   std::vector<const Effect *> bought, out;
   for (const PurchaseDecision &d : record.decisions)
@@ -284,7 +290,7 @@ std::string confirm_message(const VerdictDecision &fits_verdict, const std::vect
 
 int run_gap(const GapOptions &given, const GapProgressFn &fn)
 {
-  if (!given.prepare_only && given.slurm.empty()) return run_gap_diagnosis(given, fn);
+  if (!given.prepare_only && given.slurm.empty() && given.write_prior.empty()) return run_gap_diagnosis(given, fn);
   const Progress progress{fn};
   const Scenario sc = load_scenario(given);
   const auto effects = choose_effects(given.effects);
@@ -296,6 +302,7 @@ int run_gap(const GapOptions &given, const GapProgressFn &fn)
   const auto req = signature_requests(opt.scenario, v0, effects);
   if (!opt.slurm.empty()) return write_cluster_script(opt, sc, req, runner, progress);
   if (opt.only_task >= 0) return run_array_task(req, runner, opt.only_task);
+  if (!opt.write_prior.empty()) return write_signature_prior(opt, sc, v0, runner, fn);
   progress.say(GapProgress::INFO, "simulate",
                format_text("preparing the %s cache in %s: %zu sweeps", opt.scenario.c_str(), runner.out_root.c_str(), req.size()));
   return run_requests(req, runner) == 0 ? 0 : 1;
@@ -309,6 +316,7 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   const auto all_effects = choose_effects(given.effects);
   MeasuredData measured = read_measured(given.real, sc);
   check_output_path(given.out, given.real, given.cache);
+  const std::optional<SignaturePrior> prior = find_prior(given.prior, given.runner.inputs, sc.name);
   for (const auto &n : measured.notes) progress.say(GapProgress::WARNING, "validate", n);
   progress.say(GapProgress::INFO, "validate",
                format_text("%zu measured runs at %zu speeds (%s cm/s) against scenario %s", measured.files.size(),
@@ -327,7 +335,7 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
                format_text("simulations of the baseline and %zu candidate effects (cache %s)", all_effects.size(), cache.c_str()), 1, 4);
   plan_simulations(sc, measured.v0s, all_effects, cache, opt.local);    // refuses a plan for a cluster
   fs::create_directories(cache);
-  const std::vector<const Effect *> effects = simulate_adaptively(sc, measured, all_effects, runner, plan_record);
+  const std::vector<const Effect *> effects = simulate_adaptively(sc, measured, all_effects, runner, prior, plan_record);
   for (const auto &dec : plan_record.decisions) progress.say(GapProgress::INFO, "plan", dec.effect + ": " + dec.why);
 
   // 4 align and bin, 5 features and the noise model
@@ -370,7 +378,8 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   const VerdictDecision verdict = decide_verdict(fitted.evidence, &confirmation.outcome);
 
   // 10 limits: how blind (the next measurement follows the verdict that stands)
-  const Blindness blind = how_blind(effects, fitted.data, f, ranking, verdict, confirmation.named_magnitude());
+  Blindness blind = how_blind(effects, fitted.data, f, ranking, verdict, confirmation.named_magnitude());
+  if (prior) add_prior_limits(*prior, all_effects, effects, f, al.grid, blind.limits);    // the candidates skipped
 
   // 11 residual: what the gap left over
   const double peak_end = peak_regime_end(sc.D);

@@ -114,9 +114,15 @@ Json parts_json(const GapParts &p)
 Json plan_json(const PlanRecord &p)
 {
   Json decisions = Json::array();
-  for (const auto &x : p.decisions)
-    decisions.push_back(Json{{"effect", x.effect}, {"simulated", x.simulate}, {"bound", num(x.bound)}, {"needed", num(x.needed)},
-                             {"cost", num(x.cost)}, {"why", x.why}});
+  for (const auto &x : p.decisions) {
+    Json row{{"effect", x.effect}, {"simulated", x.simulate}, {"bound", num(x.bound)}, {"needed", num(x.needed)},
+             {"cost", num(x.cost)}, {"why", x.why}};
+    // the signature prior's bound and its parts (gap_adaptive.h, prior_bound)
+    if (x.prior)
+      row["prior"] = Json{{"projection2", num(x.prior->projection2)}, {"margin_direction", num(x.prior->margin_direction)},
+                          {"margin_noise", num(x.prior->margin_noise)}};
+    decisions.push_back(row);
+  }
   return Json{{"unit", "probe pours of core time"}, {"jobs", p.jobs}, {"least", num(p.least)}, {"most", num(p.most)},
               {"spent", num(p.spent)}, {"wall_least", num(p.wall_least)}, {"wall_most", num(p.wall_most)},
               {"wall_spent", num(p.wall_spent)}, {"core_hours_spent", num(p.core_hours_spent)}, {"decides", p.decides},
