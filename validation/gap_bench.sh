@@ -98,8 +98,9 @@ n=$(nice); [ "$n" -ge 15 ] || exec nice -n $((15 - n)) bash "${BASH_SOURCE[0]}" 
 FIGURE=""
 [ -n "$DATA" ] || FIGURE=$ROOT/inputs/false_alarms/$SCEN.txt
 DATA=${DATA:-$ROOT/validation/gap_bench/$SCEN}
-mkdir -p "$DATA" "$RUN/logs" "$RUN/units" "$RUN/cache"
-DATA=$(cd "$DATA" && pwd) RUN=$(cd "$RUN" && pwd)
+# (--status writes nothing: a folder not there yet is read as empty)
+[ "$MODE" = status ] || mkdir -p "$DATA" "$RUN/logs" "$RUN/units" "$RUN/cache"
+DATA=$(realpath -m "$DATA") RUN=$(realpath -m "$RUN")
 CACHE=$RUN/cache
 say() { echo "gap_bench: $(date -u +%H:%M:%S) $*"; }
 
@@ -162,6 +163,7 @@ status() {
   while read -r id kind arg; do n=$((n + 1)); committed "$id" && done=$((done + 1)); done < <(units)
   echo "gap_bench ($SCEN): $done of $n units committed ($DATA)"
   tail -1 "$DATA/false_alarms.md" 2>/dev/null | grep -q 'false alarm' && echo "  $(tail -1 "$DATA/false_alarms.md")"
+  [ "${1:-}" = self ] || [ ! -f "$RUN/lock" ] || flock -n "$RUN/lock" true || echo "  a run of it is going on ($RUN/lock held)"
   [ -f "$RUN/current" ] && echo "  under way here: $(cat "$RUN/current")"
   return 0
 }
@@ -271,7 +273,7 @@ pack_cache() {    # ID
   { grep -vxFf "$tmp/have" "$tmp/all" || true; } > "$tmp/cache_files.txt"
   if [ -s "$tmp/cache_files.txt" ]; then
     awk '{print $2}' "$tmp/cache_files.txt" > "$tmp/paths"
-    tar -C "$CACHE" -cJf "$tmp/cache.tar.xz" -T "$tmp/paths"
+    tar -C "$CACHE" -cJf "$tmp/cache.tar.xz" -T "$tmp/paths" || { echo "gap_bench: $1: the cache's archive failed" >&2; return 1; }
   fi
 }
 # copy a finished unit's files from the scratch folder into DATA/ID, then commit
@@ -312,14 +314,18 @@ run_selftest_unit() {    # ID SEEDS ("": the selftest's own)
   local d=$w/$SCEN/diag_$name
   [ -f "$d/diagnosis.json" ] && grep -q "^| $name |" "$w/$SCEN/table.md" ||
     { echo "gap_bench: unit $id left no scored diagnosis (see $RUN/logs/$id.log)" >&2; return 1; }
-  local tmp=$RUN/pack_$id; pack_cache "$id"
+  local tmp=$RUN/pack_$id; pack_cache "$id" || return 1
   cp "$d/diagnosis.json" "$d/report.md" "$tmp/"
   tar -C "$w/$SCEN" -czf "$tmp/measured.tar.gz" "real_$name"
+  # (called where a failure does not stop the script: each step checked)
+  [ -s "$tmp/diagnosis.json" ] && [ -s "$tmp/report.md" ] && [ -s "$tmp/measured.tar.gz" ] ||
+    { echo "gap_bench: unit $id: its files could not be gathered in $tmp" >&2; return 1; }
   local row; row=$(grep "^| $name |" "$w/$SCEN/table.md" | tail -1)
   if [ -n "$seeds" ]; then
     # a false-alarm set: any verdict other than none is an alarm
     local v g nn
     IFS=$'\t' read -r v g nn < <("$CLI" get "$d/diagnosis.json" verdict gap_before false_alarms.not_none --missing -)
+    [ -n "$v" ] || { echo "gap_bench: unit $id: no verdict in its diagnosis" >&2; return 1; }
     printf '| %s | %s | %s | %.3f | %s | %s |\n' "${id#fa_}" "$seeds" "$v" "$g" "$nn" "$([ "$v" = none ] && echo no || echo yes)" > "$tmp/row.md"
     echo "$row" > "$tmp/score.md"
     publish "$id" "false-alarm set ${id#fa_} (seeds $seeds): $v"
@@ -332,16 +338,19 @@ run_selftest_unit() {    # ID SEEDS ("": the selftest's own)
 
 ticker 9>&- & TICKER=$!
 trap 'kill $TICKER 2>/dev/null || true' EXIT
-ran=0
+ran=0 failed=""
 while read -r id kind arg; do
   committed "$id" && continue
   [ "$UNITS" -lt 0 ] || [ "$ran" -lt "$UNITS" ] || break
   say "unit $id: starting"
+  # the cache is every unit's ground: without it, stop; a set or a case that fails (a run
+  # that crashed, say) is left for the next start, and the campaign goes on with the next
   case $kind in
-    cache) run_cache_unit ;;
-    fa) run_selftest_unit "$id" "${arg//_/ }" ;;
-    case) run_selftest_unit "$id" "" ;;
+    cache) run_cache_unit || exit 1 ;;
+    fa) run_selftest_unit "$id" "${arg//_/ }" || { say "unit $id failed: going on with the next (retried at the next start)"; failed="$failed $id"; } ;;
+    case) run_selftest_unit "$id" "" || { say "unit $id failed: going on with the next (retried at the next start)"; failed="$failed $id"; } ;;
   esac
   ran=$((ran + 1))
 done < <(units)
-status
+status self
+[ -z "$failed" ] || { say "failed this time:$failed (see $RUN/logs)"; exit 1; }
