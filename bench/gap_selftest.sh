@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # granpen gap, checked on data whose effect is withheld (issue: gap diagnosis).
 #   bench/gap_selftest.sh [--scenario bench|tiny] [--jobs N] [--cases LIST] [--effects LIST] [--v0 "50 100 200"]
+#                         (--cases may name the below-limit cases EFFECT_half too: see below_limit_cases)
 #                         [--seeds "101 102 103 104"] [--measured-only]   (make the measured data only)
 #                         [--max-mean-cost P]   (fail when the mean cold cost per case exceeds P probe pours)
 #                         [--prior-seeds "41 42"]   (a signature prior of the scenario on those beds, written
@@ -60,6 +61,37 @@ cohesion|cohesion|1800|set = cohesion=1800
 rod_friction|rod_friction|-0.15|push_set = dmu_rod=-0.15
 light_grains|outside|rho_g 2.5 (header says 3.0)|set = rho_g=2.5
 CASES
+}
+
+# Below-limit cases (issue 37, section 0): each library effect at about half its detection
+# limit on bench (4 measured beds a speed; limits of docs/gap-validation.md, 2026-11-27, on
+# real LAMMPS: rolling 0.041, the mount 0.071 ms, ramp 1.27 cm, packing -0.13, stiffness
+# -0.20, force_scale 0.09 to 0.13; where that data had no limit within the knots, half the
+# nearest knot). A miss is right, and so is the truth named (alone or in a tie); another
+# effect named alone is a confident wrong answer (gap-score --below-limit). Run only when
+# --cases names them (validation/gap_bench.sh): their magnitudes are bench's, not tiny's.
+below_limit_cases() {
+  cat <<'CASES'
+rolling_resistance_half|rolling_resistance|0.02|set = mu_roll=0.02
+measurement_chain_half|measurement_chain|0.035|push_set = mount_k=3.222728e12 mount_c=7.180783e6 mount_m=100
+actuator_ramp_half|actuator_ramp|0.64|push_set = ramp=0.64
+packing_half|packing|-0.065|mu = 0.235
+contact_stiffness_half|contact_stiffness|-0.1|set = kn=7.943282e8 kt=7.943282e8
+force_scale_half|force_scale|0.05|set = rho_g=3.15
+cohesion_half|cohesion|500|set = cohesion=500
+friction_half|friction|0.075|mu = 0.375;mu_push = 0.375
+polydispersity_half|polydispersity|0.125|set = poly=0.125
+sidewalls_half|sidewalls|0.3|set = walls=1 mu_wall=0.3
+rod_friction_half|rod_friction|-0.1|push_set = dmu_rod=-0.1
+CASES
+}
+# the cases run: the twelve, and the below-limit ones that --cases names
+run_cases() {
+  all_cases
+  below_limit_cases | while IFS='|' read -r name rest; do
+    [[ ",$CASES," == *",$name,"* ]] && echo "$name|$rest"
+  done
+  return 0
 }
 
 # An outside case the library has an effect for that does to the force exactly what it
@@ -153,6 +185,7 @@ while IFS='|' read -r name truth mag keys; do
   score=(gap-score "$out/diagnosis.json" --case "$name" --truth "$truth" --magnitude "$mag" --wall-seconds "$secs")
   read -r as_effect as_mag <<< "$(outside_as "$name")"
   [ -n "$as_effect" ] && score+=(--as-effect "$as_effect" --as-magnitude "$as_mag")
+  case "$name" in *_half) score+=(--below-limit) ;; esac
   rc=0; row=$("$CLI" "${score[@]}" 2> "$WORK/score_$name.log") || rc=$?
   [ "$rc" = 0 ] || [ "$rc" = 3 ] || { echo "gap_selftest: scoring $name failed: $(cat "$WORK/score_$name.log")" >&2; fails=$((fails + 1)); continue; }
   echo "$row" | tee -a "$TABLE"
@@ -164,7 +197,7 @@ while IFS='|' read -r name truth mag keys; do
   if ! awk -v l="$least" -v m="$most" -v s="$spent" 'BEGIN { exit !(l <= s * 1.000001 && s <= m * 1.000001) }'; then
     echo "gap_selftest: $name: cold cost $spent probe pours outside the plan's range $least to $most" >&2; fails=$((fails + 1))
   fi
-done < <(all_cases)
+done < <(run_cases)
 if [ "$MEASURED_ONLY" != yes ] && [ -s "$COSTS" ]; then
   mean=$(awk '{ s += $4; n++ } END { printf "%.2f", s / n }' "$COSTS")
   echo "gap_selftest: mean cold cost per case $mean probe pours of core time over $(wc -l < "$COSTS") case(s) (plan range per case: $COSTS)"

@@ -31,6 +31,7 @@ granpen::SelftestCase selftest_case(const granpen::cli::GapScoreOptions &o)
   }
   c.truth = granpen::SelftestCase::Truth::library;
   c.effect = o.truth;
+  c.below_limit = o.below_limit;
   c.magnitude = std::strtod(o.magnitude_text.c_str(), nullptr);    // checked by the parse
   return c;
 }

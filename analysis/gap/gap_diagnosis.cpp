@@ -315,6 +315,7 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   const Scenario sc = load_scenario(given);
   const auto all_effects = choose_effects(given.effects);
   MeasuredData measured = read_measured(given.real, sc);
+  const auto bench_rate = measured_false_alarms(given.runner.inputs, sc.name);    // the scenario's measured rate
   check_output_path(given.out, given.real, given.cache);
   const std::optional<SignaturePrior> prior = find_prior(given.prior, given.runner.inputs, sc.name);
   for (const auto &n : measured.notes) progress.say(GapProgress::WARNING, "validate", n);
@@ -391,6 +392,7 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   in.notes.insert(in.notes.end(), al.notes.begin(), al.notes.end());
   in.notes.insert(in.notes.end(), f.notes.begin(), f.notes.end());
   in.plan = std::move(plan_record);
+  in.measured_false_alarms = bench_rate;
   const Diagnosis d = assemble_diagnosis(in, where, fitted, fits_verdict, confirmation, verdict, blind, std::move(residual));
   write_gap_output(d, opt.out);
   progress.say(GapProgress::INFO, "report",

@@ -153,6 +153,15 @@ Json false_alarms_json(const FalseAlarms &fa)
               {"verdicts", verdicts}};
 }
 
+// the rate measured at the scenario's scale (gap_bench_rate.h); null when none is committed
+Json measured_false_alarms_json(const std::optional<MeasuredFalseAlarms> &m)
+{
+  if (!m) return Json();
+  return Json{{"sets", m->sets}, {"alarms", m->alarms}, {"rate", num(m->interval.rate, "%.4f")},
+              {"low95", num(m->interval.low, "%.4f")}, {"high95", num(m->interval.high, "%.4f")},
+              {"file", m->file}, {"source", m->source}};
+}
+
 Json look_alikes_json(const Diagnosis &d)
 {
   Json rows = Json::array();
@@ -271,6 +280,7 @@ Json diagnosis_json(const Diagnosis &d)
   j["gap_curve"] = curve;
   j["detection_limits"] = limits_json(d);
   j["false_alarms"] = false_alarms_json(d.false_alarms);
+  j["false_alarms_measured"] = measured_false_alarms_json(d.measured_false_alarms);
   j["look_alikes"] = look_alikes_json(d);
   j["knot_bends"] = knot_bends_json(d);
   j["next_measurement"] = next_json(d.next);
@@ -612,6 +622,13 @@ std::string md_blind(const Diagnosis &d)
   md += format_text("False alarms on the %d null replicates (reference beds taken as a measurement without any effect, "
                     "each tested with thresholds calibrated on the others): %d verdict(s) other than none (rate %.2f).\n",
                     fa.replicates, fa.not_none, fa.rate());
+  if (const auto &m = d.measured_false_alarms)
+    md += format_text("At scenario %s's scale on real LAMMPS (%s): %d verdict(s) other than none in %d data sets without an "
+                      "effect, a false-alarm rate of %.3f (95%% interval %.3f to %.3f, exact).\n",
+                      d.scenario.c_str(), m->file.c_str(), m->alarms, m->sets, m->interval.rate, m->interval.low, m->interval.high);
+  else
+    md += format_text("No false-alarm rate measured at scenario %s's scale on real LAMMPS yet (validation/gap_bench.sh).\n",
+                      d.scenario.c_str());
   if (!d.look_alikes.empty()) {
     md += "\n| candidates | angle between signatures (deg) | separation at the reference values (sigma) | look alike "
           "| separation of the fits (sigma) |\n|---|---|---|---|---|\n";

@@ -87,6 +87,7 @@ Diagnosis assemble_diagnosis(const DiagnosisInputs &in, const WhereResult &where
   d.peak_end = in.peak_end;
   d.n_reference = in.n_reference;
   d.plan = in.plan;
+  d.measured_false_alarms = in.measured_false_alarms;
   // the notes in the order the stages said them: the inputs', where's, the fits' verdict's,
   // a second simulation's, then the confirmation's verdict's (record_verdict)
   d.notes = in.notes;

@@ -9,6 +9,7 @@
 #define GRANPEN_GAP_RESULT_H
 
 #include "gap_adaptive.h"
+#include "gap_bench_rate.h"
 #include "gap_confirm.h"
 #include "gap_data.h"
 #include "gap_fit.h"
@@ -83,6 +84,7 @@ struct Diagnosis {
   std::vector<KnotBend> knot_bends;         // per interior knot: what it adds at this noise (cost design)
   std::optional<NextMeasurement> next;
   FalseAlarms false_alarms;
+  std::optional<MeasuredFalseAlarms> measured_false_alarms;    // at the scenario's scale on real LAMMPS (gap_bench_rate.h)
   std::optional<Residual> residual;          // what the gap left over (none for a `none`)
   PlanRecord plan;                           // the plan's range, what this run spent, what it simulated and skipped and why
 };
@@ -96,6 +98,7 @@ struct DiagnosisInputs {
   double peak_end = 0;                      // 0.35 D
   int n_reference = 0;                      // reference beds per speed (fewest)
   PlanRecord plan;                          // stages 2-3: the plan's range, what was simulated, skipped, spent
+  std::optional<MeasuredFalseAlarms> measured_false_alarms;    // stage 1: the scenario's committed figure
 };
 
 // The record, from the stages' results: where (6), the fits (7) and their verdict (8), the

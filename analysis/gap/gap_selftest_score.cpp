@@ -143,6 +143,12 @@ void judge(const Json &d, const SelftestCase &c, const std::string &source, Self
     if (r == VerdictReading::names_scale && json_lookup(d, "scale_only.causes[cause=" + c.effect + "]").complete())
       s.pass = s.scale_causes_hold_truth = true;
     if (s.limit.truth_below && is_miss(r)) s.pass = s.missed_below_limit = true;
+    // at about half its limit: a miss is right whatever this data's limit says; naming the
+    // truth is right too; naming another effect alone, or a tie without the truth, is not
+    if (c.below_limit) {
+      if (is_miss(r)) s.pass = s.missed_below_limit = true;
+      if (r == VerdictReading::names_top && s.top_effect == c.effect) s.pass = true;
+    }
     return;
   }
 }

@@ -7,6 +7,10 @@
 //     candidates it cannot tell apart (a tie); a true magnitude below the case's detection
 //     limit in this data (diagnosis.json detection_limits, on the truth's side of 0; null:
 //     none within the knots) may be missed (a verdict that names nothing);
+//   - a below-limit case (a library effect at about half its detection limit, issue 37):
+//     right when the verdict names no physical effect (none, unexplained, scale_only) or
+//     names the truth (alone or in a tie), wrong when it names another effect alone or a
+//     tie without the truth;
 //   - an outside case (an effect the library lacks): right unless a top effect is named,
 //     except the library effect that does to the force what the outside one does (as_effect)
 //     at its magnitude within two of its fit's standard errors.
@@ -43,6 +47,7 @@ struct SelftestCase {
   Truth truth = Truth::none;
   std::string effect;            // library: the effect withheld
   double magnitude = 0;          // library: its true magnitude
+  bool below_limit = false;      // library: set at about half its detection limit (a miss is right)
   std::string as_effect;         // outside: the library effect that is a right answer ("": none)
   double as_magnitude = 0;       // ... at this magnitude
 };

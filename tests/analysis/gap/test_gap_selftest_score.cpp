@@ -129,6 +129,31 @@ TEST(SelftestScore, MissRightOnlyBelowTheLimit)
   EXPECT_FALSE(unlisted.pass);
 }
 
+// a below-limit case (issue 37: about half the effect's detection limit) may be missed even
+// where this data's limit lies below the truth; naming the truth is right; another effect
+// named alone, or a tie without the truth, is a confident wrong answer
+TEST(SelftestScore, BelowLimitCaseNeverNamesAnotherEffect)
+{
+  SelftestCase half = library("cohesion", 600);    // above this data's limit 410.9
+  half.below_limit = true;
+  const Json miss = diagnosis("unexplained", nullptr, 0.1, 0.1);
+  EXPECT_FALSE(passes(miss, library("cohesion", 600)));    // the plain rule: a miss above the limit
+  const auto s = granpen::score_selftest(miss, half, "d.json");
+  EXPECT_TRUE(s.pass && s.missed_below_limit);
+  EXPECT_TRUE(passes(diagnosis("none", nullptr, 0.1, 0.1), half));
+  EXPECT_TRUE(passes(diagnosis("scale_only", nullptr, 0.1, 0.1), half));
+  // the truth named, even where the gap does not halve (at half its limit it is barely seen)
+  EXPECT_TRUE(passes(diagnosis("explained", "cohesion", 0.2, 0.15), half));
+  // the issue's confident wrong answer: a below-limit effect named as another
+  EXPECT_FALSE(passes(diagnosis("explained", "force_scale", 0.2, 0.05), half));
+  EXPECT_FALSE(passes(diagnosis("explained", "contact_stiffness", 0.2, 0.05), half));
+  Json tie = diagnosis("tie", nullptr, 0.2, 0.2);
+  tie["tie"] = {"force_scale", "cohesion"};
+  EXPECT_TRUE(passes(tie, half));
+  tie["tie"] = {"force_scale", "packing"};
+  EXPECT_FALSE(passes(tie, half));
+}
+
 // scale_only (issue 37) names no effect: right for a library truth its causes list (as a tie
 // that holds it), or below the truth's limit (as a miss); a false alarm on no-effect data;
 // never a confident wrong answer on an outside case
