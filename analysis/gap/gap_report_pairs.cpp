@@ -70,9 +70,14 @@ std::string pair_plain_verdict(const PairStage &stage, bool provisional)
 {
   if (!stage.confirmation) return "Two effects at once.";
   const PairConfirmation &c = *stage.confirmation;
-  return "The gap is explained by two effects at once: " + c.filter + " at " + fmt(c.magnitude_filter) + " " + c.unit_filter +
-         " and " + c.other + " at " + fmt(c.magnitude_other) + " " + c.unit_other +
-         (provisional ? "; provisional (--fit-only: not confirmed)." : "; confirmed together on fresh seeds.");
+  std::string s = "The gap is explained by two effects at once: " + c.filter + " at " + fmt(c.magnitude_filter) + " (" +
+                  c.unit_filter + ") and " + c.other + " at " + fmt(c.magnitude_other) + " (" + c.unit_other + ")";
+  if (const auto &p = stage.search.named)
+    s += "; their evidence " + fmt(p->evidence, "%.1f") + " (its likelihood ratio " + fmt(p->lr, "%.1f") + " is above its threshold " +
+         fmt(p->lr_threshold, "%.1f") + ") is beyond the best single member's (" + p->best_single + ", " +
+         fmt(p->best_single_evidence, "%.1f") + ") by " + fmt(p->margin, "%.1f") + " (" + fmt(GapThresholds::lr_chi2_1_p1e4, "%.1f") +
+         " needed)";
+  return s + (provisional ? "; provisional (--fit-only: not confirmed)." : "; confirmed together on fresh seeds.");
 }
 
 std::string pair_stage_markdown(const std::optional<PairStage> &stage)
@@ -81,7 +86,7 @@ std::string pair_stage_markdown(const std::optional<PairStage> &stage)
   const PairSearch &s = stage->search;
   std::string md = "\n## Two effects at once\n\nThe pair stage was " + s.why + ".";
   if (std::isfinite(s.seeded_magnitude))
-    md += " The residual's line at " + fmt(s.line_freq, "%.0f") + " Hz seeded the chain's knot at " + fmt(s.seeded_magnitude) +
+    md += " The residual's line at " + fmt(s.line_freq, "%.0f") + " Hz seeded the filter's knot at " + fmt(s.seeded_magnitude) +
           (s.seeded_single ? " (the chain alone with it: evidence " + fmt(lr_evidence(*s.seeded_single), "%.1f") + ", explained " +
                                  fmt(s.seeded_single->explained, "%.2f") + ")"
                            : std::string()) +
