@@ -19,10 +19,13 @@ constexpr std::size_t SPEEDS = 3, FEATURES = 24, NULLS = 6;
 // 1 / 0.1 = 10 standard deviations out of it, as a gap the omnibus test sees plainly
 constexpr double VAR = 1e-2;
 
+// B's size against A's (1: both plain; small: B's part of a gap below what a parameter earns)
+double b_size = 1.0;
+
 // a signature per speed: a smooth shape of its own (A rings: alternating; B shifts: a ramp in k)
 double shape(char which, std::size_t s, std::size_t k)
 {
-  return which == 'A' ? (k % 2 ? 1.0 : -0.6) * (1.0 + 0.2 * s) : 0.8 * std::sin(0.4 * (double) k + 0.3 * s);
+  return which == 'A' ? (k % 2 ? 1.0 : -0.6) * (1.0 + 0.2 * s) : b_size * 0.8 * std::sin(0.4 * (double) k + 0.3 * s);
 }
 
 const double REF = 10.0;
@@ -176,6 +179,24 @@ TEST(GapPairs, NoiseAloneOrOneEffectNamesNoPair)
   ASSERT_FALSE(s.tried.empty());
   EXPECT_FALSE(s.named.has_value()) << s.why;
   EXPECT_FALSE(s.tried[0].passes);
+}
+
+// a second member that adds less than a single effect's threshold to its best single member
+// (B's signature 0.05 of A's: at 1.2 it adds about 1.2^2 x 72 x (0.04^2 / 2) / 0.01 = 8 to the
+// likelihood ratio, under 15.14, while its magnitude stands well away from 0): no pair, by
+// the margin rule alone (detected, explaining, inside its range)
+TEST(GapPairs, ASecondMemberBelowTheMarginNamesNoPair)
+{
+  b_size = 0.05;
+  World w = world(1.2, 1.2, 31);
+  const PairSearch s = search_pairs_in(library(), w.evidence, w.data, w.f, Verdict::unexplained, with_line());
+  b_size = 1.0;
+  ASSERT_EQ(s.tried.size(), 1u);
+  const PairFit &p = s.tried[0];
+  EXPECT_FALSE(s.named.has_value()) << s.why;
+  EXPECT_TRUE(p.detected);
+  EXPECT_LT(p.margin, GapThresholds::lr_chi2_1_p1e4);
+  EXPECT_NE(p.why.find("beyond its best single member"), std::string::npos) << p.why;
 }
 
 // the pair's threshold: the chi^2(2) quantile of 1e-4 (-2 ln 1e-4), scaled by its null mean
