@@ -300,30 +300,50 @@ EffectData pair_line(const EffectData &A, const EffectData &B, double a, double 
   return L;
 }
 
-EffectData seed_chain_knot(const Effect &chain, double a, const SimulatedRuns &sims, const Features &f,
-                           const Alignment &al, bool &seeded)
+namespace {
+
+// whether a is a new knot of ed: inside the fit's range and farther from every knot than
+// same_magnitude_of_range of the segment of knots it lies in (the chain's knots are spaced by
+// factors, 0.2 to 10 ms: a fraction of the whole range would call 2.4 ms the 2 ms knot)
+bool new_knot(const std::vector<double> &knots, std::pair<double, double> range, double a)
+{
+  const auto [lo, hi] = range;
+  if (!(std::isfinite(a) && a > lo && a < hi)) return false;
+  const auto above = std::upper_bound(knots.begin(), knots.end(), a);
+  const double segment = above == knots.begin() || above == knots.end() ? hi - lo : *above - *(above - 1);
+  for (double k : knots)
+    if (std::abs(a - k) <= TH::same_magnitude_of_range * segment) return false;
+  return true;
+}
+bool new_knot(const EffectData &ed, double a) { return new_knot(ed.knots, magnitude_range(ed), a); }
+
+}    // namespace
+
+EffectData seed_chain_knot(const Effect &chain, const std::vector<double> &at, const SimulatedRuns &sims, const Features &f,
+                           const Alignment &al, std::vector<double> &seeded)
 {
   EffectData ed = effect_data(chain, f);
-  const auto [lo, hi] = magnitude_range(ed);
-  seeded = std::isfinite(a) && a > lo && a < hi;
-  // the same simulation as a knot when within same_magnitude_of_range of the segment it lies
-  // in (the chain's knots are spaced by factors, 0.2 to 10 ms: a fraction of the whole range
-  // would call 2.4 ms the 2 ms knot)
-  const auto above = std::upper_bound(ed.knots.begin(), ed.knots.end(), a);
-  const double segment = above == ed.knots.begin() || above == ed.knots.end() ? hi - lo : *above - *(above - 1);
-  for (double k : ed.knots) seeded = seeded && std::abs(a - k) > TH::same_magnitude_of_range * segment;
-  if (!seeded) return ed;
+  seeded.clear();
   Effect with = chain;
-  with.knots.push_back(a);
-  std::sort(with.knots.begin(), with.knots.end());
   Features f2 = f;
-  RunsBySpeed filtered = transformed_runs(chain, a, sims.base);
-  std::vector<Ensemble> ens;
-  for (double v : f.speeds) {
-    align_runs(filtered[v], al.onset.at(v));
-    ens.push_back(ensemble_of(filtered[v], al.grid, v));
+  const auto range = magnitude_range(ed);
+  for (double a : at) {
+    std::vector<double> knots = ed.knots;    // the knots so far, seeds included
+    knots.insert(knots.end(), seeded.begin(), seeded.end());
+    std::sort(knots.begin(), knots.end());
+    if (!new_knot(knots, range, a)) continue;
+    with.knots.push_back(a);
+    RunsBySpeed filtered = transformed_runs(chain, a, sims.base);
+    std::vector<Ensemble> ens;
+    for (double v : f.speeds) {
+      align_runs(filtered[v], al.onset.at(v));
+      ens.push_back(ensemble_of(filtered[v], al.grid, v));
+    }
+    f2.knots[effect_sweep_name(chain, a)] = std::move(ens);
+    seeded.push_back(a);
   }
-  f2.knots[effect_sweep_name(chain, a)] = std::move(ens);
+  if (seeded.empty()) return ed;
+  std::sort(with.knots.begin(), with.knots.end());
   return effect_data(with, f2);
 }
 
@@ -362,31 +382,71 @@ PairSearch search_pairs_in(const std::vector<const Effect *> &effects, const Fit
   return out;
 }
 
+namespace {
+
+// Knots filling the segment(s) of knots that hold a (both, when a is a knot) at most
+// PAIR_SEED_STEP apart by factor (linearly from 0): where a transform's signature is
+// otherwise a blend of two knots' (between 2 and 4 ms the chain's is), filtered knots that
+// cost nothing.
+std::vector<double> segment_knots(const std::vector<double> &knots, double a)
+{
+  std::vector<double> out;
+  for (std::size_t i = 0; i + 1 < knots.size(); ++i) {
+    const double lo = knots[i], hi = knots[i + 1];
+    if (!(a >= lo && a <= hi)) continue;
+    const int n = lo > 0.0 ? (int) std::ceil(std::log(hi / lo) / std::log(PAIR_SEED_STEP)) : 4;
+    for (int j = 1; j < n; ++j)
+      out.push_back(lo > 0.0 ? lo * std::pow(hi / lo, (double) j / n) : hi * j / n);
+  }
+  return out;
+}
+
+// The search with the filter's knots seeded at the given magnitudes (none seeded: as fitted).
+PairSearch search_seeded(const std::vector<const Effect *> &effects, const FittedCandidates &fitted, const Features &f,
+                         const SimulatedRuns &sims, const Alignment &al, Verdict standing,
+                         const std::optional<Residual> &residual, const Effect *filter, const std::vector<double> &at)
+{
+  std::map<std::string, EffectData> data = fitted.data;
+  std::vector<double> seeded;
+  std::optional<EffectFit> seeded_single;
+  if (filter && data.count(filter->name)) {
+    EffectData ed = seed_chain_knot(*filter, at, sims, f, al, seeded);
+    if (!seeded.empty()) seeded_single = fit_candidate(ed, f), data[filter->name] = std::move(ed);
+  }
+  PairSearch out = search_pairs_in(effects, fitted.evidence, std::move(data), f, standing, residual,
+                                   seeded_single ? &*seeded_single : nullptr);
+  out.seeded_knots = seeded;
+  return out;
+}
+
+}    // namespace
+
 PairSearch search_pairs(const std::vector<const Effect *> &effects, const FittedCandidates &fitted, const Features &f,
                         const SimulatedRuns &sims, const Alignment &al, Verdict standing,
                         const std::optional<Residual> &residual)
 {
   std::string why;
   if (!pair_stage_entered(standing, residual, why)) return search_pairs_in(effects, fitted.evidence, {}, f, standing, residual);
-  std::map<std::string, EffectData> data = fitted.data;
-  // a line that does not scale with v0 seeds the filter's knot at the period that rings there
+  const Effect *filter = nullptr;
+  for (const Effect *e : effects)
+    if (!filter && is_filter(*e)) filter = e;
+  // the filter's knot search: a line that does not scale with v0 seeds it at the period that
+  // rings there; without one, at the filter's own fitted magnitude (a transform's knot costs
+  // nothing, so it is placed where the data put it rather than interpolated)
   const double line = seeding_line(*residual);
-  double seeded_at = NAN;
-  std::optional<EffectFit> seeded_single;
-  for (const Effect *e : effects) {
-    if (!is_filter(*e) || !std::isfinite(line)) continue;
-    bool seeded = false;
-    EffectData ed = seed_chain_knot(*e, resonance_magnitude(*e, line), sims, f, al, seeded);
-    if (!seeded) continue;
-    seeded_at = resonance_magnitude(*e, line);
-    seeded_single = fit_candidate(ed, f);
-    data[e->name] = std::move(ed);
-    break;
+  std::vector<double> at;
+  if (filter && std::isfinite(line)) at.push_back(resonance_magnitude(*filter, line));
+  for (const EffectFit &r : fitted.evidence.ranking)
+    if (filter && at.empty() && r.name == filter->name && fitted.data.count(r.name))
+      at = segment_knots(fitted.data.at(r.name).knots, r.magnitude);
+  PairSearch out = search_seeded(effects, fitted, f, sims, al, standing, residual, filter, at);
+  // once more with a knot where the best pair put the filter, when that is a new knot
+  if (filter && !out.tried.empty() && out.tried[0].a == filter->name && out.data.count(filter->name) &&
+      new_knot(out.data.at(filter->name), out.tried[0].magnitude_a)) {
+    at.push_back(out.tried[0].magnitude_a);
+    out = search_seeded(effects, fitted, f, sims, al, standing, residual, filter, at);
   }
-  PairSearch out = search_pairs_in(effects, fitted.evidence, std::move(data), f, standing, residual,
-                                   seeded_single ? &*seeded_single : nullptr);
   out.line_freq = line;
-  out.seeded_magnitude = seeded_at;
   return out;
 }
 

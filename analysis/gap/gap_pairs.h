@@ -16,6 +16,9 @@
 //     resonance of the chain at the period whose filter peaks there; that period is added to
 //     the chain's knots (the baseline's runs filtered there, paired on its beds) instead of
 //     the fit interpolating between its fixed knots, for the pair and for the chain alone.
+//     Without a line, the segment of knots the chain's own single fit lies in is filled with
+//     knots a factor PAIR_SEED_STEP apart; and once more a knot where the best pair puts the
+//     chain, when that is a new one (a transform's knot costs nothing).
 //   - The fit (fit_pair): both magnitudes jointly, their signatures added on the reference
 //     beds, M(a, b) = M_A(a) + M_B(b) - M(0), with the nuisance force scale every fit has;
 //     its likelihood ratio is calibrated on the null replicates as a single's is, with the
@@ -57,6 +60,12 @@ namespace granpen {
 // two push-only candidates nearest the gap (a third direction adds pairs whose member explains
 // least, each one more test against the pair's threshold).
 constexpr std::size_t PAIR_NEAREST = 3;
+
+// Without a line, the filter's knot search fills the segment of knots its own fit lies in with
+// knots a factor of at most 1.1 apart (the library's filtered knots are 1.4 to 1.5 apart; a
+// tenth of a period moves a 400 Hz resonance by 40 Hz, under the residual's line resolution,
+// about 100 Hz over tiny's 2 cm at 200 cm/s).
+constexpr double PAIR_SEED_STEP = 1.1;
 
 // Whether the stage is entered, and why (or why not) in words.
 bool pair_stage_entered(Verdict standing, const std::optional<Residual> &residual, std::string &why);
@@ -112,19 +121,19 @@ void judge_pair(PairFit &fit, const std::vector<Target> &nulls, const EffectData
 // for the confirmation's projection (gap_confirm.h, evaluate_after, signature_sigma).
 EffectData pair_line(const EffectData &A, const EffectData &B, double a, double b);
 
-// The chain's model data with a knot at magnitude a: the baseline's (aligned) runs filtered
-// there, aligned to the measured onsets, as every transform knot is. The chain's model data
-// as fitted when a lies outside the fit's range or within same_magnitude_of_range of the
-// segment of knots it lies in from a knot (seeded false).
-EffectData seed_chain_knot(const Effect &chain, double a, const SimulatedRuns &sims, const Features &f,
-                           const Alignment &al, bool &seeded);
+// The chain's model data with knots at the magnitudes at: the baseline's (aligned) runs
+// filtered there, aligned to the measured onsets, as every transform knot is; seeded: those
+// that became knots (one outside the fit's range, or within same_magnitude_of_range of the
+// segment of knots it lies in from a knot or an earlier seed, does not).
+EffectData seed_chain_knot(const Effect &chain, const std::vector<double> &at, const SimulatedRuns &sims, const Features &f,
+                           const Alignment &al, std::vector<double> &seeded);
 
 // What the stage found.
 struct PairSearch {
   bool entered = false;
   std::string why;                        // entered or not, in words
   double line_freq = NAN;                 // the line that seeded the chain (Hz), NaN: none
-  double seeded_magnitude = NAN;          // the chain's seeded knot, NaN: none
+  std::vector<double> seeded_knots;       // the chain's seeded knots (the line's, or its own fit's; the pair's)
   std::optional<EffectFit> seeded_single; // the chain alone with the seeded knot
   std::vector<PairFit> tried;             // every pair tried, most evidence first
   std::optional<PairFit> named;           // the one pair that passes alone

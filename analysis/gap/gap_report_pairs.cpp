@@ -40,6 +40,8 @@ Json pair_stage_json(const std::optional<PairStage> &stage)
   const PairSearch &s = stage->search;
   Json tried = Json::array();
   for (const PairFit &p : s.tried) tried.push_back(pair_fit_json(p));
+  Json seeded_knots = Json::array();
+  for (double a : s.seeded_knots) seeded_knots.push_back(num(a, "%.4g"));
   Json seeded;
   if (s.seeded_single)
     seeded = Json{{"magnitude", num(s.seeded_single->magnitude)},
@@ -58,7 +60,7 @@ Json pair_stage_json(const std::optional<PairStage> &stage)
   }
   return Json{{"why", s.why},
               {"line_freq", num(s.line_freq, "%.4g")},
-              {"seeded_knot", num(s.seeded_magnitude, "%.4g")},
+              {"seeded_knots", seeded_knots},
               {"seeded_single", seeded},
               {"tried", tried},
               {"named", s.named ? pair_fit_json(*s.named) : Json()},
@@ -85,12 +87,17 @@ std::string pair_stage_markdown(const std::optional<PairStage> &stage)
   if (!stage) return "";
   const PairSearch &s = stage->search;
   std::string md = "\n## Two effects at once\n\nThe pair stage was " + s.why + ".";
-  if (std::isfinite(s.seeded_magnitude))
-    md += " The residual's line at " + fmt(s.line_freq, "%.0f") + " Hz seeded the filter's knot at " + fmt(s.seeded_magnitude) +
-          (s.seeded_single ? " (the chain alone with it: evidence " + fmt(lr_evidence(*s.seeded_single), "%.1f") + ", explained " +
+  if (!s.seeded_knots.empty()) {
+    std::string knots;
+    for (double a : s.seeded_knots) knots += (knots.empty() ? "" : ", ") + fmt(a);
+    md += (std::isfinite(s.line_freq) ? " The residual's line at " + fmt(s.line_freq, "%.0f") + " Hz set the filter's knot search: knots at "
+                                      : std::string(" The filter's knot search (no line: the segment of its knots its own fit lies in, then the pair's magnitude): knots at ")) +
+          knots +
+          (s.seeded_single ? " (the filter alone with them: evidence " + fmt(lr_evidence(*s.seeded_single), "%.1f") + ", explained " +
                                  fmt(s.seeded_single->explained, "%.2f") + ")"
                            : std::string()) +
           ".";
+  }
   md += "\n\n| pair | magnitudes | explained | held out | likelihood ratio (threshold) | evidence | best single | margin | passes |\n"
         "|---|---|---|---|---|---|---|---|---|\n";
   for (const PairFit &p : s.tried)
