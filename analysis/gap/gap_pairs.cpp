@@ -347,6 +347,19 @@ EffectData seed_chain_knot(const Effect &chain, const std::vector<double> &at, c
   return effect_data(with, f2);
 }
 
+std::vector<double> segment_knots(const std::vector<double> &knots, double a)
+{
+  std::vector<double> out;
+  for (std::size_t i = 0; i + 1 < knots.size(); ++i) {
+    const double lo = knots[i], hi = knots[i + 1];
+    if (!(a >= lo && a <= hi)) continue;
+    const int n = lo > 0.0 ? (int) std::ceil(std::log(hi / lo) / std::log(PAIR_SEED_STEP)) : 4;
+    for (int j = 1; j < n; ++j)
+      out.push_back(lo > 0.0 ? lo * std::pow(hi / lo, (double) j / n) : hi * j / n);
+  }
+  return out;
+}
+
 PairSearch search_pairs_in(const std::vector<const Effect *> &effects, const FitEvidence &evidence,
                            std::map<std::string, EffectData> data, const Features &f, Verdict standing,
                            const std::optional<Residual> &residual, const EffectFit *seeded_single)
@@ -383,23 +396,6 @@ PairSearch search_pairs_in(const std::vector<const Effect *> &effects, const Fit
 }
 
 namespace {
-
-// Knots filling the segment(s) of knots that hold a (both, when a is a knot) at most
-// PAIR_SEED_STEP apart by factor (linearly from 0): where a transform's signature is
-// otherwise a blend of two knots' (between 2 and 4 ms the chain's is), filtered knots that
-// cost nothing.
-std::vector<double> segment_knots(const std::vector<double> &knots, double a)
-{
-  std::vector<double> out;
-  for (std::size_t i = 0; i + 1 < knots.size(); ++i) {
-    const double lo = knots[i], hi = knots[i + 1];
-    if (!(a >= lo && a <= hi)) continue;
-    const int n = lo > 0.0 ? (int) std::ceil(std::log(hi / lo) / std::log(PAIR_SEED_STEP)) : 4;
-    for (int j = 1; j < n; ++j)
-      out.push_back(lo > 0.0 ? lo * std::pow(hi / lo, (double) j / n) : hi * j / n);
-  }
-  return out;
-}
 
 // The search with the filter's knots seeded at the given magnitudes (none seeded: as fitted).
 PairSearch search_seeded(const std::vector<const Effect *> &effects, const FittedCandidates &fitted, const Features &f,

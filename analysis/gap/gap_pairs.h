@@ -85,6 +85,12 @@ std::vector<PairSpec> pairs_to_try(const std::vector<EffectFit> &ranking, const 
 // response at 0 Hz by a fifth).
 double resonance_magnitude(const Effect &filter, double f_line);
 
+// Knots filling the segment(s) of knots that hold a (both, when a is a knot), at most
+// PAIR_SEED_STEP apart by factor (4 equal steps from 0): where a transform's signature is
+// otherwise a blend of two knots' (between 2 and 4 ms the chain's is), filtered knots that
+// cost nothing.
+std::vector<double> segment_knots(const std::vector<double> &knots, double a);
+
 // The line a seed is taken from: the strongest of the residual's lines when they do not scale
 // with v0 (a wavelength of the bed is no resonance); NaN when there is none.
 double seeding_line(const Residual &residual);

@@ -246,3 +246,20 @@ TEST(GapPairs, ALineSeedsTheChainAtItsResonance)
   r.line_scaling = "scales with v0";    // a wavelength of the bed: no resonance to seed
   EXPECT_TRUE(std::isnan(seeding_line(r)));
 }
+
+// without a line the chain's segment holding its own fit is filled, a factor of at most 1.1
+// apart: 2 to 4 ms in 8 steps of 2^(1/8) = 1.09 (7 knots between); at a knot, both segments
+TEST(GapPairs, SegmentKnotsFillTheSegmentOfTheFit)
+{
+  const std::vector<double> knots = {0, 0.2, 0.3, 0.45, 0.7, 1, 1.4, 2, 4, 10};
+  const auto k = segment_knots(knots, 2.12);
+  ASSERT_EQ(k.size(), 7u);
+  for (std::size_t i = 0; i < k.size(); ++i) EXPECT_NEAR(k[i], 2.0 * std::pow(2.0, (i + 1) / 8.0), 1e-12);
+  // 1.4 to 2 in ceil(ln(2 / 1.4) / ln 1.1) = 4 steps (3 knots), then 2 to 4's 7
+  EXPECT_EQ(segment_knots(knots, 2.0).size(), 10u);
+  // from 0 (no factor): 4 equal steps
+  const auto z = segment_knots(knots, 0.1);
+  ASSERT_EQ(z.size(), 3u);
+  for (std::size_t i = 0; i < z.size(); ++i) EXPECT_NEAR(z[i], 0.05 * (i + 1), 1e-15);
+  EXPECT_TRUE(segment_knots(knots, 12.0).empty());
+}
