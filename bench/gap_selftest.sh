@@ -45,7 +45,9 @@ export GRANPEN_LMP=${GRANPEN_LMP:-$ROOT/build/lmp_granpen} GRANPEN_INPUTS=${GRAN
 WORK=${GRANPEN_SELFTEST_WORK:-$ROOT/runs/gap_selftest}/$SCEN
 mkdir -p "$WORK"
 
-# case: name | truth (expected top effect, or none / outside) | magnitude said in the table | sweep keys (; between lines)
+# case: name | truth (expected top effect, or none / outside; two effects at once: A,B) | magnitude said in the table
+# (A,B: X,Y) | sweep keys (; between lines). chain_ramp: the mount at 2.4 ms (natural frequency 417 Hz, its reading
+# peaking near 400 Hz; k = m (2 pi / T)^2, c = 2 zeta sqrt(k m), zeta 0.2) with a 1.2 cm ramp (issue 37)
 all_cases() {
   cat <<'CASES'
 none|none|0|
@@ -60,6 +62,7 @@ friction|friction|0.1|mu = 0.4;mu_push = 0.4
 cohesion|cohesion|1800|set = cohesion=1800
 rod_friction|rod_friction|-0.15|push_set = dmu_rod=-0.15
 light_grains|outside|rho_g 2.5 (header says 3.0)|set = rho_g=2.5
+chain_ramp|measurement_chain,actuator_ramp|2.4,1.2|push_set = mount_k=6.853892e8 mount_c=1.047198e5 mount_m=100 ramp=1.2
 CASES
 }
 

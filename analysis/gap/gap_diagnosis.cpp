@@ -13,6 +13,7 @@
 #include "gap_plan.h"
 #include "gap_prior.h"
 #include "gap_limits.h"
+#include "gap_pairs.h"
 #include "gap_report.h"
 #include "gap_residual.h"
 #include "gap_result.h"
@@ -276,6 +277,40 @@ Confirmation confirm_with_runs(const std::map<std::string, const Effect *> &by_n
   return std::move(step.done);
 }
 
+// Stage 11b's confirmation with stage 3 between its calls, as confirm_with_runs.
+PairConfirmation confirm_pair_with_runs(const PairSearch &search, const WhereResult &where, const Features &f,
+                                        const Alignment &al, const SimContext &sim, bool fit_only, std::vector<SimRequest> &asked)
+{
+  StageRuns simulated;
+  PairConfirmStep step = confirm_pair(search, where, f, al, fit_only, simulated);
+  while (step.need) {
+    const Effect &e = *find_effect(step.need->effect);
+    for (auto &r : needed_requests(*step.need, e, sim)) asked.push_back(std::move(r));
+    simulate_needed(*step.need, e, sim, simulated);
+    step = confirm_pair(search, where, f, al, fit_only, simulated);
+  }
+  return std::move(step.done);
+}
+
+// Stage 11b: the pair search (null when not entered) and, for a named pair, its confirmation;
+// then the verdict that stands (stands: given the singles', changed by a confirmed pair).
+std::optional<PairStage> pair_stage(const std::vector<const Effect *> &effects, const FittedCandidates &fitted,
+                                    const Features &f, const SimulatedRuns &sims, const Alignment &al, const WhereResult &where,
+                                    const Confirmation &confirmation, const std::optional<Residual> &residual,
+                                    const SimContext &sim, bool fit_only, const Progress &progress,
+                                    std::vector<SimRequest> &asked, VerdictDecision &stands)
+{
+  PairSearch search = search_pairs(effects, fitted, f, sims, al, stands.verdict, residual);
+  if (!search.entered) return std::nullopt;
+  progress.say(GapProgress::INFO, "pairs", "two effects at once: " + search.why);
+  PairStage st{std::move(search), std::nullopt};
+  if (st.search.named) {
+    st.confirmation = confirm_pair_with_runs(st.search, where, f, al, sim, fit_only, asked);
+    stands = decide_verdict(fitted.evidence, &confirmation.outcome, &st.confirmation->outcome);
+  }
+  return st;
+}
+
 // what the confirm stage says it does, from the fits' verdict
 std::string confirm_message(const VerdictDecision &fits_verdict, const std::vector<EffectFit> &ranking, bool fit_only)
 {
@@ -373,7 +408,6 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   std::vector<SimRequest> asked;
   const Confirmation confirmation = confirm_with_runs(by_name, fitted, fits_verdict, where, f, al,
                                                       SimContext{sc.name, measured.v0s, runner}, opt.fit_only, asked);
-  record_spent(sc, opt, measured.v0s, effects, asked, plan_record);
 
   // 8 verdict that stands: the fits' evidence and the confirmation's result
   const VerdictDecision verdict = decide_verdict(fitted.evidence, &confirmation.outcome);
@@ -387,18 +421,27 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   std::optional<Residual> residual =
       residual_stage(f, measured.runs, sims.fresh, al.grid, peak_end, where, fitted, verdict, confirmation);
 
+  // 11b pairs: two effects at once, when no single one explains and the residual moves the
+  // spectrum (gap_pairs.h); a named pair confirmed on fresh runs decides the verdict that stands
+  VerdictDecision stands = verdict;
+  std::optional<PairStage> pairs = pair_stage(effects, fitted, f, sims, al, where, confirmation, residual,
+                                              SimContext{sc.name, measured.v0s, runner}, opt.fit_only, progress, asked, stands);
+  record_spent(sc, opt, measured.v0s, effects, asked, plan_record);
+
   // 12 record, 13 report
   DiagnosisInputs in{sc.name, opt.real, measured.files, measured.notes, al.grid, peak_end, f.n_reference};
   in.notes.insert(in.notes.end(), al.notes.begin(), al.notes.end());
   in.notes.insert(in.notes.end(), f.notes.begin(), f.notes.end());
   in.plan = std::move(plan_record);
   in.measured_false_alarms = bench_rate;
-  const Diagnosis d = assemble_diagnosis(in, where, fitted, fits_verdict, confirmation, verdict, blind, std::move(residual));
+  const Diagnosis d =
+      assemble_diagnosis(in, where, fitted, fits_verdict, confirmation, stands, blind, std::move(residual), std::move(pairs));
   write_gap_output(d, opt.out);
   progress.say(GapProgress::INFO, "report",
                format_text("verdict %s%s; G_all %.3f -> %.3f (%d measured runs per speed at least, %d simulated); %s",
                       verdict_name(d.verdict),
-                      !d.tie.empty() ? (" (" + tie_names(d.tie) + ")").c_str()
+                      !d.tie.empty()    ? (" (" + tie_names(d.tie) + ")").c_str()
+                      : !d.pair.empty() ? (" (" + d.pair[0] + " and " + d.pair[1] + ")").c_str()
                       : d.top_effect.empty() ? ""
                                              : (" (" + d.top_effect + ", magnitude " + printf_number("%.4g", d.magnitude) + ")").c_str(),
                       d.gap_before, d.gap_after, d.n_real_min, d.n_sim, (opt.out + "/diagnosis.json").c_str()));

@@ -140,6 +140,12 @@ inline double lr_evidence(const EffectFit &f) { return f.lr - (f.lr_null_mean > 
 // weighted squared residual at magnitude 0: for EffectData::noise_r2.
 std::vector<double> noise_residual(const std::vector<Target> &nulls, const EffectData &e);
 
+// The fraction of the weighted squared gap w0 at magnitude 0 that a fit leaving w removes: of
+// its excess over the noise's share n when that is known (n > 0), the excess taken at least
+// at chi2_noise_sigmas standard deviations of a chi^2 with n degrees of freedom, capped at 1
+// (fit_effect's explained; the pair stage's, gap_pairs.h).
+double explained_fraction(double w0, double w, double n);
+
 // Upper tail probability of chi^2 with k degrees of freedom.
 double chi2_sf(double chi2, double k);
 

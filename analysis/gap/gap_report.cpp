@@ -4,6 +4,7 @@
 
 #include "effects.h"
 #include "gap_plan.h"
+#include "gap_report_pairs.h"
 #include "gap_thresholds.h"
 #include "atomic_file.h"
 #include "json_writer.h"
@@ -258,7 +259,9 @@ Json diagnosis_json(const Diagnosis &d)
                            {"significant", d.significant},
                            {"route", !d.significant ? Json() : Json(d.targeted ? "targeted" : "omnibus")},
                            {"null_replicates", d.n_null}};
-  j["confirmed"] = d.verdict != Verdict::explained && d.verdict != Verdict::scale_only ? Json() : Json(!d.provisional);
+  j["confirmed"] = d.verdict != Verdict::explained && d.verdict != Verdict::scale_only && d.verdict != Verdict::pair
+                       ? Json()
+                       : Json(!d.provisional);
   j["scale_only"] = scale_only_json(d.scale_only);
   j["confirmation"] = confirmation_json(d);
   j["refinement"] = !d.refined ? Json()
@@ -285,6 +288,8 @@ Json diagnosis_json(const Diagnosis &d)
   j["knot_bends"] = knot_bends_json(d);
   j["next_measurement"] = next_json(d.next);
   j["residual"] = residual_json(d.residual);
+  j["pair"] = d.pair.empty() ? Json() : Json(d.pair);
+  j["pairs"] = pair_stage_json(d.pairs);
   j["notes"] = d.notes;
   j["plan"] = plan_json(d.plan);
   // the rules' thresholds the verdict was decided by (gap_thresholds.h)
@@ -458,6 +463,7 @@ std::string plain_verdict(const Diagnosis &d)
   case Verdict::unexplained:
     return "There is a gap that no candidate effect explains" +
            (d.residual && !d.residual->nearest.empty() ? " (nearest: " + d.residual->nearest + ", see Residual)." : std::string("."));
+  case Verdict::pair: return d.pairs ? pair_plain_verdict(*d.pairs, d.provisional) : "Two effects at once.";
   case Verdict::explained: break;
   }
   const Effect *e = find_effect(d.top_effect);
@@ -721,7 +727,8 @@ std::string md_residual(const Diagnosis &d)
 std::string report_markdown(const Diagnosis &d, const std::vector<std::string> &figures,
                             const std::vector<std::string> &failures)
 {
-  std::string md = md_summary(d) + md_scale_only(d) + md_where(d) + md_which(d) + md_blind(d) + md_residual(d);
+  std::string md = md_summary(d) + md_scale_only(d) + md_where(d) + md_which(d) + md_blind(d) + md_residual(d) +
+                   pair_stage_markdown(d.pairs);
   md += "\n## Cost\n\n" + plan_record_text(d.plan) + "\n";
   md += format_text("\n## Notes\n\n");
   for (const auto &n : d.notes) md += format_text("- %s\n", n.c_str());

@@ -14,6 +14,7 @@
 #include "gap_data.h"
 #include "gap_fit.h"
 #include "gap_limits.h"
+#include "gap_pairs.h"
 #include "gap_residual.h"
 #include "gap_verdict.h"
 #include "gap_where.h"
@@ -67,6 +68,8 @@ struct Diagnosis {
   std::string scale_effect;                  // scale_only: the scale candidate that explains the gap (no physical effect)
   std::optional<ScaleFinding> scale_only;    // scale_only: the scale and what can do it (gap_limits.h)
   std::vector<std::string> tie;              // "tie": the candidates (two or more) that cannot be told apart
+  std::vector<std::string> pair;             // "pair": the two effects present at once (the filter first)
+  std::optional<PairStage> pairs;            // the pair stage's record (gap_pairs.h): null when not entered
   std::vector<CandidateRecord> candidates;   // the verdict's record: per candidate, the rules it fell short of
   std::string tested_effect;                 // simulated for confirmation (even when downgraded)
   double magnitude = 0;
@@ -102,10 +105,13 @@ struct DiagnosisInputs {
 };
 
 // The record, from the stages' results: where (6), the fits (7) and their verdict (8), the
-// confirmation (9), the verdict that stands (8 again), how blind (10), the residual (11).
+// confirmation (9), the verdict that stands (8 again, with the pair stage's outcome), how
+// blind (10), the residual (11), the pair stage (11b; null when not entered: after a pair
+// verdict its confirming runs are the "after").
 Diagnosis assemble_diagnosis(const DiagnosisInputs &in, const WhereResult &where, const FittedCandidates &fitted,
                              const VerdictDecision &fits_verdict, const Confirmation &confirmation,
-                             const VerdictDecision &verdict, const Blindness &blind, std::optional<Residual> residual);
+                             const VerdictDecision &verdict, const Blindness &blind, std::optional<Residual> residual,
+                             std::optional<PairStage> pairs = std::nullopt);
 
 // The decision into the record (the verdict, its effect or tie, the routes, the flags), with
 // the sentences that say why appended to its notes: the one writer of d.verdict, defined
