@@ -51,7 +51,6 @@ packing|packing|-0.18|mu = 0.12
 contact_stiffness|contact_stiffness|-0.5|set = kn=3.16228e8 kt=3.16228e8
 friction|friction|0.1|mu = 0.4;mu_push = 0.4
 cohesion|cohesion|1800|set = cohesion=1800
-cohesion_dmt|cohesion_dmt|1200|set = cohesion_dmt=1200
 rod_friction|rod_friction|-0.15|push_set = dmu_rod=-0.15
 light_grains|outside|rho_g 2.5 (header says 3.0)|set = rho_g=2.5
 CASES
