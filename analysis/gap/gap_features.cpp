@@ -90,25 +90,27 @@ namespace {
 
 // per speed: the ensembles, the noise model pooled over the ensembles on beds of their own,
 // the measured target
-void speed_ensembles(Features &f, std::size_t s, const RunsBySpeed &real, const SimulatedRuns &sims, const GapGrid &grid)
+void speed_ensembles(Features &f, std::size_t s, const RunsBySpeed &real, const SimulatedRuns &sims,
+                     const std::vector<const Effect *> &effects, const GapGrid &grid)
 {
   const double v = f.speeds[s];
   f.real[s] = ensemble_of(real.at(v), grid, v);
   f.spec_real[s] = spectrum_moments(real.at(v), grid);
   f.base[s] = ensemble_of(sims.base.at(v), grid, v);
-  // the noise model pools the ensembles that every diagnosis simulates whatever its library:
-  // the baseline's signature beds (seeds 1, 2) and the reference beds (seeds 11 to 14), 4
-  // degrees of freedom per speed. Not the pour-level knots' beds: with them, adding a
-  // candidate to the library moved every other candidate's fit (and with it the magnitude
-  // its confirming runs were simulated at), so a library's verdict on one effect depended on
-  // which other effects it held (docs/gap.md, "Where" 5). Not a push-only knot's runs
-  // either: they repeat the baseline's beds and would count the same difference again.
+  // the noise model pools ensembles on beds of their own: a push-only effect's runs
+  // repeat the baseline's beds, and would count the same bed-to-bed difference again. The
+  // reference beds (seeds 11 to 14) are beds of their own too: with them a library of
+  // push-only effects alone (--effects measurement_chain) still has 4 degrees of freedom
+  // per speed, not the baseline's 1 (with 1, 3 of 6 null replicates came out unexplained)
   f.fresh[s] = ensemble_of(sims.fresh.at(v), grid, v);
-  const std::vector<const Ensemble *> pool{&f.base[s], &f.fresh[s]};
+  std::vector<const Ensemble *> pool{&f.base[s], &f.fresh[s]};
   for (auto &[name, by] : sims.knots) {
     f.knots[name].resize(f.nspeeds());
     f.knots[name][s] = ensemble_of(by.at(v), grid, v);
   }
+  for (const Effect *e : effects)
+    if (e->pour_level)
+      for (double a : e->knots) pool.push_back(&f.knots[effect_sweep_name(*e, a)][s]);
   int dof = 0;
   f.cv2[s] = pooled_cv2(pool, grid, 1e-4, &dof);
   f.dof_min = std::min(f.dof_min, dof);
@@ -123,7 +125,7 @@ void speed_ensembles(Features &f, std::size_t s, const RunsBySpeed &real, const 
 
 }    // namespace
 
-Features build_features(const RunsBySpeed &real, const SimulatedRuns &sims, const std::vector<const Effect *> &,
+Features build_features(const RunsBySpeed &real, const SimulatedRuns &sims, const std::vector<const Effect *> &effects,
                         const GapGrid &grid, std::size_t n_real_files)
 {
   Features f;
@@ -132,7 +134,7 @@ Features build_features(const RunsBySpeed &real, const SimulatedRuns &sims, cons
   f.real.resize(ns), f.base.resize(ns), f.fresh.resize(ns), f.cv2.resize(ns), f.fresh_err.resize(ns);
   f.spec_real.resize(ns), f.spec_fresh.resize(ns);
   f.dof_min = 1 << 30;
-  for (std::size_t s = 0; s < ns; ++s) speed_ensembles(f, s, real, sims, grid);
+  for (std::size_t s = 0; s < ns; ++s) speed_ensembles(f, s, real, sims, effects, grid);
   // The fits see the gap against the baseline on the reference beds (seeds 11 to 14), not
   // against the signature beds (1, 2): an effect's signature is a difference to the
   // signature beds, and a gap measured against those same beds would share their noise
@@ -152,8 +154,8 @@ Features build_features(const RunsBySpeed &real, const SimulatedRuns &sims, cons
   f.n_reference = (int) nf;
   const std::size_t m = std::clamp<std::size_t>(n_real_files / std::max<std::size_t>(1, ns), 1, nf - 2);
   f.nulls = null_replicates(f, grid, m);
-  f.notes.push_back("noise model: run-to-run scatter of the baseline's signature and reference beds pooled per speed and "
-                    "feature (" + std::to_string(f.dof_min) + " degrees of freedom), relative to the mean, smoothed over neighbouring depths");
+  f.notes.push_back("noise model: run-to-run scatter of every simulated ensemble pooled per speed and feature (" +
+                    std::to_string(f.dof_min) + " degrees of freedom), relative to the mean, smoothed over neighbouring depths");
   return f;
 }
 

@@ -1,7 +1,7 @@
 // granpen gap, stage 5 (features and noise model): per speed, the ensembles of run
 // features of the measured runs, of the baseline on its signature and reference beds and
-// of every effect knot; the noise model (relative run-to-run variance pooled over the
-// baseline's signature and reference beds, the same whatever the library); the measured target with its variances; and the null
+// of every effect knot; the noise model (relative run-to-run variance pooled over every
+// ensemble on beds of its own); the measured target with its variances; and the null
 // replicates of the targeted test (the reference beds split into a no-effect
 // "measurement" and its reference). docs/gap.md, "Where" 3-5 and "Targeted test".
 #ifndef GRANPEN_GAP_FEATURES_H
@@ -62,9 +62,7 @@ std::vector<Target> null_replicates(const Features &f, const GapGrid &grid, std:
 
 // Everything above, from aligned runs on the grid. n_real_files: the measured runs in all
 // (the null replicates take as many runs per speed as the measurement has, at most all but
-// two). Throws InputError when the reference beds have fewer than 3 runs at a speed. The
-// effects are not read: the noise model does not depend on the library (the parameter stays
-// for the callers of the adaptive plan's cheap stage and the full one alike).
+// two). Throws InputError when the reference beds have fewer than 3 runs at a speed.
 Features build_features(const RunsBySpeed &real, const SimulatedRuns &sims, const std::vector<const Effect *> &effects,
                         const GapGrid &grid, std::size_t n_real_files);
 

@@ -783,39 +783,6 @@ TEST(GapConfirm, TheGapAlongTheSignatureAndTheConfirmationTest)
   EXPECT_FALSE(gap_shrinks(0.118, std::nan("")));
 }
 
-TEST(GapFeatures, TheNoiseModelDoesNotDependOnTheLibrary)
-{
-  // a pour-level knot whose two beds scatter by 20%: in the noise model it would move every
-  // fit of every other candidate, so that adding a candidate to the library changed the
-  // others' verdicts (docs/gap.md, "Where" 5). The model is the baseline's signature and
-  // reference beds' alone, with or without the candidate
-  GapGrid grid;
-  grid.zmax = 2.0;
-  RunsBySpeed real;
-  real[100] = {ramp_run("m1", 100, 0.2, 2.5), ramp_run("m2", 100, 0.2, 2.5)};
-  SimulatedRuns sims;
-  sims.base[100] = {ramp_run("b1", 100, 0.2, 2.5), ramp_run("b2", 100, 0.2, 2.5)};
-  for (int i = 0; i < 4; ++i) {
-    TraceRun r = ramp_run("f" + std::to_string(i), 100, 0.2, 2.5);
-    for (auto &F : r.F) F *= 1.0 + 0.01 * i;
-    sims.fresh[100].push_back(r);
-  }
-  Effect k;
-  k.name = "k", k.unit = "u", k.knots = {1.0}, k.pour_level = true;
-  TraceRun k2 = ramp_run("k2", 100, 0.2, 2.5);
-  for (auto &F : k2.F) F *= 1.2;
-  sims.knots[effect_sweep_name(k, 1.0)][100] = {ramp_run("k1", 100, 0.2, 2.5), k2};
-  const Features without = build_features(real, sims, {}, grid, 2);
-  const Features with = build_features(real, sims, {&k}, grid, 2);
-  EXPECT_EQ(with.cv2, without.cv2);
-  // the baseline's 2 beds and the reference's 4: 1 + 3 degrees of freedom, whatever the library
-  EXPECT_EQ(with.dof_min, 4);
-  EXPECT_EQ(without.dof_min, 4);
-  // the same number by the kernel itself, from those two ensembles
-  const std::vector<double> direct = pooled_cv2({&with.base[0], &with.fresh[0]}, grid, 1e-4);
-  EXPECT_EQ(with.cv2[0], direct);
-}
-
 TEST(GapConfirm, TheConfirmingRunsAreComparedWithTheFitsScale)
 {
   // the measured runs are 1.03 times the effect's knot (magnitude 1: a step of 150 dyne
