@@ -466,7 +466,7 @@ PairConfirmStep confirm_pair(const PairSearch &search, const WhereResult &where,
   RunsBySpeed runs = transformed_runs(filter, p.magnitude_a, given.at("confirm"));
   const EffectData line = pair_line(search.data.at(p.a), search.data.at(p.b), p.magnitude_a, p.magnitude_b);
   c.proj_before = signature_sigma(line, 1.0, f);
-  c.after = evaluate_after(runs, 1.0, line, f, al);
+  c.after = evaluate_after(runs, 1.0, p.scale, line, f, al);    // compared as fitted: with the pair's nuisance scale
   c.chi2_after = c.after.chi2, c.proj_after = c.after.sigma();
   const double P = (double) where.omnibus.nfeatures, excess0 = where.omnibus.chi2_0 - P;
   c.confirmed_fraction = excess0 > 0 ? 1.0 - std::max(0.0, c.chi2_after - P) / excess0 : 0.0;
