@@ -343,6 +343,21 @@ int run_gap(const GapOptions &given, const GapProgressFn &fn)
   return run_requests(req, runner) == 0 ? 0 : 1;
 }
 
+namespace {
+// Each candidate's fit, ranked by evidence, as progress lines.
+void say_ranking(const Progress &progress, const std::vector<EffectFit> &ranking)
+{
+  for (std::size_t i = 0; i < ranking.size(); ++i) {
+    const EffectFit &r = ranking[i];
+    progress.say(GapProgress::DETAIL, "which",
+                 format_text("%-20s magnitude %-10s explained %5.2f  held-out %5.2f  chi2 %.1f -> %.1f  lr %.1f (threshold %.1f)",
+                        r.name.c_str(), printf_number("%.4g", r.magnitude).c_str(), r.explained, r.heldout_explained, r.chi2_0,
+                        r.chi2, r.lr, r.lr_threshold),
+                 (int) i + 1, (int) ranking.size());
+  }
+}
+}    // namespace
+
 int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
 {
   const Progress progress{fn};
@@ -391,14 +406,7 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   const FittedCandidates fitted =
       fit_candidates(effects, f, [&](const std::string &sweep) { return mean_phi0(cache, sweep); }, where.omnibus);
   const std::vector<EffectFit> &ranking = fitted.evidence.ranking;
-  for (std::size_t i = 0; i < ranking.size(); ++i) {
-    const EffectFit &r = ranking[i];
-    progress.say(GapProgress::DETAIL, "which",
-                 format_text("%-20s magnitude %-10s explained %5.2f  held-out %5.2f  chi2 %.1f -> %.1f  lr %.1f (threshold %.1f)",
-                        r.name.c_str(), printf_number("%.4g", r.magnitude).c_str(), r.explained, r.heldout_explained, r.chi2_0,
-                        r.chi2, r.lr, r.lr_threshold),
-                 (int) i + 1, (int) ranking.size());
-  }
+  say_ranking(progress, ranking);
 
   // 8 verdict on the fits alone: what the confirmation simulates
   const VerdictDecision fits_verdict = decide_verdict(fitted.evidence);
