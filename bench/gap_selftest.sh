@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # granpen gap, checked on data whose effect is withheld (issue: gap diagnosis).
 #   bench/gap_selftest.sh [--scenario bench|tiny] [--jobs N] [--cases LIST] [--effects LIST] [--v0 "50 100 200"]
-#                         (--cases may name the below-limit cases EFFECT_half too: see below_limit_cases)
+#                         (--cases may name the below-limit cases EFFECT_half and the opt-in effects' cases too:
+#                          see below_limit_cases, opt_in_cases)
 #                         [--seeds "101 102 103 104"] [--measured-only]   (make the measured data only)
 #                         [--max-mean-cost P]   (fail when the mean cold cost per case exceeds P probe pours)
 #                         [--prior-seeds "41 42"]   (a signature prior of the scenario on those beds, written
@@ -88,10 +89,18 @@ sidewalls_half|sidewalls|0.3|set = walls=1 mu_wall=0.3
 rod_friction_half|rod_friction|-0.1|push_set = dmu_rod=-0.1
 CASES
 }
-# the cases run: the twelve, and the below-limit ones that --cases names
+# Cases of an opt-in effect (analysis/gap/effects.h, Effect::opt_in): run only when --cases
+# names them, diagnosed with the default library and their effect (--effects default,EFFECT;
+# unless --effects is given). cohesion_dmt at 1200, between its knots 800 and 2400.
+opt_in_cases() {
+  cat <<'CASES'
+cohesion_dmt|cohesion_dmt|1200|set = cohesion_dmt=1200
+CASES
+}
+# the cases run: the twelve, and the below-limit and opt-in ones that --cases names
 run_cases() {
   all_cases
-  below_limit_cases | while IFS='|' read -r name rest; do
+  { below_limit_cases; opt_in_cases; } | while IFS='|' read -r name rest; do
     [[ ",$CASES," == *",$name,"* ]] && echo "$name|$rest"
   done
   return 0
@@ -178,7 +187,8 @@ while IFS='|' read -r name truth mag keys; do
   out=$WORK/diag_$name
   echo "gap_selftest: case $name: diagnosing blind"
   args=(gap --real "$WORK/real_$name" --scenario "$SCEN" --out "$out" --jobs "$JOBS" --cache "$WORK/cache")
-  [ -n "$EFFECTS" ] && args+=(--effects "$EFFECTS")
+  if [ -n "$EFFECTS" ]; then args+=(--effects "$EFFECTS")
+  elif opt_in_cases | cut -d'|' -f1 | grep -qx "$name"; then args+=(--effects "default,$truth"); fi
   args+=("${PRIOR_ARGS[@]}")
   t0=$(date +%s)
   "$CLI" "${args[@]}" > "$WORK/diag_$name.log" 2>&1 || { echo "gap_selftest: gap failed on $name: $WORK/diag_$name.log" >&2; fails=$((fails + 1)); continue; }

@@ -79,7 +79,7 @@ granpen::cli::GapCommandOptions granpen::cli::parse_gap(int argc, char **argv)
   app.add_option("--ranks", opt.runner.ranks, "MPI ranks per simulation (with --mpirun)")->check(whole_number(1, 1000000))
       ->type_name("R");
   app.add_option("--v0", opt.v0, "speeds for --prepare-only and --slurm, e.g. \"50 100 200\"")->type_name("LIST");
-  app.add_option("--effects", opt.effects, "comma-separated candidates (default: all of them)")->type_name("LIST");
+  app.add_option("--effects", opt.effects, "comma-separated candidates; default: the library but its opt-in ones (`default` in the list stands for those, e.g. default,cohesion_dmt)")->type_name("LIST");
   app.add_option("--jobs", opt.runner.jobs, "simulations at once, 1 to 1024 (default: the number of cores), every\n"
                                                    "sweep's runs in one pool")
       ->check(whole_number(1, 1024))->type_name("N");

@@ -804,6 +804,13 @@ TEST(GapEffects, LibraryKnobsAreDeckVariables)
   const Effect &coh = *find_effect("cohesion");
   EXPECT_TRUE(coh.pour_level);
   EXPECT_EQ(coh.set(10.0), (DeckVars{{"cohesion", "10"}}));
+  // cohesion_dmt: the other law's surface energy, pour and push alike, on beds of its own;
+  // opt-in, the only one
+  const Effect &dmt = *find_effect("cohesion_dmt");
+  EXPECT_TRUE(dmt.pour_level && dmt.one_sided && dmt.opt_in);
+  EXPECT_FALSE(coh.opt_in);
+  EXPECT_EQ(dmt.set(800.0), (DeckVars{{"cohesion_dmt", "800"}}));
+  EXPECT_EQ(dmt.push_set(800.0), DeckVars{});
   const Effect &rod = *find_effect("rod_friction");
   EXPECT_FALSE(rod.pour_level);
   EXPECT_FALSE(rod.one_sided);

@@ -111,7 +111,19 @@ TraceRun ramp_run(const std::string &name, double v0, double z0, double zend)
 
 TEST(GapValidate, EffectsNamedGivenOrAll)
 {
-  EXPECT_EQ(choose_effects(std::nullopt).size(), effect_library().size());
+  // without a list: the library but its opt-in effects (cohesion_dmt)
+  const auto all = choose_effects(std::nullopt);
+  std::size_t opt_in = 0;
+  for (const auto &e : effect_library()) opt_in += e.opt_in;
+  EXPECT_EQ(opt_in, 1u);
+  EXPECT_EQ(all.size(), effect_library().size() - opt_in);
+  for (const Effect *e : all) EXPECT_FALSE(e->opt_in) << e->name;
+  // `default` stands for that library; an opt-in effect is named after it
+  const auto more = choose_effects(std::string("default,cohesion_dmt"));
+  ASSERT_EQ(more.size(), all.size() + 1);
+  EXPECT_EQ(std::vector<const Effect *>(more.begin(), more.end() - 1), all);
+  EXPECT_EQ(more.back()->name, "cohesion_dmt");
+  expect_refused([] { choose_effects(std::string("default,packing")); }, "'packing' given twice");
   const auto two = choose_effects(std::string("packing,rolling_resistance"));
   ASSERT_EQ(two.size(), 2u);
   EXPECT_EQ(two[0]->name, "packing");
