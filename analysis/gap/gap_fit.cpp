@@ -164,14 +164,14 @@ double signature_residual(const Target &t, const EffectData &e, double a, const 
   return r2;
 }
 
+}    // namespace
+
 double noise_of(const EffectData &e, const std::vector<std::size_t> &speeds)
 {
   double n = 0.0;
   for (std::size_t s : speeds) n += s < e.noise_r2.size() ? e.noise_r2[s] : 0.0;
   return n;
 }
-
-}    // namespace
 
 // The excess is taken at least at 3 standard deviations of a chi^2 with n degrees of
 // freedom: a residual within the noise has little to explain, and a fraction of nearly

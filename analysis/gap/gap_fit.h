@@ -146,6 +146,10 @@ std::vector<double> noise_residual(const std::vector<Target> &nulls, const Effec
 // (fit_effect's explained; the pair stage's, gap_pairs.h).
 double explained_fraction(double w0, double w, double n);
 
+// The noise's share of e's weighted squared gap over the speeds (its noise_r2 summed; a speed
+// it has none for counts 0): explained_fraction's n, for a single fit and the pair stage's.
+double noise_of(const EffectData &e, const std::vector<std::size_t> &speeds);
+
 // Upper tail probability of chi^2 with k degrees of freedom.
 double chi2_sf(double chi2, double k);
 

@@ -114,13 +114,6 @@ std::vector<std::size_t> all_speeds(const Target &t)
   return s;
 }
 
-double noise_over(const EffectData &e, const std::vector<std::size_t> &speeds)
-{
-  double n = 0.0;
-  for (std::size_t s : speeds) n += s < e.noise_r2.size() ? e.noise_r2[s] : 0.0;
-  return n;
-}
-
 }    // namespace
 
 bool pair_stage_entered(Verdict standing, const std::optional<Residual> &residual, std::string &why)
@@ -203,7 +196,7 @@ PairFit fit_pair(const Target &t, const EffectData &A, const EffectData &B)
   p.magnitude_a = x, p.magnitude_b = y;
   p.chi2_0 = pair_residual(t, A, B, 0.0, 0.0, all, false);
   p.chi2 = pair_residual(t, A, B, x, y, all, false, &p.scale);
-  p.explained = explained_fraction(p.chi2_0, p.chi2, noise_over(A, all));
+  p.explained = explained_fraction(p.chi2_0, p.chi2, noise_of(A, all));
   p.lr = std::max(0.0, p.chi2_0 - pair_residual(t, A, B, x, y, all, true));
   // leave one speed out: fit on the others, predict the one left out (where its gap stands out)
   double sum = 0.0;
@@ -216,7 +209,7 @@ PairFit fit_pair(const Target &t, const EffectData &A, const EffectData &B)
     if (rest.empty() || !(effect_chi2(t, A, 0.0, {h}) - P > TH::chi2_noise_sigmas * std::sqrt(2.0 * P))) continue;
     const auto [xh, yh] = best_pair(t, A, B, rest, nullptr);
     sum += explained_fraction(pair_residual(t, A, B, 0.0, 0.0, {h}, false), pair_residual(t, A, B, xh, yh, {h}, false),
-                              noise_over(A, {h}));
+                              noise_of(A, {h}));
     ++used;
   }
   p.heldout_explained = used ? sum / used : p.explained;
