@@ -11,7 +11,9 @@
 #   bench/gap_false_alarms.sh [--scenario tiny|bench] [--sets 10] [--beds 4] [--jobs 2] [--v0 "50 100 200"]
 # GRANPEN_LMP, GRANPEN_CLI, GRANPEN_INPUTS and GRANPEN_SELFTEST_WORK as for gap_selftest.sh
 # (GRANPEN_LMP=build/tests/fake_lmp: the synthetic world). The cache is shared by the sets,
-# so only the first pays for it. The table goes to WORK/SCENARIO/false_alarms.md.
+# so only the first pays for it. The table goes to WORK/SCENARIO/false_alarms.md, with the
+# sets' rate and its exact 95% interval (granpen rate). At bench scale on real LAMMPS the
+# same sets run as a campaign committed set by set: validation/gap_bench.sh.
 set -euo pipefail
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 SCEN=tiny SETS=10 BEDS=4 JOBS=2 V0="50 100 200"
@@ -51,4 +53,9 @@ done
   echo "data sets without an effect: $alarms false alarm(s) in $SETS ($(awk -v a=$alarms -v n=$SETS 'BEGIN{printf "%.3f", a / n}'))"
   echo "null replicates: $null_alarms false alarm(s) in $nulls ($(awk -v a=$null_alarms -v n=$nulls 'BEGIN{printf "%.3f", n ? a / n : 0}'))"
   echo "together: $((alarms + null_alarms)) in $((SETS + nulls)) ($(awk -v a=$((alarms + null_alarms)) -v n=$((SETS + nulls)) 'BEGIN{printf "%.3f", a / n}'))"
+  # the sets' rate with its exact 95% interval (granpen rate: Clopper-Pearson)
+  if [ "$SETS" -gt 0 ]; then
+    read -r _ _ r lo hi _ < <("$CLI" rate "$alarms" "$SETS")
+    echo "data sets without an effect: rate $r, 95% interval $lo to $hi (exact)"
+  fi
 } | tee -a "$TABLE"

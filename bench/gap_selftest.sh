@@ -1,8 +1,14 @@
 #!/usr/bin/env bash
 # granpen gap, checked on data whose effect is withheld (issue: gap diagnosis).
 #   bench/gap_selftest.sh [--scenario bench|tiny] [--jobs N] [--cases LIST] [--effects LIST] [--v0 "50 100 200"]
+#                         (--cases may name the below-limit cases EFFECT_half and the opt-in effects' cases too:
+#                          see below_limit_cases, opt_in_cases)
 #                         [--seeds "101 102 103 104"] [--measured-only]   (make the measured data only)
 #                         [--max-mean-cost P]   (fail when the mean cold cost per case exceeds P probe pours)
+#                         [--prior-seeds "41 42"]   (a signature prior of the scenario on those beds, written
+#                                                    once by `granpen gap --write-prior` in its own cache and
+#                                                    given to every diagnosis: docs/gap.md, "The adaptive plan")
+#                         [--no-prior]   (every diagnosis without a prior, even the scenario's committed one)
 # For each case it makes "measured" data: a sweep of the scenario with one effect at a
 # magnitude the diagnosis is not told (or none, or an effect outside the library: grains
 # lighter than the header says), on beds no diagnosis uses (seeds 101 to 104); every trace's
@@ -18,7 +24,7 @@
 # to runs/gap_selftest/SCENARIO/table.md (docs/gap-validation.md quotes it).
 set -euo pipefail
 ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-SCEN=bench JOBS=2 CASES="" EFFECTS="" V0="50 100 200" MEASURED_ONLY=no SEEDS="101 102 103 104" MAX_MEAN_COST=""
+SCEN=bench JOBS=2 CASES="" EFFECTS="" V0="50 100 200" MEASURED_ONLY=no SEEDS="101 102 103 104" MAX_MEAN_COST="" PRIOR_SEEDS="" NO_PRIOR=no
 while [ $# -gt 0 ]; do
   case "$1" in
     --scenario) SCEN=$2; shift 2 ;;
@@ -29,6 +35,8 @@ while [ $# -gt 0 ]; do
     --seeds) SEEDS=$2; shift 2 ;;
     --measured-only) MEASURED_ONLY=yes; shift ;;
     --max-mean-cost) MAX_MEAN_COST=$2; shift 2 ;;
+    --prior-seeds) PRIOR_SEEDS=$2; shift 2 ;;
+    --no-prior) NO_PRIOR=yes; shift ;;
     *) echo "gap_selftest: unknown option $1" >&2; exit 2 ;;
   esac
 done
@@ -38,7 +46,9 @@ export GRANPEN_LMP=${GRANPEN_LMP:-$ROOT/build/lmp_granpen} GRANPEN_INPUTS=${GRAN
 WORK=${GRANPEN_SELFTEST_WORK:-$ROOT/runs/gap_selftest}/$SCEN
 mkdir -p "$WORK"
 
-# case: name | truth (expected top effect, or none / outside) | magnitude said in the table | sweep keys (; between lines)
+# case: name | truth (expected top effect, or none / outside; two effects at once: A,B) | magnitude said in the table
+# (A,B: X,Y) | sweep keys (; between lines). chain_ramp: the mount at 2.4 ms (natural frequency 417 Hz, its reading
+# peaking near 400 Hz; k = m (2 pi / T)^2, c = 2 zeta sqrt(k m), zeta 0.2) with a 1.2 cm ramp (issue 37)
 all_cases() {
   cat <<'CASES'
 none|none|0|
@@ -53,7 +63,47 @@ friction|friction|0.1|mu = 0.4;mu_push = 0.4
 cohesion|cohesion|1800|set = cohesion=1800
 rod_friction|rod_friction|-0.15|push_set = dmu_rod=-0.15
 light_grains|outside|rho_g 2.5 (header says 3.0)|set = rho_g=2.5
+chain_ramp|measurement_chain,actuator_ramp|2.4,1.2|push_set = mount_k=6.853892e8 mount_c=1.047198e5 mount_m=100 ramp=1.2
 CASES
+}
+
+# Below-limit cases (issue 37, section 0): each library effect at about half its detection
+# limit on bench (4 measured beds a speed; limits of docs/gap-validation.md, 2026-11-27, on
+# real LAMMPS: rolling 0.041, the mount 0.071 ms, ramp 1.27 cm, packing -0.13, stiffness
+# -0.20, force_scale 0.09 to 0.13; where that data had no limit within the knots, half the
+# nearest knot). A miss is right, and so is the truth named (alone or in a tie); another
+# effect named alone is a confident wrong answer (gap-score --below-limit). Run only when
+# --cases names them (validation/gap_bench.sh): their magnitudes are bench's, not tiny's.
+below_limit_cases() {
+  cat <<'CASES'
+rolling_resistance_half|rolling_resistance|0.02|set = mu_roll=0.02
+measurement_chain_half|measurement_chain|0.035|push_set = mount_k=3.222728e12 mount_c=7.180783e6 mount_m=100
+actuator_ramp_half|actuator_ramp|0.64|push_set = ramp=0.64
+packing_half|packing|-0.065|mu = 0.235
+contact_stiffness_half|contact_stiffness|-0.1|set = kn=7.943282e8 kt=7.943282e8
+force_scale_half|force_scale|0.05|set = rho_g=3.15
+cohesion_half|cohesion|500|set = cohesion=500
+friction_half|friction|0.075|mu = 0.375;mu_push = 0.375
+polydispersity_half|polydispersity|0.125|set = poly=0.125
+sidewalls_half|sidewalls|0.3|set = walls=1 mu_wall=0.3
+rod_friction_half|rod_friction|-0.1|push_set = dmu_rod=-0.1
+CASES
+}
+# Cases of an opt-in effect (analysis/gap/effects.h, Effect::opt_in): run only when --cases
+# names them, diagnosed with the default library and their effect (--effects default,EFFECT;
+# unless --effects is given). cohesion_dmt at 1200, between its knots 800 and 2400.
+opt_in_cases() {
+  cat <<'CASES'
+cohesion_dmt|cohesion_dmt|1200|set = cohesion_dmt=1200
+CASES
+}
+# the cases run: the twelve, and the below-limit and opt-in ones that --cases names
+run_cases() {
+  all_cases
+  { below_limit_cases; opt_in_cases; } | while IFS='|' read -r name rest; do
+    [[ ",$CASES," == *",$name,"* ]] && echo "$name|$rest"
+  done
+  return 0
 }
 
 # An outside case the library has an effect for that does to the force exactly what it
@@ -117,6 +167,16 @@ TABLE=$WORK/table.md
 echo "| case | truth | true magnitude | detection limit | verdict | top effect | fitted magnitude | G before | G after | held-out v0 | held-out G before | held-out G after | chi^2 excess removed | wall s | pass |" > "$TABLE"
 echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|" >> "$TABLE"
 fails=0
+# the signature prior: made once (its cost is the scenario's, not a diagnosis's: not counted)
+PRIOR_ARGS=()
+[ "$NO_PRIOR" = yes ] && PRIOR_ARGS=(--prior none)
+if [ -n "$PRIOR_SEEDS" ] && [ "$MEASURED_ONLY" != yes ]; then
+  echo "gap_selftest: the signature prior on seeds $PRIOR_SEEDS"
+  "$CLI" gap --write-prior "$WORK/prior.json" --scenario "$SCEN" --v0 "$V0" --prior-seeds "$PRIOR_SEEDS" \
+    --cache "$WORK/prior_cache" --jobs "$JOBS" > "$WORK/prior.log" 2>&1 \
+    || { echo "gap_selftest: writing the prior failed: $WORK/prior.log" >&2; exit 1; }
+  PRIOR_ARGS=(--prior "$WORK/prior.json")
+fi
 COSTS=$WORK/costs.txt    # case, the plan's least and most, the cold cost spent (probe pours of core time)
 : > "$COSTS"
 while IFS='|' read -r name truth mag keys; do
@@ -127,7 +187,9 @@ while IFS='|' read -r name truth mag keys; do
   out=$WORK/diag_$name
   echo "gap_selftest: case $name: diagnosing blind"
   args=(gap --real "$WORK/real_$name" --scenario "$SCEN" --out "$out" --jobs "$JOBS" --cache "$WORK/cache")
-  [ -n "$EFFECTS" ] && args+=(--effects "$EFFECTS")
+  if [ -n "$EFFECTS" ]; then args+=(--effects "$EFFECTS")
+  elif opt_in_cases | cut -d'|' -f1 | grep -qx "$name"; then args+=(--effects "default,$truth"); fi
+  args+=("${PRIOR_ARGS[@]}")
   t0=$(date +%s)
   "$CLI" "${args[@]}" > "$WORK/diag_$name.log" 2>&1 || { echo "gap_selftest: gap failed on $name: $WORK/diag_$name.log" >&2; fails=$((fails + 1)); continue; }
   secs=$(( $(date +%s) - t0 ))
@@ -136,6 +198,7 @@ while IFS='|' read -r name truth mag keys; do
   score=(gap-score "$out/diagnosis.json" --case "$name" --truth "$truth" --magnitude "$mag" --wall-seconds "$secs")
   read -r as_effect as_mag <<< "$(outside_as "$name")"
   [ -n "$as_effect" ] && score+=(--as-effect "$as_effect" --as-magnitude "$as_mag")
+  case "$name" in *_half) score+=(--below-limit) ;; esac
   rc=0; row=$("$CLI" "${score[@]}" 2> "$WORK/score_$name.log") || rc=$?
   [ "$rc" = 0 ] || [ "$rc" = 3 ] || { echo "gap_selftest: scoring $name failed: $(cat "$WORK/score_$name.log")" >&2; fails=$((fails + 1)); continue; }
   echo "$row" | tee -a "$TABLE"
@@ -147,7 +210,7 @@ while IFS='|' read -r name truth mag keys; do
   if ! awk -v l="$least" -v m="$most" -v s="$spent" 'BEGIN { exit !(l <= s * 1.000001 && s <= m * 1.000001) }'; then
     echo "gap_selftest: $name: cold cost $spent probe pours outside the plan's range $least to $most" >&2; fails=$((fails + 1))
   fi
-done < <(all_cases)
+done < <(run_cases)
 if [ "$MEASURED_ONLY" != yes ] && [ -s "$COSTS" ]; then
   mean=$(awk '{ s += $4; n++ } END { printf "%.2f", s / n }' "$COSTS")
   echo "gap_selftest: mean cold cost per case $mean probe pours of core time over $(wc -l < "$COSTS") case(s) (plan range per case: $COSTS)"

@@ -50,4 +50,6 @@ double k_z_from_alpha(double alpha, double mu, double rho_g, double g, double D)
 
 double peak_regime_end(double D) { return PEAK_END_PER_D * D; }
 
+bool in_peak_regime(double z, double D) { return z > 0.0 && z < peak_regime_end(D); }
+
 }    // namespace granpen

@@ -60,6 +60,10 @@ double k_z_from_alpha(double alpha, double mu, double rho_g, double g, double D)
 // The depth where the peak regime ends: PEAK_END_PER_D D.
 double peak_regime_end(double D);
 
+// Whether depth z lies in the peak regime, 0 < z < peak_regime_end(D): the one predicate of
+// the fit's peak, the collapse's and the gap's peak regime (the end itself is not in it).
+bool in_peak_regime(double z, double D);
+
 }    // namespace granpen
 
 #endif

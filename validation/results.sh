@@ -261,6 +261,14 @@ fi
 # absent or undefined
 nval() { awk -v k="$1" '$1 == k && $3 != "undefined" { print $3; exit }' "$NUM"; }
 nerr() { awk -v k="$1" '$1 == k && $4 == "+-" { print $5; exit }' "$NUM"; }
+# KEY1 / KEY2 and its error, the relative errors in quadrature (a missing error counts 0), at
+# full precision for the caller to round; "" when either value is missing
+quad_ratio() { # KEY1 KEY2
+  local a b; a=$(nval "$1") b=$(nval "$2")
+  [ -n "$a" ] && [ -n "$b" ] || return 0
+  awk -v a="$a" -v b="$b" -v ea="$(nerr "$1")" -v eb="$(nerr "$2")" \
+    'BEGIN { ea += 0; eb += 0; r = a / b; printf "%.17g %.17g", r, r * sqrt((ea / a) ^ 2 + (eb / b) ^ 2) }'
+}
 
 dg10_beds() {
   local n; n=$(ls "$DG10"/beds/bed_dg10_mu0.3_s[123].info 2>/dev/null | wc -l)
@@ -432,10 +440,8 @@ box_alpha_D() { # SWEEP KEY
     put "$key.alpha_a.v28.D$D = $(col "$o/fit_z2.csv" alpha_a D "$D" | stats)  # granpen fit --zmin 2, F = a z + b z^2: a / (mu rho_g g D^2), 2 beds"
     put "$key.beta_b.v28.D$D = $(col "$o/fit_z2.csv" beta_b D "$D" | stats)  # ... b / (mu rho_g g D): the shaft-like term"
   done
-  a1=$(nval "$key.alpha0_window.v28.D1") a2=$(nval "$key.alpha0_window.v28.D2")
-  [ -n "$a1" ] && [ -n "$a2" ] &&
-    put "$key.alpha_D1_over_D2 = $(awk -v a="$a1" -v b="$a2" -v ea="$(nerr "$key.alpha0_window.v28.D1")" -v eb="$(nerr "$key.alpha0_window.v28.D2")" \
-      'BEGIN { r = a / b; printf "%.4g +- %.2g", r, r * sqrt((ea / a) ^ 2 + (eb / b) ^ 2) }')  # the two above, the beds' spreads in quadrature"
+  local q; q=$(quad_ratio "$key.alpha0_window.v28.D1" "$key.alpha0_window.v28.D2")
+  [ -n "$q" ] && put "$key.alpha_D1_over_D2 = $(printf '%.4g +- %.2g' $q)  # the two above, the beds' spreads in quadrature"
   return 0
 }
 if [ -d "$BOX" ]; then box_bench; else say "box series: $BOX missing, skipped"; fi
@@ -471,10 +477,8 @@ row_of() { # QUANTITY RATIO KEY PAPER PAPER_ERROR [ERROR_DIVISOR]
 }
 # the ratio of KEY1 to KEY2 with the relative errors in quadrature; empty when either is missing
 ratio_of() { # QUANTITY RATIO KEY1 KEY2 PAPER PAPER_ERROR
-  local a b ea eb; a=$(nval "$3") b=$(nval "$4") ea=$(nerr "$3") eb=$(nerr "$4")
-  if [ -n "$a" ] && [ -n "$b" ]; then
-    row "$1" "$2" $(awk -v a="$a" -v b="$b" -v ea="${ea:-0}" -v eb="${eb:-0}" \
-      'BEGIN { r = a / b; printf "%.4g %.3g", r, r * sqrt((ea / a) ^ 2 + (eb / b) ^ 2) }') "$5" "$6"
+  local q; q=$(quad_ratio "$3" "$4")
+  if [ -n "$q" ]; then row "$1" "$2" $(printf '%.4g %.3g' $q) "$5" "$6"
   else row "$1" "$2" "" "" "$5" "$6"; fi
 }
 {

@@ -52,6 +52,7 @@ void list_effects()
       std::printf("%s\n", e.transform    ? " (the baseline's traces transformed: nothing simulated)"
                           : e.pour_level ? " (new beds)"
                                          : " (push only: the baseline's beds)");
+    if (e.opt_in) std::printf("%-20s opt-in: not in the default library; --effects default,%s adds it\n", "", e.name.c_str());
   }
 }
 

@@ -12,6 +12,7 @@ namespace {
 const char *HELP =
     "usage: granpen gap --real DIR --scenario NAME --out DIR [--effects LIST] [--jobs N] [--cache DIR]\n"
     "       granpen gap --prepare-only --scenario NAME --v0 \"50 100 200\" [--effects LIST] [--jobs N] [--cache DIR]\n"
+    "       granpen gap --write-prior FILE --scenario NAME --v0 \"50 100 200\" [--prior-seeds \"41 42\"] [--cache DIR]\n"
     "       granpen gap --slurm FILE --scenario paper --v0 \"40 80 160\" [--jobs N --ranks R] [--cache DIR]\n"
     "Where do measured force traces (DIR: granpen-trace v1 files, one or more runs per speed,\n"
     "cgs or SI) and the simulation of the same set-up (the preset NAME, or your preset FILE) differ, which\n"
@@ -78,17 +79,35 @@ granpen::cli::GapCommandOptions granpen::cli::parse_gap(int argc, char **argv)
   app.add_option("--ranks", opt.runner.ranks, "MPI ranks per simulation (with --mpirun)")->check(whole_number(1, 1000000))
       ->type_name("R");
   app.add_option("--v0", opt.v0, "speeds for --prepare-only and --slurm, e.g. \"50 100 200\"")->type_name("LIST");
-  app.add_option("--effects", opt.effects, "comma-separated candidates (default: all of them)")->type_name("LIST");
+  app.add_option("--effects", opt.effects, "comma-separated candidates; default: the library but its opt-in ones (`default` in the list stands for those, e.g. default,cohesion_dmt)")->type_name("LIST");
   app.add_option("--jobs", opt.runner.jobs, "simulations at once, 1 to 1024 (default: the number of cores), every\n"
                                                    "sweep's runs in one pool")
       ->check(whole_number(1, 1024))->type_name("N");
+  std::string prior_seeds;
+  app.add_option("--prior", opt.prior, "the signature prior the adaptive plan bounds pour-level candidates with\n"
+                                      "(default: INPUTS/priors/SCENARIO.json when it exists; none: no prior)")
+      ->type_name("FILE|none");
+  app.add_option("--write-prior", opt.write_prior, "prepare the pour-level knots and the baseline (--v0, --prior-seeds)\n"
+                                                  "in the cache and write their signatures as a prior, and stop")
+      ->check(file_name())->type_name("FILE");
+  app.add_option("--prior-seeds", prior_seeds, "with --write-prior: the prior's beds (default \"1 2\", the cache's own\n"
+                                              "signature sweeps; others: sweeps of their own)")->type_name("LIST");
   app.add_flag("--list-effects", go.list_effects, "the candidate effects, their magnitudes and reference values");
   if (!cmd.parse(argc, argv, go.help)) return go;
   if (sweep_by_sweep) opt.runner.pool = false;
+  for (std::size_t i = 0, j; i < prior_seeds.size(); i = j + 1) {
+    j = std::min(prior_seeds.find(' ', i), prior_seeds.size());
+    const std::string seed = prior_seeds.substr(i, j - i);
+    if (seed.empty()) continue;
+    if (seed.find_first_not_of("0123456789") != std::string::npos || seed.size() > 9)
+      throw UsageError("--prior-seeds: '" + seed + "' is not a whole number");
+    opt.prior_seeds.push_back(seed);
+  }
   if (go.list_effects) return go;
-  if (opt.scenario.empty() || (!opt.prepare_only && opt.slurm.empty() && (opt.real.empty() || opt.out.empty())) ||
-      ((opt.prepare_only || !opt.slurm.empty()) && opt.v0.empty()))
-    throw UsageError("needs --scenario and either --real and --out, or --prepare-only (or --slurm) and --v0");
+  const bool prepares = opt.prepare_only || !opt.slurm.empty() || !opt.write_prior.empty();
+  if (opt.scenario.empty() || (!prepares && (opt.real.empty() || opt.out.empty())) || (prepares && opt.v0.empty()))
+    throw UsageError("needs --scenario and either --real and --out, or --prepare-only (or --slurm, or --write-prior) and --v0");
   if (opt.only_task >= 0 && !opt.prepare_only) throw UsageError("--only K needs --prepare-only (it is what a --slurm array task runs)");
+  if (!opt.prior_seeds.empty() && opt.write_prior.empty()) throw UsageError("--prior-seeds needs --write-prior");
   return go;
 }

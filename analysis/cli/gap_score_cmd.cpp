@@ -31,7 +31,14 @@ granpen::SelftestCase selftest_case(const granpen::cli::GapScoreOptions &o)
   }
   c.truth = granpen::SelftestCase::Truth::library;
   c.effect = o.truth;
+  c.below_limit = o.below_limit;
   c.magnitude = std::strtod(o.magnitude_text.c_str(), nullptr);    // checked by the parse
+  if (const auto comma = o.truth.find(','); comma != std::string::npos) {    // a pair: A,B at X,Y (checked by the parse)
+    const auto mcomma = o.magnitude_text.find(',');
+    c.truth = granpen::SelftestCase::Truth::pair;
+    c.effect = o.truth.substr(0, comma), c.effect2 = o.truth.substr(comma + 1);
+    c.magnitude2 = std::strtod(o.magnitude_text.c_str() + mcomma + 1, nullptr);
+  }
   return c;
 }
 
@@ -50,6 +57,8 @@ std::string limit_text(const granpen::SelftestLimit &l)
 // the top effect column: the tie that names the truth, the stand-in effect's distance
 std::string top_effect_text(const granpen::SelftestScore &s, const granpen::SelftestCase &c)
 {
+  if (s.pair_names_truth) return "pair: " + s.pair[0] + "," + s.pair[1];
+  if (s.names_part_of_pair) return (s.top_effect.empty() ? std::string(granpen::verdict_name(s.verdict)) : s.top_effect) + " (part of the pair)";
   if (s.tie_names_truth) {
     std::string t = "tie: ";
     for (std::size_t i = 0; i < s.tie.size(); ++i) t += (i ? "," : "") + s.tie[i];

@@ -24,15 +24,16 @@ GetOptions parse_get(int argc, char **argv);
 int run_get(const GetOptions &o);    // get_cmd.cpp
 
 // granpen gap-score DIAGNOSIS --case NAME --truth EFFECT|none|outside --magnitude TEXT
-//                   [--as-effect EFFECT --as-magnitude X] [--wall-seconds S]
+//                   [--as-effect EFFECT --as-magnitude X] [--below-limit] [--wall-seconds S]
 // Checks: diagnosis, case_name, truth, magnitude_text not empty; magnitude_text a finite
 // number when truth is an effect; as_effect and as_magnitude given together, only with
-// truth outside; wall_seconds a whole number >= 0 (-1: not given).
+// truth outside; below_limit only with a library effect; wall_seconds a whole number >= 0 (-1: not given).
 struct GapScoreOptions {
   std::string help;
   bool help_requested() const { return !help.empty(); }
   std::string diagnosis, case_name, truth, magnitude_text, as_effect;
   double as_magnitude = 0;
+  bool below_limit = false;    // the case lies at about half its detection limit (gap_selftest_score.h)
   long long wall_seconds = -1;
 };
 GapScoreOptions parse_gap_score(int argc, char **argv);

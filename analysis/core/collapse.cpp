@@ -94,7 +94,7 @@ CollapseResult collapse(const std::vector<CollapseInput> &inputs, const Collapse
     std::vector<double> zs, ts, rs;
     for (std::size_t i = 0; i < in.z.size(); ++i) {
       const double z = in.z[i];
-      if (z > 0.0 && z < peak_regime_end(in.D) && in.F[i] > c.peak) c.peak = in.F[i], c.peak_z = z;
+      if (in_peak_regime(z, in.D) && in.F[i] > c.peak) c.peak = in.F[i], c.peak_z = z;
       if (z < p.zmin) continue;
       zs.push_back(z);
       ts.push_back(t_tilde(z, in.v0, in.g, in.D));

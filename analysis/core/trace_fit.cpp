@@ -256,9 +256,9 @@ TraceFit fit_trace(const std::vector<double> &z, const std::vector<double> &F, c
   }
 
   // transient peak over 0 < z < 0.7 R
-  r.peak_zmax = 0.7 * 0.5 * p.D;
+  r.peak_zmax = peak_regime_end(p.D);
   for (std::size_t i = 0; i < z.size(); ++i)
-    if (z[i] > 0.0 && z[i] < r.peak_zmax && std::isfinite(F[i])) {
+    if (in_peak_regime(z[i], p.D) && std::isfinite(F[i])) {
       if (!r.n_peak || F[i] > r.peak_F) {
         r.peak_F = F[i];
         r.peak_z = z[i];

@@ -43,6 +43,10 @@ struct Effect {
   // density): a nuisance within a lab's calibration bound, never a physical cause (gap_fit.h,
   // EffectData::is_scale; gap_verdict.h, Verdict::scale_only).
   bool uniform_scale = false;
+  // Not in the default library: simulated and fitted only when --effects names it (its
+  // pour-level knots would move the noise model every other case is judged by: docs/gap.md,
+  // "Cohesion of a second law").
+  bool opt_in = false;
 };
 
 // The effect's reference value: Effect::reference, or its first knot.

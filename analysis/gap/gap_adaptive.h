@@ -7,8 +7,9 @@
 // reach its threshold (lambda x 15.14, lambda >= 1: 15.14 at least) and, when a cheap
 // candidate already explains the gap, come within the evidence margin of that candidate's
 // evidence. Its likelihood ratio is the squared gap it removes, so it is bounded by the
-// squared gap along its signature's direction when that is known (`projection2`), and by
-// the whole squared gap at magnitude 0 (chi2_0) when it is not: no direction can take more.
+// squared gap along its signature's direction when that is known (`projection2`; with a
+// signature prior, gap_prior.h, prior_bound's), and by the whole squared gap at magnitude 0
+// (chi2_0) when it is not: no direction can take more.
 // A candidate whose bound falls short is skipped, and said so with its bound.
 #ifndef GRANPEN_GAP_ADAPTIVE_H
 #define GRANPEN_GAP_ADAPTIVE_H
@@ -29,11 +30,47 @@ struct CheapStageSeen {
   bool best_is_scale = false;       // it is a uniform scale: a nuisance, never the cause (its look-alikes are needed)
 };
 
+// The bound with a signature prior (gap_prior.h), per speed and feature: the gap y (the
+// measurement less the reference beds' baseline), its variance V (the fits' fixed weights,
+// the current data's noise model), the force-scale direction B (the reference baseline: the
+// prediction is (1 + c) M(a), |c| <= scale_bound), and per knot the prior's signature S_j
+// with the variance a diagnosis's own knot signature would carry (U_j) and the prior's (W_j).
+struct PriorBoundInput {
+  std::vector<std::vector<double>> gap, var, scale_dir;                      // [speed][feature]
+  std::vector<std::vector<std::vector<double>>> signature, knot_var, prior_var;    // [knot][speed][feature]
+  double scale_bound = 0;
+};
+// The most likelihood ratio the candidate can earn (docs/gap.md, "The adaptive plan"):
+// projection2, the whitened gap's squared projection on what the prediction can reach (the
+// span of the knots' signatures with the bounded scale, less what the scale alone takes);
+// margin_direction, what the diagnosis's knots (S_j + d_j, d_j = their noise less the prior's,
+// independent beds) can reach beyond it: at most z^2 = (r . d)^2 / |d|^2 (Cauchy-Schwarz), r
+// the residual after the prior's span; r holds -alpha e_p (the part of the signal the prior's
+// own noise e_p turned away, alpha = A / |S_j|, A^2 = projection2), so r . d is alpha |e_p|^2
+// (coherent, |e_p|^2 at its mean sum W / V) plus a random part of variance sum r^2 (U + W) / V,
+// taken at the chi^2_K quantile of upper tail PRIOR_BOUND_P (K knots), over |d|^2 at its mean
+// sum (U + W) / V; the largest over the knots; margin_noise,
+// what the signature's own variance can absorb of the residual in the likelihood (its
+// r t / (1 + t) - log(1 + t) per feature, positive part).
+struct PriorBound {
+  double projection2 = 0, margin_direction = 0, margin_noise = 0;
+  double bound() const { return projection2 + margin_direction + margin_noise; }
+};
+// The random part's tail: 0.1 per candidate, because the Cauchy-Schwarz step (the whole
+// component along the noise's direction) and the coherent part at its full size already make
+// the margin conservative: in tests/analysis/gap/test_gap_adaptive.cpp's Monte Carlo (two
+// knots, 40 features, signals from 0 to 2 signature's worth) the diagnosis's knots exceeded
+// the bound in 3 of 3000 draws (0.1%), and the projection alone in 1501.
+constexpr double PRIOR_BOUND_P = 0.1;
+PriorBound prior_bound(const PriorBoundInput &in);
+
 // A pour-level candidate before its knots are simulated.
 struct PourCandidate {
   std::string effect;
   double cost = 0;                          // probe pours of core time its knots cost (what the cache lacks)
   std::optional<double> projection2;        // the squared gap along its signature, when a direction is known
+  std::optional<PriorBound> prior;          // with a signature prior: its bound (then projection2 is its bound())
+  std::string no_prior;                     // why a prior given holds no direction for it ("" = none given, or one used)
 };
 
 // The decision on one candidate: simulated or skipped, the bound and what it was held against.
@@ -44,6 +81,7 @@ struct PurchaseDecision {
   double needed = 0;       // what it would have to reach to change the verdict
   double cost = 0;         // probe pours of core time
   std::string why;         // the rule, with its numbers
+  std::optional<PriorBound> prior;    // the prior's bound, when it set `bound`
 };
 
 // Per pour-level candidate, in the order they are bought (least cost first: the evidence per

@@ -15,6 +15,25 @@ using TH = GapThresholds;
 
 std::string fmt(double v, const char *f = "%.4g") { return printf_number(f, v); }
 
+// The runs' force times 1 + scale: the fit's prediction is (1 + c) M(a) (gap_fit.h,
+// nuisance_scale), so runs simulated at a are that prediction only with its scale applied.
+void scale_runs(std::vector<TraceRun> &runs, double scale)
+{
+  if (scale == 0.0) return;
+  for (auto &r : runs)
+    for (double &F : r.F) F *= 1.0 + scale;
+}
+
+// The nuisance scale of the prediction at magnitude a for speed hs from the other speeds (as
+// the held-out fit has it), or from every speed when there is one
+double heldout_scale(const EffectData &ed, double a, std::size_t hs, const Features &f)
+{
+  std::vector<std::size_t> rest;
+  for (std::size_t s = 0; s < f.nspeeds(); ++s)
+    if (s != hs || f.nspeeds() == 1) rest.push_back(s);
+  return nuisance_scale(f.target, ed, a, rest);
+}
+
 // What the confirmation test reads of the stages before: the fits' route (targeted: by one
 // effect's likelihood ratio) and the omnibus test's chi^2 over its features.
 struct Before {
@@ -30,11 +49,13 @@ double excess_removed(const Before &d, double chi2a)
   return excess0 > 0 ? 1.0 - std::max(0.0, chi2a - P) / excess0 : 0.0;
 }
 
-// G_all at the held-out speed hs of the runs given (aligned to the real onset)
-double heldout_gap(RunsBySpeed &runs, std::size_t hs, const Features &f, const Alignment &al)
+// G_all at the held-out speed hs of the runs given (aligned to the real onset), their force
+// times 1 + scale (the nuisance scale of the fit that predicts that speed)
+double heldout_gap(RunsBySpeed runs, std::size_t hs, double scale, const Features &f, const Alignment &al)
 {
   const double v = f.speeds[hs];
   align_runs(runs[v], al.onset.at(v));
+  scale_runs(runs[v], scale);
   return gap_all(gap_metric(f.real[hs], ensemble_of(runs[v], al.grid, v), 0, al.grid.nbins()),
                  hs < f.spec_real.size() ? debiased_gap(f.spec_real[hs], spectrum_moments(runs[v], al.grid)) : 0.0);
 }
@@ -70,9 +91,10 @@ bool second_runs(SecondRuns rec, const std::string &what, const EffectData &ed, 
     return false;
   }
   RunsBySpeed runs = given.at("refine");
-  rec.second = evaluate_after(runs, rec.second_magnitude, ed, f, al);
+  rec.second = evaluate_after(runs, rec.second_magnitude, rec.second_scale, ed, f, al);
   if (rec.decides) confirmed = decide_by(rec.second, d, c);
   c.magnitude = rec.second_magnitude;
+  c.scale = rec.second_scale;
   adopt(rec.second, std::move(runs), c);
   c.second = std::move(rec);
   return true;
@@ -83,27 +105,36 @@ bool second_runs(SecondRuns rec, const std::string &what, const EffectData &ed, 
 // short, as a fit on noisy knots does): the magnitude corrected by linear response, when it
 // moves, is simulated on beds no step has seen; those runs are then the "after", and decide
 // when the first did not confirm. No refinement: nullopt.
-std::optional<SecondRuns> refinement(const EffectData &ed, const AfterRuns &first, bool confirmed, const Confirmation &c)
+std::optional<SecondRuns> refinement(const EffectData &ed, const AfterRuns &first, bool confirmed, const Confirmation &c,
+                                     const Features &f)
 {
   const double coef = first.uu > 0 ? first.num / first.uu : 0.0;
   if (!(std::abs(c.outcome.proj_after) >= TH::refine_projection_sigmas && (confirmed || coef > 0.0))) return std::nullopt;
   const auto [alo, ahi] = magnitude_range(ed);
   const double a2 = refined_magnitude(ed, c.magnitude, coef);
   if (std::abs(a2 - c.magnitude) <= TH::same_magnitude_of_range * (ahi - alo)) return std::nullopt;
-  return SecondRuns{SecondRuns::Why::refine, c.magnitude, a2, c.outcome.proj_after, c.outcome.chi2_after, first.all(), confirmed,
-                    !confirmed, {}};
+  SecondRuns rec{SecondRuns::Why::refine, c.magnitude, a2, c.outcome.proj_after, c.outcome.chi2_after, first.all(), confirmed,
+                 !confirmed, {}};
+  // the refined magnitude's prediction carries its own nuisance scale, as a fit there would
+  std::vector<std::size_t> all(f.nspeeds());
+  for (std::size_t s = 0; s < all.size(); ++s) all[s] = s;
+  rec.second_scale = nuisance_scale(f.target, ed, a2, all);
+  return rec;
 }
 
 // The first runs between knots are the model at magnitude a, simulated: a knot where the
 // interpolation fell short. Inserted into the effect's knots (their ensemble means, the
 // measured noise model's variances; for a paired effect the same as its own noise), the fit
-// of every speed gives the magnitude the blend could not.
-EffectData with_runs_as_knot(const EffectData &ed, double a, const RunsBySpeed &runs, const Features &f, const GapGrid &grid)
+// of every speed gives the magnitude the blend could not. The runs come scaled by 1 + scale
+// (evaluate_after): the knot is the model, unscaled (the fit applies its own scale).
+EffectData with_runs_as_knot(const EffectData &ed, double a, double scale, RunsBySpeed runs, const Features &f,
+                             const GapGrid &grid)
 {
   EffectData out = ed;
   const std::size_t j = (std::size_t) (std::upper_bound(out.knots.begin(), out.knots.end(), a) - out.knots.begin());
   Table m, er;
   for (std::size_t s = 0; s < f.nspeeds(); ++s) {
+    scale_runs(runs.at(f.speeds[s]), 1.0 / (1.0 + scale) - 1.0);
     const Ensemble en = ensemble_of(runs.at(f.speeds[s]), grid, f.speeds[s]);
     m.push_back(en.mean);
     er.push_back(model_err(en, f.cv2[s]));
@@ -144,10 +175,12 @@ bool first_runs(const EffectFit &top, std::size_t hs, bool between, const Effect
     return false;
   }
   corr = given.at("confirm");
-  RunsBySpeed held = own_heldout ? given.at("heldout") : corr;
+  const RunsBySpeed &held = own_heldout ? given.at("heldout") : corr;
   c.outcome.proj_before = signature_sigma(ed, c.magnitude, f);
-  first = evaluate_after(corr, c.magnitude, ed, f, al);
-  c.heldout_after = heldout_gap(held, hs, f, al);
+  c.heldout_after = heldout_gap(held, hs, heldout_scale(ed, c.heldout_magnitude, hs, f), f, al);
+  // the runs at the fitted magnitude, with the scale fitted with it
+  c.scale = top.scale;
+  first = evaluate_after(corr, c.magnitude, c.scale, ed, f, al);
   c.outcome.gap_after = first.all();
   c.after = first;
   return true;
@@ -157,7 +190,8 @@ bool first_runs(const EffectFit &top, std::size_t hs, bool between, const Effect
 
 double AfterRuns::sigma() const { return uu > 0 ? num / std::sqrt(uu) : 0.0; }
 
-AfterRuns evaluate_after(RunsBySpeed &runs, double a, const EffectData &ed, const Features &f, const Alignment &al)
+AfterRuns evaluate_after(RunsBySpeed &runs, double a, double scale, const EffectData &ed, const Features &f,
+                         const Alignment &al)
 {
   const GapGrid &grid = al.grid;
   const std::size_t ns = f.nspeeds(), nb = grid.nbins(), P = grid.nfeatures();
@@ -167,6 +201,7 @@ AfterRuns evaluate_after(RunsBySpeed &runs, double a, const EffectData &ed, cons
     const double v = f.speeds[s];
     if (runs[v].empty()) throw InputError("no confirming runs at v0 = " + fmt(v));
     align_runs(runs[v], al.onset.at(v));
+    scale_runs(runs[v], scale);
     for (const auto &x : runs[v]) r.files.push_back(x.path);
     const Ensemble eC = ensemble_of(runs[v], grid, v);
     const auto errC = model_err(eC, f.cv2[s]);
@@ -192,6 +227,10 @@ AfterRuns evaluate_after(RunsBySpeed &runs, double a, const EffectData &ed, cons
 
 double signature_sigma(const EffectData &ed, double a, const Features &f)
 {
+  // the gap at magnitude 0 is the baseline's within the calibration bound, as the fit has it
+  std::vector<std::size_t> all(f.nspeeds());
+  for (std::size_t s = 0; s < all.size(); ++s) all[s] = s;
+  const double c0 = nuisance_scale(f.target, ed, 0.0, all);
   double num0 = 0, uu0 = 0;
   for (std::size_t s = 0; s < f.nspeeds(); ++s) {
     std::vector<double> ma, va, m0, v0;
@@ -199,7 +238,7 @@ double signature_sigma(const EffectData &ed, double a, const Features &f)
     effect_predict(ed, 0.0, s, m0, v0);
     for (std::size_t k = 0; k < ma.size(); ++k) {
       const double u = ma[k] - m0[k], w0 = f.target.err[s][k] + v0[k];
-      num0 += u * (f.real[s].mean[k] - m0[k]) / w0, uu0 += u * u / w0;
+      num0 += u * (f.real[s].mean[k] - (1.0 + c0) * m0[k]) / w0, uu0 += u * u / w0;
     }
   }
   return uu0 > 0 ? num0 / std::sqrt(uu0) : 0.0;
@@ -245,22 +284,23 @@ ConfirmStep confirm_top_effect(const std::map<std::string, const Effect *> &by_n
   if (!first_runs(top, hs, between, ed, f, al, given, step, first, corr)) return step;
   bool confirmed = decide_by(first, d, c);
   c.after_runs = corr;
-  if (const auto refine = refinement(ed, first, confirmed, c)) {
+  if (const auto refine = refinement(ed, first, confirmed, c, f)) {
     if (!second_runs(*refine, "refining", ed, f, al, d, given, step, confirmed)) return step;
   } else if (between && !between_knots_explains(confirmed, gap_before, first.all(), heldout_before, c.heldout_after)) {
     // between knots and short: refit with the first runs as a knot, and simulate once more
     // where that fit lands (any move: this is the last try before unexplained)
-    const EffectFit refit = fit_effect(f.target, with_runs_as_knot(ed, c.magnitude, corr, f, al.grid));
-    if (refit.magnitude != c.magnitude &&
-        !second_runs(SecondRuns{SecondRuns::Why::refit, c.magnitude, refit.magnitude, c.outcome.proj_after,
-                                c.outcome.chi2_after, first.all(), confirmed, true, {}},
-                     "refitting between knots", ed, f, al, d, given, step, confirmed))
+    const EffectFit refit = fit_effect(f.target, with_runs_as_knot(ed, c.magnitude, c.scale, corr, f, al.grid));
+    SecondRuns rec{SecondRuns::Why::refit, c.magnitude, refit.magnitude, c.outcome.proj_after, c.outcome.chi2_after,
+                   first.all(), confirmed, true, {}};
+    rec.second_scale = refit.scale;
+    if (refit.magnitude != c.magnitude && !second_runs(rec, "refitting between knots", ed, f, al, d, given, step, confirmed))
       return step;
   }
   if (between && c.second) {
     // the held-out speed judged by the runs that are now the "after"
+    // (those runs carry the all-speed scale; the held-out speed's is the other speeds')
     c.heldout_magnitude = c.magnitude;
-    c.heldout_after = heldout_gap(c.after_runs, hs, f, al);
+    c.heldout_after = heldout_gap(c.after_runs, hs, (1.0 + heldout_scale(ed, c.magnitude, hs, f)) / (1.0 + c.scale) - 1.0, f, al);
   }
   // a transform effect's "after" is computed: the output writes its traces transformed
   if (by_transform(e, c.magnitude)) c.corrected_effect = e.name, c.corrected_magnitude = c.magnitude;

@@ -42,11 +42,15 @@ struct AfterRuns {
   double all() const { return gap_all(G, G_spec); }
 };
 
-// Aligns the runs (at the measured speeds' onsets) and evaluates them; throws InputError
-// when a speed has no runs.
-AfterRuns evaluate_after(RunsBySpeed &runs, double a, const EffectData &ed, const Features &f, const Alignment &al);
+// Aligns the runs (at the measured speeds' onsets), multiplies their force by 1 + scale (the
+// nuisance scale fitted with a: the fit's prediction is (1 + scale) M(a), gap_fit.h) and
+// evaluates them; on return the runs are that prediction, aligned and scaled. Throws
+// InputError when a speed has no runs.
+AfterRuns evaluate_after(RunsBySpeed &runs, double a, double scale, const EffectData &ed, const Features &f,
+                         const Alignment &al);
 
-// The gap along e's signature at magnitude a against the reference, in standard deviations.
+// The gap along e's signature at magnitude a against the reference within the calibration
+// bound (the nuisance scale at magnitude 0, as the fit's gap before), in standard deviations.
 double signature_sigma(const EffectData &ed, double a, const Features &f);
 
 // Whether runs with chi^2 chi2a (and proj_a sigma along the signature) confirm the effect:
@@ -66,6 +70,7 @@ struct SecondRuns {
   bool first_confirmed = false;
   bool decides = false;          // these runs decide the confirmation
   AfterRuns second;
+  double second_scale = 0;       // the nuisance scale at second_magnitude (the runs are compared times 1 + it)
 };
 
 // The stage's result: what the verdict reads, and the "after" it leaves.
@@ -73,6 +78,7 @@ struct Confirmation {
   ConfirmationResult outcome;
   std::string effect, unit;      // the effect named at a magnitude ("" when none is)
   double magnitude = 0;          // final (refined) magnitude
+  double scale = 0;              // the nuisance force scale fitted with it: the "after" runs are compared times 1 + scale
   std::string tested_effect;     // simulated on fresh beds
   double heldout_magnitude = 0, heldout_after = 0;
   double confirmed_fraction = 0;

@@ -11,7 +11,9 @@
 #include "gap_features.h"
 #include "gap_inputs.h"
 #include "gap_plan.h"
+#include "gap_prior.h"
 #include "gap_limits.h"
+#include "gap_pairs.h"
 #include "gap_report.h"
 #include "gap_residual.h"
 #include "gap_result.h"
@@ -116,7 +118,8 @@ bool plan_within_budget(const GapOptions &given, const Scenario &sc, const std::
     r.least = cold_least.probe_pours, r.most = cold_most.probe_pours;
     r.wall_least = wall_probe_pours(cold_least, jobs), r.wall_most = wall_probe_pours(cold_most, jobs);
     r.decides = "which pour-level candidates the cheap stage leaves able to change the verdict (each simulated unless its bound, "
-                "the squared gap along its signature or, its direction unknown, the whole squared gap, stays below its threshold), "
+                "with a signature prior the gap's squared projection on its knots' signatures and the scale plus the prior's "
+                "margins, without one the whole squared gap, stays below its threshold), "
                 "then whether an effect is confirmed, which, and whether its magnitude is refined";
     progress.say(GapProgress::INFO, "plan",
                  "plan: from " + cost_phrase(least, jobs) + " (the cheap stage alone) to " + cost_phrase(most, jobs) +
@@ -196,7 +199,7 @@ int run_array_task(const std::vector<SimRequest> &req, RunnerOptions runner, int
 // Returns the effects simulated, in library order; the decisions go to record.
 std::vector<const Effect *> simulate_adaptively(const Scenario &sc, const MeasuredData &measured,
                                                 const std::vector<const Effect *> &effects, const RunnerOptions &runner,
-                                                PlanRecord &record)
+                                                const std::optional<SignaturePrior> &prior, PlanRecord &record)
 {
   const std::string &cache = runner.out_root;
   auto run = [&](const std::vector<const Effect *> &which) {
@@ -223,8 +226,12 @@ std::vector<const Effect *> simulate_adaptively(const Scenario &sc, const Measur
   seen.best_explains = seen_verdict.verdict == Verdict::explained || seen_verdict.verdict == Verdict::scale_only;
   seen.best_is_scale = seen_verdict.verdict == Verdict::scale_only;
   std::vector<PourCandidate> candidates;
-  for (const Effect *e : pour)
-    candidates.push_back({e->name, plan_cost(sc, signature_requests(sc.name, measured.v0s, {e}), cache, 0.0).probe_pours, std::nullopt});
+  for (const Effect *e : pour) {
+    PourCandidate c{e->name, plan_cost(sc, signature_requests(sc.name, measured.v0s, {e}), cache, 0.0).probe_pours, std::nullopt};
+    // with a signature prior its direction is known before its knots (gap_prior.h)
+    if (prior) c.prior = candidate_prior_bound(*prior, *e, f, al.grid, GapThresholds::calibration_scale_bound, c.no_prior);
+    candidates.push_back(c);
+  }
   record.decisions = decide_purchases(seen, candidates, GapThresholds::lr_chi2_1_p1e4, GapThresholds::evidence_margin);
   std::vector<const Effect *> bought, out;
   for (const PurchaseDecision &d : record.decisions)
@@ -270,6 +277,40 @@ Confirmation confirm_with_runs(const std::map<std::string, const Effect *> &by_n
   return std::move(step.done);
 }
 
+// Stage 11b's confirmation with stage 3 between its calls, as confirm_with_runs.
+PairConfirmation confirm_pair_with_runs(const PairSearch &search, const WhereResult &where, const Features &f,
+                                        const Alignment &al, const SimContext &sim, bool fit_only, std::vector<SimRequest> &asked)
+{
+  StageRuns simulated;
+  PairConfirmStep step = confirm_pair(search, where, f, al, fit_only, simulated);
+  while (step.need) {
+    const Effect &e = *find_effect(step.need->effect);
+    for (auto &r : needed_requests(*step.need, e, sim)) asked.push_back(std::move(r));
+    simulate_needed(*step.need, e, sim, simulated);
+    step = confirm_pair(search, where, f, al, fit_only, simulated);
+  }
+  return std::move(step.done);
+}
+
+// Stage 11b: the pair search (null when not entered) and, for a named pair, its confirmation;
+// then the verdict that stands (stands: given the singles', changed by a confirmed pair).
+std::optional<PairStage> pair_stage(const std::vector<const Effect *> &effects, const FittedCandidates &fitted,
+                                    const Features &f, const SimulatedRuns &sims, const Alignment &al, const WhereResult &where,
+                                    const Confirmation &confirmation, const std::optional<Residual> &residual,
+                                    const SimContext &sim, bool fit_only, const Progress &progress,
+                                    std::vector<SimRequest> &asked, VerdictDecision &stands)
+{
+  PairSearch search = search_pairs(effects, fitted, f, sims, al, stands.verdict, residual);
+  if (!search.entered) return std::nullopt;
+  progress.say(GapProgress::INFO, "pairs", "two effects at once: " + search.why);
+  PairStage st{std::move(search), std::nullopt};
+  if (st.search.named) {
+    st.confirmation = confirm_pair_with_runs(st.search, where, f, al, sim, fit_only, asked);
+    stands = decide_verdict(fitted.evidence, &confirmation.outcome, &st.confirmation->outcome);
+  }
+  return st;
+}
+
 // what the confirm stage says it does, from the fits' verdict
 std::string confirm_message(const VerdictDecision &fits_verdict, const std::vector<EffectFit> &ranking, bool fit_only)
 {
@@ -284,7 +325,7 @@ std::string confirm_message(const VerdictDecision &fits_verdict, const std::vect
 
 int run_gap(const GapOptions &given, const GapProgressFn &fn)
 {
-  if (!given.prepare_only && given.slurm.empty()) return run_gap_diagnosis(given, fn);
+  if (!given.prepare_only && given.slurm.empty() && given.write_prior.empty()) return run_gap_diagnosis(given, fn);
   const Progress progress{fn};
   const Scenario sc = load_scenario(given);
   const auto effects = choose_effects(given.effects);
@@ -296,10 +337,26 @@ int run_gap(const GapOptions &given, const GapProgressFn &fn)
   const auto req = signature_requests(opt.scenario, v0, effects);
   if (!opt.slurm.empty()) return write_cluster_script(opt, sc, req, runner, progress);
   if (opt.only_task >= 0) return run_array_task(req, runner, opt.only_task);
+  if (!opt.write_prior.empty()) return write_signature_prior(opt, sc, v0, runner, fn);
   progress.say(GapProgress::INFO, "simulate",
                format_text("preparing the %s cache in %s: %zu sweeps", opt.scenario.c_str(), runner.out_root.c_str(), req.size()));
   return run_requests(req, runner) == 0 ? 0 : 1;
 }
+
+namespace {
+// Each candidate's fit, ranked by evidence, as progress lines.
+void say_ranking(const Progress &progress, const std::vector<EffectFit> &ranking)
+{
+  for (std::size_t i = 0; i < ranking.size(); ++i) {
+    const EffectFit &r = ranking[i];
+    progress.say(GapProgress::DETAIL, "which",
+                 format_text("%-20s magnitude %-10s explained %5.2f  held-out %5.2f  chi2 %.1f -> %.1f  lr %.1f (threshold %.1f)",
+                        r.name.c_str(), printf_number("%.4g", r.magnitude).c_str(), r.explained, r.heldout_explained, r.chi2_0,
+                        r.chi2, r.lr, r.lr_threshold),
+                 (int) i + 1, (int) ranking.size());
+  }
+}
+}    // namespace
 
 int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
 {
@@ -308,7 +365,9 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   const Scenario sc = load_scenario(given);
   const auto all_effects = choose_effects(given.effects);
   MeasuredData measured = read_measured(given.real, sc);
+  const auto bench_rate = measured_false_alarms(given.runner.inputs, sc.name);    // the scenario's measured rate
   check_output_path(given.out, given.real, given.cache);
+  const std::optional<SignaturePrior> prior = find_prior(given.prior, given.runner.inputs, sc.name);
   for (const auto &n : measured.notes) progress.say(GapProgress::WARNING, "validate", n);
   progress.say(GapProgress::INFO, "validate",
                format_text("%zu measured runs at %zu speeds (%s cm/s) against scenario %s", measured.files.size(),
@@ -327,7 +386,7 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
                format_text("simulations of the baseline and %zu candidate effects (cache %s)", all_effects.size(), cache.c_str()), 1, 4);
   plan_simulations(sc, measured.v0s, all_effects, cache, opt.local);    // refuses a plan for a cluster
   fs::create_directories(cache);
-  const std::vector<const Effect *> effects = simulate_adaptively(sc, measured, all_effects, runner, plan_record);
+  const std::vector<const Effect *> effects = simulate_adaptively(sc, measured, all_effects, runner, prior, plan_record);
   for (const auto &dec : plan_record.decisions) progress.say(GapProgress::INFO, "plan", dec.effect + ": " + dec.why);
 
   // 4 align and bin, 5 features and the noise model
@@ -347,14 +406,7 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   const FittedCandidates fitted =
       fit_candidates(effects, f, [&](const std::string &sweep) { return mean_phi0(cache, sweep); }, where.omnibus);
   const std::vector<EffectFit> &ranking = fitted.evidence.ranking;
-  for (std::size_t i = 0; i < ranking.size(); ++i) {
-    const EffectFit &r = ranking[i];
-    progress.say(GapProgress::DETAIL, "which",
-                 format_text("%-20s magnitude %-10s explained %5.2f  held-out %5.2f  chi2 %.1f -> %.1f  lr %.1f (threshold %.1f)",
-                        r.name.c_str(), printf_number("%.4g", r.magnitude).c_str(), r.explained, r.heldout_explained, r.chi2_0,
-                        r.chi2, r.lr, r.lr_threshold),
-                 (int) i + 1, (int) ranking.size());
-  }
+  say_ranking(progress, ranking);
 
   // 8 verdict on the fits alone: what the confirmation simulates
   const VerdictDecision fits_verdict = decide_verdict(fitted.evidence);
@@ -364,30 +416,40 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   std::vector<SimRequest> asked;
   const Confirmation confirmation = confirm_with_runs(by_name, fitted, fits_verdict, where, f, al,
                                                       SimContext{sc.name, measured.v0s, runner}, opt.fit_only, asked);
-  record_spent(sc, opt, measured.v0s, effects, asked, plan_record);
 
   // 8 verdict that stands: the fits' evidence and the confirmation's result
   const VerdictDecision verdict = decide_verdict(fitted.evidence, &confirmation.outcome);
 
   // 10 limits: how blind (the next measurement follows the verdict that stands)
-  const Blindness blind = how_blind(effects, fitted.data, f, ranking, verdict, confirmation.named_magnitude());
+  Blindness blind = how_blind(effects, fitted.data, f, ranking, verdict, confirmation.named_magnitude());
+  if (prior) add_prior_limits(*prior, all_effects, effects, f, al.grid, blind.limits);    // the candidates skipped
 
   // 11 residual: what the gap left over
   const double peak_end = peak_regime_end(sc.D);
   std::optional<Residual> residual =
       residual_stage(f, measured.runs, sims.fresh, al.grid, peak_end, where, fitted, verdict, confirmation);
 
+  // 11b pairs: two effects at once, when no single one explains and the residual moves the
+  // spectrum (gap_pairs.h); a named pair confirmed on fresh runs decides the verdict that stands
+  VerdictDecision stands = verdict;
+  std::optional<PairStage> pairs = pair_stage(effects, fitted, f, sims, al, where, confirmation, residual,
+                                              SimContext{sc.name, measured.v0s, runner}, opt.fit_only, progress, asked, stands);
+  record_spent(sc, opt, measured.v0s, effects, asked, plan_record);
+
   // 12 record, 13 report
   DiagnosisInputs in{sc.name, opt.real, measured.files, measured.notes, al.grid, peak_end, f.n_reference};
   in.notes.insert(in.notes.end(), al.notes.begin(), al.notes.end());
   in.notes.insert(in.notes.end(), f.notes.begin(), f.notes.end());
   in.plan = std::move(plan_record);
-  const Diagnosis d = assemble_diagnosis(in, where, fitted, fits_verdict, confirmation, verdict, blind, std::move(residual));
+  in.measured_false_alarms = bench_rate;
+  const Diagnosis d =
+      assemble_diagnosis(in, where, fitted, fits_verdict, confirmation, stands, blind, std::move(residual), std::move(pairs));
   write_gap_output(d, opt.out);
   progress.say(GapProgress::INFO, "report",
                format_text("verdict %s%s; G_all %.3f -> %.3f (%d measured runs per speed at least, %d simulated); %s",
                       verdict_name(d.verdict),
-                      !d.tie.empty() ? (" (" + tie_names(d.tie) + ")").c_str()
+                      !d.tie.empty()    ? (" (" + tie_names(d.tie) + ")").c_str()
+                      : !d.pair.empty() ? (" (" + d.pair[0] + " and " + d.pair[1] + ")").c_str()
                       : d.top_effect.empty() ? ""
                                              : (" (" + d.top_effect + ", magnitude " + printf_number("%.4g", d.magnitude) + ")").c_str(),
                       d.gap_before, d.gap_after, d.n_real_min, d.n_sim, (opt.out + "/diagnosis.json").c_str()));

@@ -19,6 +19,7 @@
 #include "sweep_runner.h"
 
 #include <optional>
+#include <vector>
 #include <string>
 
 namespace granpen {
@@ -33,6 +34,9 @@ struct GapOptions {
   std::string slurm;           // write a SLURM script that prepares the cache, and stop
   int only_task = -1;          // with prepare_only: run task K of the --slurm arrays alone
   double budget = -1;          // core-hours; < 0: none. A plan above it stops before anything starts
+  std::string prior;           // the signature prior (gap_prior.h): a file; "" = INPUTS/priors/SCENARIO.json if any; "none"
+  std::string write_prior;     // --write-prior FILE: prepare the prior's runs and write it (with --v0), nothing else
+  std::vector<std::string> prior_seeds;    // --prior-seeds: its beds (empty: the signature seeds 1 2, the cache's own)
   RunnerOptions runner;        // lmp, inputs, jobs (out_root is set per scenario)
 };
 

@@ -164,18 +164,7 @@ double signature_residual(const Target &t, const EffectData &e, double a, const 
   return r2;
 }
 
-// The fraction of the residual w0 at magnitude 0 that the residual w at the fit removes:
-// of its excess over the noise's share n when that is known (n > 0), capped at 1. The
-// excess is taken at least at 3 standard deviations of a chi^2 with n degrees of freedom:
-// a residual within the noise has little to explain, and a fraction of nearly nothing
-// would say nothing.
-double explained_fraction(double w0, double w, double n)
-{
-  if (!(w0 > 0.0)) return 0.0;
-  if (!(n > 0.0)) return 1.0 - w / w0;
-  const double excess = std::max(w0 - n, GapThresholds::chi2_noise_sigmas * std::sqrt(2.0 * n));
-  return std::min(1.0, (w0 - w) / excess);
-}
+}    // namespace
 
 double noise_of(const EffectData &e, const std::vector<std::size_t> &speeds)
 {
@@ -184,7 +173,16 @@ double noise_of(const EffectData &e, const std::vector<std::size_t> &speeds)
   return n;
 }
 
-}    // namespace
+// The excess is taken at least at 3 standard deviations of a chi^2 with n degrees of
+// freedom: a residual within the noise has little to explain, and a fraction of nearly
+// nothing would say nothing.
+double explained_fraction(double w0, double w, double n)
+{
+  if (!(w0 > 0.0)) return 0.0;
+  if (!(n > 0.0)) return 1.0 - w / w0;
+  const double excess = std::max(w0 - n, GapThresholds::chi2_noise_sigmas * std::sqrt(2.0 * n));
+  return std::min(1.0, (w0 - w) / excess);
+}
 
 std::pair<double, double> magnitude_range(const EffectData &e)
 {

@@ -140,6 +140,16 @@ inline double lr_evidence(const EffectFit &f) { return f.lr - (f.lr_null_mean > 
 // weighted squared residual at magnitude 0: for EffectData::noise_r2.
 std::vector<double> noise_residual(const std::vector<Target> &nulls, const EffectData &e);
 
+// The fraction of the weighted squared gap w0 at magnitude 0 that a fit leaving w removes: of
+// its excess over the noise's share n when that is known (n > 0), the excess taken at least
+// at chi2_noise_sigmas standard deviations of a chi^2 with n degrees of freedom, capped at 1
+// (fit_effect's explained; the pair stage's, gap_pairs.h).
+double explained_fraction(double w0, double w, double n);
+
+// The noise's share of e's weighted squared gap over the speeds (its noise_r2 summed; a speed
+// it has none for counts 0): explained_fraction's n, for a single fit and the pair stage's.
+double noise_of(const EffectData &e, const std::vector<std::size_t> &speeds);
+
 // Upper tail probability of chi^2 with k degrees of freedom.
 double chi2_sf(double chi2, double k);
 

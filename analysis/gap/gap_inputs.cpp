@@ -22,16 +22,23 @@ std::string fmt(double v, const char *f = "%.4g") { return printf_number(f, v); 
 
 std::vector<const Effect *> choose_effects(const std::optional<std::string> &list)
 {
+  std::vector<const Effect *> defaults;    // the library but its opt-in effects
+  for (const auto &e : effect_library())
+    if (!e.opt_in) defaults.push_back(&e);
+  if (!list) return defaults;
   std::vector<const Effect *> out;
-  if (!list) {
-    for (const auto &e : effect_library()) out.push_back(&e);
-    return out;
-  }
-  std::string known;
-  for (const auto &x : effect_library()) known += " " + x.name;
+  std::string known = " default (all but the opt-in ones)";
+  for (const auto &x : effect_library()) known += " " + x.name + (x.opt_in ? " (opt-in)" : "");
   std::stringstream in(*list);
   std::string name;
   while (std::getline(in, name, ',')) {
+    if (name == "default") {    // the default library, then what else the list names
+      for (const Effect *x : defaults) {
+        if (std::find(out.begin(), out.end(), x) != out.end()) throw GapRefused("--effects: '" + x->name + "' given twice");
+        out.push_back(x);
+      }
+      continue;
+    }
     const Effect *e = find_effect(name);
     if (!e) throw GapRefused("--effects: unknown effect '" + name + "' (known:" + known + ")");
     // a repeat would be simulated, counted and fitted twice
@@ -39,7 +46,7 @@ std::vector<const Effect *> choose_effects(const std::optional<std::string> &lis
     out.push_back(e);
   }
   if (out.empty())
-    throw GapRefused("--effects: empty list (name one or more of:" + known + "; without --effects, all of them)");
+    throw GapRefused("--effects: empty list (name one or more of:" + known + "; without --effects, the default library)");
   return out;
 }
 

@@ -73,13 +73,21 @@ NoiseFactors factors_for(const Features &f, double n)
 
 double signature_strength(const EffectData &ed, const Target &t, double a, const NoiseFactors &factors)
 {
-  double lam = 0.0;
-  std::vector<double> u, var;
+  // data M(a) against the baseline within the calibration bound: the fit's gap at magnitude 0
+  // is min over |c| <= scale_bound of |u - c M(0)|^2 (gap_fit.h, nuisance_scale), so the part
+  // of the signature a uniform scale that small takes is no evidence
+  double uu = 0.0, noise = 0.0, uR = 0.0, RR = 0.0;
+  std::vector<double> u, var, R, vR;
   for (std::size_t s = 0; s < t.mean.size(); ++s) {
     effect_signature(ed, a, s, u, var);
-    for (std::size_t k = 0; k < u.size(); ++k) lam += (u[k] * u[k] - var[k]) / weight(ed, t, factors, s, k);
+    effect_predict(ed, 0.0, s, R, vR);
+    for (std::size_t k = 0; k < u.size(); ++k) {
+      const double w = weight(ed, t, factors, s, k);
+      uu += u[k] * u[k] / w, noise += var[k] / w, uR += u[k] * R[k] / w, RR += R[k] * R[k] / w;
+    }
   }
-  return std::max(0.0, lam);
+  const double c = ed.scale_bound > 0.0 && RR > 0.0 ? std::clamp(uR / RR, -ed.scale_bound, ed.scale_bound) : 0.0;
+  return std::max(0.0, uu - 2.0 * c * uR + c * c * RR - noise);
 }
 
 DetectionLimit detection_limit(const Effect &e, const EffectData &ed, const EffectFit &fit, const Features &f)
@@ -101,24 +109,43 @@ DetectionLimit detection_limit(const Effect &e, const EffectData &ed, const Effe
   return L;
 }
 
-double prediction_separation2(const EffectData &a, double ma, const EffectData &b, double mb, const Target &t,
-                              const NoiseFactors &factors)
+double prediction_separation2(const EffectData &a, double ma, double sa, const EffectData &b, double mb, double sb,
+                              const Target &t, const NoiseFactors &factors)
 {
-  // both models are the reference at magnitude 0, so M_a(ma) - M_b(mb) = u_a(ma) - u_b(mb);
+  // both models are the reference R at magnitude 0, so the fitted predictions differ by
+  // (1 + sa) M_a(ma) - (1 + sb) M_b(mb) = (sa - sb) R + (1 + sa) u_a(ma) - (1 + sb) u_b(mb);
   // its knot noise: both signatures', less the shared signature baseline's counted twice
   // (u_a - u_b carries it with c_a - c_b: variance (c_a^2 + c_b^2 - 2 c_a c_b) var(B_sig))
   double d2 = 0.0;
-  const double shared = 2 * signature_baseline_share(a, ma) * signature_baseline_share(b, mb);
-  std::vector<double> ua, va, ub, vb;
+  const double ga = 1.0 + sa, gb = 1.0 + sb;
+  const double shared = 2 * signature_baseline_share(a, ma) * signature_baseline_share(b, mb) * ga * gb;
+  std::vector<double> ua, va, ub, vb, R, vR;
   for (std::size_t s = 0; s < t.mean.size(); ++s) {
     effect_signature(a, ma, s, ua, va);
     effect_signature(b, mb, s, ub, vb);
+    effect_predict(a, 0.0, s, R, vR);
     for (std::size_t k = 0; k < ua.size(); ++k) {
-      const double noise = va[k] + vb[k] - (shared > 0 ? shared * a.ref_err[0][s][k] : 0.0);
-      d2 += (std::pow(ua[k] - ub[k], 2) - noise) / weight(a, t, factors, s, k);
+      const double noise = ga * ga * va[k] + gb * gb * vb[k] - (shared > 0 ? shared * a.ref_err[0][s][k] : 0.0);
+      d2 += (std::pow((sa - sb) * R[k] + ga * ua[k] - gb * ub[k], 2) - noise) / weight(a, t, factors, s, k);
     }
   }
   return std::max(0.0, d2);
+}
+
+double off_span2(const SpanProducts &p, double bound)
+{
+  // f(beta, c) = xx - 2 beta xy - 2 c xR + beta^2 yy + 2 beta c yR + c^2 RR, convex: its
+  // minimum with |c| <= bound is the free one, or else on the edge c = +-bound its side
+  if (!(p.yy > 0.0)) return p.xx;
+  const auto at = [&](double c) {
+    const double beta = (p.xy - c * p.yR) / p.yy;
+    return p.xx - 2 * beta * p.xy - 2 * c * p.xR + beta * beta * p.yy + 2 * beta * c * p.yR + c * c * p.RR;
+  };
+  const double det = p.yy * p.RR - p.yR * p.yR;
+  // R along y (a uniform scale's own signature): the scale adds nothing to the span
+  if (!(bound > 0.0) || !(det > 1e-12 * p.yy * p.RR)) return std::max(0.0, at(0.0));
+  const double c = (p.yy * p.xR - p.yR * p.xy) / det;
+  return std::max(0.0, at(std::clamp(c, -bound, bound)));
 }
 
 std::vector<LookAlike> look_alikes(const std::vector<EffectFit> &ranking, const std::map<std::string, EffectData> &data,
@@ -130,14 +157,16 @@ std::vector<LookAlike> look_alikes(const std::vector<EffectFit> &ranking, const 
     for (std::size_t j = i + 1; j < ranking.size(); ++j) {
       const EffectData &A = data.at(ranking[i].name), &B = data.at(ranking[j].name);
       const double ra = reference_magnitude(*effects.at(A.name)), rb = reference_magnitude(*effects.at(B.name));
-      double ab = 0, aa = 0, bb = 0;
-      std::vector<double> ua, va, ub, vb;
+      double ab = 0, aa = 0, bb = 0, aR = 0, bR = 0, RR = 0;
+      std::vector<double> ua, va, ub, vb, R, vR;
       for (std::size_t s = 0; s < f.nspeeds(); ++s) {
         effect_signature(A, ra, s, ua, va);
         effect_signature(B, rb, s, ub, vb);
+        effect_predict(A, 0.0, s, R, vR);
         for (std::size_t k = 0; k < ua.size(); ++k) {
           const double w = weight(A, f.target, now, s, k);
           ab += ua[k] * ub[k] / w, aa += ua[k] * ua[k] / w, bb += ub[k] * ub[k] / w;
+          aR += ua[k] * R[k] / w, bR += ub[k] * R[k] / w, RR += R[k] * R[k] / w;
         }
       }
       LookAlike l;
@@ -145,11 +174,15 @@ std::vector<LookAlike> look_alikes(const std::vector<EffectFit> &ranking, const 
       if (aa > 0 && bb > 0) {
         const double c = std::clamp(ab / std::sqrt(aa * bb), -1.0, 1.0);
         l.angle_deg = std::acos(c) * 180.0 / M_PI;
-        // the one at its reference stands |u| sin(angle) off the other's best multiple
-        l.separation = std::sqrt(std::min(aa, bb) * (1.0 - c * c));
+        // the one at its reference stands off the other's best multiple and the fit's nuisance
+        // scale (|c| <= the calibration bound, as every fit has it), the smaller of the two ways
+        // round; without the scale, |u| sin(angle)
+        const double bound = std::min(A.scale_bound, B.scale_bound);
+        l.separation = std::sqrt(std::min(off_span2({aa, ab, bb, aR, bR, RR}, bound), off_span2({bb, ab, aa, bR, aR, RR}, bound)));
       }
       l.look_alike = l.separation * l.separation < GapThresholds::evidence_margin;
-      l.fit_separation = std::sqrt(prediction_separation2(A, ranking[i].magnitude, B, ranking[j].magnitude, f.target, now));
+      l.fit_separation = std::sqrt(prediction_separation2(A, ranking[i].magnitude, ranking[i].scale, B, ranking[j].magnitude,
+                                                          ranking[j].scale, f.target, now));
       out.push_back(l);
     }
   return out;
@@ -240,7 +273,7 @@ std::optional<NextMeasurement> next_measurement(const std::vector<EffectFit> &ra
     const EffectData &A = data.at(top.name), &B = data.at(second.name);
     const bool contest = verdict == Verdict::tie || top.detected || second.detected;
     auto sep = [&](const NoiseFactors &fac) {
-      return prediction_separation2(A, top.magnitude, B, second.magnitude, f.target, fac);
+      return prediction_separation2(A, top.magnitude, top.scale, B, second.magnitude, second.scale, f.target, fac);
     };
     if (contest && sep(ones(f.target)) < GapThresholds::evidence_margin) {
       NextMeasurement m = best_runs(f, GapThresholds::evidence_margin, sep);
@@ -290,7 +323,10 @@ ScaleFinding scale_finding(const EffectFit &scale, double magnitude, const std::
   for (const auto &c : ranking) {
     if (c.is_scale || c.name == scale.name || !data.count(c.name)) continue;
     const EffectData &C = data.at(c.name);
-    const auto sep = [&](const NoiseFactors &fac) { return prediction_separation2(C, c.magnitude, S, magnitude, f.target, fac); };
+    // each prediction with its fit's nuisance scale (the scale candidate's own is its magnitude)
+    const auto sep = [&](const NoiseFactors &fac) {
+      return prediction_separation2(C, c.magnitude, c.scale, S, magnitude, 0.0, f.target, fac);
+    };
     const double sep2 = sep(ones(f.target));
     if (!(sep2 < GapThresholds::evidence_margin)) continue;
     ScaleCause cause{c.name, effects.count(c.name) ? effects.at(c.name)->what : c.name, c.magnitude,

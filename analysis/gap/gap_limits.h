@@ -33,8 +33,9 @@ using NoiseFactors = std::vector<double>;
 
 // The expected likelihood ratio of an effect present at magnitude a: the squared norm of its
 // signature (less what the knots' own noise adds to it) in the fit's weights, the measured
-// variances times factors. The targeted test detects the effect half the time when this
-// equals its threshold.
+// variances times factors, less the part of it that the fit's nuisance scale at magnitude 0
+// takes (a uniform scale of the baseline within EffectData::scale_bound). The targeted test
+// detects the effect half the time when this equals its threshold.
 double signature_strength(const EffectData &ed, const Target &t, double a, const NoiseFactors &factors);
 
 struct DetectionLimit {
@@ -57,17 +58,28 @@ struct LookAlike {
   std::string a, b;
   double angle_deg = 90;       // between the signatures at the first reference values, whitened
   // sigmas by which the one at its first reference value stands off the other's best
-  // multiple (|u| sin(angle)), the smaller of the two ways round (knot noise not subtracted):
-  // what the data can tell them apart by at this noise
+  // multiple and the fits' nuisance scale of the baseline (off_span2; |u| sin(angle) without
+  // it), the smaller of the two ways round (knot noise not subtracted): what the data can
+  // tell them apart by at this noise
   double separation = 0;
   bool look_alike = false;     // separation^2 below the evidence margin: not told apart here
-  double fit_separation = 0;   // sigmas between their fitted predictions (knot noise subtracted)
+  double fit_separation = 0;   // sigmas between their fitted predictions, each with its scale (knot noise subtracted)
 };
 
 // The two fitted predictions' squared distance in the fit's weights (measured variances
 // times factors), less the knots' noise in it: the evidence the data would give between them.
-double prediction_separation2(const EffectData &a, double ma, const EffectData &b, double mb, const Target &t,
-                              const NoiseFactors &factors);
+// Each prediction carries its fit's nuisance scale (EffectFit::scale): (1 + sa) M_a(ma)
+// against (1 + sb) M_b(mb).
+double prediction_separation2(const EffectData &a, double ma, double sa, const EffectData &b, double mb, double sb,
+                              const Target &t, const NoiseFactors &factors);
+
+// Inner products, in the fit's weights, of a signature x, another y and the reference R (the
+// baseline at magnitude 0): the squared distance of x from the span of y and a uniform scale
+// of R with |c| <= bound (the fits' nuisance), min over beta and c of |x - beta y - c R|^2.
+struct SpanProducts {
+  double xx = 0, xy = 0, yy = 0, xR = 0, yR = 0, RR = 0;
+};
+double off_span2(const SpanProducts &p, double bound);
 
 // Every pair of the ranking's candidates (in ranking order).
 std::vector<LookAlike> look_alikes(const std::vector<EffectFit> &ranking, const std::map<std::string, EffectData> &data,

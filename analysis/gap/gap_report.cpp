@@ -4,6 +4,7 @@
 
 #include "effects.h"
 #include "gap_plan.h"
+#include "gap_report_pairs.h"
 #include "gap_thresholds.h"
 #include "atomic_file.h"
 #include "json_writer.h"
@@ -114,9 +115,15 @@ Json parts_json(const GapParts &p)
 Json plan_json(const PlanRecord &p)
 {
   Json decisions = Json::array();
-  for (const auto &x : p.decisions)
-    decisions.push_back(Json{{"effect", x.effect}, {"simulated", x.simulate}, {"bound", num(x.bound)}, {"needed", num(x.needed)},
-                             {"cost", num(x.cost)}, {"why", x.why}});
+  for (const auto &x : p.decisions) {
+    Json row{{"effect", x.effect}, {"simulated", x.simulate}, {"bound", num(x.bound)}, {"needed", num(x.needed)},
+             {"cost", num(x.cost)}, {"why", x.why}};
+    // the signature prior's bound and its parts (gap_adaptive.h, prior_bound)
+    if (x.prior)
+      row["prior"] = Json{{"projection2", num(x.prior->projection2)}, {"margin_direction", num(x.prior->margin_direction)},
+                          {"margin_noise", num(x.prior->margin_noise)}};
+    decisions.push_back(row);
+  }
   return Json{{"unit", "probe pours of core time"}, {"jobs", p.jobs}, {"least", num(p.least)}, {"most", num(p.most)},
               {"spent", num(p.spent)}, {"wall_least", num(p.wall_least)}, {"wall_most", num(p.wall_most)},
               {"wall_spent", num(p.wall_spent)}, {"core_hours_spent", num(p.core_hours_spent)}, {"decides", p.decides},
@@ -145,6 +152,15 @@ Json false_alarms_json(const FalseAlarms &fa)
   for (const auto &[v, n] : fa.verdicts) verdicts[v] = n;
   return Json{{"null_replicates", fa.replicates}, {"not_none", fa.not_none}, {"rate", num(fa.rate(), "%.4f")},
               {"verdicts", verdicts}};
+}
+
+// the rate measured at the scenario's scale (gap_bench_rate.h); null when none is committed
+Json measured_false_alarms_json(const std::optional<MeasuredFalseAlarms> &m)
+{
+  if (!m) return Json();
+  return Json{{"sets", m->sets}, {"alarms", m->alarms}, {"rate", num(m->interval.rate, "%.4f")},
+              {"low95", num(m->interval.low, "%.4f")}, {"high95", num(m->interval.high, "%.4f")},
+              {"file", m->file}, {"source", m->source}};
 }
 
 Json look_alikes_json(const Diagnosis &d)
@@ -243,7 +259,9 @@ Json diagnosis_json(const Diagnosis &d)
                            {"significant", d.significant},
                            {"route", !d.significant ? Json() : Json(d.targeted ? "targeted" : "omnibus")},
                            {"null_replicates", d.n_null}};
-  j["confirmed"] = d.verdict != Verdict::explained && d.verdict != Verdict::scale_only ? Json() : Json(!d.provisional);
+  j["confirmed"] = d.verdict != Verdict::explained && d.verdict != Verdict::scale_only && d.verdict != Verdict::pair
+                       ? Json()
+                       : Json(!d.provisional);
   j["scale_only"] = scale_only_json(d.scale_only);
   j["confirmation"] = confirmation_json(d);
   j["refinement"] = !d.refined ? Json()
@@ -265,10 +283,13 @@ Json diagnosis_json(const Diagnosis &d)
   j["gap_curve"] = curve;
   j["detection_limits"] = limits_json(d);
   j["false_alarms"] = false_alarms_json(d.false_alarms);
+  j["false_alarms_measured"] = measured_false_alarms_json(d.measured_false_alarms);
   j["look_alikes"] = look_alikes_json(d);
   j["knot_bends"] = knot_bends_json(d);
   j["next_measurement"] = next_json(d.next);
   j["residual"] = residual_json(d.residual);
+  j["pair"] = d.pair.empty() ? Json() : Json(d.pair);
+  j["pairs"] = pair_stage_json(d.pairs);
   j["notes"] = d.notes;
   j["plan"] = plan_json(d.plan);
   // the rules' thresholds the verdict was decided by (gap_thresholds.h)
@@ -442,6 +463,7 @@ std::string plain_verdict(const Diagnosis &d)
   case Verdict::unexplained:
     return "There is a gap that no candidate effect explains" +
            (d.residual && !d.residual->nearest.empty() ? " (nearest: " + d.residual->nearest + ", see Residual)." : std::string("."));
+  case Verdict::pair: return d.pairs ? pair_plain_verdict(*d.pairs, d.provisional) : "Two effects at once.";
   case Verdict::explained: break;
   }
   const Effect *e = find_effect(d.top_effect);
@@ -606,6 +628,13 @@ std::string md_blind(const Diagnosis &d)
   md += format_text("False alarms on the %d null replicates (reference beds taken as a measurement without any effect, "
                     "each tested with thresholds calibrated on the others): %d verdict(s) other than none (rate %.2f).\n",
                     fa.replicates, fa.not_none, fa.rate());
+  if (const auto &m = d.measured_false_alarms)
+    md += format_text("At scenario %s's scale on real LAMMPS (%s): %d verdict(s) other than none in %d data sets without an "
+                      "effect, a false-alarm rate of %.3f (95%% interval %.3f to %.3f, exact).\n",
+                      d.scenario.c_str(), m->file.c_str(), m->alarms, m->sets, m->interval.rate, m->interval.low, m->interval.high);
+  else
+    md += format_text("No false-alarm rate measured at scenario %s's scale on real LAMMPS yet (validation/gap_bench.sh).\n",
+                      d.scenario.c_str());
   if (!d.look_alikes.empty()) {
     md += "\n| candidates | angle between signatures (deg) | separation at the reference values (sigma) | look alike "
           "| separation of the fits (sigma) |\n|---|---|---|---|---|\n";
@@ -698,7 +727,8 @@ std::string md_residual(const Diagnosis &d)
 std::string report_markdown(const Diagnosis &d, const std::vector<std::string> &figures,
                             const std::vector<std::string> &failures)
 {
-  std::string md = md_summary(d) + md_scale_only(d) + md_where(d) + md_which(d) + md_blind(d) + md_residual(d);
+  std::string md = md_summary(d) + md_scale_only(d) + md_where(d) + md_which(d) + md_blind(d) + md_residual(d) +
+                   pair_stage_markdown(d.pairs);
   md += "\n## Cost\n\n" + plan_record_text(d.plan) + "\n";
   md += format_text("\n## Notes\n\n");
   for (const auto &n : d.notes) md += format_text("- %s\n", n.c_str());

@@ -28,6 +28,44 @@ void record_where(const WhereResult &w, Diagnosis &d)
   d.baseline_files = w.baseline_files;
 }
 
+// Fresh runs as the "after": the gap after, its parts, the corrected curves and files.
+void record_after(const AfterRuns &after, Diagnosis &d)
+{
+  d.gap_after = after.all();
+  d.parts_after = GapParts{after.G, after.G_spec, d.n_real_min, after.runs};
+  d.corrected_files = after.files;
+  for (std::size_t s = 0; s < d.speeds.size() && s < after.speeds.size(); ++s) {
+    auto &curve = d.speeds[s];
+    const SpeedAfter &a = after.speeds[s];
+    curve.n_corr = a.n;
+    for (std::size_t b = 0; b < a.mean.size(); ++b) curve.corr[b] = a.mean[b], curve.corr_se[b] = a.se[b];
+    curve.G_after = a.G, curve.Gs_after = a.G_spec;
+  }
+}
+
+// The pair stage: its record, its verdict's sentences, and after a pair verdict its confirming
+// runs as the "after" (the other member's runs filtered: their traces the corrected ones).
+void record_pairs(std::optional<PairStage> pairs, const VerdictDecision &verdict, Diagnosis &d)
+{
+  if (!pairs || !pairs->search.entered) return;
+  if (pairs->confirmation) {
+    const PairConfirmation &c = *pairs->confirmation;
+    const std::vector<std::string> notes = pair_verdict_notes(verdict, c.outcome);
+    d.notes.insert(d.notes.end(), notes.begin(), notes.end());
+    if (verdict.verdict == Verdict::pair && c.outcome.kind == PairOutcome::Kind::simulated) {
+      record_after(c.after, d);
+      d.tested_effect = c.filter + "+" + c.other;
+      d.chi2_after = c.chi2_after, d.confirmed_fraction = c.confirmed_fraction;
+      d.proj_before = c.proj_before, d.proj_after = c.proj_after;
+      d.corrected_effect.clear();
+      d.corrected_traces = c.corrected_traces;
+    }
+    if (verdict.verdict == Verdict::pair) d.next.reset();    // as after explained: nothing to measure next
+  }
+  pairs->search.data.clear();    // the members' model data: the stage's, not the record's
+  d.pairs = std::move(pairs);
+}
+
 // The confirmation's numbers: the magnitude named, and when it simulated, the gap after, the
 // corrected curves and files, the refinement and its note.
 void record_confirmation(const Confirmation &c, Diagnosis &d)
@@ -41,16 +79,7 @@ void record_confirmation(const Confirmation &c, Diagnosis &d)
   d.proj_after = c.outcome.proj_after;
   d.chi2_after = c.outcome.chi2_after;
   d.confirmed_fraction = c.confirmed_fraction;
-  d.gap_after = c.after.all();
-  d.parts_after = GapParts{c.after.G, c.after.G_spec, d.n_real_min, c.after.runs};
-  d.corrected_files = c.after.files;
-  for (std::size_t s = 0; s < d.speeds.size() && s < c.after.speeds.size(); ++s) {
-    auto &curve = d.speeds[s];
-    const SpeedAfter &a = c.after.speeds[s];
-    curve.n_corr = a.n;
-    for (std::size_t b = 0; b < a.mean.size(); ++b) curve.corr[b] = a.mean[b], curve.corr_se[b] = a.se[b];
-    curve.G_after = a.G, curve.Gs_after = a.G_spec;
-  }
+  record_after(c.after, d);
   if (c.second) {
     d.refined = true;
     d.refined_from = c.second->first_magnitude;
@@ -77,7 +106,8 @@ void record_blindness(const Blindness &b, Diagnosis &d)
 
 Diagnosis assemble_diagnosis(const DiagnosisInputs &in, const WhereResult &where, const FittedCandidates &fitted,
                              const VerdictDecision &fits_verdict, const Confirmation &confirmation,
-                             const VerdictDecision &verdict, const Blindness &blind, std::optional<Residual> residual)
+                             const VerdictDecision &verdict, const Blindness &blind, std::optional<Residual> residual,
+                             std::optional<PairStage> pairs)
 {
   Diagnosis d;
   d.scenario = in.scenario;
@@ -87,6 +117,7 @@ Diagnosis assemble_diagnosis(const DiagnosisInputs &in, const WhereResult &where
   d.peak_end = in.peak_end;
   d.n_reference = in.n_reference;
   d.plan = in.plan;
+  d.measured_false_alarms = in.measured_false_alarms;
   // the notes in the order the stages said them: the inputs', where's, the fits' verdict's,
   // a second simulation's, then the confirmation's verdict's (record_verdict)
   d.notes = in.notes;
@@ -100,6 +131,7 @@ Diagnosis assemble_diagnosis(const DiagnosisInputs &in, const WhereResult &where
   record_confirmation(confirmation, d);
   record_verdict(verdict, confirmation_verdict_notes(verdict, fitted.evidence, confirmation.outcome), d);
   record_blindness(blind, d);
+  record_pairs(std::move(pairs), verdict, d);
   d.residual = std::move(residual);
   d.gap_by_regime = gap_by_regime(d.grid, d.peak_end, d.speeds);
   return d;

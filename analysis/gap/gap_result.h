@@ -9,10 +9,12 @@
 #define GRANPEN_GAP_RESULT_H
 
 #include "gap_adaptive.h"
+#include "gap_bench_rate.h"
 #include "gap_confirm.h"
 #include "gap_data.h"
 #include "gap_fit.h"
 #include "gap_limits.h"
+#include "gap_pairs.h"
 #include "gap_residual.h"
 #include "gap_verdict.h"
 #include "gap_where.h"
@@ -66,6 +68,8 @@ struct Diagnosis {
   std::string scale_effect;                  // scale_only: the scale candidate that explains the gap (no physical effect)
   std::optional<ScaleFinding> scale_only;    // scale_only: the scale and what can do it (gap_limits.h)
   std::vector<std::string> tie;              // "tie": the candidates (two or more) that cannot be told apart
+  std::vector<std::string> pair;             // "pair": the two effects present at once (the filter first)
+  std::optional<PairStage> pairs;            // the pair stage's record (gap_pairs.h): null when not entered
   std::vector<CandidateRecord> candidates;   // the verdict's record: per candidate, the rules it fell short of
   std::string tested_effect;                 // simulated for confirmation (even when downgraded)
   double magnitude = 0;
@@ -83,6 +87,7 @@ struct Diagnosis {
   std::vector<KnotBend> knot_bends;         // per interior knot: what it adds at this noise (cost design)
   std::optional<NextMeasurement> next;
   FalseAlarms false_alarms;
+  std::optional<MeasuredFalseAlarms> measured_false_alarms;    // at the scenario's scale on real LAMMPS (gap_bench_rate.h)
   std::optional<Residual> residual;          // what the gap left over (none for a `none`)
   PlanRecord plan;                           // the plan's range, what this run spent, what it simulated and skipped and why
 };
@@ -96,13 +101,17 @@ struct DiagnosisInputs {
   double peak_end = 0;                      // 0.35 D
   int n_reference = 0;                      // reference beds per speed (fewest)
   PlanRecord plan;                          // stages 2-3: the plan's range, what was simulated, skipped, spent
+  std::optional<MeasuredFalseAlarms> measured_false_alarms;    // stage 1: the scenario's committed figure
 };
 
 // The record, from the stages' results: where (6), the fits (7) and their verdict (8), the
-// confirmation (9), the verdict that stands (8 again), how blind (10), the residual (11).
+// confirmation (9), the verdict that stands (8 again, with the pair stage's outcome), how
+// blind (10), the residual (11), the pair stage (11b; null when not entered: after a pair
+// verdict its confirming runs are the "after").
 Diagnosis assemble_diagnosis(const DiagnosisInputs &in, const WhereResult &where, const FittedCandidates &fitted,
                              const VerdictDecision &fits_verdict, const Confirmation &confirmation,
-                             const VerdictDecision &verdict, const Blindness &blind, std::optional<Residual> residual);
+                             const VerdictDecision &verdict, const Blindness &blind, std::optional<Residual> residual,
+                             std::optional<PairStage> pairs = std::nullopt);
 
 // The decision into the record (the verdict, its effect or tie, the routes, the flags), with
 // the sentences that say why appended to its notes: the one writer of d.verdict, defined

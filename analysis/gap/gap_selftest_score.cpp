@@ -24,6 +24,7 @@ const VerdictKind VERDICT_READINGS[] = {
     {Verdict::tie, VerdictReading::names_candidates},
     {Verdict::unexplained, VerdictReading::gap_unnamed},
     {Verdict::scale_only, VerdictReading::names_scale},
+    {Verdict::pair, VerdictReading::names_pair},
 };
 
 // An outside case named as its stand-in effect is right at its magnitude within two of the
@@ -86,19 +87,19 @@ std::vector<std::string> names(const Json &d, const std::string &path, const std
   return out;
 }
 
-// the truth's detection limit on its side of 0, and whether the truth lies below it
-SelftestLimit detection_limit(const Json &d, const SelftestCase &c, const std::string &source)
+// the truth's detection limit on its side of 0 (effect at magnitude), and whether the truth lies below it
+SelftestLimit detection_limit(const Json &d, const std::string &effect, double magnitude, const std::string &source)
 {
   SelftestLimit lim;
-  const JsonLookup entry = json_lookup(d, "detection_limits[effect=" + c.effect + "]");
+  const JsonLookup entry = json_lookup(d, "detection_limits[effect=" + effect + "]");
   if (!entry.complete()) {
     lim.kind = SelftestLimit::Kind::missing;
     return lim;
   }
   const Json &e = *entry.values[0];
-  const std::string at = "detection_limits[effect=" + c.effect + "]";
+  const std::string at = "detection_limits[effect=" + effect + "]";
   const MaybeNumber ref = number_or_null(need(e, "reference", source), at + ".reference", source);
-  const std::string side = c.magnitude * (ref.known ? ref.value : 0.0) >= 0 ? "limit" : "limit_other_side";
+  const std::string side = magnitude * (ref.known ? ref.value : 0.0) >= 0 ? "limit" : "limit_other_side";
   const MaybeNumber l = number_or_null(need(e, side, source), at + "." + side, source);
   if (!l.known) {
     lim.kind = SelftestLimit::Kind::none_within_knots;
@@ -107,8 +108,36 @@ SelftestLimit detection_limit(const Json &d, const SelftestCase &c, const std::s
   }
   lim.kind = SelftestLimit::Kind::value;
   lim.value = l.value;
-  lim.truth_below = c.magnitude * c.magnitude < l.value * l.value;
+  lim.truth_below = magnitude * magnitude < l.value * l.value;
   return lim;
+}
+
+// A pair case: both named by a pair verdict; one of the two named alone (as an explained
+// verdict, a tie or a scale's cause would name a single truth); a miss when a member lies
+// below its limit. Whatever else is named is wrong.
+void judge_pair_case(const Json &d, const SelftestCase &c, SelftestScore &s)
+{
+  const VerdictReading r = verdict_reading(s.verdict);
+  auto in_truth = [&](const std::string &name) { return name == c.effect || name == c.effect2; };
+  switch (r) {
+  case VerdictReading::names_pair:
+    s.pass = s.pair_names_truth = s.pair.size() == 2 && in_truth(s.pair[0]) && in_truth(s.pair[1]) && s.pair[0] != s.pair[1];
+    return;
+  case VerdictReading::names_top:
+    s.pass = s.names_part_of_pair = in_truth(s.top_effect) && gap_shrinks(s.gap_before, s.gap_after);
+    return;
+  case VerdictReading::names_candidates:
+    s.pass = s.names_part_of_pair = std::any_of(s.tie.begin(), s.tie.end(), in_truth);
+    return;
+  case VerdictReading::names_scale:
+    s.pass = s.names_part_of_pair = json_lookup(d, "scale_only.causes[cause=" + c.effect + "]").complete() ||
+                                    json_lookup(d, "scale_only.causes[cause=" + c.effect2 + "]").complete();
+    if (s.pass) return;
+    break;
+  case VerdictReading::no_gap:
+  case VerdictReading::gap_unnamed: break;
+  }
+  if (s.limit.truth_below || s.limit2.truth_below) s.pass = s.missed_below_limit = true;
 }
 
 // a verdict that names no physical effect: below the truth's detection limit it is right (a
@@ -124,8 +153,9 @@ void judge(const Json &d, const SelftestCase &c, const std::string &source, Self
   const VerdictReading r = verdict_reading(s.verdict);
   switch (c.truth) {
   case SelftestCase::Truth::none: s.pass = r == VerdictReading::no_gap; return;
+  case SelftestCase::Truth::pair: judge_pair_case(d, c, s); return;
   case SelftestCase::Truth::outside:
-    s.pass = r != VerdictReading::names_top;
+    s.pass = r != VerdictReading::names_top && r != VerdictReading::names_pair;
     if (r == VerdictReading::names_top && !c.as_effect.empty() && s.top_effect == c.as_effect) {
       s.named_as_effect = true;
       const JsonLookup fe = json_lookup(d, "ranking[effect=" + c.as_effect + "].magnitude_error");
@@ -143,6 +173,12 @@ void judge(const Json &d, const SelftestCase &c, const std::string &source, Self
     if (r == VerdictReading::names_scale && json_lookup(d, "scale_only.causes[cause=" + c.effect + "]").complete())
       s.pass = s.scale_causes_hold_truth = true;
     if (s.limit.truth_below && is_miss(r)) s.pass = s.missed_below_limit = true;
+    // at about half its limit: a miss is right whatever this data's limit says; naming the
+    // truth is right too; naming another effect alone, or a tie without the truth, is not
+    if (c.below_limit) {
+      if (is_miss(r)) s.pass = s.missed_below_limit = true;
+      if (r == VerdictReading::names_top && s.top_effect == c.effect) s.pass = true;
+    }
     return;
   }
 }
@@ -182,7 +218,11 @@ SelftestScore score_selftest(const Json &d, const SelftestCase &c, const std::st
   s.heldout_before = maybe_member(d, "heldout", "gap_before", source);
   s.heldout_after = maybe_member(d, "heldout", "gap_after", source);
   s.explained_fraction = maybe_member(d, "confirmation", "explained_fraction", source);
-  if (c.truth == SelftestCase::Truth::library) s.limit = detection_limit(d, c, source);
+  // "pair" is read where the diagnosis has it (older ones lack the key: no pair)
+  if (json_lookup(d, "pair").complete()) s.pair = names(d, "pair", source);
+  if (c.truth == SelftestCase::Truth::library || c.truth == SelftestCase::Truth::pair)
+    s.limit = detection_limit(d, c.effect, c.magnitude, source);
+  if (c.truth == SelftestCase::Truth::pair) s.limit2 = detection_limit(d, c.effect2, c.magnitude2, source);
   judge(d, c, source, s);
   return s;
 }

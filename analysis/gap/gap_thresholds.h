@@ -18,6 +18,11 @@ struct GapThresholds {
   // the targeted test's threshold: the chi^2(1) quantile of p = 1e-4 (15.14), times the
   // null replicates' mean likelihood ratio when that exceeds 1 (gap_fit.h, lr_threshold)
   static constexpr double lr_chi2_1_p1e4 = 15.137;
+  // a pair of effects (two magnitudes fitted jointly, gap_pairs.h) is detected by the chi^2(2)
+  // quantile of the same p = 1e-4, -2 ln(1e-4) = 18.42, times its null mean over 2 when that
+  // exceeds 1; beyond its best single member it must gain lr_chi2_1_p1e4 more (its second
+  // magnitude passes the test a single effect passes)
+  static constexpr double lr_chi2_2_p1e4 = 18.421;
   // two candidates are told apart by an evidence margin of 6: a likelihood ratio of e^3 = 20
   static constexpr double evidence_margin = 6.0;
   // a candidate explains the gap when its fit removes at least half of it: less, and more of
@@ -68,6 +73,7 @@ inline std::vector<std::pair<const char *, double>> gap_threshold_table()
   using T = GapThresholds;
   return {{"significance_p", T::significance_p},
           {"lr_chi2_1_p1e4", T::lr_chi2_1_p1e4},
+          {"lr_chi2_2_p1e4", T::lr_chi2_2_p1e4},
           {"evidence_margin", T::evidence_margin},
           {"explained_min", T::explained_min},
           {"heldout_explained_min", T::heldout_explained_min},

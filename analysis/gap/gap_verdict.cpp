@@ -202,6 +202,7 @@ const char *verdict_name(Verdict v)
   case Verdict::tie: return "tie";
   case Verdict::unexplained: return "unexplained";
   case Verdict::scale_only: return "scale_only";
+  case Verdict::pair: return "pair";
   }
   return "none";
 }
@@ -261,12 +262,25 @@ void apply_confirmation(const FitEvidence &fits, const ConfirmationResult &c, Ve
   }
 }
 
+// The pair stage's rules on an unexplained verdict: its pair stands as an explained effect
+// does, on fresh runs that confirm it and halve G_all (--fit-only: provisional).
+void apply_pair(const PairOutcome &p, VerdictDecision &v)
+{
+  if (v.verdict != Verdict::unexplained || p.effects.size() != 2 || p.kind == PairOutcome::Kind::none) return;
+  if (p.kind == PairOutcome::Kind::fit_only) v.pair_rule = PairRule::provisional, v.provisional = true;
+  else v.pair_rule = !p.confirmed                              ? PairRule::not_confirmed
+                     : !gap_shrinks(p.gap_before, p.gap_after) ? PairRule::not_halved
+                                                               : PairRule::explained;
+  if (v.pair_rule == PairRule::explained || v.pair_rule == PairRule::provisional) v.verdict = Verdict::pair, v.pair = p.effects;
+}
+
 }    // namespace
 
-VerdictDecision decide_verdict(const FitEvidence &fits, const ConfirmationResult *c)
+VerdictDecision decide_verdict(const FitEvidence &fits, const ConfirmationResult *c, const PairOutcome *pair)
 {
   VerdictDecision v = decide_from_fits(fits);
   if (c) apply_confirmation(fits, *c, v);
+  if (pair) apply_pair(*pair, v);
   v.candidates = candidate_records(fits, c);
   // a uniform scale explains the gap: a finding of its own kind, no physical effect named
   if (v.verdict == Verdict::explained && fits.ranking[0].is_scale) {
@@ -396,9 +410,29 @@ std::vector<std::string> confirmation_verdict_notes(const VerdictDecision &v, co
   }
 }
 
+std::vector<std::string> pair_verdict_notes(const VerdictDecision &v, const PairOutcome &p)
+{
+  if (p.effects.size() != 2) return {};
+  const std::string both = p.effects[0] + " and " + p.effects[1];
+  const std::string gaps = "G_all " + fmt(p.gap_before, "%.3f") + " -> " + fmt(p.gap_after, "%.3f");
+  switch (v.pair_rule) {
+  case PairRule::explained: return {"verdict: explained by two effects at once, " + both + ", confirmed on fresh seeds (" + gaps + ")"};
+  case PairRule::provisional:
+    return {"verdict provisional (--fit-only): the pair " + both + " was not simulated on fresh seeds"};
+  case PairRule::not_confirmed:
+    return {"verdict: the pair " + both + " did not pass the confirmation test on fresh seeds (" + gaps + "): unexplained"};
+  case PairRule::not_halved:
+    return {"verdict: the pair " + both + " passed the chi^2 test on fresh seeds but G_all did not shrink to half (" + gaps +
+            "): unexplained"};
+  case PairRule::none: break;
+  }
+  return {};
+}
+
 void record_verdict(const VerdictDecision &v, const std::vector<std::string> &notes, Diagnosis &d)
 {
   d.verdict = v.verdict;
+  d.pair = v.pair;
   d.top_effect = v.top_effect;
   d.scale_effect = v.scale_effect;
   d.tie = v.tie;

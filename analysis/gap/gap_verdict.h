@@ -45,9 +45,11 @@
 
 namespace granpen {
 
-enum class Verdict { none, explained, tie, unexplained, scale_only };
+// pair: two effects at once, both named (the pair stage, gap_pairs.h: tried only when the single
+// candidates leave the gap unexplained and the residual carries a spectral line or band)
+enum class Verdict { none, explained, tie, unexplained, scale_only, pair };
 
-// "none", "explained", "tie", "unexplained", "scale_only": as diagnosis.json and the report write it
+// "none", "explained", "tie", "unexplained", "scale_only", "pair": as diagnosis.json and the report write it
 const char *verdict_name(Verdict v);
 
 using Separation2 = std::function<double(const EffectFit &, const EffectFit &)>;
@@ -92,6 +94,24 @@ struct ConfirmationResult {
   bool confirmed = false;                // by chi^2 or along the signature (gap_confirm.h, confirms)
   double chi2_after = 0, proj_before = 0, proj_after = 0;
   double gap_before = 0, gap_after = 0, heldout_before = 0, heldout_after = 0;    // G_all
+};
+
+// What the pair stage found (gap_pairs.h makes it), as the verdict reads it: the pair its fits
+// name (two effects, or none), and what their runs on fresh beds said.
+struct PairOutcome {
+  std::vector<std::string> effects;      // the pair the fits name (two: the filter, then the other); empty: none
+  enum class Kind { none, fit_only, simulated } kind = Kind::none;
+  bool confirmed = false;                // the fresh runs pass the singles' confirmation test (gap_confirm.h, confirms)
+  double gap_before = 0, gap_after = 0;  // G_all
+};
+
+// How the pair stage changed an unexplained verdict.
+enum class PairRule {
+  none,            // no pair named by the fits (or the verdict was not unexplained): the verdict stands
+  explained,       // the pair's fresh runs confirm it and halve G_all: pair
+  provisional,     // --fit-only: pair, provisional
+  not_confirmed,   // its fresh runs do not confirm it: unexplained
+  not_halved       // confirmed by chi^2, G_all not halved: unexplained
 };
 
 // Which rule decided, for the sentences that say why.
@@ -164,6 +184,8 @@ struct VerdictDecision {
   std::string top_effect;                // explained: the effect named; else ""
   std::string scale_effect;              // scale_only: the scale candidate that explains the gap; else ""
   std::vector<std::string> tie;          // tie: the candidates, best first
+  std::vector<std::string> pair;         // pair: the two effects (PairOutcome::effects)
+  PairRule pair_rule = PairRule::none;
   bool significant = false;              // on either route
   bool targeted = false;                 // by one effect's likelihood ratio, not the omnibus chi^2
   bool between_knots = false;            // the fits' unexplained that fresh runs between knots decide
@@ -174,14 +196,19 @@ struct VerdictDecision {
   std::vector<CandidateRecord> candidates;    // per candidate of the ranking, the rules it fell short of
 };
 
-// The verdict: every rule, from the fits' evidence and (when given) the confirmation's result.
-VerdictDecision decide_verdict(const FitEvidence &fits, const ConfirmationResult *confirmation = nullptr);
+// The verdict: every rule, from the fits' evidence and (when given) the confirmation's result
+// and the pair stage's (an unexplained verdict becomes pair when its pair is confirmed and
+// halves G_all, as an explained one must).
+VerdictDecision decide_verdict(const FitEvidence &fits, const ConfirmationResult *confirmation = nullptr,
+                               const PairOutcome *pair = nullptr);
 
 // The sentences that say why (the report's notes), made from the decision's record: those of
 // the fits' rules, and those of the confirmation's.
 std::vector<std::string> fits_verdict_notes(const VerdictDecision &v, const FitEvidence &fits);
 std::vector<std::string> confirmation_verdict_notes(const VerdictDecision &v, const FitEvidence &fits,
                                                     const ConfirmationResult &c);
+// ... and the pair stage's (empty when it changed nothing and named no pair).
+std::vector<std::string> pair_verdict_notes(const VerdictDecision &v, const PairOutcome &p);
 
 // (The decision into the record, record_verdict, is declared with the record, gap_result.h.)
 

@@ -156,7 +156,7 @@ FittedCandidates fit_candidates(const std::vector<const Effect *> &effects, cons
   const NoiseFactors now(f.target.mean.size(), 1.0);
   const auto &data = out.data;
   out.evidence = fit_evidence(omnibus.significant, std::move(fits), [&](const EffectFit &a, const EffectFit &b) {
-    return prediction_separation2(data.at(a.name), a.magnitude, data.at(b.name), b.magnitude, f.target, now);
+    return prediction_separation2(data.at(a.name), a.magnitude, a.scale, data.at(b.name), b.magnitude, b.scale, f.target, now);
   });
   out.evidence.chi2_0 = omnibus.chi2_0, out.evidence.p_value = omnibus.p_value, out.evidence.nfeatures = omnibus.nfeatures;
   out.evidence.n_null = (int) f.nulls.size();

@@ -2,7 +2,7 @@
 # verdict_owner.sh: the gap diagnosis's verdict has one owner, analysis/gap/gap_verdict.cpp
 # (decide_verdict holds every rule, record_verdict writes it; issue 32). Fails when any other
 # C++ file under analysis/ assigns a verdict: a member `verdict` assigned (`.verdict =`,
-# `->verdict =`), or a decided verdict (Verdict::explained, tie, unexplained, scale_only) assigned to
+# `->verdict =`), or a decided verdict (Verdict::explained, tie, unexplained, scale_only, pair) assigned to
 # anything. Comparisons (==, !=) and comments do not count; `Verdict::none` as a declaration's
 # default is no decision.
 #   verdict_owner.sh [--self-test] [ROOT]
@@ -31,7 +31,7 @@ check() {
       line = $0
       sub(/\/\/.*/, "", line)                       # a comment says, it does not assign
       if (line ~ /(\.|->)verdict[ \t]*=([^=]|$)/ ||
-          line ~ /(^|[^=!<>])=[ \t]*Verdict::(explained|tie|unexplained|scale_only)/) {
+          line ~ /(^|[^=!<>])=[ \t]*Verdict::(explained|tie|unexplained|scale_only|pair)/) {
         print FILENAME ":" FNR ": " $0; bad++
       }
     }

@@ -24,6 +24,7 @@
 #include "import_options.h"
 #include "momentum_options.h"
 #include "plot_options.h"
+#include "rate_options.h"
 #include "sweep_options.h"
 
 #include <cerrno>
@@ -197,9 +198,14 @@ inline void check(const GapScoreOptions &o)
     GRANPEN_FUZZ_CHECK(*end == '\0' && std::isfinite(m));
   }
   if (!o.as_effect.empty()) GRANPEN_FUZZ_CHECK(o.truth == "outside");
+  if (o.below_limit) GRANPEN_FUZZ_CHECK(o.truth != "none" && o.truth != "outside");
   GRANPEN_FUZZ_CHECK(o.wall_seconds >= -1);
 }
 
+inline void check(const RateOptions &o)
+{
+  GRANPEN_FUZZ_CHECK(o.events >= 0 && o.events <= o.trials && o.trials >= 1 && o.level > 0 && o.level < 1);
+}
 inline void check_usage_error(const UsageError &e, const std::vector<std::string> &words)
 {
   const std::string what = e.what();
@@ -231,7 +237,7 @@ void parse_one(Options (*parse)(int, char **), const char *name, std::vector<std
 }
 
 const char *const SUBCOMMAND_NAMES[] = {"convert", "import", "check", "fit", "calibration", "collapse",
-                                        "sweep", "flow", "momentum", "plot", "gap", "get", "gap-score"};
+                                        "sweep", "flow", "momentum", "plot", "gap", "get", "gap-score", "rate"};
 const int SUBCOMMAND_COUNT = sizeof(SUBCOMMAND_NAMES) / sizeof(SUBCOMMAND_NAMES[0]);
 
 // The words of an input: split at '\n', at most 64 (more add nothing to the parsers).
@@ -275,7 +281,8 @@ inline void cli_body(const std::string &bytes)
     case 9: parse_one(parse_plot, name, words); break;
     case 10: parse_one(parse_gap, name, words); break;
     case 11: parse_one(parse_get, name, words); break;
-    default: parse_one(parse_gap_score, name, words); break;
+    case 12: parse_one(parse_gap_score, name, words); break;
+    default: parse_one(parse_rate, name, words); break;
   }
 }
 

@@ -44,3 +44,13 @@ TEST(ScalingLaws, PeakRegimeEndsAtSevenTenthsOfTheRadius)
   EXPECT_DOUBLE_EQ(peak_regime_end(2.0), 0.7);    // 0.7 R with R = 1
   EXPECT_DOUBLE_EQ(peak_regime_end(1.0), 0.35);
 }
+
+TEST(ScalingLaws, PeakRegimeIsOpenAtBothEnds)
+{
+  // the surface and the end itself are outside: a point at exactly 0.35 D belongs to no peak
+  EXPECT_FALSE(in_peak_regime(0.0, 2.0));
+  EXPECT_TRUE(in_peak_regime(1e-9, 2.0));
+  EXPECT_TRUE(in_peak_regime(std::nextafter(0.7, 0.0), 2.0));
+  EXPECT_FALSE(in_peak_regime(peak_regime_end(2.0), 2.0));
+  EXPECT_FALSE(in_peak_regime(-0.1, 2.0));
+}

@@ -572,14 +572,105 @@ TEST(GapLimits, TwoPourLevelFitsShareTheSignatureBaselinesNoise)
   const NoiseFactors one(2, 1.0);
   // u_a - u_b: -2 (s + 1) on feature 5 of 6, at 2 speeds; the knots' noise 0.5 + 0.5 on each
   // of the 12 features (u_a's and u_b's 3.5 each, less 2 x 3.0); weights 0.25 + 0.5
-  EXPECT_NEAR(prediction_separation2(A, 1.0, B, 1.0, t, one), (4.0 + 16.0 - 12 * 1.0) / 0.75, 1e-9);
+  EXPECT_NEAR(prediction_separation2(A, 1.0, 0.0, B, 1.0, 0.0, t, one), (4.0 + 16.0 - 12 * 1.0) / 0.75, 1e-9);
   // without the correction, 12 x 7.0 would be subtracted: nothing left, a look-alike made of
   // the baseline's noise counted twice. A paired effect's signature is a difference on the
   // same beds, with no B_sig in it: then u_b's own 0.5 and u_a's 3.5 count, 12 x 4.0
   B.paired = true;
-  EXPECT_NEAR(prediction_separation2(A, 1.0, B, 1.0, t, one), 0.0, 1e-12);
+  EXPECT_NEAR(prediction_separation2(A, 1.0, 0.0, B, 1.0, 0.0, t, one), 0.0, 1e-12);
   EXPECT_NEAR(signature_baseline_share(B, 1.0), 0.0, 1e-12);
   EXPECT_NEAR(signature_baseline_share(A, 0.5), 0.5, 1e-12);
+}
+
+namespace {
+
+// An effect whose signature is a uniform scale of the baseline: 3% of it per unit magnitude
+// at both speeds (knots 0, 1, 2), with knot noise small enough to leave out of the sums.
+EffectData uniform_effect(std::size_t P)
+{
+  EffectData e = synthetic_effect("U", std::vector<double>(P, 0.0), 1e-12);
+  for (std::size_t j = 0; j < e.knots.size(); ++j)
+    for (auto &row : e.mean[j])
+      for (auto &x : row) x = 100.0 * (1.0 + 0.03 * e.knots[j]);
+  return e;
+}
+
+}    // namespace
+
+TEST(GapLimits, TheDetectionLimitCarriesTheFitsScale)
+{
+  // the fit's gap at magnitude 0 is the baseline's within the calibration bound
+  // (gap_fit.h, nuisance_scale): data 2% above the baseline everywhere give no likelihood
+  // ratio (GapFit.AScaleWithinTheCalibrationBoundIsEvidenceForNothing), so the expected one
+  // of an effect whose signature is that 2% is 0, and of 5%, only the 2% beyond the bound
+  const std::size_t P = 6;
+  EffectData U = uniform_effect(P);
+  Target t;
+  for (int s = 0; s < 2; ++s) t.mean.push_back(std::vector<double>(P, 100.0)), t.err.push_back(std::vector<double>(P, 0.5));
+  const NoiseFactors one(2, 1.0);
+  // weights 0.5 + 1e-12 (the measured mean's and the reference's variances); 12 features
+  const double RR = 12 * 100.0 * 100.0 / 0.5;
+  EXPECT_NEAR(signature_strength(U, t, 2.0 / 3.0, one), 0.02 * 0.02 * RR, 1e-6);    // no nuisance: |u|^2
+  U.scale_bound = GapThresholds::calibration_scale_bound;
+  EXPECT_NEAR(signature_strength(U, t, 2.0 / 3.0, one), 0.0, 1e-6);
+  EXPECT_NEAR(signature_strength(U, t, 5.0 / 3.0, one), 0.02 * 0.02 * RR, 1e-6);
+  // and the fit agrees: on data at U(5/3) (5% up, noiseless) the likelihood ratio of U's own
+  // fit is the expected one (the knots' noise, 1e-12, adds nothing measurable)
+  for (auto &row : t.mean)
+    for (auto &x : row) x = 105.0;
+  EXPECT_NEAR(fit_effect(t, U).lr, signature_strength(U, t, 5.0 / 3.0, one), 1e-3);
+}
+
+TEST(GapLimits, FittedPredictionsAreComparedWithTheirScales)
+{
+  // one effect fitted at magnitude 1 twice, once with a 2% nuisance scale: the predictions
+  // are M(1) and 1.02 M(1), 2% of M(1) apart, not the same (as they were without the scales)
+  const std::vector<double> sa{10, 8, 6, 4, 2, 0};
+  const EffectData A = synthetic_effect("A", sa, 1e-12);
+  Target t;
+  for (int s = 0; s < 2; ++s) t.mean.push_back(std::vector<double>(sa.size(), 100.0)), t.err.push_back(std::vector<double>(sa.size(), 0.5));
+  const NoiseFactors one(2, 1.0);
+  double by_hand = 0;
+  for (int s = 0; s < 2; ++s)
+    for (double x : sa) by_hand += std::pow(0.02 * (100.0 + (s + 1) * x), 2) / 0.5;
+  EXPECT_NEAR(prediction_separation2(A, 1.0, 0.0, A, 1.0, 0.0, t, one), 0.0, 1e-6);
+  EXPECT_NEAR(prediction_separation2(A, 1.0, 0.02, A, 1.0, 0.0, t, one), by_hand, 1e-6 * by_hand);
+  EXPECT_NEAR(prediction_separation2(A, 1.0, 0.0, A, 1.0, 0.02, t, one), by_hand, 1e-6 * by_hand);
+}
+
+TEST(GapLimits, TheLookAlikeSeparationAllowsTheFitsScale)
+{
+  // x 2% of R, y orthogonal to both: within a 3% bound x is R's scale (0 off), within 1% it
+  // stands 1% of R off, with none its whole length
+  const SpanProducts p{0.04, 0.0, 5.0, 2.0, 0.0, 100.0};
+  EXPECT_NEAR(off_span2(p, 0.03), 0.0, 1e-12);
+  EXPECT_NEAR(off_span2(p, 0.01), 0.01, 1e-12);
+  EXPECT_NEAR(off_span2(p, 0.0), 0.04, 1e-12);
+  // a general case against an independent route: the distance minimised on a fine grid of
+  // c in [-bound, bound] (beta in closed form for each c); the grid's step, 1e-4 of the
+  // bound (3e-6), misses the minimum by at most RR step^2 / 2 (RR about 8e4): 4e-7
+  std::mt19937 rng(7);
+  std::normal_distribution<double> n01;
+  for (int trial = 0; trial < 20; ++trial) {
+    std::vector<double> x(8), y(8), R(8);
+    for (int k = 0; k < 8; ++k) R[k] = 100 + 5 * n01(rng), y[k] = n01(rng), x[k] = 0.5 * y[k] + 0.02 * R[k] + 0.3 * n01(rng);
+    SpanProducts q;
+    for (int k = 0; k < 8; ++k)
+      q.xx += x[k] * x[k], q.xy += x[k] * y[k], q.yy += y[k] * y[k], q.xR += x[k] * R[k], q.yR += y[k] * R[k], q.RR += R[k] * R[k];
+    for (double bound : {0.0, 0.01, 0.03}) {
+      double best = 1e300;
+      for (int i = -10000; i <= 10000; ++i) {
+        const double c = bound * i / 10000.0;
+        double d = 0, xy = 0;
+        for (int k = 0; k < 8; ++k) xy += (x[k] - c * R[k]) * y[k];
+        const double beta = xy / q.yy;
+        for (int k = 0; k < 8; ++k) d += std::pow(x[k] - c * R[k] - beta * y[k], 2);
+        best = std::min(best, d);
+        if (bound == 0.0) break;
+      }
+      EXPECT_NEAR(off_span2(q, bound), best, 1e-6 * (1 + best)) << trial << " " << bound;
+    }
+  }
 }
 
 TEST(GapLimits, AKnotOnTheLineThroughItsNeighboursEarnsNothing)
@@ -713,6 +804,13 @@ TEST(GapEffects, LibraryKnobsAreDeckVariables)
   const Effect &coh = *find_effect("cohesion");
   EXPECT_TRUE(coh.pour_level);
   EXPECT_EQ(coh.set(10.0), (DeckVars{{"cohesion", "10"}}));
+  // cohesion_dmt: the other law's surface energy, pour and push alike, on beds of its own;
+  // opt-in, the only one
+  const Effect &dmt = *find_effect("cohesion_dmt");
+  EXPECT_TRUE(dmt.pour_level && dmt.one_sided && dmt.opt_in);
+  EXPECT_FALSE(coh.opt_in);
+  EXPECT_EQ(dmt.set(800.0), (DeckVars{{"cohesion_dmt", "800"}}));
+  EXPECT_EQ(dmt.push_set(800.0), DeckVars{});
   const Effect &rod = *find_effect("rod_friction");
   EXPECT_FALSE(rod.pour_level);
   EXPECT_FALSE(rod.one_sided);

@@ -40,6 +40,17 @@ SelftestCase library(const std::string &effect, double magnitude)
   return c;
 }
 
+// two effects at once (issue 37): cohesion at 1500 with contact_stiffness at -0.5 (each
+// above its limit in the fixture) or at -0.1 (below its limit, -0.153)
+SelftestCase pair_case(double stiffness = -0.5)
+{
+  SelftestCase c = library("cohesion", 1500);
+  c.truth = SelftestCase::Truth::pair;
+  c.effect2 = "contact_stiffness";
+  c.magnitude2 = stiffness;
+  return c;
+}
+
 SelftestCase outside()
 {
   SelftestCase c;
@@ -67,7 +78,7 @@ bool passes(const Json &d, const SelftestCase &c) { return granpen::score_selfte
 // every kind of the table reads back from the name diagnosis.json writes; another name does not
 TEST(SelftestScore, VerdictTableRoundTrips)
 {
-  for (Verdict v : {Verdict::none, Verdict::explained, Verdict::tie, Verdict::unexplained, Verdict::scale_only}) {
+  for (Verdict v : {Verdict::none, Verdict::explained, Verdict::tie, Verdict::unexplained, Verdict::scale_only, Verdict::pair}) {
     Verdict back = Verdict::none;
     ASSERT_TRUE(granpen::verdict_from_name(granpen::verdict_name(v), back)) << granpen::verdict_name(v);
     EXPECT_EQ(back, v);
@@ -129,6 +140,31 @@ TEST(SelftestScore, MissRightOnlyBelowTheLimit)
   EXPECT_FALSE(unlisted.pass);
 }
 
+// a below-limit case (issue 37: about half the effect's detection limit) may be missed even
+// where this data's limit lies below the truth; naming the truth is right; another effect
+// named alone, or a tie without the truth, is a confident wrong answer
+TEST(SelftestScore, BelowLimitCaseNeverNamesAnotherEffect)
+{
+  SelftestCase half = library("cohesion", 600);    // above this data's limit 410.9
+  half.below_limit = true;
+  const Json miss = diagnosis("unexplained", nullptr, 0.1, 0.1);
+  EXPECT_FALSE(passes(miss, library("cohesion", 600)));    // the plain rule: a miss above the limit
+  const auto s = granpen::score_selftest(miss, half, "d.json");
+  EXPECT_TRUE(s.pass && s.missed_below_limit);
+  EXPECT_TRUE(passes(diagnosis("none", nullptr, 0.1, 0.1), half));
+  EXPECT_TRUE(passes(diagnosis("scale_only", nullptr, 0.1, 0.1), half));
+  // the truth named, even where the gap does not halve (at half its limit it is barely seen)
+  EXPECT_TRUE(passes(diagnosis("explained", "cohesion", 0.2, 0.15), half));
+  // the issue's confident wrong answer: a below-limit effect named as another
+  EXPECT_FALSE(passes(diagnosis("explained", "force_scale", 0.2, 0.05), half));
+  EXPECT_FALSE(passes(diagnosis("explained", "contact_stiffness", 0.2, 0.05), half));
+  Json tie = diagnosis("tie", nullptr, 0.2, 0.2);
+  tie["tie"] = {"force_scale", "cohesion"};
+  EXPECT_TRUE(passes(tie, half));
+  tie["tie"] = {"force_scale", "packing"};
+  EXPECT_FALSE(passes(tie, half));
+}
+
 // scale_only (issue 37) names no effect: right for a library truth its causes list (as a tie
 // that holds it), or below the truth's limit (as a miss); a false alarm on no-effect data;
 // never a confident wrong answer on an outside case
@@ -177,4 +213,36 @@ TEST(SelftestScore, MissingKeysAreNamed)
   d = diagnosis("explained", "cohesion", 0.2, 0.01);
   d["heldout"] = nullptr;    // no held-out speed: unknown, not an error
   EXPECT_FALSE(granpen::score_selftest(d, library("cohesion", 1800), "d.json").heldout_v0.known);
+}
+
+// a pair case: right when the pair verdict names both; one of the two named alone is no
+// confident wrong answer (the truth holds it); a pair with an effect the truth lacks, or an
+// effect outside the truth alone, is wrong; a miss is right only below a member's limit
+TEST(SelftestScore, PairRightOnlyWithBothOneAloneIsPartWrongOtherwise)
+{
+  Json d = diagnosis("pair", nullptr, 0.3, 0.05);
+  d["pair"] = {"contact_stiffness", "cohesion"};
+  auto s = granpen::score_selftest(d, pair_case(), "d.json");
+  EXPECT_TRUE(s.pass);
+  EXPECT_TRUE(s.pair_names_truth);
+  d["pair"] = {"cohesion", "sidewalls"};
+  EXPECT_FALSE(passes(d, pair_case()));
+  // the pair verdict on a single truth claims an effect that is not there: wrong
+  d["pair"] = {"cohesion", "contact_stiffness"};
+  EXPECT_FALSE(passes(d, library("cohesion", 1500)));
+  EXPECT_FALSE(passes(d, outside()));
+  // one of the two alone, explained and shrunk: right, as a part of the pair
+  s = granpen::score_selftest(diagnosis("explained", "cohesion", 0.3, 0.1), pair_case(), "d.json");
+  EXPECT_TRUE(s.pass);
+  EXPECT_TRUE(s.names_part_of_pair);
+  EXPECT_FALSE(passes(diagnosis("explained", "cohesion", 0.3, 0.2), pair_case()));    // not shrunk by half
+  EXPECT_FALSE(passes(diagnosis("explained", "sidewalls", 0.3, 0.1), pair_case()));
+  Json tie = diagnosis("tie", nullptr, 0.3, 0.3);
+  tie["tie"] = {"packing", "contact_stiffness"};
+  EXPECT_TRUE(passes(tie, pair_case()));
+  // a miss: wrong while both lie above their limits, right once one lies below
+  EXPECT_FALSE(passes(diagnosis("unexplained", nullptr, 0.3, 0.3), pair_case()));
+  s = granpen::score_selftest(diagnosis("unexplained", nullptr, 0.3, 0.3), pair_case(-0.1), "d.json");
+  EXPECT_TRUE(s.pass);
+  EXPECT_TRUE(s.missed_below_limit);
 }
