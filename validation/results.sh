@@ -522,7 +522,7 @@ if ls "$BOX"/box_bench*_peak/*.csv > /dev/null 2>&1; then
     echo "quantity,box_cm,value,error,paper,paper_error,unit,label"
     for b in 8 12 16 20; do row_of "peak exponent (v_c to 10 v_c)" "$b" "bench_box$b.peak_exponent" 2 "" 1.96; done
     for b in 8 12 16 20; do row_of "peak exponent above v_c (ensemble means)" "$b" "bench_box$b.peak_exponent_ensemble_from_2vc" 2 ""; done
-    for b in 16 20; do row_of "peak / the box 8 cm narrower's (same bed and v0)" "$b" "bench_box$b.peak_over_box$((b - 8))" 1 ""; done
+    for b in 16 20; do row_of "peak over the box 8 cm narrower (same bed and v0)" "$b" "bench_box$b.peak_over_box$((b - 8))" 1 ""; done
     for b in 8 12 16 20; do row_of "lambda_vz / D at 50 cm/s" "$b" "bench_box$b.v50.lambda_vz_D" 0.98 0.15; done
     for b in 8 12 16 20; do row_of "drag / (mu g M) at 50 cm/s" "$b" "bench_box$b.v50.drag_over_mu_g_Mmove" 1 ""; done
     for b in 8 20; do row_of "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s" "$b" "bench_box$b.alpha_D1_over_D2" 1 ""; done

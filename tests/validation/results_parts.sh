@@ -140,8 +140,8 @@ grep -q "^alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s,20,$(val bench_box20.alph
 grep -q "box_bench8_D: 0 of 6 pushes" "$OUT/res.log" || fail "no note of the 8 cm box's missing D pushes"
 grep -q "box 12 cm: 0 of 10 peak pushes" "$OUT/res.log" || fail "no note of the 12 cm box's missing pushes"
 # the box table holds the 16 cm box's paired peaks, the 20 cm box's flow, and its figure was made
-grep -q "^peak / the box 8 cm narrower's (same bed and v0),16,1,0," "$OUT/res/box.csv" || fail "box.csv lacks the 16 cm box's paired peaks: $(cat "$OUT/res/box.csv")"
-grep -q "^peak / the box 8 cm narrower's (same bed and v0),20,," "$OUT/res/box.csv" || fail "box.csv has a 20 cm paired peak without the 12 cm box"
+grep -q "^peak over the box 8 cm narrower (same bed and v0),16,1,0," "$OUT/res/box.csv" || fail "box.csv lacks the 16 cm box's paired peaks: $(cat "$OUT/res/box.csv")"
+grep -q "^peak over the box 8 cm narrower (same bed and v0),20,," "$OUT/res/box.csv" || fail "box.csv has a 20 cm paired peak without the 12 cm box"
 grep -q "^lambda_vz / D at 50 cm/s,20,$(val mid.lambda_vz_D | awk '{print $1}')," "$OUT/res/box.csv" || fail "box.csv lacks the 20 cm box's lambda_vz"
 [ -s "$OUT/res/box/scaling.gp" ] || fail "no box figure"
 # the flow rows of each dg10 speed: the mid push's, from the same tables

@@ -50,14 +50,14 @@ do for [fmt in formats] {
   plot data index 1 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        2 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 2"
 
-  # ---- panel 3: peak / the box 8 cm narrower's (same bed and v0)   (paper: 1)
+  # ---- panel 3: peak over the box 8 cm narrower (same bed and v0)   (paper: 1)
   reset
   set encoding utf8
   set origin 0,0.47
   set size 0.5,0.235
-  set title "peak / the box 8 cm narrower's (same bed and v0)   (paper: 1)"
+  set title "peak over the box 8 cm narrower (same bed and v0)   (paper: 1)"
   set xlabel "box width (cm)"
-  set ylabel "peak / the box 8 cm narrower's (same bed and v0)"
+  set ylabel "value"
   set grid lc rgb "#d0d0d0"
   set xrange [7:21]
   set yrange [0.90138:1.05682]
@@ -113,7 +113,7 @@ do for [fmt in formats] {
   set size 0.5,0.235
   set title "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s   (paper: 1)"
   set xlabel "box width (cm)"
-  set ylabel "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s"
+  set ylabel "value"
   set grid lc rgb "#d0d0d0"
   set xrange [7:21]
   set yrange [0.93272:1.90828]
@@ -131,7 +131,7 @@ do for [fmt in formats] {
   set size 0.5,0.235
   set title "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s (frictionless shaft)   (paper: 1)"
   set xlabel "box width (cm)"
-  set ylabel "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s (frictionless shaft)"
+  set ylabel "value"
   set grid lc rgb "#d0d0d0"
   set xrange [7:21]
   set yrange [0.94512:1.74088]
