@@ -47,6 +47,18 @@ while [ $# -gt 0 ]; do
     *) echo "results.sh: unknown argument $1 (see the header of $0)" >&2; exit 2 ;;
   esac
 done
+# Paths inside the checkout are given to granpen relative to it (the script runs from its
+# root), so that the committed outputs, which name their inputs, do not depend on where the
+# checkout lies; a path outside it is made absolute.
+in_tree() {
+  local p=$1
+  case $p in /*) ;; *) p=$PWD/$p ;; esac
+  case $p in "$ROOT"/*) printf '%s' "${p#"$ROOT"/}" ;; *) printf '%s' "$p" ;; esac
+}
+case $CLI in */*) case $CLI in /*) ;; *) CLI=$PWD/$CLI ;; esac ;; esac
+OUT=$(in_tree "$OUT") BENCH=$(in_tree "$BENCH") MID=$(in_tree "$MID") DUMPS=$(in_tree "$DUMPS")
+DG10=$(in_tree "$DG10") STIFF=$(in_tree "$STIFF") DAMP=$(in_tree "$DAMP") BOX=$(in_tree "$BOX")
+cd "$ROOT"
 mkdir -p "$OUT"
 NUM=$OUT/numbers.txt.partial
 : > "$NUM"

@@ -1,5 +1,5 @@
 # scaling.gp, written by granpen. The data are in scaling.dat beside it.
-# granpen plot scaling: each quantity of /work/main/docs/results/box.csv against the box width with its error bars, and the paper's value (a red line, with its band when it has an error); the dotted line: the paper's own box.
+# granpen plot scaling: each quantity of docs/results/box.csv against the box width with its error bars, and the paper's value (a red line, with its band when it has an error); the dotted line: the paper's own box.
 # Run in this folder: `gnuplot scaling.gp` makes scaling.png and scaling.svg;
 # `gnuplot -e "formats='png'" scaling.gp` makes only the PNG.
 if (!exists("formats")) formats = "png svg"

@@ -1,5 +1,5 @@
 # scaling.gp, written by granpen. The data are in scaling.dat beside it.
-# granpen plot scaling: each quantity of /work/main/docs/results/scaling.csv against D/d_g with its error bars, and the paper's value (a red line, with its band when it has an error); the dotted line: the paper's own D/d_g.
+# granpen plot scaling: each quantity of docs/results/scaling.csv against D/d_g with its error bars, and the paper's value (a red line, with its band when it has an error); the dotted line: the paper's own D/d_g.
 # Run in this folder: `gnuplot scaling.gp` makes scaling.png and scaling.svg;
 # `gnuplot -e "formats='png'" scaling.gp` makes only the PNG.
 if (!exists("formats")) formats = "png svg"
