@@ -10,7 +10,7 @@
 #     column's top is one grain's, bit-identical through write_data/read_data, and the mean
 #     of 64 copies of 16 values rounds like the mean of the 16); phi_0 to 1e-10: a volume
 #     summed over 4 x as many grains in another order, whose rounding grows at most as
-#     N eps = 535392 x 1.1e-16 = 6e-11 (measured: 1.9e-12 on tile 1). A lost, doubled or
+#     N eps = 535392 x 1.1e-16 = 6e-11 (measured: 1.9e-12 on each tile). A lost, doubled or
 #     shifted tile moves them by 1/16 of a tile's share or more;
 #  3. the 2 x 2 bed rebuilt today from the same tile has the committed .info's z_s and phi_0
 #     (1e-12, the same summation as at the pour): the decks still make the 10 cm bed.
