@@ -554,9 +554,9 @@ std::string md_summary(const Diagnosis &d)
                     d.gap_before, d.gap_after,
                     d.tested_effect.empty() ? " (nothing added)" : (" adding " + d.tested_effect + " on fresh seeds").c_str(),
                     b.G, a.G, b.G_spec, a.G_spec, b.runs_real, b.runs_sim, a.runs_sim);
-  md += format_text("Against the baseline within the calibration bound (its force times 1 + %.4g, the scale a lab's "
-                    "calibration allows that brings it nearest the data: the footing of the \"after\", whose runs are "
-                    "compared times 1 + the scale fitted with the effect): G_all %.3f.  \n",
+  md += format_text("Against the baseline within the calibration bound (its force times 1 + c0, c0 = %.4g the scale a "
+                    "lab's calibration allows that brings it nearest the data in the chi^2's weights: the footing of the "
+                    "\"after\", whose runs are compared times 1 + the scale fitted with the effect): G_all %.3f.  \n",
                     d.scale_within_bound, d.gap_within_bound);
   md += format_text("Held-out speed %.4g cm/s: %.3f before, %.3f after.  \n", d.heldout_v0, d.heldout_before, d.heldout_after);
   md += format_text("Gap significance: chi^2 = %.1f over %zu features, p = %.3g%s.", d.chi2_0, d.nfeatures, d.p_value,

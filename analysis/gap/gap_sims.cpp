@@ -90,8 +90,8 @@ std::string corrected_trace_text(const std::string &path, const Effect *e, doubl
   h.units = t.units, h.v0 = t.v0, h.D = t.D, h.g = t.g;
   for (const auto &[k, v] : t.keys)
     if (k != "units" && k != "v0" && k != "D" && k != "g") h.extra.emplace_back(k, v);
-  const std::string scaled = "times 1 + " + printf_number("%.6g", scale) +
-                             " (the force scale fitted with it: the prediction the verdict compared)";
+  const std::string scaled = "times 1 + c = " + printf_number("%.6g", 1.0 + scale) + " (c = " + printf_number("%.6g", scale) +
+                             ": the force scale fitted with it; the prediction the verdict compared)";
   h.extra.emplace_back("derived", e ? e->name + " " + deck_number(a) + ": F transformed by granpen gap (analysis/gap/effects.cpp)" +
                                           (scale != 0.0 ? "; " + scaled : "")
                                     : "F " + scaled + " by granpen gap");

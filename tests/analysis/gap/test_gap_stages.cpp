@@ -926,7 +926,7 @@ TEST(GapConfirm, TheConfirmingRunsAreComparedWithTheFitsScale)
   const TraceRun &c1 = given.at("confirm").at(100)[0];
   ASSERT_EQ(out.F.size(), c1.F.size());
   for (std::size_t k = 0; k < out.F.size(); ++k) EXPECT_NEAR(out.F[k], (1.0 + c.scale) * c1.F[k], 1e-9 * 650.0) << k;
-  EXPECT_NE(c.corrected_traces[0].second.find("# derived = F times 1 + 0.03"), std::string::npos) << c.corrected_traces[0].second.substr(0, 300);
+  EXPECT_NE(c.corrected_traces[0].second.find("# derived = F times 1 + c = 1.03 (c = 0.03: the force scale fitted with it"), std::string::npos) << c.corrected_traces[0].second.substr(0, 300);
   // exact runs scaled by the fitted scale: rounding only (the scale within 1e-6 of 0.03
   // leaves G of that order)
   EXPECT_LT(c.outcome.gap_after, 1e-5);
@@ -984,7 +984,9 @@ TEST(GapConfirm, TheCorrectedTracesOfATransformAreTheComparedPrediction)
     const std::string path = dir / ("out" + std::to_string(i) + ".csv");
     write_file(path, c.corrected_traces[i].second);
     const Trace t = read_trace(path);
-    EXPECT_NE(c.corrected_traces[i].second.find("times 1 + " + printf_number("%.6g", c.scale)), std::string::npos);
+    EXPECT_NE(c.corrected_traces[i].second.find("times 1 + c = " + printf_number("%.6g", 1.0 + c.scale) +
+                                                " (c = " + printf_number("%.6g", c.scale)),
+              std::string::npos);
     const std::vector<double> expect = transformed_run(chain, c.corrected_magnitude, fresh[i]).F;
     ASSERT_EQ(t.F.size(), compared[i].F.size());
     for (std::size_t k = 0; k < t.F.size(); ++k) {
