@@ -96,7 +96,7 @@ std::vector<Flat> path_coefficients(const PriorBoundInput &in)
 // One point of the path (coefficients c on the knots): the likelihood ratio the prior's knots
 // earn there, and what the diagnosis's knots, the prior's tilted by their noise, add to it.
 PriorBound point_bound(const PriorBoundInput &in, const Flat &c, const std::vector<Flat> &sig, const Flat &y, const Flat &b,
-                       double w0, double q)
+                       double w0, double q, bool &choosable)
 {
   PriorBound out;
   const std::size_t n = y.size();
@@ -112,6 +112,7 @@ PriorBound point_bound(const PriorBoundInput &in, const Flat &c, const std::vect
   // whatever the knots' noise shares, the signature baseline's included): the diagnosis's
   // knots' own variance t, the tilt's v (both ensembles' noise) and the prior's share w
   double lr = w0, coherent = 0, var_u = 0, mean_v = 0, var_v = 0, fixed = 0;
+  double coherent_f = 0, var_f = 0, mean_f = 0, var_vf = 0;    // the same with fixed weights (1 + t -> 1)
   std::size_t i = 0;
   for (std::size_t s = 0; s < in.gap.size(); ++s)
     for (std::size_t k = 0; k < in.gap[s].size(); ++k, ++i) {
@@ -127,17 +128,25 @@ PriorBound point_bound(const PriorBoundInput &in, const Flat &c, const std::vect
       lr -= r[i] * r[i] / (1 + t) + std::log1p(t), fixed += r[i] * r[i];
       coherent += alpha * sw * sw / (1 + t), var_u += r[i] * r[i] * v / (1 + t);
       mean_v += v, var_v += 2 * v * v;
+      coherent_f += alpha * sw * sw, var_f += r[i] * r[i] * sv * sv, mean_f += sv * sv, var_vf += 2 * std::pow(sv, 4);
     }
   // the diagnosis's point is x + d: it changes -sum r^2 / (1 + t) by 2 u - |d|^2_t, u = sum r d /
   // (1 + t): r holds -alpha e_p (the signal's part the prior's own noise turned away), so u has
-  // a coherent part alpha sum w / (1 + t) and a random one of variance sum r^2 v / (1 + t), at
-  // the chi^2_K quantile q; |d|^2_t at its lower quantile (its chi^2 spread), at least 0
+  // a coherent part alpha sum w / (1 + t) and a random one of variance sum r^2 v / (1 + t); for
+  // Gaussian d, u and |d|^2_t are uncorrelated, so 2 u - |d|^2_t has mean 2 coherent - sum v /
+  // (1 + t) and variance 4 var(u) + 2 sum (v / (1 + t))^2, taken at sqrt(q) standard deviations
+  // (q the chi^2_K quantile); at most u^2 / |d|^2_t (Cauchy-Schwarz), u and |d|^2_t each at
+  // their quantile
   const double u = coherent + std::sqrt(q * var_u), d2 = std::max(0.0, mean_v - std::sqrt(q * var_v));
   out.projection2 = w0 - fixed;
   out.margin_noise = lr - out.projection2;
-  out.margin_direction = 2 * u - d2 > 0 ? 2 * u - d2 : 0.0;
-  // and at most (Cauchy-Schwarz, u^2 / |d|^2_t >= 2 u - |d|^2_t)
+  out.margin_direction = std::max(0.0, 2 * coherent - mean_v + std::sqrt(q * (4 * var_u + var_v)));
   if (d2 > 0) out.margin_direction = std::min(out.margin_direction, u * u / d2);
+  // the fit chooses its magnitude by the fixed-weight residual (gap_fit.h, best_magnitude), and
+  // magnitude 0 removes 0 of it: a point whose fixed-weight gain, with the tilt's at its upper
+  // quantile, stays below 0 is never the fit's
+  const double tilt_f = 2 * coherent_f - mean_f + std::sqrt(q * (4 * var_f + var_vf));
+  choosable = out.projection2 + tilt_f >= 0;
   return out;
 }
 
@@ -155,8 +164,9 @@ PriorBound prior_bound(const PriorBoundInput &in)
   const double q = chi2_quantile(PRIOR_BOUND_P, (double) in.signature.size());
   double best = 0;    // magnitude 0: the likelihood ratio 0
   for (const Flat &c : path_coefficients(in)) {
-    const PriorBound p = point_bound(in, c, sig, y, b, w0, q);
-    if (p.bound() > best) best = p.bound(), out = p;
+    bool choosable = true;
+    const PriorBound p = point_bound(in, c, sig, y, b, w0, q, choosable);
+    if (choosable && p.bound() > best) best = p.bound(), out = p;
   }
   return out;
 }
