@@ -119,8 +119,8 @@ bool plan_within_budget(const GapOptions &given, const Scenario &sc, const std::
     r.least = cold_least.probe_pours, r.most = cold_most.probe_pours;
     r.wall_least = wall_probe_pours(cold_least, jobs), r.wall_most = wall_probe_pours(cold_most, jobs);
     r.decides = "which pour-level candidates the cheap stage leaves able to change the verdict (each simulated unless its bound, "
-                "with a signature prior the gap's squared projection on its knots' signatures and the scale plus the prior's "
-                "margins, without one the whole squared gap, stays below its threshold), "
+                "with a signature prior the likelihood ratio its prior's knots earn along the fit's path plus the margin of "
+                "the diagnosis's own knots, without one the whole squared gap, stays below its threshold), "
                 "then whether an effect is confirmed, which, and whether its magnitude is refined, and whether the "
                 "pair stage confirms two effects at once";
     progress.say(GapProgress::INFO, "plan",
