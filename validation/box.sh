@@ -12,11 +12,24 @@
 #           and 2 cm with a frictionless shaft (box_bench{8,20}_shaft: beds rebuilt with the
 #           shaft's atom type, mu_shaft 0; 1.5e10 atom-steps, 1.2 core-hours).
 #
-#   validation/box.sh bench [--out DIR] [--units N] [--ranks N] [--commit] [--status]
+#   dg10    the paper's box at the paper's grain size ratio: 20 cm beds of 4 x 4 copies of the
+#           three committed 5 cm dg10 tiles (data/sims/dg10/beds, linked from
+#           data/sims/dg10_box20/beds; 535392 grains, rebuilt in seconds, not a unit), in the
+#           issue's order: peak pushes 1.5 cm deep at 200 and 40 cm/s on bed 1, then 80 cm/s on
+#           bed 1 and 200, 80, 40 on beds 2 and 3, then 140 and 20 on beds 1 to 3
+#           (dg10_box20_peak{1,2,3}.sweep, one folder); the 40 cm/s flow push with dumps
+#           (dg10_box20_flow); D = 1, 2, 3 cm at 100 cm/s to 5 cm (dg10_box20_D); D = 1 and 2 cm
+#           with a frictionless shaft (dg10_box20_shaft). 21 pushes, 9.8e11 atom-steps: about
+#           76 hours of one core at 3.6e6 atom-steps/s, units of 0.7 to 11 hours (docs/presets.md,
+#           "The paper's box"): a push cut by the end of a session resumes from its last
+#           checkpoint (every 5000 steps, in the run folder, not committed) when the next run of
+#           box.sh dg10 finds it there.
+#
+#   validation/box.sh bench|dg10 [--out DIR] [--units N] [--ranks N] [--commit] [--status]
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 S=$ROOT/inputs/sweeps
-[ $# -ge 1 ] || { echo "box.sh: usage: validation/box.sh bench [options of campaign.sh]" >&2; exit 2; }
+[ $# -ge 1 ] || { echo "box.sh: usage: validation/box.sh bench|dg10 [options of campaign.sh]" >&2; exit 2; }
 series=$1; shift
 case $series in
   bench)
@@ -24,5 +37,10 @@ case $series in
     for kind in peak flow; do for b in 8 20 12 16; do sweeps="$sweeps $S/box_bench${b}_$kind.sweep"; done; done
     for b in 8 20; do sweeps="$sweeps $S/box_bench${b}_D.sweep $S/box_bench${b}_shaft.sweep"; done
     exec "$ROOT/validation/campaign.sh" --data "$ROOT/data/sims/box_bench" --sweeps "${sweeps# }" --tip "1 3" "$@" ;;
-  *) echo "box.sh: no series '$series' (bench)" >&2; exit 2 ;;
+  dg10)
+    sweeps=""
+    for part in peak1 peak2 peak3 flow D shaft; do sweeps="$sweeps $S/dg10_box20_$part.sweep"; done
+    # the flow analysis as the 10 cm box's (validation/dg10.sh: the tip 1 to 4 cm deep)
+    exec "$ROOT/validation/campaign.sh" --data "$ROOT/data/sims/dg10_box20" --sweeps "${sweeps# }" --tip "1 4" "$@" ;;
+  *) echo "box.sh: no series '$series' (bench, dg10)" >&2; exit 2 ;;
 esac

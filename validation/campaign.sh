@@ -34,8 +34,17 @@
 #   --tip "A B"   the tip's depth window of the flow analysis (push_flow.sh --tip; default 1 4)
 #   --commit      git-commit DIR after every unit (on the work tree's branch)
 #   --status      print what is committed and what is under way, and stop
-# The decks are copied into OUT/inputs at every start, so that editing inputs/ in the work
-# tree never changes a run under way (LAMMPS rereads a deck at every jump).
+# A push cut by the end of a session (or a kill) leaves its trace and its checkpoints
+# (TRACE.a/.b.restart, every 5000 steps; about 180 MB each for the 536576 atoms of a 20 cm dg10
+# bed) in OUT/SWEEP/traces, not committed: where OUT survives (this machine's /work has so far),
+# the next run resumes the push from its newer complete checkpoint (the sweep runner,
+# docs/sweeps.md); a checkpoint cut short in writing is never resumed from, and without a
+# complete one the push starts over. A resume that LAMMPS refuses at the checkpoint (a restart
+# file this build cannot read) sets its checkpoints aside (.stale) and starts the push over,
+# once. --status lists such pushes under way.
+# The decks are copied into OUT/inputs.CAMPAIGN at every start, so that editing inputs/ in the
+# work tree never changes a run under way (LAMMPS rereads a deck at every jump), nor does
+# another campaign starting in the same OUT.
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 OUT=/work/granpen-runs UNITS=-1 RANKS=1 COMMIT=0 STATUS=0 DATA="" SWEEPS="" TIP="1 4"
@@ -83,7 +92,9 @@ status() {
         seen="$seen $id"; nbeds=$((nbeds + 1))
         [ -f "$DATA/beds/$id.tile.data.gz" ] && beds=$((beds + 1))
       else
-        total=$((total + 1))
+        # sweep files of one name share a folder: a push listed by two counts once
+        case " $seen " in *" $name/$id "*) continue ;; esac
+        seen="$seen $name/$id"; total=$((total + 1))
         [ -f "$DATA/$name/$id.csv" ] && { [ "$(dumps_of "$f")" = 0 ] || [ -f "$DATA/$name/$id.flow/window.txt" ]; } &&
           done=$((done + 1))
       fi
@@ -94,15 +105,33 @@ status() {
     [ -f "$st" ] || continue
     echo "  under way here: ${st%.pour.state}: $(awk '$2 == "phase" {p=$4} $2 == "ichunk0" {c=$4} $2 == "irelax0" {r=$4} END {print p, (p == "settle" ? "chunk " c : "relaxation " r)}' "$st") next"
   done
+  # pushes cut here: a trace without its done marker; the next run resumes each from its newer
+  # complete checkpoint, or starts it over without one
+  local f name t c cps
+  for f in $SWEEPS; do
+    name=$(sweep_name "$f")
+    for t in "$OUT/$name"/traces/*.csv; do
+      [ -f "$t" ] && [ ! -f "$t.done" ] && [ ! -f "$DATA/$name/$(basename "$t")" ] || continue
+      case " $listed " in *" $t "*) continue ;; esac
+      listed="$listed $t" cps=""
+      for c in "$t".a.restart "$t".b.restart; do
+        complete_checkpoint "$c" && cps="$cps $(basename "$c") (written $(date -r "$c" '+%F %R'))"
+      done
+      echo "  under way here: push $name/$(basename "$t" .csv): $( [ -n "$cps" ] && echo "resumes from the newer of$cps" || echo "no complete checkpoint: starts over")"
+    done
+  done
   return 0
 }
-seen=""
+# a checkpoint LAMMPS finished writing ends with the restart format's magic string (as the
+# sweep runner checks, analysis/sweep/sweep_files.cpp)
+complete_checkpoint() { [ -s "$1" ] && [ "$(tail -c 16 "$1" | head -c 15)" = "LammpS RestartT" ]; }
+seen="" listed=""
 [ "$STATUS" = 1 ] && { status; exit 0; }
 [ -x "$LMP" ] || { echo "campaign.sh: no lmp_granpen at $LMP (build first, or set GRANPEN_LMP)" >&2; exit 2; }
 
 mkdir -p "$OUT"
-rm -rf "$OUT/inputs.new"; cp -r "$ROOT/inputs" "$OUT/inputs.new"; rm -rf "$OUT/inputs"; mv "$OUT/inputs.new" "$OUT/inputs"
-INPUTS=$OUT/inputs
+INPUTS=$OUT/inputs.$CAMPAIGN
+rm -rf "$INPUTS.new"; cp -r "$ROOT/inputs" "$INPUTS.new"; rm -rf "$INPUTS"; mv "$INPUTS.new" "$INPUTS"
 ran=0
 commit() {    # MESSAGE
   [ "$COMMIT" = 1 ] || { echo "campaign.sh: $1: to be committed (git add $DATA)"; return 0; }
@@ -113,10 +142,22 @@ runner() {    # SWEEP_FILE K: the sweep runner runs planned run K alone
   local mpi=(); [ "$RANKS" -gt 1 ] && mpi=(--mpirun mpirun --ranks "$RANKS")
   nice -n 19 "$CLI" sweep "$1" --jobs 1 --only "$2" --out "$OUT" --inputs "$INPUTS" --lmp "$LMP" "${mpi[@]}"
 }
+# a push (the runner resumes it from its checkpoint when one is there); when LAMMPS refuses
+# the checkpoint it was resumed from (a restart this build cannot read: the log's first ERROR
+# names a restart), the checkpoints are set aside as .stale and the push starts over, once
+push_run() {    # SWEEP_FILE K DIR ID
+  local said=$3/logs/$4.runner t=$3/traces/$4.csv c first
+  runner "$1" "$2" | tee "$said" && return 0
+  first=$(grep -m1 '^ERROR' "$3/logs/$4.log" 2>/dev/null || true)
+  grep -q "start .*$4 (resumed from" "$said" && [[ $first == *[Rr]estart* ]] || return 1
+  echo "campaign.sh: $4: LAMMPS refused the checkpoint it resumed from ($first): set aside as .stale; the push starts over"
+  for c in "$t".a.restart "$t".b.restart; do [ ! -f "$c" ] || mv "$c" "$c.stale"; done
+  runner "$1" "$2"
+}
 
 for f in $SWEEPS; do
   name=$(sweep_name "$f") dir=$OUT/$(sweep_name "$f")
-  mkdir -p "$dir/beds" "$DATA/$name"
+  mkdir -p "$dir/beds" "$dir/logs" "$DATA/$name"
   while read -r k kind id; do
     if [ "$kind" = pour ]; then
       [ -f "$dir/beds/$id.info" ] && continue
@@ -154,7 +195,7 @@ for f in $SWEEPS; do
       else
         budget_left || break
         echo "campaign.sh: $name: push $id"
-        runner "$f" "$k"
+        push_run "$f" "$k" "$dir" "$id"
         [ -f "$dir/traces/$id.csv.done" ] || { echo "campaign.sh: the push $id did not finish (see $dir/logs/$id.log)" >&2; exit 1; }
         ran=$((ran + 1))
       fi
@@ -169,6 +210,9 @@ for f in $SWEEPS; do
       fi
       cp "$dir/traces/$id.csv" "$DATA/$name/$id.csv"
       cp "$dir/manifest.json" "$DATA/$name/manifest.json" 2>/dev/null || true
+      # a finished push's checkpoints serve nothing more (its trace is in $DATA, never rerun)
+      # and weigh 2 x 180 MB on a 20 cm dg10 bed
+      rm -f "$dir/traces/$id.csv.a.restart" "$dir/traces/$id.csv.b.restart"
       commit "push $id ($name)"
     fi
   done < <(plan "$f")

@@ -5,7 +5,7 @@
 # awk only averages their outputs over beds.
 #
 #   validation/results.sh [--out DIR] [--bench DIR] [--mid DIR] [--dumps DIR] [--dg10 DIR] [--stiff DIR]
-#                         [--damp DIR] [--box DIR] [--cli PATH]
+#                         [--damp DIR] [--box DIR] [--dg10-box DIR] [--cli PATH]
 #
 #   --bench DIR  traces and bed .info files of the bench validation sweep
 #                (default data/sims/validation_bench)
@@ -25,6 +25,10 @@
 #   --box DIR    the committed units of validation/box.sh bench (default data/sims/box_bench):
 #                each box's peak law once its 10 pushes are there, its flow rows once its
 #                flow push and tables are
+#   --dg10-box DIR  the committed units of validation/box.sh dg10 (default
+#                data/sims/dg10_box20; scale name dg10_box20): its peak part once its 15
+#                pushes are there, its flow rows once its 40 cm/s push and tables are, alpha
+#                against D once its 3 (and the frictionless shaft's 2) pushes are
 #   --out DIR    where numbers.txt, scaling.csv and the figures go (default docs/results)
 #
 # numbers.txt: one line per measured quantity, "KEY = VALUE [+- ERROR] [n = N]  # how".
@@ -32,7 +36,7 @@ set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 OUT=$ROOT/docs/results BENCH=$ROOT/data/sims/validation_bench MID=$ROOT/data/sims/validation_mid
 DUMPS=$ROOT/runs/validation_mid/traces CLI=${GRANPEN_CLI:-$ROOT/build/analysis/granpen-cli} DG10=$ROOT/data/sims/dg10 STIFF=$ROOT/data/sims/peak_stiffness
-DAMP=$ROOT/data/sims/peak_damping BOX=$ROOT/data/sims/box_bench
+DAMP=$ROOT/data/sims/peak_damping BOX=$ROOT/data/sims/box_bench DG10BOX=$ROOT/data/sims/dg10_box20
 while [ $# -gt 0 ]; do
   case $1 in
     --out) OUT=$2; shift 2 ;;
@@ -43,10 +47,23 @@ while [ $# -gt 0 ]; do
     --stiff) STIFF=$2; shift 2 ;;
     --damp) DAMP=$2; shift 2 ;;
     --box) BOX=$2; shift 2 ;;
+    --dg10-box) DG10BOX=$2; shift 2 ;;
     --cli) CLI=$2; shift 2 ;;
     *) echo "results.sh: unknown argument $1 (see the header of $0)" >&2; exit 2 ;;
   esac
 done
+# Paths inside the checkout are given to granpen relative to it (the script runs from its
+# root), so that the committed outputs, which name their inputs, do not depend on where the
+# checkout lies; a path outside it is made absolute.
+in_tree() {
+  local p=$1
+  case $p in /*) ;; *) p=$PWD/$p ;; esac
+  case $p in "$ROOT"/*) printf '%s' "${p#"$ROOT"/}" ;; *) printf '%s' "$p" ;; esac
+}
+case $CLI in */*) case $CLI in /*) ;; *) CLI=$PWD/$CLI ;; esac ;; esac
+OUT=$(in_tree "$OUT") BENCH=$(in_tree "$BENCH") MID=$(in_tree "$MID") DUMPS=$(in_tree "$DUMPS")
+DG10=$(in_tree "$DG10") STIFF=$(in_tree "$STIFF") DAMP=$(in_tree "$DAMP") BOX=$(in_tree "$BOX")
+cd "$ROOT"
 mkdir -p "$OUT"
 NUM=$OUT/numbers.txt.partial
 : > "$NUM"
@@ -446,6 +463,56 @@ box_alpha_D() { # SWEEP KEY
 }
 if [ -d "$BOX" ]; then box_bench; else say "box series: $BOX missing, skipped"; fi
 
+# The committed units of validation/box.sh dg10 (docs/presets.md, "The paper's box"): dg10
+# grains (D/d_g = 10) in the paper's 20 cm box, 4 x 4 copies of the 10 cm box's three tiles
+# (scale name dg10_box20). Each part once all its pushes are in, else skipped with a note:
+# the peak law as dg10's, and each peak over the 10 cm box's push of the same bed and speed
+# (the rod stands on a tile corner in both boxes, so over the same grains: the first contact,
+# which the box should not change); the flow rows of the 40 cm/s push read as the 10 cm one's;
+# alpha against D over z >= 3 cm as the 10 cm box's, with F = a z + b z^2 per diameter, with
+# the shaft's friction and without.
+dg10_box20() {
+  local d=$DG10BOX/dg10_box20_peak o=$OUT/dg10_box20 traces=() f id
+  for f in "$d"/dg10_mu0.3_s[123]_v*_g981_D2.0.csv; do [ -f "$f" ] && traces+=("$f"); done
+  if [ "${#traces[@]}" = 15 ]; then
+    say "dg10, 20 cm box: the peak law on 3 beds x 5 speeds"
+    put "dg10_box20.phi_0 = $(grep -h '^phi_0' "$d"/bed_dg10_mu0.3_s[123].info 2>/dev/null | awk '{print $3}' | stats)  # bed .info files, 20 cm box of 5 cm tiles, 2.5 cm columns"
+    peak_law dg10_box20 "$o" 20 "${traces[@]}"
+    [ ! -f "$OUT/dg10/collapse_peak.json" ] ||
+      put "dg10_box20.peak_over_box10 = $(peak_pairs "$o/collapse_peak.json" "$OUT/dg10/collapse_peak.json" | stats)  # granpen collapse: peak / the 10 cm box's push of the same bed and v0 (the same grains under the rod), every v0"
+  else say "dg10, 20 cm box: ${#traces[@]} of 15 peak pushes in $d: skipped until all are (validation/box.sh dg10)"; fi
+  id=dg10_mu0.3_s1_v40_g981_D2.0 d=$DG10BOX/dg10_box20_flow
+  if [ -f "$d/$id.csv" ] && [ -f "$d/$id.flow/window.txt" ]; then
+    say "dg10, 20 cm box: the flow of its 40 cm/s push"
+    flow_numbers dg10_box20.v40 "$d/$id.flow"
+    plot_flow "$d/$id.flow" "$o/flow_v40"
+  else say "dg10, 20 cm box: its 40 cm/s flow push (with tables) not in $d: skipped"; fi
+  dg10_box20_alpha_D dg10_box20_D dg10_box20 "1.0 2.0 3.0"
+  dg10_box20_alpha_D dg10_box20_shaft dg10_box20_shaft "1.0 2.0"
+}
+# alpha against D in the 20 cm box (DIR under $DG10BOX: bed 1, 100 cm/s, the diameters given),
+# over z >= 3 cm as dg10_D: alpha through the origin, the two terms of F = a z + b z^2, and
+# alpha(1 cm) / alpha(2 cm) with the fits' errors in quadrature
+dg10_box20_alpha_D() { # SWEEP KEY "D..."
+  local d=$DG10BOX/$1 key=$2 o=$OUT/$1 D traces=() missing=""
+  for D in $3; do
+    [ -f "$d/dg10_mu0.3_s1_v100_g981_D$D.csv" ] && traces+=("$d/dg10_mu0.3_s1_v100_g981_D$D.csv") || missing="$missing $D"
+  done
+  [ -z "$missing" ] || { say "$1: the pushes of D =$missing cm at 100 cm/s not all in $d: skipped until all are (validation/box.sh dg10)"; return 0; }
+  say "$1: alpha against D (granpen fit --zmin 3)"
+  mkdir -p "$o"
+  "$CLI" fit "${traces[@]}" --zmin 3 --csv "$o/fit_z3.csv" > "$o/fit_z3.txt"
+  for D in $3; do
+    put "$key.alpha0_window.v100.D${D%.0} = $(one_alpha0 "$o/fit_z3.csv" 100 "$D")  # granpen fit --zmin 3: k_z0 / (mu rho_g g D^2), bed 1; the fit's standard error"
+    put "$key.alpha_a.v100.D${D%.0} = $(one_fit "$o/fit_z3.csv" alpha_a 100 "$D")  # granpen fit --zmin 3, F = a z + b z^2: a / (mu rho_g g D^2)"
+    put "$key.beta_b.v100.D${D%.0} = $(one_fit "$o/fit_z3.csv" beta_b 100 "$D")  # ... b / (mu rho_g g D): the shaft-like term"
+  done
+  local q; q=$(quad_ratio "$key.alpha0_window.v100.D1" "$key.alpha0_window.v100.D2")
+  [ -n "$q" ] && put "$key.alpha_D1_over_D2 = $(printf '%.4g +- %.2g' $q)  # the two above, the fits' errors in quadrature"
+  return 0
+}
+if [ -d "$DG10BOX" ]; then dg10_box20; else say "dg10, 20 cm box: $DG10BOX missing, skipped"; fi
+
 # ---------------------------------------------------------------- against D/d_g
 # The rows that differ from the paper, at D/d_g = 5 (bench), 6.67 (mid) and 10 (dg10; empty
 # until measured): scaling.csv, drawn by granpen plot scaling. Errors: the peak exponent's
@@ -522,7 +589,7 @@ if ls "$BOX"/box_bench*_peak/*.csv > /dev/null 2>&1; then
     echo "quantity,box_cm,value,error,paper,paper_error,unit,label"
     for b in 8 12 16 20; do row_of "peak exponent (v_c to 10 v_c)" "$b" "bench_box$b.peak_exponent" 2 "" 1.96; done
     for b in 8 12 16 20; do row_of "peak exponent above v_c (ensemble means)" "$b" "bench_box$b.peak_exponent_ensemble_from_2vc" 2 ""; done
-    for b in 16 20; do row_of "peak / the box 8 cm narrower's (same bed and v0)" "$b" "bench_box$b.peak_over_box$((b - 8))" 1 ""; done
+    for b in 16 20; do row_of "peak over the box 8 cm narrower (same bed and v0)" "$b" "bench_box$b.peak_over_box$((b - 8))" 1 ""; done
     for b in 8 12 16 20; do row_of "lambda_vz / D at 50 cm/s" "$b" "bench_box$b.v50.lambda_vz_D" 0.98 0.15; done
     for b in 8 12 16 20; do row_of "drag / (mu g M) at 50 cm/s" "$b" "bench_box$b.v50.drag_over_mu_g_Mmove" 1 ""; done
     for b in 8 20; do row_of "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s" "$b" "bench_box$b.alpha_D1_over_D2" 1 ""; done

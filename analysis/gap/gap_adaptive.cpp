@@ -60,60 +60,114 @@ double chi2_quantile(double p, double k)
   return 0.5 * (lo + hi);
 }
 
+// The directions the fit's path can take (docs/gap.md, "The bound with a prior"): per
+// magnitude a on a grid of magnitude_range (gap_fit.h), the signature's coefficients on the
+// knots (the interpolation weights less the baseline's; the baseline's signature is 0), in
+// the order of in.signature. Every point of the path is a non-negative multiple of one of
+// them, so what the fit can remove is what one of these directions takes, with its length free.
+std::vector<Flat> path_coefficients(const PriorBoundInput &in)
+{
+  const std::size_t K = in.signature.size();
+  std::vector<std::pair<double, std::size_t>> m{{0.0, K}};    // (magnitude, knot; K = the baseline)
+  for (std::size_t j = 0; j < K; ++j) m.push_back({j < in.magnitude.size() ? in.magnitude[j] : (double) (j + 1), j});
+  std::sort(m.begin(), m.end());
+  EffectData e;
+  for (const auto &[a, j] : m) e.knots.push_back(a);
+  e.one_sided = in.one_sided, e.reach = in.reach;
+  const auto [lo, hi] = magnitude_range(e);
+  std::vector<double> grid;
+  const int n = PRIOR_PATH_POINTS;
+  for (int i = 0; i <= n; ++i) grid.push_back(lo + (hi - lo) * i / n);
+  for (const auto &[a, j] : m) grid.push_back(a);
+  std::vector<Flat> out;
+  for (double a : grid) {
+    if (a == 0.0) continue;
+    std::size_t i = 0;    // the segment [m[i], m[i + 1]], extrapolated at the ends
+    while (i + 2 < m.size() && a > m[i + 1].first) ++i;
+    const double f = (a - m[i].first) / (m[i + 1].first - m[i].first);
+    Flat c(K, 0.0);
+    if (m[i].second < K) c[m[i].second] += 1.0 - f;
+    if (m[i + 1].second < K) c[m[i + 1].second] += f;
+    out.push_back(c);
+  }
+  return out;
+}
+
+// One point of the path (coefficients c on the knots): the likelihood ratio the prior's knots
+// earn there, and what the diagnosis's knots, the prior's tilted by their noise, add to it.
+PriorBound point_bound(const PriorBoundInput &in, const Flat &c, const std::vector<Flat> &sig, const Flat &y, const Flat &b,
+                       double w0, double q, bool &choosable)
+{
+  PriorBound out;
+  const std::size_t n = y.size();
+  Flat x(n, 0.0), r(n);
+  for (std::size_t j = 0; j < c.size(); ++j)
+    for (std::size_t i = 0; i < n; ++i) x[i] += c[j] * sig[j][i];
+  // the nuisance scale at this point, fitted with fixed weights as gap_fit does
+  for (std::size_t i = 0; i < n; ++i) r[i] = y[i] - x[i];
+  const double bb = dot(b, b), cs = bb > 0 ? std::clamp(dot(r, b) / bb, -in.scale_bound, in.scale_bound) : 0.0;
+  for (std::size_t i = 0; i < n; ++i) r[i] -= cs * b[i];
+  const double xx = dot(x, x), alpha = xx > 0 ? std::max(0.0, dot(y, x)) / xx : 0.0;
+  // per whitened feature, of the combination c (|c_j|-weighted standard deviations added,
+  // whatever the knots' noise shares, the signature baseline's included): the diagnosis's
+  // knots' own variance t, the tilt's v (both ensembles' noise) and the prior's share w
+  double lr = w0, coherent = 0, var_u = 0, mean_v = 0, var_v = 0, fixed = 0;
+  double coherent_f = 0, var_f = 0, mean_f = 0, var_vf = 0;    // the same with fixed weights (1 + t -> 1)
+  std::size_t i = 0;
+  for (std::size_t s = 0; s < in.gap.size(); ++s)
+    for (std::size_t k = 0; k < in.gap[s].size(); ++k, ++i) {
+      const double V = in.var[s][k];
+      if (!(V > 0)) continue;
+      double sv = 0, sw = 0, su = 0;
+      for (std::size_t j = 0; j < c.size(); ++j) {
+        const double cj = std::abs(c[j]);
+        sv += cj * std::sqrt((in.knot_var[j][s][k] + in.prior_var[j][s][k]) / V);
+        sw += cj * std::sqrt(in.prior_var[j][s][k] / V), su += cj * std::sqrt(in.knot_var[j][s][k] / V);
+      }
+      const double t = su * su, v = sv * sv / (1 + t);
+      lr -= r[i] * r[i] / (1 + t) + std::log1p(t), fixed += r[i] * r[i];
+      coherent += alpha * sw * sw / (1 + t), var_u += r[i] * r[i] * v / (1 + t);
+      mean_v += v, var_v += 2 * v * v;
+      coherent_f += alpha * sw * sw, var_f += r[i] * r[i] * sv * sv, mean_f += sv * sv, var_vf += 2 * std::pow(sv, 4);
+    }
+  // the diagnosis's point is x + d: it changes -sum r^2 / (1 + t) by 2 u - |d|^2_t, u = sum r d /
+  // (1 + t): r holds -alpha e_p (the signal's part the prior's own noise turned away), so u has
+  // a coherent part alpha sum w / (1 + t) and a random one of variance sum r^2 v / (1 + t); for
+  // Gaussian d, u and |d|^2_t are uncorrelated, so 2 u - |d|^2_t has mean 2 coherent - sum v /
+  // (1 + t) and variance 4 var(u) + 2 sum (v / (1 + t))^2, taken at sqrt(q) standard deviations
+  // (q the chi^2_K quantile); at most u^2 / |d|^2_t (Cauchy-Schwarz), u and |d|^2_t each at
+  // their quantile
+  const double u = coherent + std::sqrt(q * var_u), d2 = std::max(0.0, mean_v - std::sqrt(q * var_v));
+  out.projection2 = w0 - fixed;
+  out.margin_noise = lr - out.projection2;
+  out.margin_direction = std::max(0.0, 2 * coherent - mean_v + std::sqrt(q * (4 * var_u + var_v)));
+  if (d2 > 0) out.margin_direction = std::min(out.margin_direction, u * u / d2);
+  // the fit chooses its magnitude by the fixed-weight residual (gap_fit.h, best_magnitude), and
+  // magnitude 0 removes 0 of it: a point whose fixed-weight gain, with the tilt's at its upper
+  // quantile, stays below 0 is never the fit's
+  const double tilt_f = 2 * coherent_f - mean_f + std::sqrt(q * (4 * var_f + var_vf));
+  choosable = out.projection2 + tilt_f >= 0;
+  return out;
+}
+
 }    // namespace
 
 PriorBound prior_bound(const PriorBoundInput &in)
 {
   PriorBound out;
   const Flat y = whitened(in.gap, in.var), b = whitened(in.scale_dir, in.var);
-  const std::size_t n = y.size();
-  if (n == 0) return out;
-  // the knots' span, orthonormalised (a signature within round-off of the others adds nothing)
-  std::vector<Flat> basis;
-  std::vector<Flat> unit_var;    // per knot: the noise's variance per whitened feature (both knots')
-  for (std::size_t j = 0; j < in.signature.size(); ++j) {
-    Flat s = whitened(in.signature[j], in.var), q = orthogonal(s, basis);
-    const double norm = std::sqrt(dot(q, q));
-    if (norm > 1e-9 * std::sqrt(dot(s, s)) && norm > 0) {
-      for (double &x : q) x /= norm;
-      basis.push_back(q);
-    }
-  }
-  Flat res0, res;
+  if (y.empty() || in.signature.empty()) return out;
+  std::vector<Flat> sig;
+  for (const auto &s : in.signature) sig.push_back(whitened(s, in.var));
+  Flat res0;
   const double w0 = scaled_residual(y, b, in.scale_bound, res0);
-  const double r_min = scaled_residual(orthogonal(y, basis), orthogonal(b, basis), in.scale_bound, res);
-  out.projection2 = std::max(0.0, w0 - r_min);
-  // direction error: the diagnosis's knots are the prior's signatures plus d_j = e_d - e_p,
-  // the two ensembles' noise (independent beds), variance v = (U_j + W_j) / V per whitened
-  // feature. What d_j adds is at most (r . d_j)^2 / |d_j|^2 (Cauchy-Schwarz), r the residual
-  // after the prior's span; r holds -alpha e_p (the signal's part the prior's noise missed,
-  // alpha = A / |S_j|, A^2 = projection2), so r . d_j has a coherent part alpha |e_p|^2 ~
-  // alpha sum W / V, and a random one of variance sum r^2 v, taken at the chi^2_K quantile
-  const double K = (double) std::max<std::size_t>(1, in.signature.size());
-  const double A = std::sqrt(out.projection2), q = chi2_quantile(PRIOR_BOUND_P, K);
-  double margin = 0, absorbed = 0;
-  Flat tmax(n, 0.0);
-  for (std::size_t j = 0; j < in.signature.size(); ++j) {
-    double sum_v = 0, sum_w = 0, sum_rv = 0, s2 = 0;
-    std::size_t i = 0;
-    for (std::size_t s = 0; s < in.gap.size(); ++s)
-      for (std::size_t k = 0; k < in.gap[s].size(); ++k, ++i) {
-        const double V = in.var[s][k];
-        if (!(V > 0)) continue;
-        const double v = (in.knot_var[j][s][k] + in.prior_var[j][s][k]) / V;
-        sum_v += v, sum_w += in.prior_var[j][s][k] / V, sum_rv += res[i] * res[i] * v;
-        s2 += in.signature[j][s][k] * in.signature[j][s][k] / V;
-        tmax[i] = std::max(tmax[i], in.knot_var[j][s][k] / V);
-      }
-    if (!(sum_v > 0)) continue;
-    const double alpha = s2 > 0 ? A / std::sqrt(s2) : 0.0;
-    margin = std::max(margin, std::pow(alpha * sum_w + std::sqrt(q * sum_rv), 2) / sum_v);
+  const double q = chi2_quantile(PRIOR_BOUND_P, (double) in.signature.size());
+  double best = 0;    // magnitude 0: the likelihood ratio 0
+  for (const Flat &c : path_coefficients(in)) {
+    bool choosable = true;
+    const PriorBound p = point_bound(in, c, sig, y, b, w0, q, choosable);
+    if (choosable && p.bound() > best) best = p.bound(), out = p;
   }
-  out.margin_direction = margin;
-  // the signature's own variance t = U / V in the likelihood: a residual r per feature costs
-  // r / (1 + t) + log(1 + t) instead of r
-  for (std::size_t i = 0; i < n; ++i) absorbed += res[i] * res[i] * tmax[i] / (1 + tmax[i]) - std::log1p(tmax[i]);
-  out.margin_noise = std::max(0.0, absorbed);
   return out;
 }
 
@@ -139,7 +193,7 @@ std::vector<PurchaseDecision> decide_purchases(const CheapStageSeen &seen, const
     d.prior = c.prior;
     std::string along = c.projection2 ? "the squared gap along its signature" : "the whole squared gap (its direction unknown)";
     if (c.prior)
-      along = "the prior's bound (the gap's squared projection on its knots' signatures and the scale, " +
+      along = "the prior's bound (the likelihood ratio along the fit's path: the squared gap its point removes, " +
               printf_number("%.1f", c.prior->projection2) + ", + the direction's margin " +
               printf_number("%.1f", c.prior->margin_direction) + " + the noise's " + printf_number("%.1f", c.prior->margin_noise) + ")";
     else if (!c.no_prior.empty())

@@ -38,30 +38,36 @@ struct CheapStageSeen {
 struct PriorBoundInput {
   std::vector<std::vector<double>> gap, var, scale_dir;                      // [speed][feature]
   std::vector<std::vector<std::vector<double>>> signature, knot_var, prior_var;    // [knot][speed][feature]
+  std::vector<double> magnitude;    // per knot (the baseline, 0, is not one); empty: 1, 2, ...
+  bool one_sided = false;           // no magnitude below 0 (Effect::one_sided)
+  double reach = 0.25;              // the fit's extrapolation beyond the end knots (EffectData::reach)
   double scale_bound = 0;
 };
-// The most likelihood ratio the candidate can earn (docs/gap.md, "The adaptive plan"):
-// projection2, the whitened gap's squared projection on what the prediction can reach (the
-// span of the knots' signatures with the bounded scale, less what the scale alone takes);
-// margin_direction, what the diagnosis's knots (S_j + d_j, d_j = their noise less the prior's,
-// independent beds) can reach beyond it: at most z^2 = (r . d)^2 / |d|^2 (Cauchy-Schwarz), r
-// the residual after the prior's span; r holds -alpha e_p (the part of the signal the prior's
-// own noise e_p turned away, alpha = A / |S_j|, A^2 = projection2), so r . d is alpha |e_p|^2
-// (coherent, |e_p|^2 at its mean sum W / V) plus a random part of variance sum r^2 (U + W) / V,
-// taken at the chi^2_K quantile of upper tail PRIOR_BOUND_P (K knots), over |d|^2 at its mean
-// sum (U + W) / V; the largest over the knots; margin_noise,
-// what the signature's own variance can absorb of the residual in the likelihood (its
-// r t / (1 + t) - log(1 + t) per feature, positive part).
+// The most likelihood ratio the candidate can earn (docs/gap.md, "The bound with a prior"):
+// the largest over the points of the fit's path (each magnitude's interpolation x of the
+// knots' signatures, as gap_fit.h predicts: rays from 0, segments between knots on one side,
+// the extrapolations, the mirror) that the fit can choose, of the likelihood ratio there:
+// projection2, the fixed-weight squared gap the point removes (w0 - |r|^2, r = y - c B - x with
+// the bounded scale; negative where the point adds to the residual); margin_noise, what the
+// knots' own variance t = U / V changes in the likelihood there (sum r^2 t / (1 + t) - log(1 +
+// t), either sign); margin_direction, what the diagnosis's knots, the prior's tilted by d (two
+// ensembles' noise, variance (U + W) / V per whitened feature, |c_j|-weighted over the knots)
+// add: 2 u - |d|^2_t, u = sum r d / (1 + t) with a coherent part alpha sum W / (V (1 + t)) (the
+// signal's part the prior's own noise turned away, alpha the fitted length along x), at sqrt(q)
+// of its standard deviation (q the chi^2_K quantile of tail PRIOR_BOUND_P, K knots), at most
+// Cauchy-Schwarz's u^2 / |d|^2_t. A point is one the fit can choose unless its fixed-weight
+// gain, with the same tilt's at its quantile, stays below 0 (magnitude 0's).
 struct PriorBound {
   double projection2 = 0, margin_direction = 0, margin_noise = 0;
   double bound() const { return projection2 + margin_direction + margin_noise; }
 };
-// The random part's tail: 0.1 per candidate, because the Cauchy-Schwarz step (the whole
-// component along the noise's direction) and the coherent part at its full size already make
-// the margin conservative: in tests/analysis/gap/test_gap_adaptive.cpp's Monte Carlo (two
-// knots, 40 features, signals from 0 to 2 signature's worth) the diagnosis's knots exceeded
-// the bound in 3 of 3000 draws (0.1%), and the projection alone in 1501.
-constexpr double PRIOR_BOUND_P = 0.1;
+// The random part's tail: 0.01 per candidate: in tests/analysis/gap/test_gap_adaptive.cpp's
+// Monte Carlo (the fit's own likelihood ratio with the diagnosis's knots, effect_lr, against
+// the prior's bound) it is exceeded in 20 of 3840 draws (the test's bound: 1%); at 0.1 in 63.
+constexpr double PRIOR_BOUND_P = 0.01;
+// Magnitudes on the path's grid (and the knots): the direction between two grid points turns
+// by less than 1 / PRIOR_PATH_POINTS of a segment.
+constexpr int PRIOR_PATH_POINTS = 400;
 PriorBound prior_bound(const PriorBoundInput &in);
 
 // A pour-level candidate before its knots are simulated.

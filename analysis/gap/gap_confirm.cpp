@@ -35,7 +35,9 @@ double heldout_scale(const EffectData &ed, double a, std::size_t hs, const Featu
 }
 
 // What the confirmation test reads of the stages before: the fits' route (targeted: by one
-// effect's likelihood ratio) and the omnibus test's chi^2 over its features.
+// effect's likelihood ratio) and the omnibus chi^2 over its features against the baseline
+// within the calibration bound (the runs after are compared times 1 + their fitted scale:
+// like with like, a scale a calibration allows is no effect's confirmation).
 struct Before {
   bool targeted = false;
   double chi2_0 = 0;
@@ -264,12 +266,12 @@ ConfirmStep confirm_top_effect(const std::map<std::string, const Effect *> &by_n
   const bool between = verdict == Verdict::unexplained && fits_verdict.between_knots && !ranking.empty();
   // a scale_only verdict is confirmed as an explained one: its scale on fresh runs
   if (verdict != Verdict::explained && verdict != Verdict::scale_only && !between) return step;
-  const Before d{fits_verdict.targeted, where.omnibus.chi2_0, where.omnibus.nfeatures};
+  const Before d{fits_verdict.targeted, where.omnibus.chi2_within_bound, where.omnibus.nfeatures};
   const double gap_before = where.before.gap, heldout_before = where.heldout.gap;
   const EffectFit &top = ranking[0];
   const Effect &e = *by_name.at(top.name);
   const EffectData &ed = fitted.data.at(e.name);
-  c.outcome.gap_before = gap_before, c.outcome.heldout_before = heldout_before;
+  c.outcome.gap_before = gap_before, c.outcome.heldout_before = heldout_before, c.outcome.chi2_before = d.chi2_0;
   if (between && !away_from_knots(top, ed)) return c.outcome.kind = Kind::at_knot, step;
   if (between && fit_only) return c.outcome.kind = Kind::fit_only, step;
   c.effect = e.name, c.unit = e.unit;
@@ -302,11 +304,13 @@ ConfirmStep confirm_top_effect(const std::map<std::string, const Effect *> &by_n
     c.heldout_magnitude = c.magnitude;
     c.heldout_after = heldout_gap(c.after_runs, hs, (1.0 + heldout_scale(ed, c.magnitude, hs, f)) / (1.0 + c.scale) - 1.0, f, al);
   }
-  // a transform effect's "after" is computed: the output writes its traces transformed
+  // the "after" as compared: a transform effect's traces transformed, and every effect's
+  // times 1 + its fitted scale (none written here: the runs as simulated are copied)
   if (by_transform(e, c.magnitude)) c.corrected_effect = e.name, c.corrected_magnitude = c.magnitude;
   const Effect *derived = c.corrected_effect.empty() ? nullptr : find_effect(c.corrected_effect);
-  if (derived && derived->transform && !c.after.files.empty())
-    c.corrected_traces = transformed_trace_files(c.after.files, *derived, c.corrected_magnitude);
+  if (derived && !derived->transform) derived = nullptr;
+  if ((derived || c.scale != 0.0) && !c.after.files.empty())
+    c.corrected_traces = corrected_trace_files(c.after.files, derived, c.corrected_magnitude, c.scale);
   c.outcome.magnitude = c.magnitude;
   c.outcome.confirmed = confirmed;
   c.outcome.heldout_after = c.heldout_after;

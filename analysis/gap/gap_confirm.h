@@ -53,7 +53,9 @@ AfterRuns evaluate_after(RunsBySpeed &runs, double a, double scale, const Effect
 // bound (the nuisance scale at magnitude 0, as the fit's gap before), in standard deviations.
 double signature_sigma(const EffectData &ed, double a, const Features &f);
 
-// Whether runs with chi^2 chi2a (and proj_a sigma along the signature) confirm the effect:
+// Whether runs with chi^2 chi2a (and proj_a sigma along the signature) confirm the effect,
+// chi2_0 the omnibus chi^2 before against the baseline within the calibration bound
+// (Significance::chi2_within_bound: the runs are compared times 1 + their fitted scale):
 // omnibus route: chi^2 drops by more than chi2_noise_sigmas of its noise and by
 // confirm_excess_removed of the excess; targeted route: the squared projection drops by at
 // least confirm_projection_drop2 and chi^2 does not grow beyond its noise (gap_thresholds.h).
@@ -87,8 +89,9 @@ struct Confirmation {
   RunsBySpeed after_runs;        // ... aligned (empty when nothing was simulated)
   std::string corrected_effect;  // a transform effect's "after": the output writes its traces transformed
   double corrected_magnitude = 0;
-  // ... and those transformed runs as the files of OUT/corrected/ (name, text), made here so
-  // that the report only writes them
+  // ... and the "after" runs as the verdict compared them (transformed, times 1 + scale) as
+  // the files of OUT/corrected/ (name, text), made here so that the report only writes them;
+  // empty when they are the runs as simulated (no transform, scale 0: copied)
   std::vector<std::pair<std::string, std::string>> corrected_traces;
   // the magnitude the diagnosis names: this one when an effect was named at one, else 0
   double named_magnitude() const { return effect.empty() ? 0.0 : magnitude; }

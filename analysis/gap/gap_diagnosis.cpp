@@ -89,7 +89,8 @@ double probe_grains(const GapOptions &opt)
 
 // The plan before anything is simulated, printed in its one unit (probe pours of core time,
 // wall time at --jobs from it): every knot, and, for a diagnosis, its range (the cheap stage
-// alone, to every knot with the costliest confirmation). false when its most exceeds --budget.
+// alone, to every knot with the costliest confirmation, a pair's included: gap_plan.h,
+// confirmation_most). false when its most exceeds --budget.
 bool plan_within_budget(const GapOptions &given, const Scenario &sc, const std::vector<std::string> &v0s,
                         const std::vector<const Effect *> &effects, bool diagnosis, const Progress &progress, PlanRecord *record = nullptr)
 {
@@ -118,12 +119,13 @@ bool plan_within_budget(const GapOptions &given, const Scenario &sc, const std::
     r.least = cold_least.probe_pours, r.most = cold_most.probe_pours;
     r.wall_least = wall_probe_pours(cold_least, jobs), r.wall_most = wall_probe_pours(cold_most, jobs);
     r.decides = "which pour-level candidates the cheap stage leaves able to change the verdict (each simulated unless its bound, "
-                "with a signature prior the gap's squared projection on its knots' signatures and the scale plus the prior's "
-                "margins, without one the whole squared gap, stays below its threshold), "
-                "then whether an effect is confirmed, which, and whether its magnitude is refined";
+                "with a signature prior the likelihood ratio its prior's knots earn along the fit's path plus the margin of "
+                "the diagnosis's own knots, without one the whole squared gap, stays below its threshold), "
+                "then whether an effect is confirmed, which, and whether its magnitude is refined, and whether the "
+                "pair stage confirms two effects at once";
     progress.say(GapProgress::INFO, "plan",
                  "plan: from " + cost_phrase(least, jobs) + " (the cheap stage alone) to " + cost_phrase(most, jobs) +
-                     " (every knot and the costliest confirmation); where a run lands: " + r.decides);
+                     " (every knot and the costliest confirmation, a pair's included); where a run lands: " + r.decides);
     if (record) *record = r;
   }
   if (given.budget < 0 || most.core_hours <= given.budget) return true;

@@ -25,7 +25,7 @@ std::size_t zero_index(const EffectData &e)
   return 0;
 }
 
-bool is_filter(const Effect &e) { return e.transform != nullptr && !e.uniform_scale; }
+bool is_filter(const Effect &e) { return pair_filter(e); }
 bool costs_no_pour(const Effect &e) { return !e.pour_level && !e.uniform_scale; }
 
 // The joint model at (x, y), speed s: A's prediction plus B's signature (both on the same
@@ -115,6 +115,9 @@ std::vector<std::size_t> all_speeds(const Target &t)
 }
 
 }    // namespace
+
+bool pair_filter(const Effect &e) { return e.transform != nullptr && !e.uniform_scale; }
+bool pair_partner(const Effect &e) { return !e.pour_level && !e.uniform_scale && !pair_filter(e); }
 
 bool pair_stage_entered(Verdict standing, const std::optional<Residual> &residual, std::string &why)
 {
@@ -461,13 +464,15 @@ PairConfirmStep confirm_pair(const PairSearch &search, const WhereResult &where,
   c.proj_before = signature_sigma(line, 1.0, f);
   c.after = evaluate_after(runs, 1.0, p.scale, line, f, al);    // compared as fitted: with the pair's nuisance scale
   c.chi2_after = c.after.chi2, c.proj_after = c.after.sigma();
-  const double P = (double) where.omnibus.nfeatures, excess0 = where.omnibus.chi2_0 - P;
+  // like with like: chi^2 before against the baseline within the calibration bound
+  c.chi2_before = where.omnibus.chi2_within_bound;
+  const double P = (double) where.omnibus.nfeatures, excess0 = c.chi2_before - P;
   c.confirmed_fraction = excess0 > 0 ? 1.0 - std::max(0.0, c.chi2_after - P) / excess0 : 0.0;
   c.outcome.kind = PairOutcome::Kind::simulated;
-  c.outcome.confirmed = confirms(!where.omnibus.significant, where.omnibus.chi2_0, where.omnibus.nfeatures, c.proj_before,
+  c.outcome.confirmed = confirms(!where.omnibus.significant, c.chi2_before, where.omnibus.nfeatures, c.proj_before,
                                  c.chi2_after, c.proj_after);
   c.outcome.gap_after = c.after.all();
-  c.corrected_traces = transformed_trace_files(c.after.files, filter, p.magnitude_a);
+  c.corrected_traces = corrected_trace_files(c.after.files, &filter, p.magnitude_a, p.scale);
   return step;
 }
 

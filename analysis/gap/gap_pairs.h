@@ -67,6 +67,12 @@ constexpr std::size_t PAIR_NEAREST = 3;
 // about 100 Hz over tiny's 2 cm at 200 cm/s).
 constexpr double PAIR_SEED_STEP = 1.1;
 
+// The pair stage's members: a filter (a transform of the force that is not a uniform scale:
+// the measurement chain) and a partner (a push-only effect that is simulated: no pour, no
+// transform). A library with both can have a pair to confirm (gap_plan.h counts its runs).
+bool pair_filter(const Effect &e);
+bool pair_partner(const Effect &e);
+
 // Whether the stage is entered, and why (or why not) in words.
 bool pair_stage_entered(Verdict standing, const std::optional<Residual> &residual, std::string &why);
 
@@ -162,9 +168,11 @@ struct PairConfirmation {
   std::string filter, other;
   double magnitude_filter = 0, magnitude_other = 0;
   std::string unit_filter, unit_other;
-  double chi2_after = 0, proj_before = 0, proj_after = 0, confirmed_fraction = 0;
+  // chi2_before: against the baseline within the calibration bound (the runs after are
+  // compared times 1 + the pair's fitted scale), as a single's confirmation
+  double chi2_before = 0, chi2_after = 0, proj_before = 0, proj_after = 0, confirmed_fraction = 0;
   AfterRuns after;                        // the runs adopted as the "after" (the other member's, filtered)
-  std::vector<std::pair<std::string, std::string>> corrected_traces;    // those runs filtered, as files
+  std::vector<std::pair<std::string, std::string>> corrected_traces;    // those runs filtered, times 1 + scale, as files
 };
 struct PairConfirmStep {
   std::optional<RunsNeeded> need;

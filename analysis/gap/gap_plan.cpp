@@ -1,5 +1,6 @@
 #include "gap_plan.h"
 
+#include "gap_pairs.h"
 #include "sweep_cache.h"
 #include "text_util.h"
 #include "errors.h"    // InputError
@@ -198,19 +199,54 @@ std::vector<SimRequest> largest_confirmation(const std::string &scenario, const 
   return out;
 }
 
-PlanCost confirmation_most(const Scenario &sc, const std::vector<std::string> &v0,
-                           const std::vector<const Effect *> &effects, const std::string &cache, double probe_grains)
+std::vector<SimRequest> pair_confirmation(const std::string &scenario, const Effect &other, double b,
+                                          const std::vector<std::string> &v0)
 {
-  PlanCost most;
+  return confirm_requests(scenario, other, b, v0, "confirm");
+}
+
+namespace {
+
+// the costliest of the request sets each effect at its outermost knots asks for (empty: none)
+template <class RequestsOf>
+std::vector<SimRequest> costliest(const Scenario &sc, const std::vector<const Effect *> &effects, const std::string &cache,
+                                  double probe_grains, RequestsOf requests_of)
+{
+  std::vector<SimRequest> best;
+  double most = 0;
   for (const Effect *e : effects) {
     if (e->knots.empty()) continue;
     const auto [lo, hi] = std::minmax_element(e->knots.begin(), e->knots.end());
     for (double a : {*lo, *hi}) {
-      const PlanCost c = plan_cost(sc, largest_confirmation(sc.name, *e, a, v0), cache, probe_grains);
-      if (c.probe_pours > most.probe_pours) most = c;
+      std::vector<SimRequest> r = requests_of(*e, a);
+      const double c = plan_cost(sc, r, cache, probe_grains).probe_pours;
+      if (c > most) most = c, best = std::move(r);
     }
   }
-  return most;
+  return best;
+}
+
+}    // namespace
+
+PlanCost confirmation_most(const Scenario &sc, const std::vector<std::string> &v0,
+                           const std::vector<const Effect *> &effects, const std::string &cache, double probe_grains)
+{
+  std::vector<SimRequest> most = costliest(sc, effects, cache, probe_grains, [&](const Effect &e, double a) {
+    return largest_confirmation(sc.name, e, a, v0);
+  });
+  const bool pair_possible = std::any_of(effects.begin(), effects.end(), [](const Effect *e) { return pair_filter(*e); });
+  std::vector<const Effect *> partners;
+  for (const Effect *e : effects)
+    if (pair_partner(*e)) partners.push_back(e);
+  if (pair_possible)
+    for (SimRequest &r : costliest(sc, partners, cache, probe_grains, [&](const Effect &e, double b) {
+           return pair_confirmation(sc.name, e, b, v0);
+         }))
+      // the fresh beds a single's push-only confirmation poured are poured once; every push
+      // counts (the pair's member runs at its own magnitude, not the single's)
+      if (!r.spec.v0.empty() || std::none_of(most.begin(), most.end(), [&](const SimRequest &q) { return q.spec.name == r.spec.name; }))
+        most.push_back(std::move(r));
+  return plan_cost(sc, most, cache, probe_grains);
 }
 
 ArrayTasks array_tasks(const std::vector<SimRequest> &requests)

@@ -90,8 +90,17 @@ PlanCost operator+(const PlanCost &a, const PlanCost &b);
 // out and e's outermost knot, the most e's confirmation can cost.
 std::vector<SimRequest> largest_confirmation(const std::string &scenario, const Effect &e, double a,
                                              const std::vector<std::string> &v0);
-// The most any effect's confirmation can add to the plan (0 without effects): the costliest
-// of largest_confirmation over the effects at their outermost knots, what the cache lacks.
+// The runs the pair stage's confirmation asks for (gap_pairs.h, confirm_pair), of the
+// push-only member `other` at magnitude b: its pushes into the confirmation's fresh beds at
+// every speed (the beds poured once, shared with a single's push-only confirmation).
+std::vector<SimRequest> pair_confirmation(const std::string &scenario, const Effect &other, double b,
+                                          const std::vector<std::string> &v0);
+// The most the confirmations can add to the plan (0 without effects), what the cache lacks:
+// the costliest of largest_confirmation over the effects at their outermost knots, and, when
+// the library holds a pair the pair stage can try (gap_pairs.h, pair_filter and
+// pair_partner), the costliest pair_confirmation over the partners at their outermost knots
+// on top (a single's confirmation that fails leaves the pair stage its turn). A pair's
+// magnitudes are not refined (docs/gap.md, "Two effects at once"): its one set of runs.
 PlanCost confirmation_most(const Scenario &sc, const std::vector<std::string> &v0,
                            const std::vector<const Effect *> &effects, const std::string &cache, double probe_grains);
 

@@ -258,6 +258,8 @@ std::optional<PriorBound> candidate_prior_bound(const SignaturePrior &p, const E
   if (!missing.empty()) return std::nullopt;
   PriorBoundInput in;
   in.scale_bound = scale_bound;
+  in.one_sided = e.one_sided;    // the path of the fit (gap_fit.h): its knots, side and reach
+  in.reach = EffectData().reach;
   const double own_beds = (double) SIGNATURE_SEEDS.size(), prior_beds = (double) p.beds;
   for (std::size_t s = 0; s < f.nspeeds(); ++s) {
     const auto &B = f.fresh[s].mean;
@@ -277,7 +279,7 @@ std::optional<PriorBound> candidate_prior_bound(const SignaturePrior &p, const E
       }
       U.push_back(u), W.push_back(w);
     }
-    in.signature.push_back(k.signature), in.knot_var.push_back(U), in.prior_var.push_back(W);
+    in.signature.push_back(k.signature), in.knot_var.push_back(U), in.prior_var.push_back(W), in.magnitude.push_back(k.magnitude);
   }
   return prior_bound(in);
 }

@@ -37,7 +37,8 @@ std::string f3(double v, const char *f = "%.3f") { return printf_number(f, v); }
 Json confirmation_json(const Diagnosis &d)
 {
   const bool tested = !d.tested_effect.empty();
-  return Json{{"chi2_after", tested ? num(d.chi2_after) : Json()},
+  return Json{{"chi2_before", tested ? num(d.chi2_within_bound) : Json()},
+              {"chi2_after", tested ? num(d.chi2_after) : Json()},
               {"explained_fraction", tested ? num(d.confirmed_fraction, "%.4f") : Json()},
               {"signature_sigma_before", tested ? num(d.proj_before, "%.4f") : Json()},
               {"signature_sigma_after", tested ? num(d.proj_after, "%.4f") : Json()}};
@@ -249,11 +250,15 @@ Json diagnosis_json(const Diagnosis &d)
   j["gap_before"] = num(d.gap_before);
   j["gap_after"] = num(d.gap_after);
   j["gap_metric"] = "shared/formats/gap-metric.md v2";
-  j["gap_parts"] = Json{{"before", parts_json(d.parts_before)}, {"after", parts_json(d.parts_after)}};
+  j["gap_parts"] = Json{{"before", parts_json(d.parts_before)},
+                        {"after", parts_json(d.parts_after)},
+                        {"before_within_bound", Json{{"G_all", num(d.gap_within_bound)}, {"scale", num(d.scale_within_bound)}}}};
   j["tie"] = d.tie.empty() ? Json() : Json(d.tie);
   j["runs"] = Json{{"real_min_per_speed", d.n_real_min}, {"sim_per_speed", d.n_sim}};
   j["grid"] = Json{{"w", num(d.grid.w)}, {"zmax", num(d.grid.zmax)}, {"window", num(d.grid.window)}};
   j["significance"] = Json{{"chi2", num(d.chi2_0)},
+                           {"chi2_within_bound", num(d.chi2_within_bound)},
+                           {"scale_within_bound", num(d.scale_within_bound)},
                            {"features", d.nfeatures},
                            {"p_value", num(d.p_value, "%.3g")},
                            {"significant", d.significant},
@@ -549,13 +554,18 @@ std::string md_summary(const Diagnosis &d)
                     d.gap_before, d.gap_after,
                     d.tested_effect.empty() ? " (nothing added)" : (" adding " + d.tested_effect + " on fresh seeds").c_str(),
                     b.G, a.G, b.G_spec, a.G_spec, b.runs_real, b.runs_sim, a.runs_sim);
+  md += format_text("Against the baseline within the calibration bound (its force times 1 + c0, c0 = %.4g the scale a "
+                    "lab's calibration allows that brings it nearest the data in the chi^2's weights: the footing of the "
+                    "\"after\", whose runs are compared times 1 + the scale fitted with the effect): G_all %.3f.  \n",
+                    d.scale_within_bound, d.gap_within_bound);
   md += format_text("Held-out speed %.4g cm/s: %.3f before, %.3f after.  \n", d.heldout_v0, d.heldout_before, d.heldout_after);
   md += format_text("Gap significance: chi^2 = %.1f over %zu features, p = %.3g%s.", d.chi2_0, d.nfeatures, d.p_value,
                d.targeted ? " (not significant over all features; found along one candidate's signature, see Which)" : "");
   if (!d.tested_effect.empty())
-    md += format_text(" With %s on fresh seeds: chi^2 = %.1f (%.0f%% of the excess removed); the gap along its signature "
-                    "%.2f -> %.2f standard deviations.",
-                 d.tested_effect.c_str(), d.chi2_after, 100.0 * d.confirmed_fraction, d.proj_before, d.proj_after);
+    md += format_text(" With %s on fresh seeds: chi^2 %.1f (against the baseline within the calibration bound) -> %.1f "
+                    "(%.0f%% of the excess removed); the gap along its signature %.2f -> %.2f standard deviations.",
+                 d.tested_effect.c_str(), d.chi2_within_bound, d.chi2_after, 100.0 * d.confirmed_fraction, d.proj_before,
+                 d.proj_after);
   if (d.refined)
     md += format_text(" That left the gap significant along the signature, so the magnitude was refined from %.4g to %.4g "
                     "by linear response and simulated on %zu more fresh beds (G_all %.3f -> %.3f; %.2f standard deviations "
@@ -735,7 +745,9 @@ std::string report_markdown(const Diagnosis &d, const std::vector<std::string> &
   md += format_text("\n## Figures\n\n");
   for (const auto &n : figures) md += format_text("![%s](figures/%s.png)\n\n", n.c_str(), n.c_str());
   for (const auto &e : failures) md += format_text("- figure not drawn: %s\n", e.c_str());
-  md += format_text("Simulated traces: `baseline/` (before) and `corrected/` (after; the baseline's when nothing was added).\n");
+  md += format_text("Simulated traces: `baseline/` (before) and `corrected/` (after, as the verdict compared them: a transform "
+                    "effect's filtered, and times 1 + the force scale fitted with the effect, each file's `derived` line says "
+                    "which; the baseline's when nothing was added).\n");
   return md;
 }
 
@@ -765,7 +777,8 @@ void write_gap_output(const Diagnosis &d, const std::string &out_dir)
     fs::create_directories(part / "baseline");
     fs::create_directories(part / "corrected");
     copy_all(d.baseline_files, part / "baseline");
-    // a transform effect's corrected runs were computed by the confirmation (corrected_traces)
+    // the corrected runs as compared (transformed, scaled) were computed by the confirmation
+    // (corrected_traces); otherwise they are the runs as simulated
     if (!d.corrected_traces.empty())
       for (const auto &[name, text] : d.corrected_traces) write_file_atomic((part / "corrected" / name).string(), text);
     else

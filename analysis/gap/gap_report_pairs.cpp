@@ -50,7 +50,8 @@ Json pair_stage_json(const std::optional<PairStage> &stage)
   Json confirmation;
   if (stage->confirmation && stage->confirmation->outcome.kind == PairOutcome::Kind::simulated) {
     const PairConfirmation &c = *stage->confirmation;
-    confirmation = Json{{"chi2_after", num(c.chi2_after, "%.4g")},
+    confirmation = Json{{"chi2_before", num(c.chi2_before, "%.4g")},
+                        {"chi2_after", num(c.chi2_after, "%.4g")},
                         {"explained_fraction", num(c.confirmed_fraction, "%.4f")},
                         {"signature_sigma_before", num(c.proj_before, "%.4f")},
                         {"signature_sigma_after", num(c.proj_after, "%.4f")},

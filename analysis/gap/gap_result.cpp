@@ -21,6 +21,8 @@ void record_where(const WhereResult &w, Diagnosis &d)
   d.n_sim = w.before.n_sim;
   d.where = w.findings;
   d.chi2_0 = w.omnibus.chi2_0;
+  d.chi2_within_bound = w.omnibus.chi2_within_bound;
+  d.gap_within_bound = w.before.gap_within_bound, d.scale_within_bound = w.before.scale_within_bound;
   d.p_value = w.omnibus.p_value;
   d.nfeatures = w.omnibus.nfeatures;
   d.heldout_v0 = w.heldout.v0;

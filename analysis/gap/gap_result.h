@@ -37,10 +37,14 @@ struct Diagnosis {
   // transform effect, effects.h: the baseline's traces filtered); "": the files as they are
   std::string corrected_effect;
   double corrected_magnitude = 0;
-  // ... and those transformed runs as the files of OUT/corrected/ (name, text; made by the
-  // confirmation, so that the report only writes them)
+  // ... and the corrected runs as the verdict compared them (transformed, times 1 + the fitted
+  // force scale) as the files of OUT/corrected/ (name, text; made by the confirmation, so that
+  // the report only writes them); empty: corrected_files copied as they are
   std::vector<std::pair<std::string, std::string>> corrected_traces;
   double chi2_0 = 0, p_value = 1;
+  // the gap against the baseline within the calibration bound (times 1 + scale_within_bound):
+  // chi^2, what the confirmation's chi^2 after is judged against; G_all, beside gap_before
+  double chi2_within_bound = 0, gap_within_bound = 0, scale_within_bound = 0;
   double chi2_after = 0, confirmed_fraction = 0;    // the fresh runs of the tested effect
   std::size_t nfeatures = 0;
   bool significant = false;

@@ -4,6 +4,7 @@
 #include "gap_plan.h"
 #include "onset_alignment.h"
 #include "sweep_cache.h"
+#include "text_util.h"
 #include "trace_reader.h"
 #include "trace_writer.h"
 
@@ -79,18 +80,24 @@ RunsBySpeed transformed_runs(const Effect &e, double a, const RunsBySpeed &runs)
 
 namespace {
 
-// A transform effect's corrected run as a trace file: the source's header (a line `derived`
-// said), t and z, its F transformed (in the file's units: the transform is linear)
-std::string transformed_trace_text(const std::string &path, const Effect &e, double a)
+// A corrected run as a trace file: the source's header (a line `derived` said), t and z, its
+// F transformed (when a transform is given) and times 1 + scale (in the file's units: both
+// are linear)
+std::string corrected_trace_text(const std::string &path, const Effect *e, double a, double scale)
 {
   const Trace t = read_trace(path);
   TraceHeader h;
   h.units = t.units, h.v0 = t.v0, h.D = t.D, h.g = t.g;
   for (const auto &[k, v] : t.keys)
     if (k != "units" && k != "v0" && k != "D" && k != "g") h.extra.emplace_back(k, v);
-  h.extra.emplace_back("derived", e.name + " " + deck_number(a) + ": F transformed by granpen gap (analysis/gap/effects.cpp)");
+  const std::string scaled = "times 1 + c = " + printf_number("%.6g", 1.0 + scale) + " (c = " + printf_number("%.6g", scale) +
+                             ": the force scale fitted with it; the prediction the verdict compared)";
+  h.extra.emplace_back("derived", e ? e->name + " " + deck_number(a) + ": F transformed by granpen gap (analysis/gap/effects.cpp)" +
+                                          (scale != 0.0 ? "; " + scaled : "")
+                                    : "F " + scaled + " by granpen gap");
   const double dt = t.t.size() > 1 ? (t.t.back() - t.t.front()) / (double) (t.t.size() - 1) : 1.0;
-  const std::vector<double> F = e.transform(t.F, dt, a);
+  std::vector<double> F = e ? e->transform(t.F, dt, a) : t.F;
+  for (double &x : F) x *= 1.0 + scale;
   std::string text = format_trace_header(h);
   for (std::size_t i = 0; i < F.size(); ++i) text += format_trace_row({t.t[i], t.z[i], F[i]});
   return text;
@@ -98,12 +105,13 @@ std::string transformed_trace_text(const std::string &path, const Effect &e, dou
 
 }    // namespace
 
-std::vector<std::pair<std::string, std::string>> transformed_trace_files(const std::vector<std::string> &paths,
-                                                                        const Effect &e, double a)
+std::vector<std::pair<std::string, std::string>> corrected_trace_files(const std::vector<std::string> &paths,
+                                                                      const Effect *transform, double a, double scale)
 {
   std::vector<std::pair<std::string, std::string>> out;
   for (const auto &f : paths)
-    out.emplace_back(sweep_of_trace(f) + "_" + std::filesystem::path(f).filename().string(), transformed_trace_text(f, e, a));
+    out.emplace_back(sweep_of_trace(f) + "_" + std::filesystem::path(f).filename().string(),
+                     corrected_trace_text(f, transform, a, scale));
   return out;
 }
 

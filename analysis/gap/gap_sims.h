@@ -56,11 +56,14 @@ RunsBySpeed load_sweep_runs(const std::string &cache, const std::string &sweep);
 TraceRun transformed_run(const Effect &e, double a, const TraceRun &run);
 RunsBySpeed transformed_runs(const Effect &e, double a, const RunsBySpeed &runs);
 
-// A transform effect's runs as trace files (for OUT/corrected/): per file, SWEEP_FILE and
-// the text: the source's header (a line `derived` said), t and z, its F transformed (in the
-// file's units: the transform is linear). Throws InputError for a trace that cannot be read.
-std::vector<std::pair<std::string, std::string>> transformed_trace_files(const std::vector<std::string> &paths,
-                                                                        const Effect &e, double a);
+// The confirming runs as the prediction the verdict compared, as trace files (for
+// OUT/corrected/): per file, SWEEP_FILE and the text: the source's header (a line `derived`
+// saying what was done), t and z, its F transformed by `transform` at magnitude a (none: as
+// simulated) and times 1 + scale, the nuisance force scale fitted with it (gap_fit.h: the
+// prediction is (1 + scale) M(a)); in the file's units, both being linear. Throws InputError
+// for a trace that cannot be read.
+std::vector<std::pair<std::string, std::string>> corrected_trace_files(const std::vector<std::string> &paths,
+                                                                      const Effect *transform, double a, double scale);
 
 // What the fits compare against: the baseline on the signature beds, on the reference
 // beds, and every effect knot (sweep name -> runs; the knots a transform realises from the

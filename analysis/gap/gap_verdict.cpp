@@ -392,19 +392,19 @@ std::vector<std::string> confirmation_verdict_notes(const VerdictDecision &v, co
   case ConfirmationRule::between_knots_explained:
     return {"verdict: explained by " + top.name + " simulated between its knots at " + fmt(c.magnitude) +
             " on fresh seeds (its interpolated signature explained " + fmt(top.explained, "%.2f") + ", held out " +
-            fmt(top.heldout_explained, "%.2f") + "): chi^2 " + fmt(fits.chi2_0, "%.1f") + " -> " + fmt(c.chi2_after, "%.1f") +
+            fmt(top.heldout_explained, "%.2f") + "): chi^2 " + fmt(c.chi2_before, "%.1f") + " -> " + fmt(c.chi2_after, "%.1f") +
             ", " + gaps + heldout + " (the runs at the magnitude fitted on every speed: the held-out fit rests on the interpolation)"};
   case ConfirmationRule::between_knots_short:
     return {"verdict: " + top.name + " simulated between its knots at " + fmt(c.magnitude) + " on fresh seeds did not explain the gap (" +
             (c.confirmed ? "confirmed by chi^2, " : "not confirmed by chi^2, ") + gaps + heldout + "; both must halve): unexplained"};
   case ConfirmationRule::not_halved:
     return {"verdict: " + top.name + " at magnitude " + fmt(c.magnitude) + " passed the chi^2 test on fresh seeds (" +
-            fmt(fits.chi2_0, "%.1f") + " -> " + fmt(c.chi2_after, "%.1f") + ") but G_all did not shrink to half (" +
+            fmt(c.chi2_before, "%.1f") + " -> " + fmt(c.chi2_after, "%.1f") + ") but G_all did not shrink to half (" +
             fmt(c.gap_before, "%.3f") + " -> " + fmt(c.gap_after, "%.3f") +
             "): the fit followed noise or a look-alike's part of the gap, not the gap: unexplained"};
   default:    // not_confirmed
     return {"verdict: " + top.name + " at magnitude " + fmt(c.magnitude) + " did not shrink the gap on fresh seeds (chi^2 " +
-            fmt(fits.chi2_0, "%.1f") + " -> " + fmt(c.chi2_after, "%.1f") + " over " + std::to_string(fits.nfeatures) +
+            fmt(c.chi2_before, "%.1f") + " -> " + fmt(c.chi2_after, "%.1f") + " over " + std::to_string(fits.nfeatures) +
             " features; along its signature " + fmt(c.proj_before, "%.2f") + " -> " + fmt(c.proj_after, "%.2f") + " sigma; " + gaps +
             "): unexplained"};
   }

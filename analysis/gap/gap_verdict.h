@@ -92,8 +92,12 @@ struct ConfirmationResult {
   Kind kind = Kind::none;
   double magnitude = 0;                  // where the deciding runs were simulated
   bool confirmed = false;                // by chi^2 or along the signature (gap_confirm.h, confirms)
-  double chi2_after = 0, proj_before = 0, proj_after = 0;
-  double gap_before = 0, gap_after = 0, heldout_before = 0, heldout_after = 0;    // G_all
+  // chi^2 over every feature before (against the baseline within the calibration bound, as
+  // the runs after are compared times 1 + their fitted scale) and after
+  double chi2_before = 0, chi2_after = 0, proj_before = 0, proj_after = 0;
+  // G_all before (gap-metric.md: the data against the baseline) and after (against the runs
+  // as compared, OUT/corrected/)
+  double gap_before = 0, gap_after = 0, heldout_before = 0, heldout_after = 0;
 };
 
 // What the pair stage found (gap_pairs.h makes it), as the verdict reads it: the pair its fits

@@ -41,6 +41,33 @@ Observations observations(const std::vector<TraceRun> &runs, double v, const Sce
 
 }    // namespace
 
+namespace {
+
+// G_all of the measurement against the reference beds' runs times 1 + scale: every bin mean
+// and band amplitude scales with F, their squared standard errors with its square
+double gap_within_scale(const Features &f, const GapGrid &grid, double scale)
+{
+  const double x = 1.0 + scale;
+  double G = 0, G_spec = 0;
+  for (std::size_t s = 0; s < f.nspeeds(); ++s) {
+    Ensemble e = f.fresh[s];
+    for (auto &run : e.runs)
+      for (double &v : run) v *= x;
+    for (double &m : e.mean) m *= x;
+    for (double &v : e.var) v *= x * x;
+    G += gap_metric(f.real[s], e, 0, grid.nbins()) / f.nspeeds();
+    if (s < f.spec_real.size() && s < f.spec_fresh.size()) {
+      EnsembleMoments m = f.spec_fresh[s];
+      for (double &a : m.mean) a *= x;
+      for (double &v : m.sq_se) v *= x * x;
+      G_spec += debiased_gap(f.spec_real[s], m) / f.nspeeds();
+    }
+  }
+  return gap_all(G, G_spec);
+}
+
+}    // namespace
+
 GapCurves gap_curves(const Features &f, const GapGrid &grid)
 {
   const std::size_t ns = f.nspeeds(), nb = grid.nbins();
@@ -72,6 +99,8 @@ GapCurves gap_curves(const Features &f, const GapGrid &grid)
   parts.runs_real = out.n_real_min, parts.runs_sim = out.n_sim;
   out.parts = parts;
   out.gap = parts.all();
+  out.scale_within_bound = baseline_scale_within_bound(f.target, f);
+  out.gap_within_bound = gap_within_scale(f, grid, out.scale_within_bound);
   return out;
 }
 
@@ -146,26 +175,52 @@ ObservableFindings observable_findings(const Features &f, const RunsBySpeed &rea
   return out;
 }
 
-double omnibus_chi2(const Target &t, const Features &f)
+namespace {
+
+// the reference beds' baseline as a one-knot model (its means, their variances)
+EffectData reference_model(const Features &f)
 {
-  const std::size_t ns = f.nspeeds();
-  std::vector<std::size_t> all(ns);
-  std::iota(all.begin(), all.end(), 0);
   EffectData null;
   null.knots = {0.0};
   null.mean = {Table()};
   null.err = {Table()};
-  for (std::size_t s = 0; s < ns; ++s) {
+  for (std::size_t s = 0; s < f.nspeeds(); ++s) {
     null.mean[0].push_back(f.fresh[s].mean);
     null.err[0].push_back(f.fresh_err[s]);
   }
-  return effect_chi2(t, null, 0.0, all);
+  return null;
+}
+
+std::vector<std::size_t> every_speed(const Features &f)
+{
+  std::vector<std::size_t> all(f.nspeeds());
+  std::iota(all.begin(), all.end(), 0);
+  return all;
+}
+
+}    // namespace
+
+double baseline_scale_within_bound(const Target &t, const Features &f)
+{
+  EffectData null = reference_model(f);
+  null.scale_bound = GapThresholds::calibration_scale_bound;
+  return nuisance_scale(t, null, 0.0, every_speed(f));
+}
+
+double omnibus_chi2(const Target &t, const Features &f, double scale)
+{
+  EffectData null = reference_model(f);
+  for (auto &row : null.mean[0])
+    for (double &m : row) m *= 1.0 + scale;
+  return effect_chi2(t, null, 0.0, every_speed(f));
 }
 
 Significance gap_significance(const Features &f, const GapGrid &grid)
 {
   Significance out;
   out.chi2_0 = omnibus_chi2(f.target, f);
+  out.scale_within_bound = baseline_scale_within_bound(f.target, f);
+  out.chi2_within_bound = omnibus_chi2(f.target, f, out.scale_within_bound);
   out.nfeatures = f.nspeeds() * grid.nfeatures();
   out.p_value = chi2_sf(out.chi2_0, (double) out.nfeatures);
   out.significant = out.p_value < GapThresholds::significance_p;

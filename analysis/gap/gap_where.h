@@ -47,13 +47,23 @@ struct GapParts {
 
 // The curves before (the "after" unset: the confirmation's), G and G_spec per speed and their
 // means, the runs behind them (measured: the fewest per speed; simulated: the reference beds).
+// gap_within_bound: G_all against the baseline times 1 + scale_within_bound (the baseline
+// within the calibration bound, baseline_scale_within_bound), the footing of an "after" that
+// is compared times 1 + its fitted scale (docs/gap.md, "Before and after").
 struct GapCurves {
   std::vector<SpeedCurves> speeds;       // z_transient_end unset (transient_ends)
   GapParts parts;
-  double gap = 0;                        // G_all, mean over speeds
+  double gap = 0;                        // G_all, mean over speeds (gap-metric.md: the data against the baseline)
+  double gap_within_bound = 0, scale_within_bound = 0;
   int n_real_min = 0, n_sim = 0;
 };
 GapCurves gap_curves(const Features &f, const GapGrid &grid);
+
+// The force scale within the calibration bound (GapThresholds::calibration_scale_bound) that
+// brings the reference beds' baseline nearest the measurement: the weighted least-squares
+// factor over every feature (the omnibus chi^2's weights), clamped; as the fits' nuisance
+// scale at magnitude 0 (gap_fit.h, nuisance_scale).
+double baseline_scale_within_bound(const Target &t, const Features &f);
 
 // Per speed: the reference runs' mean crossover depth t~* v0 sqrt(D/g) (z_max when any run
 // does not cross), kept within [0.35 D, z_max]: where the transient regime ends.
@@ -69,12 +79,17 @@ struct ObservableFindings {
 ObservableFindings observable_findings(const Features &f, const RunsBySpeed &real, const SimulatedRuns &sims,
                                        const Scenario &sc, const GapGrid &grid, const std::vector<double> &z_transient_end);
 
-// chi^2 of a measurement's means against the reference beds' over every feature.
-double omnibus_chi2(const Target &t, const Features &f);
+// chi^2 of a measurement's means against the reference beds' over every feature, the
+// reference's means times 1 + scale (0: the raw gap).
+double omnibus_chi2(const Target &t, const Features &f, double scale = 0.0);
 
-// The omnibus test: chi^2 over every feature, its p-value, significant below significance_p.
+// The omnibus test: chi^2 over every feature, its p-value, significant below significance_p
+// (the raw gap: whether the data differ from the baseline at all). chi2_within_bound: the
+// same chi^2 against the baseline within the calibration bound (baseline_scale_within_bound),
+// what a confirmation's runs, compared times 1 + their fitted scale, are judged against.
 struct Significance {
   double chi2_0 = 0, p_value = 1;
+  double chi2_within_bound = 0, scale_within_bound = 0;
   std::size_t nfeatures = 0;
   bool significant = false;
 };

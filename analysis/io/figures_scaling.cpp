@@ -154,7 +154,9 @@ void plot_scaling(const std::vector<std::string> &inputs, Run &run)
                                                       (q.paper_error > 0 ? " ± " + fmt("%g", q.paper_error) : "") + ")"
                                                 : "   (no paper value)");
     p.xlabel = axis.label;
-    p.ylabel = q.unit.empty() ? q.label : q.label + " (" + q.unit + ")";
+    // a long label is the panel's title already: on the y axis it would be cut at the frame
+    const std::string y_name = q.label.size() <= 36 ? q.label : q.unit.empty() ? "value" : "";
+    p.ylabel = q.unit.empty() ? y_name : (y_name.empty() ? q.unit : y_name + " (" + q.unit + ")");
     p.key = "off";
     // a margin of half a unit of D/d_g either side, so that no point sits on the frame
     p.xmin = std::floor(rmin - 0.5), p.xmax = std::ceil(rmax + 0.5);

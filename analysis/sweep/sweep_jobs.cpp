@@ -121,9 +121,19 @@ void inspect_job(Job &j, bool own)
       if (std::rename(j.trace.c_str(), keep.c_str()) != 0)
         throw InputError("cannot move " + j.trace + " to " + keep + ": " + std::strerror(errno));
       j.action = "restarted (partial trace kept as " + keep.substr(keep.rfind('/') + 1) + ")";
+      std::remove(ca.c_str()), std::remove(cb.c_str());    // incomplete: never resumed from
       break;
     }
-    case PushAction::START: j.action = "started"; break;
+    case PushAction::START: {
+      j.action = "started";
+      // checkpoints without a trace are an earlier attempt's whose trace was removed: until
+      // this run writes its own, a cut would resume from them onto the new trace, so they go
+      if (own && (exists(ca) || exists(cb))) {
+        std::remove(ca.c_str()), std::remove(cb.c_str());
+        j.action = "started (the checkpoints of an earlier attempt without its trace removed)";
+      }
+      break;
+    }
   }
 }
 

@@ -28,6 +28,9 @@
 //       and the selftest's 1200 fitted at 295 as a near-uniform offset that packing and
 //       force_scale explain as well (the look-alike, and not this world's question)
 //   dmu_rod m: P *= 1 + 1.5 m, k *= 1 + 0.5 m (the rod's own friction: the tip and the side)
+//   layer A, layer_z z_l (an effect outside the library: a bed stratified in depth, a harder
+//       layer buried at z_l, 1.3 cm unless given): + A exp(-((z - z_l) / 0.15)^2) at any speed,
+//       independent of the grains' packing and density (a stone layer, a compacted band)
 //   rho_g r (an effect outside the library; the headers say 3): k, P and the walls *= r / 3,
 //       and the grain noise as for kn s * 3 / r (see below)
 // Packing (the pour's friction sets phi_0): near jamming the quasi-static resistance of a bed
@@ -176,6 +179,7 @@ int main(int argc, char **argv)
   const int model_seed = by_knobs ? (num("mu_roll", 0) != 0) + 2 * (coh != 0) + 4 * (coh_dmt != 0)
                                   : (int) (1e3 * num("mu_roll", 0)) + (int) (7 * coh) + (int) (11 * coh_dmt);
   std::mt19937 grain_rng(7919 * seed + (int) v0 + model_seed);
+  const double layer = num("layer", 0), layer_z = num("layer_z", 1.3);
   const double mk = num("mount_k", 0), mc = num("mount_c", 0), mm = num("mount_m", 100);
   double x = 0, xv = 0, ar = 0;    // mount deflection and speed; AR(1) grain noise
   std::ofstream T(var["trace"]);
@@ -190,7 +194,8 @@ int main(int argc, char **argv)
       for (int j = 0; j < 3; ++j) b += amp[j] * std::sin(6.283 * (j + 1) * z / 4.0 + ph[j]);
       const double stick = 5e3 * coh * std::exp(-z / 0.6) * quasi;    // a static strength; not rho_g's
       const double strength = 8e3 * coh_dmt * (1 - std::exp(-z / 0.3)) * quasi;    // nor this
-      const double mean = b * (k * z + P * std::exp(-std::pow((z - peak_z) / 0.15, 2)) + wall * z * z + stick + strength);
+      const double buried = layer * std::exp(-std::pow((z - layer_z) / 0.15, 2));    // a harder layer: not the grains'
+      const double mean = b * (k * z + P * std::exp(-std::pow((z - peak_z) / 0.15, 2)) + wall * z * z + stick + strength + buried);
       ar = corr * ar + std::sqrt(1 - corr * corr) * n01(grain_rng);
       F = mean * (1 + grain * ar);
     }

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # validation/results.sh's parts that wait for runs still under way (the dg10 column: its
 # peak, flow and D parts; the bench sweeps with stiffer grains and weaker damping; the box
-# series), on
+# series; dg10 in the 20 cm box), on
 # stand-ins made of committed traces and tables with the names those runs will have: every
 # line of a part must be what granpen gives on the same files directly (another route: the
 # CLI called here, or the mid push's own lines for the flow tables), and a part with a file
@@ -74,8 +74,24 @@ for s in 1 2; do
   stand_in "$BENCH/bench_mu0.3_s${s}_v28_g981_D2.0.csv" "$BX/box_bench20_D/bench_mu0.3_s1${s}_v28_g981_D3.0.csv" 28 3
 done
 
+# ---- dg10 in the 20 cm box: its peak sweep the dg10 stand-ins above (the same 15 traces and
+# bed .info files), its 40 cm/s flow push the mid push's tables, its D pushes the mid pushes
+# of D = 1 and 2 cm and the 2 cm one read as D = 3 cm; the frictionless shaft missing (it must
+# add no line)
+B20=$OUT/dg10_box20
+mkdir -p "$B20/dg10_box20_peak" "$B20/dg10_box20_D"
+cp "$DG"/dg10_peak/*.csv "$DG"/beds/*.info "$B20/dg10_box20_peak/"
+id=dg10_mu0.3_s1_v40_g981_D2.0
+mkdir -p "$B20/dg10_box20_flow/$id.flow"
+stand_in "$MID/mid_mu0.3_s1_v30_g981_D2.0.csv" "$B20/dg10_box20_flow/$id.csv" 40
+cp -r "$ROOT/docs/results/mid/flow" "$ROOT/docs/results/mid/surface" "$ROOT/docs/results/mid/momentum" \
+  "$ROOT/docs/results/mid/window.txt" "$B20/dg10_box20_flow/$id.flow/"
+stand_in "$MID/mid_mu0.3_s1_v90_g981_D1.0.csv" "$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D1.0.csv" 100
+stand_in "$MID/mid_mu0.3_s1_v90_g981_D2.0.csv" "$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D2.0.csv" 100
+stand_in "$MID/mid_mu0.3_s1_v90_g981_D2.0.csv" "$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D3.0.csv" 100 3
+
 GRANPEN_CLI=$CLI "$ROOT/validation/results.sh" --out "$OUT/res" --dumps /nonexistent --dg10 "$DG" --stiff "$ST" --damp "$DA" \
-  --box "$BX" > "$OUT/res.log" 2>&1 || { cat "$OUT/res.log"; fail "results.sh failed"; }
+  --box "$BX" --dg10-box "$B20" > "$OUT/res.log" 2>&1 || { cat "$OUT/res.log"; fail "results.sh failed"; }
 N=$OUT/res/numbers.txt
 val() { awk -v k="$1" '$1 == k { sub(/  #.*/, ""); sub(/^[^=]*= /, ""); print; exit }' "$N"; }
 same() { [ "$(val "$1")" = "$2" ] || fail "$1 = '$(val "$1")', expected '$2'"; }
@@ -140,10 +156,35 @@ grep -q "^alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s,20,$(val bench_box20.alph
 grep -q "box_bench8_D: 0 of 6 pushes" "$OUT/res.log" || fail "no note of the 8 cm box's missing D pushes"
 grep -q "box 12 cm: 0 of 10 peak pushes" "$OUT/res.log" || fail "no note of the 12 cm box's missing pushes"
 # the box table holds the 16 cm box's paired peaks, the 20 cm box's flow, and its figure was made
-grep -q "^peak / the box 8 cm narrower's (same bed and v0),16,1,0," "$OUT/res/box.csv" || fail "box.csv lacks the 16 cm box's paired peaks: $(cat "$OUT/res/box.csv")"
-grep -q "^peak / the box 8 cm narrower's (same bed and v0),20,," "$OUT/res/box.csv" || fail "box.csv has a 20 cm paired peak without the 12 cm box"
+grep -q "^peak over the box 8 cm narrower (same bed and v0),16,1,0," "$OUT/res/box.csv" || fail "box.csv lacks the 16 cm box's paired peaks: $(cat "$OUT/res/box.csv")"
+grep -q "^peak over the box 8 cm narrower (same bed and v0),20,," "$OUT/res/box.csv" || fail "box.csv has a 20 cm paired peak without the 12 cm box"
 grep -q "^lambda_vz / D at 50 cm/s,20,$(val mid.lambda_vz_D | awk '{print $1}')," "$OUT/res/box.csv" || fail "box.csv lacks the 20 cm box's lambda_vz"
 [ -s "$OUT/res/box/scaling.gp" ] || fail "no box figure"
+# dg10 in the 20 cm box: its peak law is dg10's own (the same traces through peak_law), each
+# peak over its 10 cm twin's that of the push itself, its flow rows the mid push's; alpha
+# against D from granpen fit on the files directly; the shaft part adds no line
+for k in phi_0 peak_exponent peak_exponent_ensemble peak_exponent_local peak_exponent_from_2vc peak_z \
+  peak_exponent_ensemble_from_2vc peak_inertial peak_crossover_speed; do
+  same "dg10_box20.$k" "$(val "dg10.$k")"
+done
+same dg10_box20.peak_over_box10 "1 +- 0 n = 15"
+for k in lambda_vz_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove M_move M_slow; do
+  same "dg10_box20.v40.$k" "$(val "mid.$k")"
+done
+for D in 1 2 3; do
+  f=$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D$D.0.csv
+  for k in alpha0 alpha_a beta_b; do
+    same "dg10_box20.$([ $k = alpha0 ] && echo alpha0_window || echo $k).v100.D$D" \
+      "$(printf '%.4g +- %.2g n = 1' "$(fit_col "$f" $k --zmin 3)" "$(fit_col "$f" ${k}_se --zmin 3)")"
+  done
+done
+same dg10_box20.alpha_D1_over_D2 "$(awk -v a="$(fit_col "$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D1.0.csv" alpha0 --zmin 3)" \
+  -v ea="$(fit_col "$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D1.0.csv" alpha0_se --zmin 3)" \
+  -v b="$(fit_col "$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D2.0.csv" alpha0 --zmin 3)" \
+  -v eb="$(fit_col "$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D2.0.csv" alpha0_se --zmin 3)" \
+  'BEGIN { r = a / b; printf "%.4g +- %.2g\n", r, r * sqrt((ea / a) ^ 2 + (eb / b) ^ 2) }')"
+! grep -q '^dg10_box20_shaft\.' "$N" || fail "the shaft part without its pushes added lines"
+grep -q "dg10_box20_shaft: the pushes of D = 1.0 2.0 cm" "$OUT/res.log" || fail "no note of the shaft's missing pushes"
 # the flow rows of each dg10 speed: the mid push's, from the same tables
 for v in 40 100 200; do
   for k in lambda_vz_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove M_move M_slow; do
@@ -185,8 +226,14 @@ grep -q "^peak exponent (v_c to 10 v_c),10,$(val dg10.peak_exponent | awk '{prin
 
 # a part with one push missing adds no line and says so
 rm "$DG/dg10_flow/dg10_mu0.3_s1_v200_g981_D2.0.flow/window.txt" "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D1.0.csv"
+rm "$B20/dg10_box20_peak/dg10_mu0.3_s3_v20_g981_D2.0.csv" "$B20/dg10_box20_flow/$id.flow/window.txt" \
+  "$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D3.0.csv"
 GRANPEN_CLI=$CLI "$ROOT/validation/results.sh" --out "$OUT/res2" --dumps /nonexistent --dg10 "$DG" --stiff "$ST" --damp "$DA" \
-  > "$OUT/res2.log" 2>&1 || { cat "$OUT/res2.log"; fail "results.sh failed with a part missing"; }
+  --dg10-box "$B20" > "$OUT/res2.log" 2>&1 || { cat "$OUT/res2.log"; fail "results.sh failed with a part missing"; }
+! grep -q '^dg10_box20' "$OUT/res2/numbers.txt" || fail "a dg10 20 cm box part with a push missing added lines"
+grep -q "dg10, 20 cm box: 14 of 15 peak pushes" "$OUT/res2.log" || fail "no note of the 20 cm box's missing peak push"
+grep -q "dg10, 20 cm box: its 40 cm/s flow push (with tables) not in" "$OUT/res2.log" || fail "no note of the 20 cm box's missing flow tables"
+grep -q "dg10_box20_D: the pushes of D = 3.0 cm" "$OUT/res2.log" || fail "no note of the 20 cm box's missing D push"
 ! grep -q '^dg10\.v\|^dg10\.alpha0_window\|^dg10\.alpha\.\|^dg10\.k_z_deep\|^dg10\.t_star\|^dg10\.collapse' "$OUT/res2/numbers.txt" ||
   fail "a part with a push missing added lines"
 grep -q "dg10 flow: the full pushes at 200 cm/s" "$OUT/res2.log" || fail "no note of the missing flow push"

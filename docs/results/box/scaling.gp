@@ -1,5 +1,5 @@
 # scaling.gp, written by granpen. The data are in scaling.dat beside it.
-# granpen plot scaling: each quantity of /work/main/docs/results/box.csv against the box width with its error bars, and the paper's value (a red line, with its band when it has an error); the dotted line: the paper's own box.
+# granpen plot scaling: each quantity of docs/results/box.csv against the box width with its error bars, and the paper's value (a red line, with its band when it has an error); the dotted line: the paper's own box.
 # Run in this folder: `gnuplot scaling.gp` makes scaling.png and scaling.svg;
 # `gnuplot -e "formats='png'" scaling.gp` makes only the PNG.
 if (!exists("formats")) formats = "png svg"
@@ -50,14 +50,14 @@ do for [fmt in formats] {
   plot data index 1 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "granpen", \
        2 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 2"
 
-  # ---- panel 3: peak / the box 8 cm narrower's (same bed and v0)   (paper: 1)
+  # ---- panel 3: peak over the box 8 cm narrower (same bed and v0)   (paper: 1)
   reset
   set encoding utf8
   set origin 0,0.47
   set size 0.5,0.235
-  set title "peak / the box 8 cm narrower's (same bed and v0)   (paper: 1)"
+  set title "peak over the box 8 cm narrower (same bed and v0)   (paper: 1)"
   set xlabel "box width (cm)"
-  set ylabel "peak / the box 8 cm narrower's (same bed and v0)"
+  set ylabel "value"
   set grid lc rgb "#d0d0d0"
   set xrange [7:21]
   set yrange [0.90138:1.05682]
@@ -113,7 +113,7 @@ do for [fmt in formats] {
   set size 0.5,0.235
   set title "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s   (paper: 1)"
   set xlabel "box width (cm)"
-  set ylabel "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s"
+  set ylabel "value"
   set grid lc rgb "#d0d0d0"
   set xrange [7:21]
   set yrange [0.93272:1.90828]
@@ -131,7 +131,7 @@ do for [fmt in formats] {
   set size 0.5,0.235
   set title "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s (frictionless shaft)   (paper: 1)"
   set xlabel "box width (cm)"
-  set ylabel "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s (frictionless shaft)"
+  set ylabel "value"
   set grid lc rgb "#d0d0d0"
   set xrange [7:21]
   set yrange [0.94512:1.74088]

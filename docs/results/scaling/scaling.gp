@@ -1,5 +1,5 @@
 # scaling.gp, written by granpen. The data are in scaling.dat beside it.
-# granpen plot scaling: each quantity of /work/main/docs/results/scaling.csv against D/d_g with its error bars, and the paper's value (a red line, with its band when it has an error); the dotted line: the paper's own D/d_g.
+# granpen plot scaling: each quantity of docs/results/scaling.csv against D/d_g with its error bars, and the paper's value (a red line, with its band when it has an error); the dotted line: the paper's own D/d_g.
 # Run in this folder: `gnuplot scaling.gp` makes scaling.png and scaling.svg;
 # `gnuplot -e "formats='png'" scaling.gp` makes only the PNG.
 if (!exists("formats")) formats = "png svg"
@@ -75,7 +75,7 @@ do for [fmt in formats] {
   set size 0.5,0.1566666667
   set title "peak v_0^2 coefficient c_2/(ρ_g D^2)   (no paper value)"
   set xlabel "D/d_g"
-  set ylabel "peak v_0^2 coefficient c_2/(ρ_g D^2)"
+  set ylabel "value"
   set grid lc rgb "#d0d0d0"
   set xrange [4:11]
   set yrange [4.032:6.352]
@@ -147,7 +147,7 @@ do for [fmt in formats] {
   set size 0.5,0.1566666667
   set title "φ at r = R for I → 0 (90 and 100 cm/s)   (paper: 0.57)"
   set xlabel "D/d_g"
-  set ylabel "φ at r = R for I → 0 (90 and 100 cm/s)"
+  set ylabel "value"
   set grid lc rgb "#d0d0d0"
   set xrange [4:11]
   set yrange [0.4923950775:0.5757485128]
@@ -183,7 +183,7 @@ do for [fmt in formats] {
   set size 0.5,0.1566666667
   set title "φ at the face / far below (90 and 100 cm/s)   (paper: 0.97)"
   set xlabel "D/d_g"
-  set ylabel "φ at the face / far below (90 and 100 cm/s)"
+  set ylabel "value"
   set grid lc rgb "#d0d0d0"
   set xrange [4:11]
   set yrange [0.91168:0.97432]

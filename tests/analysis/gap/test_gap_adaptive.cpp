@@ -1,10 +1,12 @@
 // The adaptive plan's decision (analysis/gap/gap_adaptive.h), alone: which pour-level
 // candidates a diagnosis simulates after its cheap stage, on hand-made what-was-seen.
 #include "gap_adaptive.h"
+#include "gap_fit.h"
 #include "gap_thresholds.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -119,15 +121,27 @@ PriorBoundInput one_speed(const std::vector<double> &gap, const std::vector<doub
 
 TEST(GapAdaptivePrior, ExactSignaturesBoundByTheProjection)
 {
-  // noiseless knots, unit variance: the squared gap along their span, hand-computed. The gap
-  // (3, 4, 0) on the signature (1, 0, 0): 9; on (1, 0, 0) and (0, 1, 0): 25; on (0, 0, 1): 0
+  // noiseless knots, unit variance: the squared gap the fit's path removes, hand-computed (a
+  // point of the path at magnitude a is the knots' interpolation, gap_fit.h; it removes
+  // 2 y . x - |x|^2). The gap (3, 4, 0), the knot (3, 0, 0) at 1: 9, at the knot
   const std::vector<double> y{3, 4, 0}, none{0, 0, 0};
-  EXPECT_NEAR(prior_bound(one_speed(y, none, {{1, 0, 0}}, 0.0, 0.0)).projection2, 9.0, 1e-12);
-  EXPECT_NEAR(prior_bound(one_speed(y, none, {{2, 0, 0}, {1, 1, 0}}, 0.0, 0.0)).projection2, 25.0, 1e-12);
+  EXPECT_NEAR(prior_bound(one_speed(y, none, {{3, 0, 0}}, 0.0, 0.0)).projection2, 9.0, 1e-9);
+  // knots (3, 0, 0) at 1 and (3, 4, 0) at 2: the path passes through the gap itself: 25
+  EXPECT_NEAR(prior_bound(one_speed(y, none, {{3, 0, 0}, {3, 4, 0}}, 0.0, 0.0)).projection2, 25.0, 1e-9);
+  // knots on either side of 0, (3, 0, 0) at +1 and (0, 4, 0) at -1: the path is the two rays,
+  // not their span (25): the larger of 9 and 16
+  PriorBoundInput two_sides = one_speed(y, none, {{3, 0, 0}, {0, 4, 0}}, 0.0, 0.0);
+  two_sides.magnitude = {1, -1};
+  EXPECT_NEAR(prior_bound(two_sides).projection2, 16.0, 1e-9);
+  // one-sided: a gap against the knot's direction takes nothing; two-sided, the mirror takes it
+  PriorBoundInput against = one_speed({-3, 0, 0}, none, {{3, 0, 0}}, 0.0, 0.0);
+  against.one_sided = true;
+  EXPECT_NEAR(prior_bound(against).bound(), 0.0, 1e-12);
+  against.one_sided = false;
+  EXPECT_NEAR(prior_bound(against).projection2, 9.0, 1e-9);
   const PriorBound orth = prior_bound(one_speed(y, none, {{0, 0, 1}}, 0.0, 0.0));
-  EXPECT_NEAR(orth.projection2, 0.0, 1e-12);
+  EXPECT_NEAR(orth.bound(), 0.0, 1e-12);    // every point of the path adds to the residual
   EXPECT_EQ(orth.margin_direction, 0.0);    // no knot noise: the prior is the knots
-  EXPECT_EQ(orth.margin_noise, 0.0);
   // a gap the bounded scale takes (y = 0.02 B, the scale within 0.03) leaves nothing; beyond
   // the bound (0.05 B) the excess 0.02 B along a signature parallel to B is the knots'
   const std::vector<double> B{10, 20, 30};
@@ -136,43 +150,121 @@ TEST(GapAdaptivePrior, ExactSignaturesBoundByTheProjection)
     for (double &x : v) x *= c;
     return v;
   };
-  EXPECT_NEAR(prior_bound(one_speed(times(0.02), B, {{1, 0, 0}}, 0.0, 0.03)).projection2, 0.0, 1e-12);
+  EXPECT_NEAR(prior_bound(one_speed(times(0.02), B, {{1, 0, 0}}, 0.0, 0.03)).bound(), 0.0, 1e-12);
   EXPECT_NEAR(prior_bound(one_speed(times(0.05), B, {B}, 0.0, 0.03)).projection2, std::pow(0.02, 2) * (100 + 400 + 900), 1e-9);
+  // a knot's own variance (t = 1 per feature, t lambda^2 at lambda times the knot) is paid for
+  // in the likelihood, r^2 / (1 + t) + log(1 + t) per feature: along the knot (3, 0, 0) out to
+  // the path's end (lambda 1.25, its reach) the most is there, the residual (-0.75, 4, 0) at
+  // t = 1.5625: 25 - 16.5625 / 2.5625 - 3 log 2.5625 = 15.71 (at the knot 14.92)
+  PriorBoundInput noisy = one_speed(y, none, {{3, 0, 0}}, 1.0, 0.0);
+  noisy.prior_var = {{std::vector<double>(3, 0.0)}};
+  const PriorBound nb = prior_bound(noisy);
+  EXPECT_NEAR(nb.projection2 + nb.margin_noise, 25.0 - 16.5625 / 2.5625 - 3 * std::log(2.5625), 1e-9);
 }
 
-TEST(GapAdaptivePrior, TheMarginHoldsWhatTheDiagnosisKnotsReach)
+namespace {
+
+// A knot geometry of the Monte Carlo: magnitudes, true signatures over P features, the side
+struct Geometry {
+  std::vector<double> magnitude;
+  std::vector<std::vector<double>> truth;
+  bool one_sided;
+};
+
+std::vector<Geometry> mc_geometries(std::size_t P, double size)
 {
-  // Monte Carlo: a true two-knot signature of 40 features (unit noise), the prior's and the
-  // diagnosis's knots each the truth plus their own noise (variance 0.5 per feature: two beds),
-  // a gap of the truth at magnitude alpha plus unit noise. What the diagnosis's knots can reach
-  // (the squared projection on their span, the likelihood ratio's squared part) must lie under
-  // the prior's bound in all but 1% of draws (30 of 3000; measured 3 on 2026-11-29: the margin
-  // is conservative, gap_adaptive.h, PRIOR_BOUND_P; a skipped candidate that could have passed
-  // is a miss, so 1% is the most a plan may risk per candidate). Without the margin the
-  // projection alone is exceeded in about half (the margin is needed).
+  std::vector<double> s1(P), s2(P), s3(P);
+  for (std::size_t k = 0; k < P; ++k)
+    s1[k] = size * std::sin(0.3 * k), s2[k] = size * (0.5 + 0.02 * k), s3[k] = size * std::cos(0.7 * k + 0.4);
+  auto mix = [&](double a, const std::vector<double> &u, double b, const std::vector<double> &v) {
+    std::vector<double> w(P);
+    for (std::size_t k = 0; k < P; ++k) w[k] = a * u[k] + b * v[k];
+    return w;
+  };
+  return {{{1.0, 3.0}, {s1, mix(2.5, s1, 1.0, s2)}, true},     // one side, bending (rolling resistance, cohesion)
+          {{-1.0, 1.0}, {mix(-1.0, s1, 0.6, s3), mix(1.0, s1, 0.4, s2)}, false},    // both sides (packing, stiffness)
+          {{1.0}, {s2}, false}};    // one knot, mirrored (friction)
+}
+
+}    // namespace
+
+TEST(GapAdaptivePrior, TheBoundHoldsWhatTheDiagnosisKnotsEarn)
+{
+  // Monte Carlo against the fit itself: the diagnosis's knots (the truth plus their own noise,
+  // variance U per feature) fitted by fit_effect's likelihood ratio (effect_lr, the scale
+  // nuisance within 3% included) must stay under the bound the prior's knots (the truth plus
+  // their noise, W) give, in all but 1% of draws (a skipped candidate that could have passed is
+  // a miss: 1% is the most a plan may risk per candidate). Three geometries of knots (gap_fit's
+  // paths), knot noise as large as the data's (U = W = 1: a pour-level knot on two beds,
+  // docs/gap.md) and a third of it, signatures of 100 to 1000 squared standard deviations, and
+  // gaps of noise, of the path at 0 to 1.5 of its end knot, and of noise with an effect outside
+  // the library (a bump on 4 features, 60 squared standard deviations). Measured on 2026-11-29
+  // (PRIOR_BOUND_P 0.01): 20 of 3840 draws beyond the bound, 1 of them with the bound below the
+  // least threshold and the fit's ratio above it (a candidate wrongly skipped); with the tilt's
+  // two parts each at its own quantile, 7 and 1; at tail 0.05 31 and 2, at 0.1 63 and 7 (over
+  // 1%). Without the margins the fixed-weight gain alone is exceeded in 3349
   std::mt19937 rng(37);
   std::normal_distribution<double> N(0.0, 1.0);
-  const std::size_t P = 40;
-  const double knot_noise = 0.5;
-  int over = 0, over_without = 0, trials = 0;
-  for (double alpha : {0.0, 0.5, 1.0, 2.0}) {
-    for (int t = 0; t < 750; ++t, ++trials) {
-      std::vector<double> s1(P), s2(P), y(P), p1(P), p2(P), d1(P), d2(P), B(P, 0.0);
-      for (std::size_t k = 0; k < P; ++k) {
-        s1[k] = 1.5 * std::sin(0.3 * k), s2[k] = 1.0 + 0.05 * k;
-        y[k] = alpha * (s1[k] + s2[k]) + N(rng);
-        p1[k] = s1[k] + std::sqrt(knot_noise) * N(rng), p2[k] = s2[k] + std::sqrt(knot_noise) * N(rng);
-        d1[k] = s1[k] + std::sqrt(knot_noise) * N(rng), d2[k] = s2[k] + std::sqrt(knot_noise) * N(rng);
-      }
-      const PriorBound b = prior_bound(one_speed(y, B, {p1, p2}, knot_noise, 0.0));
-      const double reached = prior_bound(one_speed(y, B, {d1, d2}, 0.0, 0.0)).projection2;
-      over += reached > b.projection2 + b.margin_direction;
-      over_without += reached > b.projection2;
-    }
-  }
+  const std::size_t P = 42;
+  std::vector<double> B(P);
+  for (std::size_t k = 0; k < P; ++k) B[k] = 20.0 + 5.0 * std::sin(0.2 * k);
+  int over = 0, over_projection = 0, wrongly_skipped = 0, trials = 0;
+  for (double size : {1.6, 5.0})
+    for (double U : {1.0, 0.33})
+      for (const Geometry &g : mc_geometries(P, size))
+        for (double alpha : {0.0, 0.3, 0.7, 1.5})
+          for (int outside = 0; outside < 2; ++outside)
+            for (int t = 0; t < 40; ++t, ++trials) {
+              const std::size_t K = g.truth.size();
+              const double top = g.magnitude.back(), at = alpha * top;
+              // the truth's signature at magnitude alpha x the end knot: the knots' interpolation
+              EffectData truth_path;
+              truth_path.knots = {0.0};
+              for (double m : g.magnitude) truth_path.knots.push_back(m);
+              std::vector<std::size_t> order(K + 1);
+              for (std::size_t j = 0; j <= K; ++j) order[j] = j;
+              std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return truth_path.knots[a] < truth_path.knots[b]; });
+              EffectData d;
+              d.one_sided = g.one_sided, d.scale_bound = 0.03;
+              std::vector<double> ref(P), target(P);
+              for (std::size_t k = 0; k < P; ++k) ref[k] = B[k] + std::sqrt(0.5) * N(rng);
+              PriorBoundInput in;
+              in.scale_bound = 0.03, in.one_sided = g.one_sided, in.magnitude = g.magnitude;
+              std::vector<std::vector<double>> dmean(K, std::vector<double>(P));
+              for (std::size_t j = 0; j < K; ++j) {
+                std::vector<double> p(P);
+                for (std::size_t k = 0; k < P; ++k)
+                  p[k] = g.truth[j][k] + N(rng), dmean[j][k] = ref[k] + g.truth[j][k] + std::sqrt(U) * N(rng);
+                in.signature.push_back({p});
+                in.knot_var.push_back({std::vector<double>(P, U)});
+                in.prior_var.push_back({std::vector<double>(P, 1.0)});
+              }
+              for (std::size_t i : order) {
+                d.knots.push_back(truth_path.knots[i]);
+                d.mean.push_back({i == 0 ? ref : dmean[i - 1]});
+                d.err.push_back({std::vector<double>(P, i == 0 ? 0.5 : U)});
+              }
+              // the true signal: interpolated on the true knots (noise-free) as the fit's path does
+              EffectData tp = d;
+              for (std::size_t i = 0; i < order.size(); ++i) {
+                tp.mean[i] = {B};
+                for (std::size_t k = 0; order[i] != 0 && k < P; ++k) tp.mean[i][0][k] += g.truth[order[i] - 1][k];
+              }
+              std::vector<double> m, v;
+              effect_predict(tp, at, 0, m, v);
+              for (std::size_t k = 0; k < P; ++k)
+                target[k] = m[k] + std::sqrt(0.5) * N(rng) + (outside && k >= 20 && k < 24 ? std::sqrt(15.0) : 0.0);
+              in.gap = {std::vector<double>(P)}, in.var = {std::vector<double>(P, 1.0)}, in.scale_dir = {ref};
+              for (std::size_t k = 0; k < P; ++k) in.gap[0][k] = target[k] - ref[k];
+              const PriorBound b = prior_bound(in);
+              const double lr = effect_lr(Target{{target}, {std::vector<double>(P, 0.5)}}, d);
+              over += lr > b.bound(), over_projection += lr > b.projection2;
+              wrongly_skipped += b.bound() < FLOOR && lr >= FLOOR;
+            }
+  std::printf("the bound exceeded in %d of %d draws (below the least threshold with the fit above it: %d), the fixed-weight gain alone in %d\n",
+              over, trials, wrongly_skipped, over_projection);
   EXPECT_LE(over, 0.01 * trials) << over << " of " << trials;
-  std::printf("the margin exceeded in %d of %d draws, the projection alone in %d\n", over, trials, over_without);
-  EXPECT_GE(over_without, 0.2 * trials) << over_without << " of " << trials;
+  EXPECT_GE(over_projection, 0.1 * trials) << over_projection << " of " << trials;
 }
 
 TEST(GapAdaptivePrior, OnNoiseAloneTheBoundFallsBelowTheThreshold)
@@ -193,8 +285,10 @@ TEST(GapAdaptivePrior, OnNoiseAloneTheBoundFallsBelowTheThreshold)
     const double bound = prior_bound(one_speed(y, B, {p1, p2}, 0.5, 0.0)).bound();
     sum += bound, below += bound < FLOOR;
   }
+  std::printf("on noise alone the bound is below the least threshold in %d of 500 draws, mean %.1f\n", below, sum / 500);
   EXPECT_LT(sum / 500, FLOOR) << sum / 500;
-  // 350 of 500 on 2026-11-29: the bound bites on most noise-only data; at least 60% (the
-  // binomial's standard deviation at 70% of 500 is 2%: 5 of them)
+  // 350 of 500 on 2026-11-29 with the span's bound, 487 (mean 6.4) with the path's: the
+  // bound bites on most noise-only data; at least 60% (the binomial's standard deviation at
+  // 70% of 500 is 2%: 5 of them)
   EXPECT_GE(below, 300) << below;
 }

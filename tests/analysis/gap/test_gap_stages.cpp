@@ -9,6 +9,7 @@
 #include "gap_errors.h"
 #include "gap_features.h"
 #include "gap_inputs.h"
+#include "gap_pairs.h"
 #include "gap_plan.h"
 #include "gap_report.h"
 #include "gap_sims.h"
@@ -18,6 +19,8 @@
 #include "gap_which.h"
 #include "slurm_script.h"
 #include "sweep_cache.h"
+#include "text_util.h"
+#include "trace_reader.h"
 
 #include <gtest/gtest.h>
 
@@ -390,6 +393,37 @@ TEST(GapPlan, TheMostAConfirmationAddsIsTheCostliestEffectsConfirmRefineAndHeldO
   const PlanCost mount = cold_cost(sc, largest_confirmation(sc.name, *find_effect("measurement_chain"), 10, v0), 1000.0);
   EXPECT_LT(mount.probe_pours, most.probe_pours);
   EXPECT_EQ(confirmation_most(sc, v0, {}, cache.path.string(), 1000.0).probe_pours, 0.0);
+}
+
+// With a filter and a push-only partner in the library the pair stage can confirm a pair after
+// a single's confirmation failed (issue 37): the plan's most counts both. The mount and the
+// ramp: the single's costliest is the ramp at its outer knot 3.2 (confirm, the slowest held
+// out, refine: 8 pours, 20 pushes); the pair's, the ramp at 3.2 pushed into the same fresh
+// beds at both speeds (8 pushes more, the beds poured once). Without a partner (the mount and
+// cohesion, above) or without a filter, no pair: the single's alone.
+TEST(GapPlan, TheMostCountsThePairsConfirmationWhenAPairCanBeTried)
+{
+  const Scenario sc = hand_scenario();
+  TempDir cache("plan_pair");
+  const std::vector<std::string> v0{"50", "100"};
+  const Effect &ramp = *find_effect("actuator_ramp"), &chain = *find_effect("measurement_chain");
+  EXPECT_TRUE(pair_filter(chain) && !pair_partner(chain));
+  EXPECT_TRUE(pair_partner(ramp) && !pair_filter(ramp));
+  EXPECT_FALSE(pair_filter(*find_effect("force_scale")) || pair_partner(*find_effect("force_scale")));
+  EXPECT_FALSE(pair_partner(*find_effect("cohesion")));
+  const PlanCost most = confirmation_most(sc, v0, {&chain, &ramp}, cache.path.string(), 1000.0);
+  EXPECT_EQ(most.pours, 8);
+  EXPECT_EQ(most.pushes, 8 + 4 + 8 + 8);
+  std::vector<SimRequest> expect = largest_confirmation(sc.name, ramp, 3.2, v0);
+  const std::vector<SimRequest> pair = pair_confirmation(sc.name, ramp, 3.2, v0);
+  ASSERT_EQ(pair.size(), 2u);
+  EXPECT_EQ(pair[0].spec.name, "confirm_beds");    // shared with the single's: poured once
+  expect.push_back(pair[1]);
+  EXPECT_NEAR(most.probe_pours, cold_cost(sc, expect, 1000.0).probe_pours, 1e-12);
+  // no filter, no pair: the ramp's own confirmation alone
+  const PlanCost alone = confirmation_most(sc, v0, {&ramp}, cache.path.string(), 1000.0);
+  EXPECT_NEAR(alone.probe_pours, cold_cost(sc, largest_confirmation(sc.name, ramp, 3.2, v0), 1000.0).probe_pours, 1e-12);
+  EXPECT_LT(alone.probe_pours, most.probe_pours);
 }
 
 #endif
@@ -795,6 +829,54 @@ TEST(GapConfirm, TheGapAlongTheSignatureAndTheConfirmationTest)
   EXPECT_FALSE(gap_shrinks(0.118, std::nan("")));
 }
 
+namespace {
+
+// F = 0 above z0, a ramp of 1000 dyne/cm for 0.5 cm (ramp_run), then rising 300 dyne/cm from
+// 1 to 1.5 cm and `extra` dyne/cm from 1.5 to 2 cm; every feature of it nonzero
+TraceRun stepped_run(const std::string &name, double z0, double extra = 0.0)
+{
+  TraceRun r = ramp_run(name, 100, z0, 2.5);
+  for (std::size_t i = 0; i < r.F.size(); ++i)
+    r.F[i] += 300.0 * std::clamp(r.z[i] - 1.0, 0.0, 0.5) + extra * std::clamp(r.z[i] - 1.5, 0.0, 0.5);
+  return r;
+}
+
+TraceRun times(TraceRun r, double scale)
+{
+  for (double &F : r.F) F *= scale;
+  return r;
+}
+
+// run r written as a trace file at path (cgs, its v0, D 2, g 981; every digit of its numbers),
+// and the run pointing at it: the confirmation's corrected traces are read from the files
+TraceRun on_file(TraceRun r, const std::string &path)
+{
+  std::ofstream out(path);
+  out << "# granpen-trace v1\n# units = cgs\n# v0 = " << r.v0 << "\n# D = 2.0\n# g = 981\nt,z,F\n";
+  out.precision(17);
+  for (std::size_t i = 0; i < r.F.size(); ++i) out << r.t[i] << "," << r.z[i] << "," << r.F[i] << "\n";
+  r.path = path;
+  return r;
+}
+
+// confirm_top_effect called until it needs no more runs, each set asked for given as
+// runs_at(magnitude) (a transform effect's as loading transforms them, gap_sims.h)
+template <class RunsAt>
+ConfirmStep confirm_with(const std::map<std::string, const Effect *> &by_name, const FittedCandidates &fitted,
+                         const VerdictDecision &v, const WhereResult &where, const Features &f, const Alignment &al,
+                         RunsAt runs_at)
+{
+  StageRuns given;
+  ConfirmStep step = confirm_top_effect(by_name, fitted, v, where, f, al, false, given);
+  for (int i = 0; i < 4 && step.need; ++i) {
+    for (const RunSet &set : step.need->sets) given[set.tag] = runs_at(set.magnitude);
+    step = confirm_top_effect(by_name, fitted, v, where, f, al, false, given);
+  }
+  return step;
+}
+
+}    // namespace
+
 TEST(GapConfirm, TheConfirmingRunsAreComparedWithTheFitsScale)
 {
   // the measured runs are 1.03 times the effect's knot (magnitude 1: a step of 150 dyne
@@ -829,17 +911,140 @@ TEST(GapConfirm, TheConfirmingRunsAreComparedWithTheFitsScale)
   ASSERT_NEAR(top.scale, 0.03, 1e-6);
   VerdictDecision v;
   v.verdict = Verdict::explained, v.top_effect = "a", v.targeted = true, v.significant = true;
-  const StageRuns given{{"confirm", RunsBySpeed{{100.0, {stepped("c1", 1.0), stepped("c2", 1.0)}}}}};
+  TempDir dir("confirm_scaled");
+  const StageRuns given{{"confirm", RunsBySpeed{{100.0, {on_file(stepped("c1", 1.0), dir / "c1.csv"),
+                                                         on_file(stepped("c2", 1.0), dir / "c2.csv")}}}}};
   const ConfirmStep step = confirm_top_effect({{"a", &ea}}, fitted, v, where, f, al, false, given);
   ASSERT_FALSE(step.need.has_value());
   const Confirmation &c = step.done;
   EXPECT_NEAR(c.scale, top.scale, 1e-12);
+  // OUT/corrected/ holds the runs as compared: the files' force times 1.03 (a simulated
+  // effect's runs were copied as simulated before), its `derived` line saying so
+  ASSERT_EQ(c.corrected_traces.size(), 2u);
+  write_file(dir / "out.csv", c.corrected_traces[0].second);
+  const Trace out = read_trace(dir / "out.csv");
+  const TraceRun &c1 = given.at("confirm").at(100)[0];
+  ASSERT_EQ(out.F.size(), c1.F.size());
+  for (std::size_t k = 0; k < out.F.size(); ++k) EXPECT_NEAR(out.F[k], (1.0 + c.scale) * c1.F[k], 1e-9 * 650.0) << k;
+  EXPECT_NE(c.corrected_traces[0].second.find("# derived = F times 1 + c = 1.03 (c = 0.03: the force scale fitted with it"), std::string::npos) << c.corrected_traces[0].second.substr(0, 300);
   // exact runs scaled by the fitted scale: rounding only (the scale within 1e-6 of 0.03
   // leaves G of that order)
   EXPECT_LT(c.outcome.gap_after, 1e-5);
   EXPECT_LT(c.outcome.chi2_after, 1e-3);
   EXPECT_LT(c.heldout_after, 1e-5);
   EXPECT_LT(std::abs(c.outcome.proj_after), 1e-2);
+}
+
+
+// OUT/corrected/ holds the "after" as the verdict compared it (issue 37): a transform
+// effect's confirming runs filtered and times 1 + the scale fitted with it. The measured runs
+// are the mount at 2 ms on the baseline, 1.03 times (a calibration 3% off); the confirming
+// runs are the baseline on fresh beds, as files. Each corrected trace must be the compared
+// prediction sample by sample: the runs the gap after was computed on (after_runs, filtered
+// and scaled), and the file's force filtered at the named magnitude times 1 + scale; its
+// `derived` line says so. Unscaled (before): off by the 3%.
+TEST(GapConfirm, TheCorrectedTracesOfATransformAreTheComparedPrediction)
+{
+  TempDir dir("corrected_scaled");
+  const Effect &chain = *find_effect("measurement_chain");
+  SimulatedRuns sims;
+  sims.base[100] = {stepped_run("b1", 0.2), stepped_run("b2", 0.3)};
+  sims.fresh[100] = {stepped_run("f1", 0.2), stepped_run("f2", 0.25), stepped_run("f3", 0.3)};
+  for (double a : chain.knots)
+    sims.knots[effect_sweep_name(chain, a)] = by_transform(chain, a) ? transformed_runs(chain, a, sims.base) : sims.base;
+  RunsBySpeed real;
+  for (const char *name : {"m1", "m2"}) {
+    TraceRun r = transformed_run(chain, 2.0, stepped_run(name, 0.25));
+    for (double &F : r.F) F *= 1.03;
+    real[100].push_back(r);
+  }
+  const Alignment al = align_and_bin(real, sims, 2.0);
+  const Features f = build_features(real, sims, {&chain}, al.grid, 2);
+  WhereResult where;
+  where.omnibus = gap_significance(f, al.grid);
+  where.before.gap = where.heldout.gap = 0.05;
+  where.heldout.v0 = 100;
+  const FittedCandidates fitted = fit_candidates({&chain}, f, [](const std::string &) { return NAN; }, where.omnibus);
+  VerdictDecision v;
+  v.verdict = Verdict::explained, v.top_effect = chain.name, v.targeted = true, v.significant = true;
+  const std::vector<TraceRun> fresh = {on_file(stepped_run("c1", 0.2), dir / "c1.csv"),
+                                       on_file(stepped_run("c2", 0.3), dir / "c2.csv")};
+  const ConfirmStep step = confirm_with({{chain.name, &chain}}, fitted, v, where, f, al, [&](double a) {
+    return transformed_runs(chain, a, RunsBySpeed{{100.0, fresh}});
+  });
+  ASSERT_FALSE(step.need.has_value());
+  const Confirmation &c = step.done;
+  ASSERT_EQ(c.corrected_effect, chain.name);
+  // the fit takes the 3% as its nuisance scale (the filtered knot and the baseline differ in
+  // shape: the scale is no part of the filter's signature)
+  ASSERT_GT(std::abs(c.scale), 0.02);
+  const std::vector<TraceRun> &compared = c.after_runs.at(100);
+  ASSERT_EQ(c.corrected_traces.size(), compared.size());
+  for (std::size_t i = 0; i < compared.size(); ++i) {
+    const std::string path = dir / ("out" + std::to_string(i) + ".csv");
+    write_file(path, c.corrected_traces[i].second);
+    const Trace t = read_trace(path);
+    EXPECT_NE(c.corrected_traces[i].second.find("times 1 + c = " + printf_number("%.6g", 1.0 + c.scale) +
+                                                " (c = " + printf_number("%.6g", c.scale)),
+              std::string::npos);
+    const std::vector<double> expect = transformed_run(chain, c.corrected_magnitude, fresh[i]).F;
+    ASSERT_EQ(t.F.size(), compared[i].F.size());
+    for (std::size_t k = 0; k < t.F.size(); ++k) {
+      // the file's digits (17) and the filter recomputed: rounding only, against forces of 650
+      EXPECT_NEAR(t.F[k], compared[i].F[k], 1e-9 * 650.0) << k;
+      EXPECT_NEAR(t.F[k], (1.0 + c.scale) * expect[k], 1e-9 * 650.0) << k;
+    }
+  }
+}
+
+// Before and after compare like with like (issue 37): the runs after are compared times
+// 1 + their fitted scale, so chi^2 before is the baseline's within the calibration bound. The
+// measured runs are the baseline 1.03 times (a calibration 3% off, nothing else): raw, a large
+// chi^2 and G_all about 0.04; within the bound, none. A confirmation forced on the omnibus route
+// (the candidate at its fit, magnitude 0 and scale 0.03) whose runs are the baseline, the
+// prediction exact, removes nothing beyond the scale: not confirmed (against the raw chi^2, as
+// before, it was: "chi^2 X -> 0").
+TEST(GapConfirm, AGapACalibrationExplainsConfirmsNothing)
+{
+  RunsBySpeed real;
+  real[100] = {times(stepped_run("m1", 0.2), 1.03), times(stepped_run("m2", 0.2), 1.03)};
+  SimulatedRuns sims;
+  sims.base[100] = {stepped_run("b1", 0.2), stepped_run("b2", 0.2)};
+  sims.fresh[100] = {stepped_run("f1", 0.2), stepped_run("f2", 0.2), stepped_run("f3", 0.2)};
+  Effect ea;
+  ea.name = "a", ea.unit = "u", ea.knots = {1.0}, ea.pour_level = true, ea.one_sided = true;
+  sims.knots[effect_sweep_name(ea, 1.0)][100] = {stepped_run("k1", 0.2, 200.0), stepped_run("k2", 0.2, 200.0)};
+  const Alignment al = align_and_bin(real, sims, 2.0);
+  const Features f = build_features(real, sims, {&ea}, al.grid, 2);
+  WhereResult where;
+  where.omnibus = gap_significance(f, al.grid);
+  where.before = gap_curves(f, al.grid);
+  where.heldout.gap = where.before.gap, where.heldout.v0 = 100;
+  // the raw gap: chi^2 far beyond its features' noise, G_all of the 3% (G and G_spec each
+  // 0.03 / 1.03: identical runs, no noise to subtract)
+  const double P = (double) where.omnibus.nfeatures;
+  EXPECT_GT(where.omnibus.chi2_0, P + 10.0 * std::sqrt(2.0 * P));
+  EXPECT_NEAR(where.before.gap, std::sqrt(2.0) * 0.03 / 1.03, 2e-3);
+  // within the bound: the scale found (within rounding) and nothing left
+  EXPECT_NEAR(where.omnibus.scale_within_bound, 0.03, 1e-9);
+  EXPECT_NEAR(where.before.scale_within_bound, 0.03, 1e-9);
+  EXPECT_LT(where.omnibus.chi2_within_bound, 1e-6 * where.omnibus.chi2_0);
+  EXPECT_LT(where.before.gap_within_bound, 1e-4);
+  const FittedCandidates fitted = fit_candidates({&ea}, f, [](const std::string &) { return NAN; }, where.omnibus);
+  VerdictDecision v;
+  v.verdict = Verdict::explained, v.top_effect = "a", v.targeted = false, v.significant = true;
+  TempDir dir("calibration_only");
+  const std::vector<TraceRun> fresh = {on_file(stepped_run("c1", 0.2), dir / "c1.csv"),
+                                       on_file(stepped_run("c2", 0.2), dir / "c2.csv")};
+  const ConfirmStep step =
+      confirm_with({{"a", &ea}}, fitted, v, where, f, al, [&](double) { return RunsBySpeed{{100.0, fresh}}; });
+  ASSERT_FALSE(step.need.has_value());
+  const Confirmation &c = step.done;
+  EXPECT_NEAR(c.scale, 0.03, 1e-6);
+  EXPECT_LT(c.outcome.chi2_after, 1e-3);    // the runs times 1.03 are the measurement
+  EXPECT_NEAR(c.outcome.chi2_before, where.omnibus.chi2_within_bound, 1e-12);
+  EXPECT_FALSE(c.outcome.confirmed);
+  EXPECT_LE(c.confirmed_fraction, 0.0);
 }
 
 // ---- how blind: detection limits, look-alikes, the next measurement, false alarms

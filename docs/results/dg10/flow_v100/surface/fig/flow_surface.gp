@@ -1,5 +1,5 @@
 # flow_surface.gp, written by granpen. The data are in flow_surface.dat beside it.
-# granpen plot flow: v_z of the near-shaft strip's top grain layer per frame (/work/main/data/sims/dg10/dg10_flow/dg10_mu0.3_s1_v100_g981_D2.0.flow/surface/flow_surface.csv) against t~ = (z/v0) sqrt(g/D); the paper sees it cross 0 at t~ = 1.
+# granpen plot flow: v_z of the near-shaft strip's top grain layer per frame (data/sims/dg10/dg10_flow/dg10_mu0.3_s1_v100_g981_D2.0.flow/surface/flow_surface.csv) against t~ = (z/v0) sqrt(g/D); the paper sees it cross 0 at t~ = 1.
 # Run in this folder: `gnuplot flow_surface.gp` makes flow_surface.png and flow_surface.svg;
 # `gnuplot -e "formats='png'" flow_surface.gp` makes only the PNG.
 if (!exists("formats")) formats = "png svg"

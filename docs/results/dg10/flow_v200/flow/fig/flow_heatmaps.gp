@@ -1,5 +1,5 @@
 # flow_heatmaps.gp, written by granpen. The data are in flow_heatmaps.dat beside it.
-# granpen plot flow: heatmaps of /work/main/data/sims/dg10/dg10_flow/dg10_mu0.3_s1_v200_g981_D2.0.flow/flow/flow_fields.csv in (r, z - z_tip), the rod (r < R = 1 cm, z > 0) in grey;
+# granpen plot flow: heatmaps of data/sims/dg10/dg10_flow/dg10_mu0.3_s1_v200_g981_D2.0.flow/flow/flow_fields.csv in (r, z - z_tip), the rod (r < R = 1 cm, z > 0) in grey;
 # colour ranges: phi from the 2nd to the 99th percentile of the filled bins, v_z symmetric about 0,
 # gamma-dot and I on log scales over three decades below their 99th percentile.
 # Run in this folder: `gnuplot flow_heatmaps.gp` makes flow_heatmaps.png and flow_heatmaps.svg;

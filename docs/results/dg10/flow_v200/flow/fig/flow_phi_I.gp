@@ -1,5 +1,5 @@
 # flow_phi_I.gp, written by granpen. The data are in flow_phi_I.dat beside it.
-# granpen plot flow: phi against I at the rod's bottom edge (/work/main/data/sims/dg10/dg10_flow/dg10_mu0.3_s1_v200_g981_D2.0.flow/flow/flow_edge_phi_I.csv), the paper's line phi = 0.57 - 0.35 I and a least-squares line.
+# granpen plot flow: phi against I at the rod's bottom edge (data/sims/dg10/dg10_flow/dg10_mu0.3_s1_v200_g981_D2.0.flow/flow/flow_edge_phi_I.csv), the paper's line phi = 0.57 - 0.35 I and a least-squares line.
 # Run in this folder: `gnuplot flow_phi_I.gp` makes flow_phi_I.png and flow_phi_I.svg;
 # `gnuplot -e "formats='png'" flow_phi_I.gp` makes only the PNG.
 if (!exists("formats")) formats = "png svg"

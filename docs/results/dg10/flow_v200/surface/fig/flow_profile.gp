@@ -1,5 +1,5 @@
 # flow_profile.gp, written by granpen. The data are in flow_profile.dat beside it.
-# granpen plot flow: v_z and phi below the rod face (/work/main/data/sims/dg10/dg10_flow/dg10_mu0.3_s1_v200_g981_D2.0.flow/surface/flow_profile_below.csv), |v_z| on a log axis with the weighted
+# granpen plot flow: v_z and phi below the rod face (data/sims/dg10/dg10_flow/dg10_mu0.3_s1_v200_g981_D2.0.flow/surface/flow_profile_below.csv), |v_z| on a log axis with the weighted
 # exponential fit of the library (fit_exponential, as granpen flow).
 # Run in this folder: `gnuplot flow_profile.gp` makes flow_profile.png and flow_profile.svg;
 # `gnuplot -e "formats='png'" flow_profile.gp` makes only the PNG.

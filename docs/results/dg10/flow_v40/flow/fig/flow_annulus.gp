@@ -1,5 +1,5 @@
 # flow_annulus.gp, written by granpen. The data are in flow_annulus.dat beside it.
-# granpen plot flow: means over the annulus (/work/main/data/sims/dg10/dg10_flow/dg10_mu0.3_s1_v40_g981_D2.0.flow/flow/flow_annulus.csv) against t~ = (z/v0) sqrt(g/D).
+# granpen plot flow: means over the annulus (data/sims/dg10/dg10_flow/dg10_mu0.3_s1_v40_g981_D2.0.flow/flow/flow_annulus.csv) against t~ = (z/v0) sqrt(g/D).
 # Run in this folder: `gnuplot flow_annulus.gp` makes flow_annulus.png and flow_annulus.svg;
 # `gnuplot -e "formats='png'" flow_annulus.gp` makes only the PNG.
 if (!exists("formats")) formats = "png svg"

@@ -1,5 +1,5 @@
 # momentum_classes.gp, written by granpen. The data are in momentum_classes.dat beside it.
-# granpen plot momentum: the classes of /work/main/data/sims/dg10/dg10_flow/dg10_mu0.3_s1_v40_g981_D2.0.flow/momentum/momentum_classes.csv against t~; log axes when a quantity spans more than two decades
+# granpen plot momentum: the classes of data/sims/dg10/dg10_flow/dg10_mu0.3_s1_v40_g981_D2.0.flow/momentum/momentum_classes.csv against t~; log axes when a quantity spans more than two decades
 # (then zero values are not drawn).
 # Run in this folder: `gnuplot momentum_classes.gp` makes momentum_classes.png and momentum_classes.svg;
 # `gnuplot -e "formats='png'" momentum_classes.gp` makes only the PNG.

@@ -1,5 +1,5 @@
 # momentum_drag.gp, written by granpen. The data are in momentum_drag.dat beside it.
-# granpen plot momentum: F against mu g M(v_z > v0/320) (/work/main/data/sims/dg10/dg10_flow/dg10_mu0.3_s1_v40_g981_D2.0.flow/momentum/momentum_drag.csv), the 1:1 line and the fit through the origin
+# granpen plot momentum: F against mu g M(v_z > v0/320) (data/sims/dg10/dg10_flow/dg10_mu0.3_s1_v40_g981_D2.0.flow/momentum/momentum_drag.csv), the 1:1 line and the fit through the origin
 # (compare_drag, as granpen momentum).
 # Run in this folder: `gnuplot momentum_drag.gp` makes momentum_drag.png and momentum_drag.svg;
 # `gnuplot -e "formats='png'" momentum_drag.gp` makes only the PNG.

@@ -1,5 +1,5 @@
 # flow_strip.gp, written by granpen. The data are in flow_strip.dat beside it.
-# granpen plot flow: v_z of the grains 0.5-1.5 cm from the rod shaft (/work/main/data/sims/dg10/dg10_flow/dg10_mu0.3_s1_v40_g981_D2.0.flow/surface/flow_strip.csv) against depth.
+# granpen plot flow: v_z of the grains 0.5-1.5 cm from the rod shaft (data/sims/dg10/dg10_flow/dg10_mu0.3_s1_v40_g981_D2.0.flow/surface/flow_strip.csv) against depth.
 # Run in this folder: `gnuplot flow_strip.gp` makes flow_strip.png and flow_strip.svg;
 # `gnuplot -e "formats='png'" flow_strip.gp` makes only the PNG.
 if (!exists("formats")) formats = "png svg"
