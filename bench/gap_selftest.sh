@@ -99,14 +99,19 @@ CASES
 }
 # Outside cases beyond the twelve (issue 37): an effect the library lacks and the synthetic
 # world can make, run only when --cases names them. hard_layer: a harder layer buried at 1.3
-# cm (fake_lmp's layer: a bump of 0.15 cm at any speed, not the grains'); at 9e4 dyne on beds
-# 101-108 a gap of chi^2 64.6 over tiny's 42 features, below the omnibus limit, along which no
-# pour-level candidate can reach its threshold: the plan with a prior stops after the cheap
-# stage (ctest gap_outside_layer_stops_when_nothing_can_pass; docs/gap.md, "A gap that nothing
-# explains"). layer_z is given: it is a key of the beds' field, so these are its beds.
+# cm (fake_lmp's layer: a bump of 0.15 cm at any speed, not the grains'; no key of the beds'
+# field, so its beds are the seeds' own), at 9e4 dyne a gap near the omnibus limit (chi^2 70
+# to 82 over tiny's 42 features on four seed sets), at 3e5 (hard_layer_big) far beyond it
+# (490 to 515), which no candidate explains a quarter of: the plan skips what its prior's
+# bounds rule out (ctest gap_outside_layer_skips_only_what_cannot_pass,
+# gap_outside_layer_unexplained_gate; docs/gap.md, "A gap that nothing explains").
+# strata: a bed of alternating strata 1 cm apart (fake_lmp's strata), 6e4 dyne: a shape no
+# pour-level signature resembles, which the actuator ramp's shift explains 0.44 of.
 outside_cases() {
   cat <<'CASES'
 hard_layer|outside|layer 9e4 at 1.3 cm|set = layer=9e4 layer_z=1.3
+hard_layer_big|outside|layer 3e5 at 1.3 cm|set = layer=3e5 layer_z=1.3
+strata|outside|strata 6e4 every 1 cm|set = strata=6e4 strata_l=1
 CASES
 }
 # the cases run: the twelve, and the below-limit, opt-in and outside ones that --cases names

@@ -2,6 +2,7 @@
 #include "gap_adaptive.h"
 
 #include "gap_fit.h"
+#include "gap_thresholds.h"
 #include "text_util.h"
 
 #include <algorithm>
@@ -96,7 +97,7 @@ std::vector<Flat> path_coefficients(const PriorBoundInput &in)
 // One point of the path (coefficients c on the knots): the likelihood ratio the prior's knots
 // earn there, and what the diagnosis's knots, the prior's tilted by their noise, add to it.
 PriorBound point_bound(const PriorBoundInput &in, const Flat &c, const std::vector<Flat> &sig, const Flat &y, const Flat &b,
-                       double w0, double q, bool &choosable)
+                       double w0, double q, bool &choosable, double &gain)
 {
   PriorBound out;
   const std::size_t n = y.size();
@@ -146,7 +147,8 @@ PriorBound point_bound(const PriorBoundInput &in, const Flat &c, const std::vect
   // magnitude 0 removes 0 of it: a point whose fixed-weight gain, with the tilt's at its upper
   // quantile, stays below 0 is never the fit's
   const double tilt_f = 2 * coherent_f - mean_f + std::sqrt(q * (4 * var_f + var_vf));
-  choosable = out.projection2 + tilt_f >= 0;
+  gain = out.projection2 + tilt_f;    // the most fixed-weight squared gap the point removes (explained's)
+  choosable = gain >= 0;
   return out;
 }
 
@@ -162,13 +164,22 @@ PriorBound prior_bound(const PriorBoundInput &in)
   Flat res0;
   const double w0 = scaled_residual(y, b, in.scale_bound, res0);
   const double q = chi2_quantile(PRIOR_BOUND_P, (double) in.signature.size());
-  double best = 0;    // magnitude 0: the likelihood ratio 0
+  double best = 0, gain = 0;    // magnitude 0: the likelihood ratio 0, and nothing removed
   for (const Flat &c : path_coefficients(in)) {
     bool choosable = true;
-    const PriorBound p = point_bound(in, c, sig, y, b, w0, q, choosable);
+    double g = 0;
+    const PriorBound p = point_bound(in, c, sig, y, b, w0, q, choosable, g);
     if (choosable && p.bound() > best) best = p.bound(), out = p;
+    if (choosable) gain = std::max(gain, g);
   }
+  out.gain = gain, out.w0 = w0;
   return out;
+}
+
+double explain_gain_needed(double w0, double n, double fraction)
+{
+  if (!(n > 0.0)) return fraction * std::max(0.0, w0);
+  return fraction * std::max(w0 - n, GapThresholds::chi2_noise_sigmas * std::sqrt(2.0 * n));
 }
 
 std::vector<PurchaseDecision> decide_purchases(const CheapStageSeen &seen, const std::vector<PourCandidate> &candidates,
@@ -203,6 +214,20 @@ std::vector<PurchaseDecision> decide_purchases(const CheapStageSeen &seen, const
                                         : "its threshold";
     d.why = (d.simulate ? "simulated: " : "skipped: ") + along + ", " + printf_number("%.1f", d.bound) +
             (d.simulate ? ", can reach " : ", cannot reach ") + printf_number("%.1f", needed) + ", " + against;
+    // the explain gate: on an unexplained verdict that stands, a candidate that cannot remove
+    // a quarter of the gap's excess changes nothing, whatever its likelihood ratio reaches
+    if (d.simulate && seen.unexplained_stands && c.prior) {
+      d.gain = c.prior->gain;
+      d.gain_needed = explain_gain_needed(c.prior->w0, c.prior->noise, GapThresholds::between_knots_min_explained);
+      if (d.gain < d.gain_needed) {
+        d.simulate = false;
+        d.why = "skipped: the gap is unexplained on the omnibus test and only a candidate that explains " +
+                printf_number("%.2f", GapThresholds::between_knots_min_explained) +
+                " of it can change that; the most squared gap its fit can remove is " + printf_number("%.1f", d.gain) +
+                " (the prior's bound), of the " + printf_number("%.1f", d.gain_needed) + " that needs (its likelihood ratio " +
+                "could reach " + printf_number("%.1f", d.bound) + ")";
+      }
+    }
     out.push_back(d);
   }
   return out;

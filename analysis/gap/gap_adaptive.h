@@ -10,7 +10,11 @@
 // squared gap along its signature's direction when that is known (`projection2`; with a
 // signature prior, gap_prior.h, prior_bound's), and by the whole squared gap at magnitude 0
 // (chi2_0) when it is not: no direction can take more.
-// A candidate whose bound falls short is skipped, and said so with its bound.
+// A candidate whose bound falls short is skipped, and said so with its bound. On a gap the
+// cheap stage leaves unexplained on the omnibus route (not between knots) the verdict changes
+// only for a candidate that explains a quarter of it: with a prior, one whose fit cannot remove
+// that much of the squared gap (PriorBound::gain) is skipped too, whatever its likelihood
+// ratio could reach (the explain gate; docs/gap.md, "The explain gate").
 #ifndef GRANPEN_GAP_ADAPTIVE_H
 #define GRANPEN_GAP_ADAPTIVE_H
 
@@ -28,6 +32,12 @@ struct CheapStageSeen {
   double best_evidence = 0;         // its evidence (likelihood ratio beyond the noise's)
   bool best_explains = false;       // it passes every rule of an explanation (gap_verdict.h, explains)
   bool best_is_scale = false;       // it is a uniform scale: a nuisance, never the cause (its look-alikes are needed)
+  // the cheap stage's verdict is unexplained on the omnibus route (the gap significant over
+  // every feature) and not between knots: then a pour-level candidate changes the verdict only
+  // by explaining at least between_knots_min_explained of the gap (every other verdict, and the
+  // runs between knots, need that of some candidate; a tie needs two that explain), whatever
+  // its likelihood ratio: the explain gate of decide_purchases
+  bool unexplained_stands = false;
 };
 
 // The bound with a signature prior (gap_prior.h), per speed and feature: the gap y (the
@@ -60,6 +70,12 @@ struct PriorBoundInput {
 struct PriorBound {
   double projection2 = 0, margin_direction = 0, margin_noise = 0;
   double bound() const { return projection2 + margin_direction + margin_noise; }
+  // What `explained` rests on (gap_fit.h, explained_fraction): the most fixed-weight squared gap
+  // the fit's point can remove (over the points the fit can choose, the point's projection2 and
+  // the tilt's fixed-weight gain at its upper quantile), and the fixed-weight squared gap at
+  // magnitude 0 (within the scale) it is a fraction of; noise: that gap's noise share
+  // (explained_fraction's n; set by the caller, gap_prior.h, 0 when not known).
+  double gain = 0, w0 = 0, noise = 0;
 };
 // The random part's tail: 0.01 per candidate: in tests/analysis/gap/test_gap_adaptive.cpp's
 // Monte Carlo (the fit's own likelihood ratio with the diagnosis's knots, effect_lr, against
@@ -88,7 +104,16 @@ struct PurchaseDecision {
   double cost = 0;         // probe pours of core time
   std::string why;         // the rule, with its numbers
   std::optional<PriorBound> prior;    // the prior's bound, when it set `bound`
+  // the explain gate (CheapStageSeen::unexplained_stands, with a prior): the most squared gap
+  // the candidate's fit can remove (PriorBound::gain) and what explaining
+  // between_knots_min_explained of the gap needs (explain_gain_needed); 0 when not applied
+  double gain = 0, gain_needed = 0;
 };
+
+// The fixed-weight squared gap a fit must remove to explain `fraction` of a gap w0 whose noise
+// share is n (the inverse of gap_fit.h's explained_fraction: its excess over n, at least
+// chi2_noise_sigmas standard deviations of chi^2_n; of w0 itself when n is not known).
+double explain_gain_needed(double w0, double n, double fraction);
 
 // Per pour-level candidate, in the order they are bought (least cost first: the evidence per
 // CPU-second a knot buys is its inverse noise over its cost, and the pour-level knots' noise

@@ -227,6 +227,7 @@ std::vector<const Effect *> simulate_adaptively(const Scenario &sc, const Measur
   if (!seen_rank.empty()) seen.best = seen_rank[0].name, seen.best_evidence = lr_evidence(seen_rank[0]);
   seen.best_explains = seen_verdict.verdict == Verdict::explained || seen_verdict.verdict == Verdict::scale_only;
   seen.best_is_scale = seen_verdict.verdict == Verdict::scale_only;
+  seen.unexplained_stands = seen_fit.evidence.omnibus && seen_verdict.verdict == Verdict::unexplained && !seen_verdict.between_knots;
   std::vector<PourCandidate> candidates;
   for (const Effect *e : pour) {
     PourCandidate c{e->name, plan_cost(sc, signature_requests(sc.name, measured.v0s, {e}), cache, 0.0).probe_pours, std::nullopt};

@@ -250,6 +250,37 @@ PriorSignatures prior_signatures(const SignaturePrior &p, const std::string &eff
   return out;
 }
 
+namespace {
+
+// e's model data with the prior's signatures as its knots (gap_which.h, effect_data's layout)
+EffectData prior_effect_data(const Effect &e, const PriorSignatures &ps, const Features &f, double beds)
+{
+  EffectData ed;
+  ed.name = e.name;
+  ed.one_sided = e.one_sided;
+  std::vector<std::pair<double, const PriorKnot *>> ks{{0.0, nullptr}};
+  for (const PriorKnot &k : ps.knots) ks.push_back({k.magnitude, &k});
+  std::sort(ks.begin(), ks.end(), [](const auto &a, const auto &b) { return a.first < b.first; });
+  ed.ref_err.assign(1, Table());
+  for (const auto &[a, k] : ks) {
+    ed.knots.push_back(a);
+    Table m, er, de;
+    for (std::size_t s = 0; s < f.nspeeds(); ++s) {
+      std::vector<double> mean = f.fresh[s].mean, var(mean.size());
+      for (std::size_t i = 0; k && i < mean.size(); ++i) mean[i] += k->signature[s][i];
+      for (std::size_t i = 0; i < mean.size(); ++i) var[i] = f.cv2[s][i] * mean[i] * mean[i] / beds;
+      if (!k) ed.ref_err[0].push_back(var), var = f.fresh_err[s];
+      m.push_back(mean), er.push_back(var), de.push_back(std::vector<double>(mean.size(), 0.0));
+    }
+    ed.mean.push_back(m), ed.err.push_back(er), ed.diff_err.push_back(de);
+  }
+  ed.scale_bound = GapThresholds::calibration_scale_bound;
+  ed.noise_r2 = noise_residual(f.nulls, ed);
+  return ed;
+}
+
+}    // namespace
+
 std::optional<PriorBound> candidate_prior_bound(const SignaturePrior &p, const Effect &e, const Features &f,
                                                 const GapGrid &grid, double scale_bound, std::string &missing)
 {
@@ -281,39 +312,15 @@ std::optional<PriorBound> candidate_prior_bound(const SignaturePrior &p, const E
     }
     in.signature.push_back(k.signature), in.knot_var.push_back(U), in.prior_var.push_back(W), in.magnitude.push_back(k.magnitude);
   }
-  return prior_bound(in);
+  PriorBound b = prior_bound(in);
+  // the gap's noise share, as the candidate's own fit would take it (explained_fraction's n:
+  // the null replicates' squared gap at magnitude 0, with the reference beds its knot 0)
+  std::vector<std::size_t> all(f.nspeeds());
+  for (std::size_t s = 0; s < all.size(); ++s) all[s] = s;
+  b.noise = noise_of(prior_effect_data(e, ps, f, prior_beds), all);
+  return b;
 }
 
-namespace {
-
-// e's model data with the prior's signatures as its knots (gap_which.h, effect_data's layout)
-EffectData prior_effect_data(const Effect &e, const PriorSignatures &ps, const Features &f, double beds)
-{
-  EffectData ed;
-  ed.name = e.name;
-  ed.one_sided = e.one_sided;
-  std::vector<std::pair<double, const PriorKnot *>> ks{{0.0, nullptr}};
-  for (const PriorKnot &k : ps.knots) ks.push_back({k.magnitude, &k});
-  std::sort(ks.begin(), ks.end(), [](const auto &a, const auto &b) { return a.first < b.first; });
-  ed.ref_err.assign(1, Table());
-  for (const auto &[a, k] : ks) {
-    ed.knots.push_back(a);
-    Table m, er, de;
-    for (std::size_t s = 0; s < f.nspeeds(); ++s) {
-      std::vector<double> mean = f.fresh[s].mean, var(mean.size());
-      for (std::size_t i = 0; k && i < mean.size(); ++i) mean[i] += k->signature[s][i];
-      for (std::size_t i = 0; i < mean.size(); ++i) var[i] = f.cv2[s][i] * mean[i] * mean[i] / beds;
-      if (!k) ed.ref_err[0].push_back(var), var = f.fresh_err[s];
-      m.push_back(mean), er.push_back(var), de.push_back(std::vector<double>(mean.size(), 0.0));
-    }
-    ed.mean.push_back(m), ed.err.push_back(er), ed.diff_err.push_back(de);
-  }
-  ed.scale_bound = GapThresholds::calibration_scale_bound;
-  ed.noise_r2 = noise_residual(f.nulls, ed);
-  return ed;
-}
-
-}    // namespace
 
 void add_prior_limits(const SignaturePrior &p, const std::vector<const Effect *> &all_effects,
                       const std::vector<const Effect *> &simulated, const Features &f, const GapGrid &grid,

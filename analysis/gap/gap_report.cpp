@@ -123,6 +123,8 @@ Json plan_json(const PlanRecord &p)
     if (x.prior)
       row["prior"] = Json{{"projection2", num(x.prior->projection2)}, {"margin_direction", num(x.prior->margin_direction)},
                           {"margin_noise", num(x.prior->margin_noise)}};
+    // the explain gate (gap_adaptive.h): the squared gap its fit can remove, and what a quarter of the gap needs
+    if (x.gain_needed > 0) row["gain"] = num(x.gain), row["gain_needed"] = num(x.gain_needed);
     decisions.push_back(row);
   }
   return Json{{"unit", "probe pours of core time"}, {"jobs", p.jobs}, {"least", num(p.least)}, {"most", num(p.most)},

@@ -30,7 +30,13 @@
 //   dmu_rod m: P *= 1 + 1.5 m, k *= 1 + 0.5 m (the rod's own friction: the tip and the side)
 //   layer A, layer_z z_l (an effect outside the library: a bed stratified in depth, a harder
 //       layer buried at z_l, 1.3 cm unless given): + A exp(-((z - z_l) / 0.15)^2) at any speed,
-//       independent of the grains' packing and density (a stone layer, a compacted band)
+//       independent of the grains' packing and density (a stone layer, a compacted band); it
+//       is no key of the bed's field, so its beds are those of the same seeds without it
+//   strata A, strata_l l (an effect outside the library: a bed of alternating harder and
+//       softer strata, l cm apart, under 0.5 cm of loose cover): + A sin(2 pi (z - 0.5) / l)
+//       below z = 0.5 at any speed; no key of the bed's field (as the layer). No library
+//       signature resembles it: the pour-level ones are smooth in depth (k z, z^2, a crust)
+//       or the impact peak, the push-only ones filter or shift the whole trace
 //   rho_g r (an effect outside the library; the headers say 3): k, P and the walls *= r / 3,
 //       and the grain noise as for kn s * 3 / r (see below)
 // Packing (the pour's friction sets phi_0): near jamming the quasi-static resistance of a bed
@@ -127,10 +133,14 @@ int main(int argc, char **argv)
     std::ofstream(out + ".restart") << "fake bed\n";
     // the bed field's key: the pour's settings (every variable but where it runs and writes,
     // and the seed): a real pour diverges with any change of its physics, so a pour-level
-    // knot's beds are not the baseline's beds again
+    // knot's beds are not the baseline's beds again. The buried layer is not the grains'
+    // physics (a stone band laid in the bed, not a change of how the grains pour): its keys
+    // stay out, so a layer case's beds are the seeds' own, whatever its size and depth, and a
+    // scan over them compares one realization (issue 37; before, each size drew other beds)
     unsigned long key = 14695981039346656037ul;
     for (const auto &[k, v] : var)
-      if (k != "seed" && k != "out" && k != "inputs" && k != "checkpoint")
+      if (k != "seed" && k != "out" && k != "inputs" && k != "checkpoint" && k != "layer" && k != "layer_z" && k != "strata" &&
+          k != "strata_l")
         for (char c : k + "=" + v + ";") key = (key ^ (unsigned char) c) * 1099511628211ul;
     std::ofstream(out + ".info") << "seed = " << var["seed"] << "\nfield = " << key % 1000003 << "\nmu = " << num("mu", 0.3)
                                  << "\nz_s = 5.7\nphi_0 = " << phi_pour(num("mu", 0.3)) - 1.2e-5 * num("cohesion", 0) - 1.4e-5 * num("cohesion_dmt", 0)
@@ -179,7 +189,7 @@ int main(int argc, char **argv)
   const int model_seed = by_knobs ? (num("mu_roll", 0) != 0) + 2 * (coh != 0) + 4 * (coh_dmt != 0)
                                   : (int) (1e3 * num("mu_roll", 0)) + (int) (7 * coh) + (int) (11 * coh_dmt);
   std::mt19937 grain_rng(7919 * seed + (int) v0 + model_seed);
-  const double layer = num("layer", 0), layer_z = num("layer_z", 1.3);
+  const double layer = num("layer", 0), layer_z = num("layer_z", 1.3), strata = num("strata", 0), strata_l = num("strata_l", 1.0);
   const double mk = num("mount_k", 0), mc = num("mount_c", 0), mm = num("mount_m", 100);
   double x = 0, xv = 0, ar = 0;    // mount deflection and speed; AR(1) grain noise
   std::ofstream T(var["trace"]);
@@ -195,7 +205,8 @@ int main(int argc, char **argv)
       const double stick = 5e3 * coh * std::exp(-z / 0.6) * quasi;    // a static strength; not rho_g's
       const double strength = 8e3 * coh_dmt * (1 - std::exp(-z / 0.3)) * quasi;    // nor this
       const double buried = layer * std::exp(-std::pow((z - layer_z) / 0.15, 2));    // a harder layer: not the grains'
-      const double mean = b * (k * z + P * std::exp(-std::pow((z - peak_z) / 0.15, 2)) + wall * z * z + stick + strength + buried);
+      const double strat = z > 0.5 ? strata * std::sin(6.283185307 * (z - 0.5) / strata_l) : 0.0;    // nor these
+      const double mean = b * (k * z + P * std::exp(-std::pow((z - peak_z) / 0.15, 2)) + wall * z * z + stick + strength + buried + strat);
       ar = corr * ar + std::sqrt(1 - corr * corr) * n01(grain_rng);
       F = mean * (1 + grain * ar);
     }
