@@ -197,6 +197,7 @@ std::vector<PurchaseDecision> decide_purchases(const CheapStageSeen &seen, const
     PurchaseDecision d;
     d.effect = c.effect;
     d.cost = c.cost;
+    d.cold_cost = c.cold_cost;
     d.needed = needed;
     const std::optional<double> along_dir = c.prior ? std::optional<double>(c.prior->bound()) : c.projection2;
     d.bound = along_dir ? std::min(*along_dir, seen.chi2_0) : seen.chi2_0;
@@ -245,7 +246,10 @@ std::string plan_record_text(const PlanRecord &r)
   if (!r.decisions.empty())
     s += " Pour-level candidates: " + std::to_string(r.decisions.size() - skipped) + " simulated, " + std::to_string(skipped) +
          " skipped.";
-  for (const auto &d : r.decisions) s += "\n- " + d.effect + " (" + printf_number("%.3g", d.cost) + " probe pours): " + d.why;
+  // a candidate's cost counted cold, as the range and "this run" are; what this cache lacked beside it
+  for (const auto &d : r.decisions)
+    s += "\n- " + d.effect + " (" + printf_number("%.3g", d.cold_cost) + " probe pours" +
+         (d.cost != d.cold_cost ? ", " + printf_number("%.3g", d.cost) + " with this cache" : "") + "): " + d.why;
   if (!r.confirmation.empty()) {
     s += "\n- the confirmation: ";
     for (std::size_t i = 0; i < r.confirmation.size(); ++i) s += (i ? ", " : "") + r.confirmation[i];

@@ -93,6 +93,7 @@ struct PourCandidate {
   std::optional<double> projection2;        // the squared gap along its signature, when a direction is known
   std::optional<PriorBound> prior;          // with a signature prior: its bound (then projection2 is its bound())
   std::string no_prior;                     // why a prior given holds no direction for it ("" = none given, or one used)
+  double cold_cost = 0;                     // its knots' cost as a cold cache runs them (the unit of the plan's range)
 };
 
 // The decision on one candidate: simulated or skipped, the bound and what it was held against.
@@ -101,7 +102,8 @@ struct PurchaseDecision {
   bool simulate = true;
   double bound = 0;        // the most its likelihood ratio can reach on this data
   double needed = 0;       // what it would have to reach to change the verdict
-  double cost = 0;         // probe pours of core time
+  double cost = 0;         // probe pours of core time (what the cache lacked)
+  double cold_cost = 0;    // probe pours of core time, as a cold cache runs its knots
   std::string why;         // the rule, with its numbers
   std::optional<PriorBound> prior;    // the prior's bound, when it set `bound`
   // the explain gate (CheapStageSeen::unexplained_stands, with a prior): the most squared gap

@@ -78,10 +78,10 @@ GapOptions for_scenario(const GapOptions &opt, const Scenario &sc)
 
 // the grains of the probe pour (bench's bed 1), or 0 when the inputs lack the bench preset
 // (plan_cost then takes the probe's .info)
-double probe_grains(const GapOptions &opt)
+double probe_grains(const std::string &inputs)
 {
   try {
-    return preset_grains(read_scenario(opt.runner.inputs, "bench"));
+    return preset_grains(read_scenario(inputs, "bench"));
   } catch (InputError &) {
     return 0;
   }
@@ -96,7 +96,7 @@ bool plan_within_budget(const GapOptions &given, const Scenario &sc, const std::
 {
   const std::string cache = given.cache + "/" + sc.name;
   const int jobs = given.runner.jobs;
-  const double probe = probe_grains(given);
+  const double probe = probe_grains(given.runner.inputs);
   const PlanCost all = plan_cost(sc, signature_requests(sc.name, v0s, effects), cache, probe);
   progress.say(GapProgress::INFO, "plan", "plan: " + plan_summary(all, jobs) + " (scenario " + sc.name + ")");
   PlanCost most = all;
@@ -151,7 +151,7 @@ RunnerOptions cache_runner(const GapOptions &opt)
 int write_cluster_script(const GapOptions &opt, const Scenario &sc, const std::vector<SimRequest> &req,
                          const RunnerOptions &runner, const Progress &progress)
 {
-  const PlanCost c = plan_cost(sc, req, runner.out_root, probe_grains(opt));
+  const PlanCost c = plan_cost(sc, req, runner.out_root, probe_grains(opt.runner.inputs));
   const ArrayTasks tasks = array_tasks(req);
   const std::string abs_cache = fs::absolute(opt.cache).string(), abs_inputs = fs::absolute(opt.runner.inputs).string();
   const std::string lmp = opt.runner.lmp.find('/') == std::string::npos ? opt.runner.lmp : fs::absolute(opt.runner.lmp).string();
@@ -230,7 +230,9 @@ std::vector<const Effect *> simulate_adaptively(const Scenario &sc, const Measur
   seen.unexplained_stands = seen_fit.evidence.omnibus && seen_verdict.verdict == Verdict::unexplained && !seen_verdict.between_knots;
   std::vector<PourCandidate> candidates;
   for (const Effect *e : pour) {
-    PourCandidate c{e->name, plan_cost(sc, signature_requests(sc.name, measured.v0s, {e}), cache, 0.0).probe_pours, std::nullopt};
+    const std::vector<SimRequest> knots = signature_requests(sc.name, measured.v0s, {e});
+    PourCandidate c{e->name, plan_cost(sc, knots, cache, probe_grains(runner.inputs)).probe_pours, std::nullopt};
+    c.cold_cost = cold_cost(sc, knots, probe_grains(runner.inputs)).probe_pours;
     // with a signature prior its direction is known before its knots (gap_prior.h)
     if (prior) c.prior = candidate_prior_bound(*prior, *e, f, al.grid, GapThresholds::calibration_scale_bound, c.no_prior);
     candidates.push_back(c);
@@ -256,7 +258,7 @@ void record_spent(const Scenario &sc, const GapOptions &opt, const std::vector<s
       all.push_back(r);
       record.confirmation.push_back(r.spec.name);
     }
-  const PlanCost spent = cold_cost(sc, all, probe_grains(opt));
+  const PlanCost spent = cold_cost(sc, all, probe_grains(opt.runner.inputs));
   record.spent = spent.probe_pours;
   record.wall_spent = wall_probe_pours(spent, record.jobs);
   record.core_hours_spent = spent.core_hours;

@@ -118,7 +118,7 @@ Json plan_json(const PlanRecord &p)
   Json decisions = Json::array();
   for (const auto &x : p.decisions) {
     Json row{{"effect", x.effect}, {"simulated", x.simulate}, {"bound", num(x.bound)}, {"needed", num(x.needed)},
-             {"cost", num(x.cost)}, {"why", x.why}};
+             {"cost", num(x.cost)}, {"cold_cost", num(x.cold_cost)}, {"why", x.why}};
     // the signature prior's bound and its parts (gap_adaptive.h, prior_bound)
     if (x.prior)
       row["prior"] = Json{{"projection2", num(x.prior->projection2)}, {"margin_direction", num(x.prior->margin_direction)},

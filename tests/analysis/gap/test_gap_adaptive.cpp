@@ -98,6 +98,25 @@ TEST(GapAdaptive, TheRecordSaysTheRangeAndWhatThisRunSpent)
   EXPECT_NE(t.find("confirm_packing_-0.1"), std::string::npos) << t;
 }
 
+TEST(GapAdaptive, ACandidatesCostIsSaidColdAsTheRangeIsAndWithThisCacheBeside)
+{
+  // a warm cache: the knots cost nothing now, but the range and "this run" count them cold,
+  // so the line gives the cold figure first (a bench diagnosis printed "0 probe pours" beside
+  // a simulated candidate whose knots are 3.6 of its 24.6 spent)
+  CheapStageSeen seen{80.0, "measurement_chain", 10.0, false, false};
+  std::vector<PourCandidate> cands{{"friction", 0.0, 40.0}, {"packing", 1.25, 40.0}};
+  cands[0].cold_cost = 3.61, cands[1].cold_cost = 2.5;
+  PlanRecord r;
+  r.decisions = decide_purchases(seen, cands, FLOOR, MARGIN);
+  EXPECT_DOUBLE_EQ(decision(r.decisions, "friction").cold_cost, 3.61);
+  const std::string t = plan_record_text(r);
+  EXPECT_NE(t.find("friction (3.61 probe pours, 0 with this cache)"), std::string::npos) << t;
+  EXPECT_NE(t.find("packing (2.5 probe pours, 1.25 with this cache)"), std::string::npos) << t;
+  cands[1].cost = 2.5;    // a cold cache: one figure
+  r.decisions = decide_purchases(seen, cands, FLOOR, MARGIN);
+  EXPECT_NE(plan_record_text(r).find("packing (2.5 probe pours)"), std::string::npos) << plan_record_text(r);
+}
+
 // The bound with a signature prior (prior_bound): known answers first.
 namespace {
 
