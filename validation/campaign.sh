@@ -122,9 +122,8 @@ status() {
   done
   return 0
 }
-# a checkpoint LAMMPS finished writing ends with the restart format's magic string (as the
-# sweep runner checks, analysis/sweep/sweep_files.cpp)
-complete_checkpoint() { [ -s "$1" ] && [ "$(tail -c 16 "$1" | head -c 15)" = "LammpS RestartT" ]; }
+# a checkpoint LAMMPS finished writing: the sweep runner's own test, asked (granpen checkpoint)
+complete_checkpoint() { "$CLI" checkpoint "$1" > /dev/null; }
 seen="" listed=""
 [ "$STATUS" = 1 ] && { status; exit 0; }
 [ -x "$LMP" ] || { echo "campaign.sh: no lmp_granpen at $LMP (build first, or set GRANPEN_LMP)" >&2; exit 2; }

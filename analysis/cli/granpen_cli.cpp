@@ -25,6 +25,7 @@ const Subcommand SUBCOMMANDS[] = {
     {"calibration", granpen::cli::calibration, "summarise a friction-calibration sweep: phi_0(mu), k_z(mu)"},
     {"collapse", granpen::cli::collapse, "F/F_z against t~ = (z/v0) sqrt(g/D): crossover, collapse quality, peak law"},
     {"sweep", granpen::cli::sweep, "run a sweep of pours and pushes from a sweep file"},
+    {"checkpoint", granpen::cli::checkpoint, "whether LAMMPS checkpoints are complete, as the sweep runner resumes by"},
     {"flow", granpen::cli::flow, "flow fields about the rod from LAMMPS dumps: lambda_vz, phi(I) at the edge, strip, annulus"},
     {"momentum", granpen::cli::momentum, "upward momentum by v_z class from LAMMPS dumps; drag F against mu g M"},
     {"plot", granpen::cli::plot, "figures as gnuplot scripts + data, run to PNG and SVG: force, ratio, peak, kz, flow, momentum"},

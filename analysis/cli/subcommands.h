@@ -16,6 +16,7 @@ int fit(int argc, char **argv);            // fit_cmd.cpp
 int calibration(int argc, char **argv);    // calibration_cmd.cpp
 int collapse(int argc, char **argv);       // collapse_cmd.cpp
 int sweep(int argc, char **argv);          // sweep_cmd.cpp
+int checkpoint(int argc, char **argv);     // checkpoint_cmd.cpp
 int flow(int argc, char **argv);           // flow_cmd.cpp
 int momentum(int argc, char **argv);       // momentum_cmd.cpp
 int plot(int argc, char **argv);           // plot_cmd.cpp

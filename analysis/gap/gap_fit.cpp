@@ -85,14 +85,14 @@ double signature_baseline_share(const EffectData &e, double a)
   return 1.0 - weights(e.knots, a)[zero_knot(e)];
 }
 
-double effect_chi2(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds)
+double effect_chi2(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds, double scale)
 {
   // against the model with its own variance (reported; the fit uses fixed weights)
   double chi2 = 0.0;
   std::vector<double> m, v;
   for (std::size_t s : speeds) {
     effect_predict(e, a, s, m, v);
-    for (std::size_t k = 0; k < m.size(); ++k) chi2 += std::pow(t.mean[s][k] - m[k], 2) / (t.err[s][k] + v[k]);
+    for (std::size_t k = 0; k < m.size(); ++k) chi2 += std::pow(t.mean[s][k] - (1.0 + scale) * m[k], 2) / (t.err[s][k] + v[k]);
   }
   return chi2;
 }
@@ -246,6 +246,8 @@ EffectFit fit_effect(const Target &t, const EffectData &e)
   f.is_scale = e.is_scale;
   f.chi2_0 = effect_chi2(t, e, 0.0, all);
   f.chi2 = effect_chi2(t, e, f.magnitude, all);
+  f.chi2_0_within_bound = effect_chi2(t, e, 0.0, all, nuisance_scale(t, e, 0.0, all));
+  f.chi2_within_bound = effect_chi2(t, e, f.magnitude, all, f.scale);
   const double w0 = weighted_residual(t, e, 0.0, all), wa = weighted_residual(t, e, f.magnitude, all);
   f.explained = explained_fraction(w0, wa, noise_of(e, all));
   f.lr = std::max(0.0, w0 - signature_residual(t, e, f.magnitude, all));

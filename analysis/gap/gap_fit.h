@@ -54,8 +54,10 @@ struct Target {
   Table mean, err;                    // measured ensemble means and variances of the mean
 };
 
-// chi^2 of the target against the model at magnitude a over the given speeds.
-double effect_chi2(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds);
+// chi^2 of the target against the model at magnitude a over the given speeds, the model's
+// means times 1 + scale (0: as simulated; a nuisance scale: as the verdict compares them).
+double effect_chi2(const Target &t, const EffectData &e, double a, const std::vector<std::size_t> &speeds,
+                   double scale = 0.0);
 // Variance, per feature at speed s, of sum_j c[j] mean[j] over the effect's knots: each
 // knot's own noise (a paired knot's paired difference's), the signature baseline's that
 // every referenced knot carries, and with_reference the reference's (knot 0's ensemble), which
@@ -84,7 +86,11 @@ struct EffectFit {
   // its standard error: where -2 log L (signature_residual: the knots' noise included)
   // rises by 1, from its curvature at the fit; NaN where the curvature is not positive
   double magnitude_error = std::numeric_limits<double>::quiet_NaN();
-  double chi2_0 = 0.0, chi2 = 0.0;  // at magnitude 0 (the baseline) and at the fit
+  double chi2_0 = 0.0, chi2 = 0.0;  // at magnitude 0 (the baseline) and at the fit, as simulated
+  // the same within the calibration bound: the model times 1 + its nuisance scale (at 0: the
+  // baseline's, c0, so chi2_0_within_bound is the omnibus test's chi2_within_bound; at the
+  // fit: `scale`), the footing the verdict's chi^2 before and after stand on
+  double chi2_0_within_bound = 0.0, chi2_within_bound = 0.0;
   std::size_t nfeatures = 0;
   double explained = 0.0;           // fraction of the noise-weighted squared gap the fit removes
                                     // (of its excess over the noise when EffectData::noise_r2 is given)

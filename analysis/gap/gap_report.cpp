@@ -56,6 +56,8 @@ Json ranking_json(const Diagnosis &d)
              {"heldout_explained", num(r.heldout_explained, "%.4f")},
              {"chi2", num(r.chi2, "%.2f")},
              {"chi2_baseline", num(r.chi2_0, "%.2f")},
+             {"chi2_within_bound", num(r.chi2_within_bound, "%.2f")},
+             {"chi2_baseline_within_bound", num(r.chi2_0_within_bound, "%.2f")},
              {"at_edge", r.at_edge},
              {"likelihood_ratio", num(r.lr, "%.2f")},
              {"lr_null_mean", num(r.lr_null_mean, "%.3f")},
@@ -597,21 +599,28 @@ std::string md_where(const Diagnosis &d)
 std::string md_which(const Diagnosis &d)
 {
   std::string md;
-  md += format_text("\n## Which\n\n| effect | magnitude | explained | held-out explained | chi^2 (reference %.1f) | "
-                  "likelihood ratio | its threshold | evidence |\n|---|---|---|---|---|---|---|---|\n",
-               d.ranking.empty() ? 0.0 : d.ranking[0].chi2_0);
+  md += format_text("\n## Which\n\n| effect | magnitude | explained | held-out explained | chi^2 as simulated (baseline "
+                    "%.1f) | chi^2 within the calibration bound (baseline %.1f) | likelihood ratio | its threshold | "
+                    "evidence |\n|---|---|---|---|---|---|---|---|---|\n",
+                    d.ranking.empty() ? 0.0 : d.ranking[0].chi2_0, d.ranking.empty() ? 0.0 : d.ranking[0].chi2_0_within_bound);
   for (const auto &r : d.ranking) {
     auto it = d.magnitude_note.find(r.name);
-    md += format_text("| %s | %.4g%s%s | %.2f | %.2f | %.1f | %s%.1f%s | %.1f | %.1f |\n", r.name.c_str(), r.magnitude,
-                 r.at_edge ? " (edge)" : "", it == d.magnitude_note.end() ? "" : (" (" + it->second + ")").c_str(),
-                 r.explained, r.heldout_explained, r.chi2, r.detected ? "**" : "", r.lr, r.detected ? "**" : "",
-                 r.lr_threshold, lr_evidence(r));
+    md += format_text("| %s | %.4g%s%s | %.2f | %.2f | %.1f | %.1f | %s%.1f%s | %.1f | %.1f |\n", r.name.c_str(), r.magnitude,
+                      r.at_edge ? " (edge)" : "", it == d.magnitude_note.end() ? "" : (" (" + it->second + ")").c_str(),
+                      r.explained, r.heldout_explained, r.chi2, r.chi2_within_bound, r.detected ? "**" : "", r.lr,
+                      r.detected ? "**" : "", r.lr_threshold, lr_evidence(r));
   }
+  md += format_text("\nchi^2 over every feature at the fitted magnitude (baseline: at magnitude 0), as simulated and "
+                    "within the calibration bound: the prediction times 1 + the force scale fitted with it (|c| <= "
+                    "%g%%; at magnitude 0 the baseline's c0), the footing of the verdict's chi^2 before and after. The "
+                    "baselines are Gap significance's raw chi^2 and the chi^2 before of its confirmation.\n",
+                    100.0 * GapThresholds::calibration_scale_bound);
   md += format_text("\nThe fits measure the gap against the baseline on %d reference beds of their own (not the "
                   "signature beds). Explained: the part of the noise-weighted squared gap the fit removes, as a "
                   "fraction of its excess over what noise alone leaves. Likelihood ratio: -2 log of the likelihood "
                   "at magnitude 0 over that at the fitted magnitude (a chi^2 with one degree of freedom without the "
-                  "effect, were the noise model exact); its threshold: %.2f (p = 1e-4) times the ratio's mean over "
+                  "effect, were the noise model exact); its threshold: %.2f (`thresholds.lr_chi2_1_p1e4`, "
+                  "the point that chi^2 exceeds with the probability its name gives) times the ratio's mean over "
                   "%d null replicates (some reference beds taken as a measurement, the rest as its reference), at "
                   "least 1. Bold: above it. Evidence: the likelihood ratio less the null mean's excess over 1 (what "
                   "a noisy signature fits of any noise); candidates are ranked by it and told apart by a margin of "

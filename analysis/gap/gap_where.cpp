@@ -209,10 +209,7 @@ double baseline_scale_within_bound(const Target &t, const Features &f)
 
 double omnibus_chi2(const Target &t, const Features &f, double scale)
 {
-  EffectData null = reference_model(f);
-  for (auto &row : null.mean[0])
-    for (double &m : row) m *= 1.0 + scale;
-  return effect_chi2(t, null, 0.0, every_speed(f));
+  return effect_chi2(t, reference_model(f), 0.0, every_speed(f), scale);
 }
 
 Significance gap_significance(const Features &f, const GapGrid &grid)

@@ -1,5 +1,6 @@
 // granpen sweep: the runner's files (sweep_files.h).
 #include "sweep_files.h"
+#include "sweep_runner.h"    // complete_checkpoint
 
 #include "errors.h"
 
@@ -118,23 +119,6 @@ std::string pour_status(const std::string &log)
   return last.substr(0, colon);
 }
 
-// A checkpoint LAMMPS finished writing ends with the restart format's magic string
-// (lmprestart.h, checked by read_restart); one cut short by a kill or a full disk does not,
-// and is never resumed from.
-bool complete_checkpoint(const std::string &p)
-{
-  static const char magic[] = "LammpS RestartT";    // written with its '\0'
-  const int fd = open(p.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return false;
-  struct stat st;
-  char tail[sizeof magic] = {0};
-  const bool ok = fstat(fd, &st) == 0 && st.st_size >= (off_t) sizeof magic &&
-                  pread(fd, tail, sizeof magic, st.st_size - (off_t) sizeof magic) == (ssize_t) sizeof magic &&
-                  std::memcmp(tail, magic, sizeof magic) == 0;
-  close(fd);
-  return ok;
-}
-
 // a bed (restart and info) of another sweep, hard-linked (copied across file systems)
 void link_bed(const std::string &from_dir, const std::string &to_dir, const std::string &id)
 {
@@ -181,3 +165,20 @@ std::pair<std::string, std::string> read_pour_state(const std::string &path)
 
 }    // namespace sweep_run
 }    // namespace granpen
+
+// A checkpoint LAMMPS finished writing ends with the restart format's magic string
+// (lmprestart.h, checked by read_restart); one cut short by a kill or a full disk does not,
+// and is never resumed from.
+bool granpen::complete_checkpoint(const std::string &p)
+{
+  static const char magic[] = "LammpS RestartT";    // written with its '\0'
+  const int fd = open(p.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return false;
+  struct stat st;
+  char tail[sizeof magic] = {0};
+  const bool ok = fstat(fd, &st) == 0 && st.st_size >= (off_t) sizeof magic &&
+                  pread(fd, tail, sizeof magic, st.st_size - (off_t) sizeof magic) == (ssize_t) sizeof magic &&
+                  std::memcmp(tail, magic, sizeof magic) == 0;
+  close(fd);
+  return ok;
+}

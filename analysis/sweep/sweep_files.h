@@ -28,10 +28,7 @@ double last_depth(const std::string &trace);
 bool on_path(const std::string &prog);
 // the last progress line a pour printed ("granpen pour: chunk 5/60: ..."), shortened
 std::string pour_status(const std::string &log);
-// A checkpoint LAMMPS finished writing ends with the restart format's magic string
-// (lmprestart.h, checked by read_restart); one cut short by a kill or a full disk does not,
-// and is never resumed from.
-bool complete_checkpoint(const std::string &p);
+// (whether a checkpoint is complete: complete_checkpoint, sweep_runner.h, defined here)
 // a bed (restart and info) of another sweep, hard-linked (copied across file systems)
 void link_bed(const std::string &from_dir, const std::string &to_dir, const std::string &id);
 // A finished pour's checkpoints (NAME.pour.state, NAME.pour.STEP.restart): in.pour removes

@@ -52,6 +52,12 @@ int run_sweeps(const std::vector<SweepTask> &tasks, const RunnerOptions &opt);
 void write_slurm_script(const SweepSpec &spec, const RunnerOptions &opt, const std::string &cli,
                         const std::string &file);
 
+// Whether a LAMMPS checkpoint (a push's TRACE.a/.b.restart, a pour's NAME.pour.STEP.restart)
+// was written to its end: the test the runner resumes by (one cut short by a kill or a full
+// disk is never resumed from), and what `granpen checkpoint` answers for scripts
+// (validation/campaign.sh --status). False for a missing or unreadable file.
+bool complete_checkpoint(const std::string &path);
+
 }    // namespace granpen
 
 #endif

@@ -25,6 +25,7 @@
 #include "momentum_options.h"
 #include "plot_options.h"
 #include "rate_options.h"
+#include "checkpoint_options.h"
 #include "sweep_options.h"
 
 #include <cerrno>
@@ -206,6 +207,7 @@ inline void check(const RateOptions &o)
 {
   GRANPEN_FUZZ_CHECK(o.events >= 0 && o.events <= o.trials && o.trials >= 1 && o.level > 0 && o.level < 1);
 }
+inline void check(const CheckpointOptions &o) { GRANPEN_FUZZ_CHECK(!o.files.empty()); }
 inline void check_usage_error(const UsageError &e, const std::vector<std::string> &words)
 {
   const std::string what = e.what();
@@ -237,7 +239,7 @@ void parse_one(Options (*parse)(int, char **), const char *name, std::vector<std
 }
 
 const char *const SUBCOMMAND_NAMES[] = {"convert", "import", "check", "fit", "calibration", "collapse",
-                                        "sweep", "flow", "momentum", "plot", "gap", "get", "gap-score", "rate"};
+                                        "sweep", "flow", "momentum", "plot", "gap", "get", "gap-score", "rate", "checkpoint"};
 const int SUBCOMMAND_COUNT = sizeof(SUBCOMMAND_NAMES) / sizeof(SUBCOMMAND_NAMES[0]);
 
 // The words of an input: split at '\n', at most 64 (more add nothing to the parsers).
@@ -282,7 +284,8 @@ inline void cli_body(const std::string &bytes)
     case 10: parse_one(parse_gap, name, words); break;
     case 11: parse_one(parse_get, name, words); break;
     case 12: parse_one(parse_gap_score, name, words); break;
-    default: parse_one(parse_rate, name, words); break;
+    case 13: parse_one(parse_rate, name, words); break;
+    default: parse_one(parse_checkpoint, name, words); break;
   }
 }
 

@@ -866,7 +866,12 @@ TEST(GapFit, AScaleWithinTheCalibrationBoundIsEvidenceForNothing)
   A.scale_bound = GapThresholds::calibration_scale_bound;
   std::vector<std::size_t> all{0, 1};
   EXPECT_NEAR(nuisance_scale(t, A, 0.0, all), 0.02, 1e-12);    // closed-form least squares: exact
-  EXPECT_LT(fit_effect(t, A).lr, 1e-9);
+  const EffectFit within = fit_effect(t, A);
+  EXPECT_LT(within.lr, 1e-9);
+  // its chi^2 at magnitude 0: raw, 12 features of 2^2 / (0.5 + 0.5); within the bound the
+  // baseline times 1.02 is the data: 0 (round-off only)
+  EXPECT_NEAR(within.chi2_0, 48.0, 1e-9);
+  EXPECT_LT(within.chi2_0_within_bound, 1e-18);
   // the effect at 1.4 with a 2% calibration error: the joint fit recovers both, exactly on
   // a noiseless target (the golden-section search ends within 1e-6 of the minimum)
   for (int s = 0; s < 2; ++s)
@@ -874,6 +879,10 @@ TEST(GapFit, AScaleWithinTheCalibrationBoundIsEvidenceForNothing)
   const EffectFit joint = fit_effect(t, A);
   EXPECT_NEAR(joint.magnitude, 1.4, 1e-5);
   EXPECT_NEAR(joint.scale, 0.02, 1e-6);
+  // at the fit, with its scale, the prediction is the data (to the fit's 1e-5 in magnitude);
+  // as simulated it misses them by 2% everywhere: at least 12 x 2^2 / (0.5 + 1)
+  EXPECT_LT(joint.chi2_within_bound, 1e-6);
+  EXPECT_GT(joint.chi2, 32.0);
   EXPECT_GT(joint.explained, 0.99);
   // a 10% scale is beyond the bound: the nuisance stops at 3%, and a scale candidate (the
   // baseline times 1 + a: knots -0.25, 0.25) takes the rest, its magnitude the whole scale
@@ -888,6 +897,11 @@ TEST(GapFit, AScaleWithinTheCalibrationBoundIsEvidenceForNothing)
   for (auto &row : t.mean)
     for (auto &x : row) x = 110.0;
   EXPECT_NEAR(nuisance_scale(t, A, 0.0, all), 0.03, 1e-12);
+  // the baseline within the bound stops at 103: 12 features of (110 - 103)^2 / (0.5 + 0.5)
+  // against the raw 12 of 10^2
+  const EffectFit capped = fit_effect(t, A);
+  EXPECT_NEAR(capped.chi2_0_within_bound, 12 * 49.0, 1e-9);
+  EXPECT_NEAR(capped.chi2_0, 12 * 100.0, 1e-9);
   const EffectFit fs = fit_effect(t, S);
   EXPECT_NEAR(fs.magnitude, 0.10, 1e-5);
   EXPECT_DOUBLE_EQ(fs.scale, 0.0);    // its own magnitude is the scale: no nuisance on top

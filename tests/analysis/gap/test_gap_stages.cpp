@@ -784,6 +784,18 @@ TEST(GapWhich, TheVerdictOnAHandMadeFeatureSet)
   EXPECT_EQ(d.nfeatures, 12u);    // the omnibus test's, carried for the verdict's sentences
   EXPECT_EQ(data.count("a"), 1u);
   EXPECT_EQ(data.count("b"), 1u);
+  // each candidate's chi^2 at magnitude 0, raw and within the calibration bound, is the
+  // omnibus test's (gap_where: the reference beds as a one-knot model; here each candidate's
+  // knot 0, referenced to them): the Which table's references are the verdict's numbers
+  GapGrid grid;
+  grid.zmax = 0.5;
+  const Significance sig = gap_significance(h.f, grid);
+  EXPECT_GT(std::abs(sig.scale_within_bound), 1e-3);    // a scale that changes the chi^2
+  EXPECT_LT(sig.chi2_within_bound, sig.chi2_0);
+  for (const auto &r : d.ranking) {
+    EXPECT_NEAR(r.chi2_0, sig.chi2_0, 1e-9 * sig.chi2_0) << r.name;
+    EXPECT_NEAR(r.chi2_0_within_bound, sig.chi2_within_bound, 1e-9 * sig.chi2_0) << r.name;
+  }
 
   // no gap at all, and the omnibus test finds none: none
   HandMade z(0.0);
@@ -1656,17 +1668,10 @@ void json_numbers(const nlohmann::json &j, std::vector<double> &out)
     for (const auto &e : j) json_numbers(e, out);
 }
 
-// The first screen of report.md ("## In short" and its list): its lines, and every
-// number on it that is not one of diagnosis.json's to its printed precision (a percentage:
-// 100 times one, either sign).
-std::vector<std::string> stray_numbers(const std::string &dir, int &lines)
+// every number of a part of report.md that is not one of diagnosis.json's to its printed
+// precision (a percentage: 100 times one, either sign)
+std::vector<std::string> stray_numbers_in(const std::string &screen, const std::string &dir)
 {
-  std::ifstream in(dir + "/report.md");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto from = text.find("## In short");
-  const auto to = text.find("\n\n", text.find("\n- ", from));    // the list's end
-  const std::string screen = from == std::string::npos ? "" : text.substr(from, to - from);
-  lines = (int) std::count(screen.begin(), screen.end(), '\n');
   std::vector<double> nums;
   json_numbers(read_json_file(dir + "/diagnosis.json"), nums);
   std::vector<std::string> stray;
@@ -1686,6 +1691,20 @@ std::vector<std::string> stray_numbers(const std::string &dir, int &lines)
     if (!found) stray.push_back(m.str(0));
   }
   return stray;
+}
+
+// The first screen of report.md ("## In short" and its list): its lines, and every
+// number on it that is not one of diagnosis.json's to its printed precision (a percentage:
+// 100 times one, either sign).
+std::vector<std::string> stray_numbers(const std::string &dir, int &lines)
+{
+  std::ifstream in(dir + "/report.md");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto from = text.find("## In short");
+  const auto to = text.find("\n\n", text.find("\n- ", from));    // the list's end
+  const std::string screen = from == std::string::npos ? "" : text.substr(from, to - from);
+  lines = (int) std::count(screen.begin(), screen.end(), '\n');
+  return stray_numbers_in(screen, dir);
 }
 
 }    // namespace
@@ -1737,6 +1756,39 @@ TEST(GapReport, TheFirstScreenFitsATerminalAndQuotesOnlyTheDiagnosisNumbers)
   const std::string text2((std::istreambuf_iterator<char>(in2)), std::istreambuf_iterator<char>());
   EXPECT_NE(text2.find("The force is 13.1% high at every depth and speed"), std::string::npos);
   EXPECT_NE(text2.find("Next: a weighed calibration"), std::string::npos);
+}
+
+// report.md's Which table shows each candidate's chi^2 as simulated and within the calibration
+// bound, each column headed by its baseline, and those baselines are the verdict's own numbers
+// (Gap significance's raw chi^2, the confirmation's chi^2 before, within the bound): no number
+// of the table contradicts a sentence of the verdict, and every one is diagnosis.json's
+TEST(GapReport, TheWhichTableNamesItsChi2sFootingAndQuotesOnlyTheDiagnosisNumbers)
+{
+  TempDir dir("report_which");
+  Diagnosis d = filled_diagnosis("real");
+  d.chi2_within_bound = 71.32, d.scale_within_bound = 0.0213;
+  for (std::size_t i = 0; i < d.ranking.size(); ++i) {
+    auto &r = d.ranking[i];
+    r.chi2_0_within_bound = d.chi2_within_bound, r.chi2_within_bound = 38.25 + 7 * (double) i, r.scale = 0.01 * (double) i;
+  }
+  write_gap_report(d, dir.path.string());
+  std::ifstream in(dir / "report.md");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto from = text.find("\n## Which");
+  ASSERT_NE(from, std::string::npos);
+  const std::string which = text.substr(from, text.find("\n## ", from + 1) - from);
+  EXPECT_NE(which.find("chi^2 as simulated (baseline 93.6)"), std::string::npos) << which;
+  EXPECT_NE(which.find("chi^2 within the calibration bound (baseline 71.3)"), std::string::npos) << which;
+  // the verdict's sentences quote the same two
+  EXPECT_NE(text.find("chi^2 = 93.6 over"), std::string::npos);
+  EXPECT_NE(text.find("chi^2 71.3 (against the baseline within the calibration bound)"), std::string::npos);
+  // the top candidate's row: 40.0 as simulated, 38.2 within the bound (38.25 printed to %.1f)
+  EXPECT_NE(which.find("| 40.0 | 38.2 |"), std::string::npos) << which;
+  EXPECT_EQ(stray_numbers_in(which, dir.path.string()), std::vector<std::string>{});
+  const nlohmann::json j = read_json_file(dir / "diagnosis.json");
+  EXPECT_DOUBLE_EQ(j["ranking"][0]["chi2_within_bound"].get<double>(), 38.25);
+  EXPECT_DOUBLE_EQ(j["ranking"][0]["chi2_baseline_within_bound"].get<double>(), 71.32);
+  EXPECT_DOUBLE_EQ(j["significance"]["chi2_within_bound"].get<double>(), 71.32);
 }
 
 // The gap per regime splits the bins where the diagnosis says the peak regime ends
