@@ -132,6 +132,46 @@ double prediction_separation2(const EffectData &a, double ma, double sa, const E
   return std::max(0.0, d2);
 }
 
+BelowLimitMimic below_limit_mimic(const EffectData &top, const EffectFit &top_fit, const EffectData &other,
+                                  const EffectFit &other_fit, const Target &t)
+{
+  const NoiseFactors now = ones(t);
+  // x: the top's fitted prediction less the baseline, s R + (1 + s) u_top(a); per magnitude m
+  // of the other, min over |c| <= bound of |x - c R - (1 + c) u(m)|^2 = |r - c q|^2 with
+  // r = x - u(m), q = R + u(m): c = r.q / q.q, clamped
+  std::vector<double> x, w, R, u, var, vR;
+  for (std::size_t s = 0; s < t.mean.size(); ++s) {
+    effect_signature(top, top_fit.magnitude, s, u, var);
+    effect_predict(top, 0.0, s, R, vR);
+    for (std::size_t k = 0; k < u.size(); ++k) {
+      x.push_back(top_fit.scale * R[k] + (1.0 + top_fit.scale) * u[k]);
+      w.push_back(weight(top, t, now, s, k));
+    }
+  }
+  const double bound = other.scale_bound;
+  BelowLimitMimic best;
+  const auto [lo, hi] = magnitude_range(other);
+  const int n = 200;    // a scan of the range: the interpolated model is piecewise, not linear
+  for (int i = 0; i <= n; ++i) {
+    const double m = lo + (hi - lo) * i / n;
+    if (m == 0.0 || signature_strength(other, t, m, now) >= other_fit.lr_threshold) continue;
+    double rq = 0, qq = 0, rr = 0;
+    std::size_t j = 0;
+    for (std::size_t s = 0; s < t.mean.size(); ++s) {
+      effect_signature(other, m, s, u, var);
+      effect_predict(other, 0.0, s, R, vR);
+      for (std::size_t k = 0; k < u.size(); ++k, ++j) {
+        const double r = x[j] - u[k], q = R[k] + u[k];
+        rq += r * q / w[j], qq += q * q / w[j], rr += r * r / w[j];
+      }
+    }
+    const double c = qq > 0 ? std::clamp(rq / qq, -bound, bound) : 0.0;
+    const double d2 = rr - 2 * c * rq + c * c * qq;
+    if (!(d2 >= best.separation2)) best = {std::max(0.0, d2), m};
+  }
+  return best;
+}
+
 double off_span2(const SpanProducts &p, double bound)
 {
   // f(beta, c) = xx - 2 beta xy - 2 c xR + beta^2 yy + 2 beta c yR + c^2 RR, convex: its

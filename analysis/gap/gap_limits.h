@@ -21,6 +21,7 @@
 #include "gap_fit.h"
 #include "gap_verdict.h"
 
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
@@ -72,6 +73,22 @@ struct LookAlike {
 // against (1 + sb) M_b(mb).
 double prediction_separation2(const EffectData &a, double ma, double sa, const EffectData &b, double mb, double sb,
                               const Target &t, const NoiseFactors &factors);
+
+// A candidate below its detection limit that can pass for the named one (issue 37, section 0:
+// a below-limit effect named as another). The top's fitted prediction ((1 + s) M_top(a), the
+// fit's nuisance scale s) against the nearest prediction (1 + c) M_other(m) the other candidate
+// makes at a magnitude m its fit could reach (magnitude_range) where the data would not detect
+// it on its own (signature_strength below its threshold: below its detection limit), c within
+// the calibration bound: the squared standard deviations between them (the knots' noise not
+// subtracted, as the look-alikes' separation), and that m. Under the evidence margin the data
+// cannot tell the top from the other at a magnitude that the other's own test could not have
+// seen. NaN (and m NaN) when no such magnitude exists.
+struct BelowLimitMimic {
+  double separation2 = std::numeric_limits<double>::quiet_NaN();
+  double magnitude = std::numeric_limits<double>::quiet_NaN();
+};
+BelowLimitMimic below_limit_mimic(const EffectData &top, const EffectFit &top_fit, const EffectData &other,
+                                  const EffectFit &other_fit, const Target &t);
 
 // Inner products, in the fit's weights, of a signature x, another y and the reference R (the
 // baseline at magnitude 0): the squared distance of x from the span of y and a uniform scale

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
 
 namespace granpen {
 
@@ -66,6 +67,29 @@ void widen_tie(const FitEvidence &fits, VerdictDecision &v)
   for (const auto &c : ranking)
     if (in_tie(v, c.name)) ordered.push_back(c.name);
   v.tie = ordered;
+}
+
+// A physical effect is not named alone where the data cannot tell it from another candidate
+// at a magnitude below that one's detection limit (issue 37, section 0): its own test could
+// not have seen it, so its silence rules nothing out. Every such candidate (its nearest
+// prediction within the evidence margin of the top's fitted one) makes a tie with the top,
+// whether or not its own fit explains the gap (the rule asks what the top's prediction could
+// be, not what the other's fit found in the noise). The confirmation cannot decide it: the
+// top's fresh runs reproduce a gap the other makes as well.
+void tie_below_limit(const FitEvidence &fits, VerdictDecision &v)
+{
+  const auto &ranking = fits.ranking;
+  std::vector<TieMember> members;
+  for (std::size_t i = 1; i < ranking.size() && i < fits.mimic2_of_top.size(); ++i) {
+    const double d2 = fits.mimic2_of_top[i];
+    if (d2 < TH::evidence_margin) members.push_back({ranking[i].name, lr_evidence(ranking[0]) - lr_evidence(ranking[i]), d2});
+  }
+  if (members.empty()) return;
+  v.verdict = Verdict::tie, v.rule = VerdictRule::below_limit_look_alike;
+  v.top_effect.clear();
+  v.tie = {ranking[0].name};
+  v.tie_record = {{ranking[0].name, 0.0, -1.0}};
+  for (const auto &m : members) v.tie.push_back(m.name), v.tie_record.push_back(m);
 }
 
 // The fits' rules (gap_verdict.h): the verdict before any confirming run.
@@ -171,6 +195,26 @@ std::string scale_only_note(const EffectFit &top, const FitEvidence &fits)
              "the measurement that tells each apart)";
 }
 
+// below_limit_look_alike's sentence, from the tie's record: each candidate's nearest prediction
+// below its detection limit, and the magnitude that makes it
+std::string below_limit_note(const VerdictDecision &v, const FitEvidence &fits)
+{
+  const EffectFit &top = fits.ranking[0];
+  std::string s = "verdict: a tie: " + top.name + " explains the gap (" + fmt(top.explained, "%.2f") + ", held out " +
+                  fmt(top.heldout_explained, "%.2f") + "), but the data cannot tell its fitted prediction from that of ";
+  for (std::size_t i = 1; i < v.tie_record.size(); ++i) {
+    const TieMember &m = v.tie_record[i];
+    std::size_t j = 0;
+    while (j < fits.ranking.size() && fits.ranking[j].name != m.name) ++j;
+    s += (i > 1 ? (i + 1 == v.tie_record.size() ? " or " : ", ") : "") + m.name + " at " +
+         fmt(j < fits.mimic_magnitude.size() ? fits.mimic_magnitude[j] : NAN) + " (" + fmt(m.separation2, "%.1f") +
+         " squared standard deviations apart)";
+  }
+  return s + ", each below its own detection limit there (its likelihood ratio would not pass its threshold): less than the "
+             "margin of " + fmt(TH::evidence_margin, "%g") + ", so the effect is not named alone (its runs on fresh seeds, "
+             "if any, reproduce a gap the others make as well)";
+}
+
 }    // namespace
 
 std::string shortfall_text(const Shortfall &s)
@@ -215,7 +259,7 @@ void rank_by_evidence(std::vector<EffectFit> &ranking)
   std::sort(ranking.begin(), ranking.end(), [&](const EffectFit &a, const EffectFit &b) { return lr_evidence(a) > lr_evidence(b); });
 }
 
-FitEvidence fit_evidence(bool omnibus, std::vector<EffectFit> ranking, const Separation2 &separation2)
+FitEvidence fit_evidence(bool omnibus, std::vector<EffectFit> ranking, const Separation2 &separation2, const Mimic2 &mimic2)
 {
   FitEvidence ev;
   ev.omnibus = omnibus;
@@ -225,6 +269,12 @@ FitEvidence fit_evidence(bool omnibus, std::vector<EffectFit> ranking, const Sep
   ev.separation2_to_top.assign(ev.ranking.size(), std::nan(""));
   for (std::size_t i = 1; separation2 && i < ev.ranking.size(); ++i)
     if (explains(ev.ranking[i])) ev.separation2_to_top[i] = separation2(ev.ranking[0], ev.ranking[i]);
+  // the mimic matters only for a candidate its own test does not see (a detected one is weighed
+  // by the evidence margin and the look-alike rule)
+  ev.mimic2_of_top.assign(ev.ranking.size(), std::nan(""));
+  ev.mimic_magnitude.assign(ev.ranking.size(), std::nan(""));
+  for (std::size_t i = 1; mimic2 && i < ev.ranking.size(); ++i)
+    if (!ev.ranking[i].detected) std::tie(ev.mimic2_of_top[i], ev.mimic_magnitude[i]) = mimic2(ev.ranking[0], ev.ranking[i]);
   return ev;
 }
 
@@ -281,6 +331,8 @@ VerdictDecision decide_verdict(const FitEvidence &fits, const ConfirmationResult
   VerdictDecision v = decide_from_fits(fits);
   if (c) apply_confirmation(fits, *c, v);
   if (pair) apply_pair(*pair, v);
+  // the verdict that stands (after the confirmation): a physical effect named alone
+  if (c && v.verdict == Verdict::explained && !fits.ranking[0].is_scale) tie_below_limit(fits, v);
   v.candidates = candidate_records(fits, c);
   // a uniform scale explains the gap: a finding of its own kind, no physical effect named
   if (v.verdict == Verdict::explained && fits.ranking[0].is_scale) {
@@ -378,6 +430,7 @@ std::vector<std::string> fits_verdict_notes(const VerdictDecision &v, const FitE
 std::vector<std::string> confirmation_verdict_notes(const VerdictDecision &v, const FitEvidence &fits,
                                                     const ConfirmationResult &c)
 {
+  if (v.rule == VerdictRule::below_limit_look_alike) return {below_limit_note(v, fits)};
   if (v.confirmation == ConfirmationRule::none || v.confirmation == ConfirmationRule::confirmed) return {};
   const EffectFit &top = fits.ranking[0];
   const std::string gaps = "G_all " + fmt(c.gap_before, "%.3f") + " -> " + fmt(c.gap_after, "%.3f");

@@ -41,6 +41,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace granpen {
@@ -53,6 +54,10 @@ enum class Verdict { none, explained, tie, unexplained, scale_only, pair };
 const char *verdict_name(Verdict v);
 
 using Separation2 = std::function<double(const EffectFit &, const EffectFit &)>;
+// The top (first) against an undetected candidate (second): the squared standard deviations
+// between the top's fitted prediction and the nearest the other makes below its detection
+// limit, and that magnitude (gap_limits.h, below_limit_mimic); NaN: none
+using Mimic2 = std::function<std::pair<double, double>(const EffectFit &, const EffectFit &)>;
 
 // Sorts the candidates best first: by the likelihood ratio beyond the noise's (lr_evidence).
 void rank_by_evidence(std::vector<EffectFit> &ranking);
@@ -67,11 +72,16 @@ struct FitEvidence {
   // per candidate of the ranking, its fitted prediction's separation from the top's
   // (separation2), where that can decide (the candidate explains the gap); NaN: not known
   std::vector<double> separation2_to_top;
+  // per candidate of the ranking that is not detected, the squared standard deviations between
+  // the top's fitted prediction and the nearest one it makes at a magnitude below its detection
+  // limit, and that magnitude (Mimic2); NaN: not known, or the candidate is detected
+  std::vector<double> mimic2_of_top, mimic_magnitude;
 };
 
 // The evidence of a ranking (sorted here), with the separations taken from separation2
-// (none when it is not given).
-FitEvidence fit_evidence(bool omnibus, std::vector<EffectFit> ranking, const Separation2 &separation2 = {});
+// and the below-limit mimics of the top from mimic2 (none when they are not given).
+FitEvidence fit_evidence(bool omnibus, std::vector<EffectFit> ranking, const Separation2 &separation2 = {},
+                         const Mimic2 &mimic2 = {});
 
 // Whether G_all shrank from `before` to at most gap_shrink_explained of it.
 bool gap_shrinks(double before, double after);
@@ -133,7 +143,9 @@ enum class VerdictRule {
   at_edge,                 // unexplained: the top needs a magnitude beyond its range
   not_detected,            // unexplained: the top's likelihood ratio is below its threshold
   too_close,               // unexplained: the top two explain the gap about equally well
-  scale_explains           // scale_only: the one candidate that explains the gap is a uniform force scale
+  scale_explains,          // scale_only: the one candidate that explains the gap is a uniform force scale
+  below_limit_look_alike   // tie: the top explains (and is confirmed), but an undetected candidate at a magnitude below its
+                           // detection limit makes a prediction within the evidence margin of the top's (issue 37, section 0)
 };
 
 // How the confirmation changed the fits' verdict.

@@ -157,6 +157,9 @@ FittedCandidates fit_candidates(const std::vector<const Effect *> &effects, cons
   const auto &data = out.data;
   out.evidence = fit_evidence(omnibus.significant, std::move(fits), [&](const EffectFit &a, const EffectFit &b) {
     return prediction_separation2(data.at(a.name), a.magnitude, a.scale, data.at(b.name), b.magnitude, b.scale, f.target, now);
+  }, [&](const EffectFit &top, const EffectFit &other) {
+    const BelowLimitMimic m = below_limit_mimic(data.at(top.name), top, data.at(other.name), other, f.target);
+    return std::make_pair(m.separation2, m.magnitude);
   });
   out.evidence.chi2_0 = omnibus.chi2_0, out.evidence.p_value = omnibus.p_value, out.evidence.nfeatures = omnibus.nfeatures;
   out.evidence.n_null = (int) f.nulls.size();
