@@ -6,7 +6,7 @@
 #   expect_one_failure.sh CLI SWEEP_FILE OUT SECOND_SWEEP_FILE
 set -uo pipefail
 CLI=$1 SPEC=$2 OUT=$3 MORE=$4
-rm -rf "$OUT/one_fails"
+rm -rf "$OUT/one_fails"; mkdir -p "$OUT"    # run alone, no other test has made OUT
 "$CLI" sweep "$SPEC" --out "$OUT" --jobs 2 > "$OUT/one_fails.txt" 2>&1
 rc=$?
 cat "$OUT/one_fails.txt"
