@@ -205,6 +205,64 @@ std::vector<Geometry> mc_geometries(std::size_t P, double size)
           {{1.0}, {s2}, false}};    // one knot, mirrored (friction)
 }
 
+// One draw of the Monte Carlo tests below: the diagnosis's knots of geometry g (the truth plus
+// noise of variance U per feature, on a reference bed of noise 0.5 about B) as fit_effect reads
+// them, the prior's knots (the truth plus noise of variance prior_var) as prior_bound reads
+// them, and a measured target: the true path at `at` (interpolated on the noise-free knots, as
+// the fit's path does), noise 0.5, and an outside bump of `bump` squared standard deviations
+// spread over features 20 to 20 + width - 1
+struct McDraw {
+  EffectData knots;
+  PriorBoundInput prior;
+  std::vector<double> target;
+};
+
+McDraw mc_draw(std::mt19937 &rng, std::normal_distribution<double> &N, const std::vector<double> &B, const Geometry &g, double U, double prior_var, double at,
+               double bump, std::size_t width)
+{
+  // N is the caller's: libstdc++'s keeps the second value of each pair it draws
+  const std::size_t P = B.size(), K = g.truth.size();
+  std::vector<double> path_knots{0.0};
+  for (double m : g.magnitude) path_knots.push_back(m);
+  std::vector<std::size_t> order(K + 1);
+  for (std::size_t j = 0; j <= K; ++j) order[j] = j;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return path_knots[a] < path_knots[b]; });
+  McDraw out;
+  EffectData &d = out.knots;
+  PriorBoundInput &in = out.prior;
+  d.one_sided = g.one_sided, d.scale_bound = 0.03;
+  std::vector<double> ref(P);
+  for (std::size_t k = 0; k < P; ++k) ref[k] = B[k] + std::sqrt(0.5) * N(rng);
+  in.scale_bound = 0.03, in.one_sided = g.one_sided, in.magnitude = g.magnitude;
+  std::vector<std::vector<double>> dmean(K, std::vector<double>(P));
+  for (std::size_t j = 0; j < K; ++j) {
+    std::vector<double> p(P);
+    for (std::size_t k = 0; k < P; ++k)
+      p[k] = g.truth[j][k] + std::sqrt(prior_var) * N(rng), dmean[j][k] = ref[k] + g.truth[j][k] + std::sqrt(U) * N(rng);
+    in.signature.push_back({p});
+    in.knot_var.push_back({std::vector<double>(P, U)});
+    in.prior_var.push_back({std::vector<double>(P, prior_var)});
+  }
+  for (std::size_t i : order) {
+    d.knots.push_back(path_knots[i]);
+    d.mean.push_back({i == 0 ? ref : dmean[i - 1]});
+    d.err.push_back({std::vector<double>(P, i == 0 ? 0.5 : U)});
+  }
+  EffectData tp = d;
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    tp.mean[i] = {B};
+    for (std::size_t k = 0; order[i] != 0 && k < P; ++k) tp.mean[i][0][k] += g.truth[order[i] - 1][k];
+  }
+  std::vector<double> m, v;
+  effect_predict(tp, at, 0, m, v);
+  out.target.resize(P);
+  for (std::size_t k = 0; k < P; ++k)
+    out.target[k] = m[k] + std::sqrt(0.5) * N(rng) + (k >= 20 && k < 20 + width ? std::sqrt(bump / (double) width) : 0.0);
+  in.gap = {std::vector<double>(P)}, in.var = {std::vector<double>(P, 1.0)}, in.scale_dir = {ref};
+  for (std::size_t k = 0; k < P; ++k) in.gap[0][k] = out.target[k] - ref[k];
+  return out;
+}
+
 }    // namespace
 
 TEST(GapAdaptivePrior, TheBoundHoldsWhatTheDiagnosisKnotsEarn)
@@ -234,47 +292,11 @@ TEST(GapAdaptivePrior, TheBoundHoldsWhatTheDiagnosisKnotsEarn)
         for (double alpha : {0.0, 0.3, 0.7, 1.5})
           for (int outside = 0; outside < 2; ++outside)
             for (int t = 0; t < 40; ++t, ++trials) {
-              const std::size_t K = g.truth.size();
-              const double top = g.magnitude.back(), at = alpha * top;
-              // the truth's signature at magnitude alpha x the end knot: the knots' interpolation
-              EffectData truth_path;
-              truth_path.knots = {0.0};
-              for (double m : g.magnitude) truth_path.knots.push_back(m);
-              std::vector<std::size_t> order(K + 1);
-              for (std::size_t j = 0; j <= K; ++j) order[j] = j;
-              std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return truth_path.knots[a] < truth_path.knots[b]; });
-              EffectData d;
-              d.one_sided = g.one_sided, d.scale_bound = 0.03;
-              std::vector<double> ref(P), target(P);
-              for (std::size_t k = 0; k < P; ++k) ref[k] = B[k] + std::sqrt(0.5) * N(rng);
-              PriorBoundInput in;
-              in.scale_bound = 0.03, in.one_sided = g.one_sided, in.magnitude = g.magnitude;
-              std::vector<std::vector<double>> dmean(K, std::vector<double>(P));
-              for (std::size_t j = 0; j < K; ++j) {
-                std::vector<double> p(P);
-                for (std::size_t k = 0; k < P; ++k)
-                  p[k] = g.truth[j][k] + N(rng), dmean[j][k] = ref[k] + g.truth[j][k] + std::sqrt(U) * N(rng);
-                in.signature.push_back({p});
-                in.knot_var.push_back({std::vector<double>(P, U)});
-                in.prior_var.push_back({std::vector<double>(P, 1.0)});
-              }
-              for (std::size_t i : order) {
-                d.knots.push_back(truth_path.knots[i]);
-                d.mean.push_back({i == 0 ? ref : dmean[i - 1]});
-                d.err.push_back({std::vector<double>(P, i == 0 ? 0.5 : U)});
-              }
-              // the true signal: interpolated on the true knots (noise-free) as the fit's path does
-              EffectData tp = d;
-              for (std::size_t i = 0; i < order.size(); ++i) {
-                tp.mean[i] = {B};
-                for (std::size_t k = 0; order[i] != 0 && k < P; ++k) tp.mean[i][0][k] += g.truth[order[i] - 1][k];
-              }
-              std::vector<double> m, v;
-              effect_predict(tp, at, 0, m, v);
-              for (std::size_t k = 0; k < P; ++k)
-                target[k] = m[k] + std::sqrt(0.5) * N(rng) + (outside && k >= 20 && k < 24 ? std::sqrt(15.0) : 0.0);
-              in.gap = {std::vector<double>(P)}, in.var = {std::vector<double>(P, 1.0)}, in.scale_dir = {ref};
-              for (std::size_t k = 0; k < P; ++k) in.gap[0][k] = target[k] - ref[k];
+              // the prior's knots as noisy as the data (variance 1); the bump: 60 on 4 features
+              const McDraw dr = mc_draw(rng, N, B, g, U, 1.0, alpha * g.magnitude.back(), outside ? 60.0 : 0.0, 4);
+              const EffectData &d = dr.knots;
+              const PriorBoundInput &in = dr.prior;
+              const std::vector<double> &target = dr.target;
               const PriorBound b = prior_bound(in);
               const double lr = effect_lr(Target{{target}, {std::vector<double>(P, 0.5)}}, d);
               over += lr > b.bound(), over_projection += lr > b.projection2;
@@ -312,45 +334,12 @@ TEST(GapAdaptivePrior, TheGainBoundHoldsWhatTheFitRemoves)
       for (const Geometry &g : mc_geometries(P, size))
         for (const auto &[alpha, bump] : {std::pair{0.0, 60.0}, std::pair{0.0, 400.0}, std::pair{0.7, 400.0}})
             for (int t = 0; t < 30; ++t, ++trials) {
-              const std::size_t K = g.truth.size();
-              EffectData truth_path;
-              truth_path.knots = {0.0};
-              for (double m : g.magnitude) truth_path.knots.push_back(m);
-              std::vector<std::size_t> order(K + 1);
-              for (std::size_t j = 0; j <= K; ++j) order[j] = j;
-              std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return truth_path.knots[a] < truth_path.knots[b]; });
-              EffectData d;
-              d.one_sided = g.one_sided, d.scale_bound = 0.03;
-              std::vector<double> ref(P), target(P);
-              for (std::size_t k = 0; k < P; ++k) ref[k] = B[k] + std::sqrt(0.5) * N(rng);
-              PriorBoundInput in;
-              in.scale_bound = 0.03, in.one_sided = g.one_sided, in.magnitude = g.magnitude;
-              std::vector<std::vector<double>> dmean(K, std::vector<double>(P));
-              for (std::size_t j = 0; j < K; ++j) {
-                std::vector<double> p(P);
-                for (std::size_t k = 0; k < P; ++k)
-                  p[k] = g.truth[j][k] + std::sqrt(U) * N(rng), dmean[j][k] = ref[k] + g.truth[j][k] + std::sqrt(U) * N(rng);
-                in.signature.push_back({p});
-                in.knot_var.push_back({std::vector<double>(P, U)});
-                in.prior_var.push_back({std::vector<double>(P, U)});
-              }
-              for (std::size_t i : order) {
-                d.knots.push_back(truth_path.knots[i]);
-                d.mean.push_back({i == 0 ? ref : dmean[i - 1]});
-                d.err.push_back({std::vector<double>(P, i == 0 ? 0.5 : U)});
-              }
-              EffectData tp = d;
-              for (std::size_t i = 0; i < order.size(); ++i) {
-                tp.mean[i] = {B};
-                for (std::size_t k = 0; order[i] != 0 && k < P; ++k) tp.mean[i][0][k] += g.truth[order[i] - 1][k];
-              }
-              std::vector<double> m, v;
-              effect_predict(tp, alpha * g.magnitude.back(), 0, m, v);
-              // the outside bump: on 6 features, not the knots' shapes
-              for (std::size_t k = 0; k < P; ++k)
-                target[k] = m[k] + std::sqrt(0.5) * N(rng) + (k >= 20 && k < 26 ? std::sqrt(bump / 6.0) : 0.0);
-              in.gap = {std::vector<double>(P)}, in.var = {std::vector<double>(P, 1.0)}, in.scale_dir = {ref};
-              for (std::size_t k = 0; k < P; ++k) in.gap[0][k] = target[k] - ref[k];
+              // the prior's knots as noisy as the diagnosis's (U); the outside bump on 6
+              // features, not the knots' shapes
+              const McDraw dr = mc_draw(rng, N, B, g, U, U, alpha * g.magnitude.back(), bump, 6);
+              const EffectData &d = dr.knots;
+              const PriorBoundInput &in = dr.prior;
+              const std::vector<double> &target = dr.target;
               const PriorBound b = prior_bound(in);
               const EffectFit f = fit_effect(Target{{target}, {std::vector<double>(P, 0.5)}}, d);
               const double removed = f.explained * b.w0, need = explain_gain_needed(b.w0, (double) P, 0.25);
