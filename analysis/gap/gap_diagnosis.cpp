@@ -229,10 +229,11 @@ std::vector<const Effect *> simulate_adaptively(const Scenario &sc, const Measur
   seen.best_is_scale = seen_verdict.verdict == Verdict::scale_only;
   seen.unexplained_stands = seen_fit.evidence.omnibus && seen_verdict.verdict == Verdict::unexplained && !seen_verdict.between_knots;
   std::vector<PourCandidate> candidates;
+  const double probe = probe_grains(runner.inputs);    // the bench preset, read once
   for (const Effect *e : pour) {
     const std::vector<SimRequest> knots = signature_requests(sc.name, measured.v0s, {e});
-    PourCandidate c{e->name, plan_cost(sc, knots, cache, probe_grains(runner.inputs)).probe_pours, std::nullopt};
-    c.cold_cost = cold_cost(sc, knots, probe_grains(runner.inputs)).probe_pours;
+    PourCandidate c{e->name, plan_cost(sc, knots, cache, probe).probe_pours, std::nullopt};
+    c.cold_cost = cold_cost(sc, knots, probe).probe_pours;
     // with a signature prior its direction is known before its knots (gap_prior.h)
     if (prior) c.prior = candidate_prior_bound(*prior, *e, f, al.grid, GapThresholds::calibration_scale_bound, c.no_prior);
     candidates.push_back(c);
