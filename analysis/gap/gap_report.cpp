@@ -503,9 +503,17 @@ std::string md_first_screen(const Diagnosis &d)
                       "%d null replicates: %d verdict(s) other than none (rate %.2f).\n",
                       q->name.c_str(), q->lr, q->lr > q->lr_threshold ? "above" : "not above", q->lr_threshold, d.nfeatures, d.chi2_0, d.p_value, GapThresholds::significance_p,
                       d.false_alarms.replicates, d.false_alarms.not_none, d.false_alarms.rate());
+  // a tie's confirmation simulates one of its candidates: its runs shrink the gap as the others
+  // would, so the line says whose runs they are and that they do not separate the tie
+  std::string with = d.tested_effect.empty() ? " (nothing added)" : " with " + d.tested_effect + " on fresh seeds";
+  if (d.verdict == Verdict::tie && !d.tested_effect.empty()) {
+    std::vector<std::string> others;
+    for (const auto &t : d.tie)
+      if (t != d.tested_effect) others.push_back(t);
+    if (!others.empty()) with += " (one of the tie: these runs cannot tell it from " + tie_names(others) + ")";
+  }
   md += format_text("- Gap G_all %.3f before, %.3f after%s; at the held-out speed %g cm/s %.3f -> %.3f.\n", d.gap_before,
-                    d.gap_after, d.tested_effect.empty() ? " (nothing added)" : (" with " + d.tested_effect + " on fresh seeds").c_str(),
-                    d.heldout_v0, d.heldout_before, d.heldout_after);
+                    d.gap_after, with.c_str(), d.heldout_v0, d.heldout_before, d.heldout_after);
   if (d.verdict == Verdict::none) {
     std::string lims;
     for (const auto &L : d.limits) {

@@ -1742,6 +1742,17 @@ TEST(GapReport, TheFirstScreenFitsATerminalAndQuotesOnlyTheDiagnosisNumbers)
   EXPECT_NE(screen.find("friction 0.0812 (reference 0.15)"), std::string::npos) << screen;
   EXPECT_EQ(screen.find("cohesion"), std::string::npos) << screen;
   EXPECT_NE(screen.find("7 more measured run(s) at 50 cm/s"), std::string::npos) << screen;
+  // a tie confirmed with one of its candidates: the runs are named as that one's and as not
+  // separating the tie (they would shrink the gap alike with the others)
+  d.verdict = Verdict::tie, d.tie = {"packing", "sidewalls", "force_scale"}, d.tested_effect = "packing";
+  TempDir tie_dir("report_first_screen_tie");
+  write_gap_report(d, tie_dir.path.string());
+  EXPECT_EQ(stray_numbers(tie_dir.path.string(), lines), std::vector<std::string>{});
+  std::ifstream in_tie(tie_dir / "report.md");
+  const std::string text_tie((std::istreambuf_iterator<char>(in_tie)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text_tie.find("with packing on fresh seeds (one of the tie: these runs cannot tell it from sidewalls or force_scale)"),
+            std::string::npos) << text_tie.substr(0, 1500);
+  d.tie.clear(), d.tested_effect.clear();
   // scale_only: the force's scale in percent, and a weighed calibration next
   d.verdict = Verdict::scale_only, d.scale_effect = "packing", d.next.reset();
   ScaleFinding sf;
