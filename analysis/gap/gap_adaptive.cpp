@@ -218,6 +218,14 @@ std::vector<PurchaseDecision> decide_purchases(const CheapStageSeen &seen, const
                                         : "its threshold";
     d.why = (d.simulate ? "simulated: " : "skipped: ") + along + ", " + printf_number("%.1f", d.bound) +
             (d.simulate ? ", can reach " : ", cannot reach ") + printf_number("%.1f", needed) + ", " + against;
+    if (c.pair_partner && seen.unexplained) {
+      d.simulate = true;
+      d.why = "simulated: the cheap stage's verdict is unexplained, and the pair stage may pair it with the filter (a pair "
+              "explains what neither alone does), whatever its own bound (" + printf_number("%.1f", d.bound) + " against " +
+              printf_number("%.1f", needed) + ")";
+      out.push_back(d);
+      continue;
+    }
     // the explain gate: on an unexplained verdict that stands, a candidate that cannot remove
     // a quarter of the gap's excess changes nothing, whatever its likelihood ratio reaches
     if (d.simulate && seen.unexplained_stands && c.prior) {

@@ -40,6 +40,10 @@ struct CheapStageSeen {
   // runs between knots, need that of some candidate; a tie needs two that explain), whatever
   // its likelihood ratio: the explain gate of decide_purchases
   bool unexplained_stands = false;
+  // the cheap stage's verdict is unexplained (on any route): the pair stage (gap_pairs.h) may
+  // then pair the filter with a push-only partner, which changes the verdict by what the two
+  // explain together, not by what the partner explains alone
+  bool unexplained = false;
 };
 
 // The bound with a signature prior (gap_prior.h), per speed and feature: the gap y (the
@@ -105,6 +109,10 @@ struct PlanCandidate {
   std::string no_prior;                     // why a prior given holds no direction for it ("" = none given, or one used)
   double cold_cost = 0;                     // its knots' cost as a cold cache runs them (the unit of the plan's range)
   bool push_only = false;                   // its knots are pushes only (Effect::pour_level false)
+  // a partner the pair stage can pair with the library's filter (gap_pairs.h, pair_partner,
+  // with a pair_filter in the library): on an unexplained cheap stage it is bought whatever
+  // its own bound, since a pair explains what neither alone does (the selftest's chain_ramp)
+  bool pair_partner = false;
 };
 
 // The decision on one candidate: simulated or skipped, the bound and what it was held against.

@@ -233,14 +233,17 @@ StageView see_stage(const Scenario &sc, const MeasuredData &measured, const std:
   seen.best_explains = verdict.verdict == Verdict::explained || verdict.verdict == Verdict::scale_only;
   seen.best_is_scale = verdict.verdict == Verdict::scale_only;
   seen.unexplained_stands = fit.evidence.omnibus && verdict.verdict == Verdict::unexplained && !verdict.between_knots;
+  seen.unexplained = verdict.verdict == Verdict::unexplained;
   return v;
 }
 
 // The candidates whose simulated knots are still to buy, each with its cost and, with a
-// signature prior, its bound before its knots (gap_prior.h)
+// signature prior, its bound before its knots (gap_prior.h); pairs: the library holds a filter
+// the pair stage can pair a push-only partner with (gap_pairs.h)
 std::vector<PlanCandidate> plan_candidates(const Scenario &sc, const std::vector<std::string> &v0s,
                                            const std::vector<const Effect *> &which, const std::string &cache,
-                                           const StageView &view, const std::optional<SignaturePrior> &prior, double probe)
+                                           const StageView &view, const std::optional<SignaturePrior> &prior, double probe,
+                                           bool pairs)
 {
   std::vector<PlanCandidate> out;
   for (const Effect *e : which) {
@@ -248,6 +251,7 @@ std::vector<PlanCandidate> plan_candidates(const Scenario &sc, const std::vector
     PlanCandidate c{e->name, plan_cost(sc, knots, cache, probe).probe_pours, std::nullopt};
     c.cold_cost = cold_cost(sc, knots, probe).probe_pours;
     c.push_only = !e->pour_level;
+    c.pair_partner = pairs && pair_partner(*e);
     if (prior) c.prior = candidate_prior_bound(*prior, *e, view.f, view.grid, GapThresholds::calibration_scale_bound, c.no_prior);
     out.push_back(c);
   }
@@ -274,8 +278,9 @@ std::vector<const Effect *> simulate_adaptively(const Scenario &sc, const Measur
     if (has_simulated_knots(*e)) (e->pour_level ? pour : push).push_back(e);
   run(fitted);
   const double probe = probe_grains(runner.inputs);    // the bench preset, read once
+  const bool pairs = std::any_of(effects.begin(), effects.end(), [](const Effect *e) { return pair_filter(*e); });
   auto decide = [&](const std::vector<const Effect *> &which, const StageView &view) {
-    for (const PurchaseDecision &d : decide_purchases(view.seen, plan_candidates(sc, measured.v0s, which, cache, view, prior, probe),
+    for (const PurchaseDecision &d : decide_purchases(view.seen, plan_candidates(sc, measured.v0s, which, cache, view, prior, probe, pairs),
                                                       GapThresholds::lr_chi2_1_p1e4, GapThresholds::evidence_margin)) {
       record.decisions.push_back(d);
       if (d.simulate) bought.push_back(find_effect(d.effect));

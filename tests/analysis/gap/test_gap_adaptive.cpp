@@ -249,6 +249,31 @@ TEST(GapAdaptive, APourLevelDecisionSeesABoughtPushOnlyCandidateThatExplains)
   EXPECT_TRUE(decision(ds, "friction").simulate) << decision(ds, "friction").why;
 }
 
+// A pair partner (gap_pairs.h: a push-only effect the pair stage pairs with the filter) on a
+// cheap stage left unexplained: the explain gate would skip it (its fit alone removes 100 of
+// the 500 a quarter of the gap needs), but a pair explains what neither alone does (the
+// selftest's chain_ramp: the ramp skipped this way left the pair stage without its partner, a
+// right answer turned unexplained), so it is bought
+TEST(GapAdaptive, APairPartnerIsBoughtOnAnUnexplainedCheapStageWhateverItExplainsAlone)
+{
+  CheapStageSeen seen{2000.0, "measurement_chain", 1400.0, false, false, true, true};
+  PriorBound b;
+  b.projection2 = 900.0, b.gain = 100.0, b.w0 = 2000.0;
+  PlanCandidate ramp{"actuator_ramp", 2.4, std::nullopt};
+  ramp.prior = b, ramp.push_only = true;
+  const auto gated = decide_purchases(seen, {ramp}, FLOOR, MARGIN);
+  EXPECT_FALSE(gated[0].simulate) << gated[0].why;
+  EXPECT_DOUBLE_EQ(gated[0].gain_needed, 500.0);
+  ramp.pair_partner = true;
+  const auto bought = decide_purchases(seen, {ramp}, FLOOR, MARGIN);
+  EXPECT_TRUE(bought[0].simulate) << bought[0].why;
+  EXPECT_NE(bought[0].why.find("the pair stage may pair it with the filter"), std::string::npos) << bought[0].why;
+  // on a cheap stage that is not unexplained the partner is bought on its bound alone
+  seen.unexplained = seen.unexplained_stands = false;
+  b.projection2 = 10.0, ramp.prior = b;
+  EXPECT_FALSE(decide_purchases(seen, {ramp}, FLOOR, MARGIN)[0].simulate);
+}
+
 namespace {
 
 // A knot geometry of the Monte Carlo: magnitudes, true signatures over P features, the side
