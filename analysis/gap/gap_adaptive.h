@@ -1,6 +1,8 @@
-// granpen gap, stage 2b (adaptive plan): which pour-level candidates are worth simulating,
-// given what the cheap stage saw (the baseline, the reference beds, the transforms and the
-// push-only knots, fitted), and what the diagnosis cost against its plan's range. Pure: typed
+// granpen gap, stage 2b (adaptive plan): which candidates' knots are worth simulating, given
+// what the cheap stage saw (the baseline, the reference beds and the transforms, fitted): the
+// push-only candidates first (and the measurement chain beyond its filter), then, with what
+// they bought fitted in, the pour-level ones; and what the diagnosis cost against its plan's
+// range. Pure: typed
 // inputs, a typed decision; no files, no simulation (docs/gap.md, "The plan's cost").
 //
 // A candidate not yet simulated (a push-only one's knots, the measurement chain's simulated
