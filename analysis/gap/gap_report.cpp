@@ -117,7 +117,7 @@ Json parts_json(const GapParts &p)
 // the plan's record (gap_adaptive.h): its range, what this run spent, what it simulated and skipped
 Json plan_json(const PlanRecord &p)
 {
-  Json decisions = Json::array();
+  Json decisions = Json::array(), push_only = Json::array();
   for (const auto &x : p.decisions) {
     Json row{{"effect", x.effect}, {"simulated", x.simulate}, {"bound", num(x.bound)}, {"needed", num(x.needed)},
              {"cost", num(x.cost)}, {"cold_cost", num(x.cold_cost)}, {"why", x.why}};
@@ -127,12 +127,12 @@ Json plan_json(const PlanRecord &p)
                           {"margin_noise", num(x.prior->margin_noise)}};
     // the explain gate (gap_adaptive.h): the squared gap its fit can remove, and what a quarter of the gap needs
     if (x.gain_needed > 0) row["gain"] = num(x.gain), row["gain_needed"] = num(x.gain_needed);
-    decisions.push_back(row);
+    (x.push_only ? push_only : decisions).push_back(row);
   }
   return Json{{"unit", "probe pours of core time"}, {"jobs", p.jobs}, {"least", num(p.least)}, {"most", num(p.most)},
               {"spent", num(p.spent)}, {"wall_least", num(p.wall_least)}, {"wall_most", num(p.wall_most)},
               {"wall_spent", num(p.wall_spent)}, {"core_hours_spent", num(p.core_hours_spent)}, {"decides", p.decides},
-              {"pour_level", decisions}, {"confirmation", p.confirmation}};
+              {"push_only", push_only}, {"pour_level", decisions}, {"confirmation", p.confirmation}};
 }
 
 Json optional_number(const std::optional<double> &v) { return v ? num(*v) : Json(); }
