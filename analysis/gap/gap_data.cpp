@@ -86,38 +86,23 @@ Ensemble make_ensemble(double v0, const std::vector<std::vector<double>> &runs)
   return e;
 }
 
-ScatterSum relative_scatter(const std::vector<const Ensemble *> &ensembles, std::size_t p)
+std::vector<double> pooled_cv2(const std::vector<const Ensemble *> &ensembles, const GapGrid &grid,
+                               double min_cv2, int *dof)
 {
-  ScatterSum out;
-  out.sum.assign(p, 0.0);
+  const std::size_t p = grid.nfeatures(), nb = grid.nbins();
+  std::vector<double> s(p, 0.0);
+  int d = 0;
   for (const Ensemble *e : ensembles) {
     if (!e || e->n() < 2 || e->mean.size() != p) continue;
     for (const auto &r : e->runs)
       for (std::size_t k = 0; k < p; ++k)
-        if (std::abs(e->mean[k]) > 0.0) out.sum[k] += std::pow((r[k] - e->mean[k]) / e->mean[k], 2);
-    out.dof += (int) e->n() - 1;
+        if (std::abs(e->mean[k]) > 0.0) s[k] += std::pow((r[k] - e->mean[k]) / e->mean[k], 2);
+    d += (int) e->n() - 1;
   }
-  return out;
-}
-
-ScatterSum add_scatter(const ScatterSum &a, const ScatterSum &b)
-{
-  if (a.sum.empty()) return b;
-  if (b.sum.empty()) return a;
-  if (a.sum.size() != b.sum.size()) throw std::invalid_argument("add_scatter: sums of different lengths");
-  ScatterSum out = a;
-  for (std::size_t k = 0; k < out.sum.size(); ++k) out.sum[k] += b.sum[k];
-  out.dof += b.dof;
-  return out;
-}
-
-std::vector<double> scatter_cv2(const ScatterSum &sc, const GapGrid &grid, double min_cv2)
-{
-  const std::size_t p = grid.nfeatures(), nb = grid.nbins();
+  if (dof) *dof = d;
   std::vector<double> cv2(p, min_cv2);
-  if (sc.dof <= 0 || sc.sum.size() != p) return cv2;
-  std::vector<double> s(p);
-  for (std::size_t k = 0; k < p; ++k) s[k] = sc.sum[k] / sc.dof;
+  if (d == 0) return cv2;
+  for (std::size_t k = 0; k < p; ++k) s[k] /= d;
   // smooth over the neighbours of the same kind (bins with bins, windows with windows):
   // each estimate rests on few runs, neighbouring depths share the physics
   const std::size_t nw = grid.nwindows();
@@ -129,14 +114,6 @@ std::vector<double> scatter_cv2(const ScatterSum &sc, const GapGrid &grid, doubl
     cv2[k] = std::max(min_cv2, acc / m);
   }
   return cv2;
-}
-
-std::vector<double> pooled_cv2(const std::vector<const Ensemble *> &ensembles, const GapGrid &grid,
-                               double min_cv2, int *dof)
-{
-  const ScatterSum s = relative_scatter(ensembles, grid.nfeatures());
-  if (dof) *dof = s.dof;
-  return scatter_cv2(s, grid, min_cv2);
 }
 
 EnsembleMoments moments_of(const Ensemble &e)

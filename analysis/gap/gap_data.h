@@ -53,24 +53,10 @@ struct Ensemble {
 };
 Ensemble make_ensemble(double v0, const std::vector<std::vector<double>> &runs);
 
-// The relative run-to-run scatter of ensembles of one speed before it is pooled: per feature
-// the sum over ensembles and runs of ((x - mean) / mean)^2, and the degrees of freedom it
-// rests on (the sum of n - 1). Sums of other beds add to it (the signature prior's).
-struct ScatterSum {
-  std::vector<double> sum;
-  int dof = 0;
-};
-// p features; ensembles of another length or fewer than 2 runs add nothing.
-ScatterSum relative_scatter(const std::vector<const Ensemble *> &ensembles, std::size_t p);
-// a + b, feature by feature (an empty side adds nothing); throws std::invalid_argument on
-// sums of different lengths.
-ScatterSum add_scatter(const ScatterSum &a, const ScatterSum &b);
-// The pooled relative variance of a scatter sum: sum / dof, smoothed over neighbouring
-// features of the same kind; floor min_cv2 (every feature min_cv2 without any dof).
-std::vector<double> scatter_cv2(const ScatterSum &s, const GapGrid &grid, double min_cv2);
-
 // Pooled relative run-to-run variance per feature over ensembles of the same speed:
-// scatter_cv2 of their relative_scatter. Returns also the degrees of freedom it rests on.
+// sum over ensembles and runs of ((x - mean) / mean)^2 over the sum of (n - 1), smoothed
+// over neighbouring features of the same kind; floor min_cv2. Returns also the degrees of
+// freedom it rests on.
 std::vector<double> pooled_cv2(const std::vector<const Ensemble *> &ensembles, const GapGrid &grid,
                                double min_cv2, int *dof = nullptr);
 

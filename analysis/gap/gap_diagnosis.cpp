@@ -195,23 +195,6 @@ int run_array_task(const std::vector<SimRequest> &req, RunnerOptions runner, int
   return run_sweeps({req[t.request]}, runner) == 0 ? 0 : 1;
 }
 
-// The signature prior's run-to-run scatter on this grid and the measured speeds, for the noise
-// model (gap_features.h, build_features), or why there is none
-struct NoiseFromPrior {
-  std::optional<std::vector<ScatterSum>> scatter;
-  std::string missing = "no signature prior";
-  const std::vector<ScatterSum> *pointer() const { return scatter ? &*scatter : nullptr; }
-};
-NoiseFromPrior noise_from_prior(const std::optional<SignaturePrior> &prior, const GapGrid &grid, const RunsBySpeed &real)
-{
-  NoiseFromPrior out;
-  if (!prior) return out;
-  std::vector<double> speeds;
-  for (const auto &[v, _] : real) speeds.push_back(v);
-  out.scatter = prior_scatter(*prior, grid, speeds, out.missing);
-  return out;
-}
-
 // The signature simulations, bought adaptively (gap_adaptive.h): the cheap stage first (the
 // baseline, the reference beds, the push-only knots; the transforms cost nothing), fitted on a
 // record of its own; then each pour-level candidate whose bound can still change the verdict.
@@ -232,8 +215,7 @@ std::vector<const Effect *> simulate_adaptively(const Scenario &sc, const Measur
   SimulatedRuns sims = load_simulations(cache, cheap);
   RunsBySpeed real = measured.runs;    // aligned here on a copy: the diagnosis aligns its own
   const Alignment al = align_and_bin(real, sims, sc.depth);
-  const NoiseFromPrior nfp = noise_from_prior(prior, al.grid, real);
-  const Features f = build_features(real, sims, cheap, al.grid, measured.files.size(), nfp.pointer());
+  const Features f = build_features(real, sims, cheap, al.grid, measured.files.size());
   const FittedCandidates seen_fit = fit_candidates(cheap, f, [&](const std::string &sweep) { return mean_phi0(cache, sweep); },
                                                    gap_significance(f, al.grid));
   const std::vector<EffectFit> &seen_rank = seen_fit.evidence.ranking;
@@ -417,11 +399,7 @@ int run_gap_diagnosis(const GapOptions &given, const GapProgressFn &fn)
   progress.say(GapProgress::STEP, "align", "comparing ensembles", 2, 4);
   SimulatedRuns sims = load_simulations(cache, effects);
   const Alignment al = align_and_bin(measured.runs, sims, sc.depth);
-  const NoiseFromPrior nfp = noise_from_prior(prior, al.grid, measured.runs);
-  Features f = build_features(measured.runs, sims, effects, al.grid, measured.files.size(), nfp.pointer());
-  if (prior && !nfp.scatter)
-    f.notes.push_back("noise model without the signature prior's scatter (" + nfp.missing +
-                      "): it pools the knots simulated here, and moves with the library and the plan");
+  const Features f = build_features(measured.runs, sims, effects, al.grid, measured.files.size());
   for (const auto &line : feature_dump(f)) progress.say(GapProgress::DEBUG, "features", line);
 
   // 6 where: the gap curves, the regimes, the observables, the omnibus test

@@ -7,7 +7,6 @@
 #include <cmath>
 #include <cstdio>
 #include <functional>
-#include <stdexcept>
 
 namespace granpen {
 
@@ -92,7 +91,7 @@ namespace {
 // per speed: the ensembles, the noise model pooled over the ensembles on beds of their own,
 // the measured target
 void speed_ensembles(Features &f, std::size_t s, const RunsBySpeed &real, const SimulatedRuns &sims,
-                     const std::vector<const Effect *> &effects, const GapGrid &grid, const std::vector<ScatterSum> *prior_scatter)
+                     const std::vector<const Effect *> &effects, const GapGrid &grid)
 {
   const double v = f.speeds[s];
   f.real[s] = ensemble_of(real.at(v), grid, v);
@@ -109,18 +108,12 @@ void speed_ensembles(Features &f, std::size_t s, const RunsBySpeed &real, const 
     f.knots[name].resize(f.nspeeds());
     f.knots[name][s] = ensemble_of(by.at(v), grid, v);
   }
-  // with the signature prior's scatter (every pour-level knot's beds and its baseline's, fixed
-  // when the prior was written) the knots simulated here stay out: the noise model is then
-  // the same whichever candidates the library holds and the plan buys. Without it, every
-  // pour-level knot simulated joins (docs/gap.md, "Where" 5)
-  if (!prior_scatter)
-    for (const Effect *e : effects)
-      if (e->pour_level)
-        for (double a : e->knots) pool.push_back(&f.knots[effect_sweep_name(*e, a)][s]);
-  ScatterSum scatter = relative_scatter(pool, grid.nfeatures());
-  if (prior_scatter) scatter = add_scatter(scatter, prior_scatter->at(s));
-  f.cv2[s] = scatter_cv2(scatter, grid, 1e-4);
-  f.dof_min = std::min(f.dof_min, scatter.dof);
+  for (const Effect *e : effects)
+    if (e->pour_level)
+      for (double a : e->knots) pool.push_back(&f.knots[effect_sweep_name(*e, a)][s]);
+  int dof = 0;
+  f.cv2[s] = pooled_cv2(pool, grid, 1e-4, &dof);
+  f.dof_min = std::min(f.dof_min, dof);
   const double scale = noise_scale(f.real[s], f.base[s], f.cv2[s], grid);
   if (scale > 1.5)
     f.notes.push_back("v0 = " + printf_number("%.4g", v) + ": the measured runs scatter " +
@@ -133,17 +126,15 @@ void speed_ensembles(Features &f, std::size_t s, const RunsBySpeed &real, const 
 }    // namespace
 
 Features build_features(const RunsBySpeed &real, const SimulatedRuns &sims, const std::vector<const Effect *> &effects,
-                        const GapGrid &grid, std::size_t n_real_files, const std::vector<ScatterSum> *prior_scatter)
+                        const GapGrid &grid, std::size_t n_real_files)
 {
-  if (prior_scatter && prior_scatter->size() != real.size())
-    throw std::invalid_argument("build_features: the prior's scatter has not one entry per measured speed");
   Features f;
   for (const auto &[v, _] : real) f.speeds.push_back(v);
   const std::size_t ns = f.nspeeds();
   f.real.resize(ns), f.base.resize(ns), f.fresh.resize(ns), f.cv2.resize(ns), f.fresh_err.resize(ns);
   f.spec_real.resize(ns), f.spec_fresh.resize(ns);
   f.dof_min = 1 << 30;
-  for (std::size_t s = 0; s < ns; ++s) speed_ensembles(f, s, real, sims, effects, grid, prior_scatter);
+  for (std::size_t s = 0; s < ns; ++s) speed_ensembles(f, s, real, sims, effects, grid);
   // The fits see the gap against the baseline on the reference beds (seeds 11 to 14), not
   // against the signature beds (1, 2): an effect's signature is a difference to the
   // signature beds, and a gap measured against those same beds would share their noise
@@ -163,12 +154,8 @@ Features build_features(const RunsBySpeed &real, const SimulatedRuns &sims, cons
   f.n_reference = (int) nf;
   const std::size_t m = std::clamp<std::size_t>(n_real_files / std::max<std::size_t>(1, ns), 1, nf - 2);
   f.nulls = null_replicates(f, grid, m);
-  f.noise_from_prior = prior_scatter != nullptr;
-  f.notes.push_back(std::string("noise model: run-to-run scatter of ") +
-                    (prior_scatter ? "the signature prior's beds, the baseline's and the reference beds"
-                                   : "every simulated ensemble") +
-                    " pooled per speed and feature (" + std::to_string(f.dof_min) +
-                    " degrees of freedom), relative to the mean, smoothed over neighbouring depths");
+  f.notes.push_back("noise model: run-to-run scatter of every simulated ensemble pooled per speed and feature (" +
+                    std::to_string(f.dof_min) + " degrees of freedom), relative to the mean, smoothed over neighbouring depths");
   return f;
 }
 

@@ -1,10 +1,9 @@
 // granpen gap, stage 5 (features and noise model): per speed, the ensembles of run
 // features of the measured runs, of the baseline on its signature and reference beds and
-// of every effect knot; the noise model (relative run-to-run variance pooled over the
-// ensembles on beds of their own, with the signature prior's when it has them); the
-// measured target with its variances; and the null replicates of the targeted test (the
-// reference beds split into a no-effect "measurement" and its reference). docs/gap.md,
-// "Where" 3-5 and "Targeted test".
+// of every effect knot; the noise model (relative run-to-run variance pooled over every
+// ensemble on beds of its own); the measured target with its variances; and the null
+// replicates of the targeted test (the reference beds split into a no-effect
+// "measurement" and its reference). docs/gap.md, "Where" 3-5 and "Targeted test".
 #ifndef GRANPEN_GAP_FEATURES_H
 #define GRANPEN_GAP_FEATURES_H
 
@@ -31,7 +30,6 @@ struct Features {
   std::vector<Target> nulls;                             // null replicates
   std::vector<EnsembleMoments> spec_real, spec_fresh;    // per speed: the metric's band amplitudes (G_spec)
   int dof_min = 0;                                       // degrees of freedom of the noise model (fewest)
-  bool noise_from_prior = false;                         // pooled with the signature prior's scatter
   int n_reference = 0;                                   // reference runs per speed (fewest)
   std::vector<std::string> notes;                        // said in the report
   std::size_t nspeeds() const { return speeds.size(); }
@@ -64,12 +62,9 @@ std::vector<Target> null_replicates(const Features &f, const GapGrid &grid, std:
 
 // Everything above, from aligned runs on the grid. n_real_files: the measured runs in all
 // (the null replicates take as many runs per speed as the measurement has, at most all but
-// two). prior_scatter (per measured speed, ascending; gap_prior.h, prior_scatter): the noise
-// model pools it with the baseline's and the reference beds only, so that it does not depend
-// on which knots were simulated; null: it pools every pour-level knot of effects as well.
-// Throws InputError when the reference beds have fewer than 3 runs at a speed.
+// two). Throws InputError when the reference beds have fewer than 3 runs at a speed.
 Features build_features(const RunsBySpeed &real, const SimulatedRuns &sims, const std::vector<const Effect *> &effects,
-                        const GapGrid &grid, std::size_t n_real_files, const std::vector<ScatterSum> *prior_scatter = nullptr);
+                        const GapGrid &grid, std::size_t n_real_files);
 
 // One line per ensemble and speed of means (and the noise model): for GRANPEN_GAP_DEBUG.
 std::vector<std::string> feature_dump(const Features &f);

@@ -41,7 +41,7 @@ const std::vector<TraceRun> &runs_at(const RunsBySpeed &by, double v, const std:
 
 // the knots' signatures of every pour-level effect on one grid
 PriorGrid grid_signatures(const RunsBySpeed &base, const std::map<std::string, RunsBySpeed> &knots,
-                          const std::vector<const Effect *> &effects, const GapGrid &grid, bool scatter_with_baseline)
+                          const std::vector<const Effect *> &effects, const GapGrid &grid)
 {
   PriorGrid g;
   g.zmax = grid.zmax;
@@ -63,24 +63,6 @@ PriorGrid grid_signatures(const RunsBySpeed &base, const std::map<std::string, R
     }
     std::sort(ks.begin(), ks.end(), [](const PriorKnot &x, const PriorKnot &y) { return x.magnitude < y.magnitude; });
     g.effects[e->name] = ks;
-  }
-  // the noise model's share (gap_features.h, build_features): the relative scatter of the
-  // baseline and of every knot, each on the prior's beds, per speed. On the signature seeds
-  // the baseline's runs are the diagnosis's own, which it pools itself: left out, not
-  // counted twice
-  for (const auto &[v, runs] : base) {
-    std::vector<Ensemble> es;
-    if (scatter_with_baseline) es.push_back(ensemble_of(runs, grid, v));
-    for (const Effect *e : effects)
-      for (double a : e->knots) {
-        const std::string name = effect_sweep_name(*e, a);
-        es.push_back(ensemble_of(runs_at(knots.at(name), v, "sweep " + name), grid, v));
-      }
-    std::vector<const Ensemble *> pool;
-    for (const Ensemble &x : es) pool.push_back(&x);
-    const ScatterSum sc = relative_scatter(pool, grid.nfeatures());
-    g.scatter.push_back(sc.sum);
-    g.scatter_dof.push_back(sc.dof);
   }
   return g;
 }
@@ -142,7 +124,7 @@ SignaturePrior prior_from_runs(const std::string &scenario, const std::vector<st
   for (int i = 0; i < PRIOR_DEPTHS; ++i) {
     grid.zmax = zmax0 - i * grid.w;
     if (grid.zmax < 1.0) break;
-    p.grids.push_back(grid_signatures(base, knots, effects, grid, seeds != SIGNATURE_SEEDS));
+    p.grids.push_back(grid_signatures(base, knots, effects, grid));
   }
   if (p.grids.empty()) throw InputError("the prior's runs share less than 1 cm of depth");
   return p;
@@ -160,18 +142,13 @@ void write_prior(const std::string &path, const SignaturePrior &p)
                              {"variance", table_json(k.variance)}});
       effects.push_back(Json{{"effect", name}, {"knots", knots}});
     }
-    Json grid{{"zmax", json_rounded("%.9g", g.zmax)}, {"effects", effects}};
-    if (!g.scatter.empty()) grid["scatter"] = table_json(g.scatter), grid["scatter_dof"] = g.scatter_dof;
-    grids.push_back(grid);
+    grids.push_back(Json{{"zmax", json_rounded("%.9g", g.zmax)}, {"effects", effects}});
   }
   const Json j{{"format", "granpen-gap-prior"}, {"version", PRIOR_FORMAT}, {"scenario", p.scenario}, {"source", p.source},
                {"seeds", p.seeds}, {"beds", p.beds}, {"speeds", p.speeds}, {"w", p.w}, {"window", p.window},
                {"bands", p.bands}, {"what", "per grid depth, per pour-level effect and knot: the knot ensemble's binned "
                                             "features minus the baseline's on the same seeds, per speed and feature "
-                                            "(physical units), and its variance of the mean; scatter: per speed and "
-                                            "feature the sum of squared relative deviations from the ensemble's mean over "
-                                            "the baseline's runs (unless on the signature seeds: the diagnosis pools "
-                                            "those itself) and every knot's (scatter_dof: the degrees of freedom)"},
+                                            "(physical units), and its variance of the mean"},
                {"grids", grids}};
   write_json(path, j, 1);
 }
@@ -206,13 +183,6 @@ SignaturePrior read_prior(const std::string &path)
                                  table_of(k, "variance", path)});
         pg.effects[member(e, "effect", path).get<std::string>()] = ks;
       }
-      // written since the noise model pools it: a prior without it has none to give
-      if (g.contains("scatter")) {
-        pg.scatter = table_of(g, "scatter", path);
-        pg.scatter_dof = member(g, "scatter_dof", path).get<std::vector<int>>();
-        if (pg.scatter.size() != p.speeds.size() || pg.scatter_dof.size() != p.speeds.size())
-          throw GapRefused(path + ": keys 'scatter' and 'scatter_dof' need one row per speed");
-      }
       p.grids.push_back(pg);
     }
   } catch (const nlohmann::json::exception &) {
@@ -237,68 +207,32 @@ std::optional<SignaturePrior> find_prior(const std::string &option, const std::s
   return p;
 }
 
-namespace {
-
-// The prior's grid of the diagnosis's depth, and where each of its speeds sits among the
-// prior's (at); null with the reason in missing when it has none
-const PriorGrid *grid_at(const SignaturePrior &p, const GapGrid &grid, const std::vector<double> &speeds,
-                         std::vector<std::size_t> &at, std::string &missing)
-{
-  if (p.w != grid.w || p.window != grid.window || p.bands != grid.bands) {
-    missing = "the prior's bins are not the diagnosis's";
-    return nullptr;
-  }
-  const auto g = std::find_if(p.grids.begin(), p.grids.end(), [&](const PriorGrid &x) { return std::abs(x.zmax - grid.zmax) < 1e-6; });
-  if (g == p.grids.end()) {
-    missing = "the prior holds no grid " + printf_number("%.4g", grid.zmax) + " cm deep";
-    return nullptr;
-  }
-  at.clear();
-  for (double v : speeds) {
-    const auto it = std::find_if(p.speeds.begin(), p.speeds.end(), [&](double x) { return std::abs(x - v) < 1e-9 * std::max(1.0, v); });
-    if (it == p.speeds.end()) {
-      missing = "the prior has no speed " + printf_number("%.4g", v) + " cm/s";
-      return nullptr;
-    }
-    at.push_back((std::size_t) (it - p.speeds.begin()));
-  }
-  return &*g;
-}
-
-}    // namespace
-
-std::optional<std::vector<ScatterSum>> prior_scatter(const SignaturePrior &p, const GapGrid &grid,
-                                                     const std::vector<double> &speeds, std::string &missing)
-{
-  std::vector<std::size_t> at;
-  const PriorGrid *g = grid_at(p, grid, speeds, at, missing);
-  if (!g) return std::nullopt;
-  if (g->scatter.empty()) {
-    missing = "the prior holds no run-to-run scatter (written before it did: write it again)";
-    return std::nullopt;
-  }
-  std::vector<ScatterSum> out;
-  for (std::size_t i : at) {
-    if (g->scatter[i].size() != grid.nfeatures()) {
-      missing = "the prior's scatter is not of the grid's " + std::to_string(grid.nfeatures()) + " features";
-      return std::nullopt;
-    }
-    out.push_back(ScatterSum{g->scatter[i], g->scatter_dof[i]});
-  }
-  return out;
-}
-
 PriorSignatures prior_signatures(const SignaturePrior &p, const std::string &effect, const GapGrid &grid,
                                  const std::vector<double> &speeds)
 {
   PriorSignatures out;
-  std::vector<std::size_t> at;
-  const PriorGrid *g = grid_at(p, grid, speeds, at, out.missing);
-  if (!g) return out;
+  if (p.w != grid.w || p.window != grid.window || p.bands != grid.bands) {
+    out.missing = "the prior's bins are not the diagnosis's";
+    return out;
+  }
+  const auto g = std::find_if(p.grids.begin(), p.grids.end(), [&](const PriorGrid &x) { return std::abs(x.zmax - grid.zmax) < 1e-6; });
+  if (g == p.grids.end()) {
+    out.missing = "the prior holds no grid " + printf_number("%.4g", grid.zmax) + " cm deep";
+    return out;
+  }
   const auto e = g->effects.find(effect);
   if (e == g->effects.end()) {
     out.missing = "the prior has no signature of " + effect;
     return out;
+  }
+  std::vector<std::size_t> at;
+  for (double v : speeds) {
+    const auto it = std::find_if(p.speeds.begin(), p.speeds.end(), [&](double x) { return std::abs(x - v) < 1e-9 * std::max(1.0, v); });
+    if (it == p.speeds.end()) {
+      out.missing = "the prior has no speed " + printf_number("%.4g", v) + " cm/s";
+      return out;
+    }
+    at.push_back((std::size_t) (it - p.speeds.begin()));
   }
   for (const PriorKnot &k : e->second) {
     PriorKnot kk;

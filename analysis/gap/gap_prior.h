@@ -38,12 +38,6 @@ struct PriorKnot {
 struct PriorGrid {
   double zmax = 0;
   std::map<std::string, std::vector<PriorKnot>> effects;    // effect -> its knots, ascending
-  // per speed: the relative run-to-run scatter of the baseline (unless the prior's beds are
-  // the signature seeds, whose baseline every diagnosis pools itself) and every knot on the
-  // prior's beds (gap_data.h, ScatterSum) and its degrees of freedom; empty in a prior
-  // written before
-  std::vector<std::vector<double>> scatter;
-  std::vector<int> scatter_dof;
 };
 struct SignaturePrior {
   std::string scenario, source;             // source: the file read, or the cache written from
@@ -78,13 +72,6 @@ struct PriorSignatures {
 };
 PriorSignatures prior_signatures(const SignaturePrior &p, const std::string &effect, const GapGrid &grid,
                                  const std::vector<double> &speeds);
-
-// The prior's scatter on the diagnosis's grid and speeds (in their order), for the noise
-// model (build_features): fixed when the prior was written, so that the noise model does
-// not move with the library or the plan's purchases. Empty, with the reason in `missing`,
-// when the prior has none for this grid and these speeds.
-std::optional<std::vector<ScatterSum>> prior_scatter(const SignaturePrior &p, const GapGrid &grid,
-                                                     const std::vector<double> &speeds, std::string &missing);
 
 // The adaptive plan's bound for effect e from the prior (gap_adaptive.h, prior_bound), on the
 // cheap stage's features f and grid: the gap against the reference beds, weighted as the fits

@@ -11,7 +11,6 @@
 #include "gap_inputs.h"
 #include "gap_pairs.h"
 #include "gap_plan.h"
-#include "gap_prior.h"
 #include "gap_report.h"
 #include "gap_sims.h"
 #include "sensor_response.h"
@@ -611,79 +610,6 @@ TEST(GapFeatures, NullReplicatesSplitTheReferenceBeds)
   // fewer than 3 reference runs: no null replicate possible
   sims.fresh[100].resize(2);
   EXPECT_THROW(build_features(real, sims, {}, grid, 2), InputError);
-}
-
-// The noise model does not move with the library or the plan (issue 37, section 0): with the
-// signature prior's scatter it pools the prior's beds with the baseline's and the reference
-// beds, so a pour-level candidate in the library (its knots simulated) or out of it (or
-// skipped by the plan: its knots not simulated) leaves every pooled variance, and with them
-// the null replicates, exactly as they were. Main's pooling (no prior) takes the knots in,
-// and the same two libraries give other variances: the check below that they differ keeps
-// this test able to fail.
-TEST(GapFeatures, NoiseModelWithThePriorIsTheSameWithOrWithoutACandidate)
-{
-  auto scaled = [](const std::string &name, double v0, double factor) {
-    TraceRun r = ramp_run(name, v0, 0.2, 2.5);
-    for (auto &F : r.F) F *= factor;
-    return r;
-  };
-  const Effect *e = find_effect("packing");
-  ASSERT_TRUE(e && e->pour_level && !e->knots.empty());
-  const std::vector<double> speeds{100, 200};
-  RunsBySpeed real, prior_base;
-  std::map<std::string, RunsBySpeed> prior_knots;
-  SimulatedRuns sims;
-  for (double v : speeds) {
-    real[v] = {scaled("m1", v, 1.0), scaled("m2", v, 1.01)};
-    sims.base[v] = {scaled("b1", v, 1.0), scaled("b2", v, 1.02)};
-    for (int i = 0; i < 4; ++i) sims.fresh[v].push_back(scaled("f" + std::to_string(i), v, 1.0 + 0.01 * i));
-    prior_base[v] = {scaled("p1", v, 1.0), scaled("p2", v, 1.03)};
-    for (double a : e->knots) prior_knots[effect_sweep_name(*e, a)][v] = {scaled("k1", v, 0.9), scaled("k2", v, 0.95)};
-  }
-  // the candidate's knots simulated here scatter far more than the rest (10%): in main's
-  // pooling they would dominate
-  SimulatedRuns with_knots = sims;
-  for (double a : e->knots)
-    for (double v : speeds) with_knots.knots[effect_sweep_name(*e, a)][v] = {scaled("k1", v, 1.0), scaled("k2", v, 1.1)};
-
-  // the prior, written and read back (its sums as the file holds them)
-  TempDir tmp("prior_scatter");
-  write_prior(tmp / "prior.json", prior_from_runs("tiny", {"41", "42"}, prior_base, prior_knots, {e}, 2.5));
-  const SignaturePrior prior = read_prior(tmp / "prior.json");
-  GapGrid grid;
-  grid.zmax = 2.0;
-  std::string missing;
-  const auto scatter = prior_scatter(prior, grid, speeds, missing);
-  ASSERT_TRUE(scatter) << missing;
-  ASSERT_EQ(scatter->size(), 2u);
-  // the prior's baseline and its knots, one degree of freedom each
-  EXPECT_EQ((*scatter)[0].dof, 1 + (int) e->knots.size());
-
-  const Features without = build_features(real, sims, {}, grid, 2, &*scatter);
-  const Features with = build_features(real, with_knots, {e}, grid, 2, &*scatter);
-  EXPECT_TRUE(with.noise_from_prior);
-  // the baseline's 1, the reference beds' 3 and the prior's
-  EXPECT_EQ(with.dof_min, 4 + (*scatter)[0].dof);
-  EXPECT_EQ(without.dof_min, with.dof_min);
-  EXPECT_EQ(without.cv2, with.cv2);    // exactly: the same sums in the same order
-  ASSERT_EQ(without.nulls.size(), with.nulls.size());
-  for (std::size_t i = 0; i < with.nulls.size(); ++i) EXPECT_EQ(without.nulls[i].err, with.nulls[i].err);
-  EXPECT_EQ(without.target.err, with.target.err);
-
-  // main's pooling: the candidate's knots join, and its variances move with the library
-  const Features main_without = build_features(real, sims, {}, grid, 2);
-  const Features main_with = build_features(real, with_knots, {e}, grid, 2);
-  EXPECT_EQ(main_with.dof_min, main_without.dof_min + (int) e->knots.size());
-  EXPECT_NE(main_without.cv2, main_with.cv2);
-
-  // a prior written before it held the scatter: none, and the reason said
-  SignaturePrior old = prior;
-  for (PriorGrid &g : old.grids) g.scatter.clear(), g.scatter_dof.clear();
-  EXPECT_FALSE(prior_scatter(old, grid, speeds, missing));
-  EXPECT_NE(missing.find("no run-to-run scatter"), std::string::npos) << missing;
-  // a speed the prior lacks: none
-  EXPECT_FALSE(prior_scatter(prior, grid, {100, 300}, missing));
-  EXPECT_NE(missing.find("no speed 300"), std::string::npos) << missing;
 }
 
 // ---- which and confirm on a hand-made feature set
