@@ -22,8 +22,10 @@
 #           with a frictionless shaft (dg10_box20_shaft). 21 pushes, 9.8e11 atom-steps: about
 #           76 hours of one core at 3.6e6 atom-steps/s, units of 0.7 to 11 hours (docs/presets.md,
 #           "The paper's box"): a push cut by the end of a session resumes from its last
-#           checkpoint (every 5000 steps, in the run folder, not committed) when the next run of
-#           box.sh dg10 finds it there.
+#           checkpoint (every 1000 steps, in the run folder, not committed) when the next run of
+#           box.sh dg10 finds it there. 1000, not the sweep's 5000: a 535k-grain step is 0.15 s
+#           of a core alone and up to 1 s niced beside other work, so 5000 steps lost up to 1.5
+#           hours at a session's end; a 200 MB checkpoint every 1000 steps costs a few seconds.
 #
 #   validation/box.sh bench|dg10 [--out DIR] [--units N] [--ranks N] [--commit] [--status]
 set -euo pipefail
@@ -41,6 +43,6 @@ case $series in
     sweeps=""
     for part in peak1 peak2 peak3 flow D shaft; do sweeps="$sweeps $S/dg10_box20_$part.sweep"; done
     # the flow analysis as the 10 cm box's (validation/dg10.sh: the tip 1 to 4 cm deep)
-    exec "$ROOT/validation/campaign.sh" --data "$ROOT/data/sims/dg10_box20" --sweeps "${sweeps# }" --tip "1 4" "$@" ;;
+    exec "$ROOT/validation/campaign.sh" --data "$ROOT/data/sims/dg10_box20" --sweeps "${sweeps# }" --tip "1 4" --checkpoint 1000 "$@" ;;
   *) echo "box.sh: no series '$series' (bench, dg10)" >&2; exit 2 ;;
 esac

@@ -21,7 +21,7 @@
 # each sweep file, then its pushes, sweep file by sweep file.
 #
 #   validation/campaign.sh --data DIR --sweeps "FILE..." [--out DIR] [--units N] [--ranks N]
-#                          [--tip "ZLO ZHI"] [--commit] [--status]
+#                          [--tip "ZLO ZHI"] [--checkpoint STEPS] [--commit] [--status]
 #
 #   --data DIR    the committed folder of the campaign (DIR/beds, DIR/SWEEP); its name is
 #                 the campaign's in messages and commits
@@ -32,6 +32,10 @@
 #                 poured or a push; rebuilding a bed from its committed tile is not one
 #   --ranks N     run each unit on N MPI ranks (mpirun; default 1)
 #   --tip "A B"   the tip's depth window of the flow analysis (push_flow.sh --tip; default 1 4)
+#   --checkpoint STEPS  a push's checkpoints every STEPS steps (the sweep runner's --checkpoint,
+#                 default 5000); a push is resumed with the campaign's value, and resuming one
+#                 from a checkpoint written at another spacing is sound whenever that spacing
+#                 is a multiple of this one (the run stops at the next multiple of STEPS)
 #   --commit      git-commit DIR after every unit (on the work tree's branch)
 #   --status      print what is committed and what is under way, and stop
 # A push cut by the end of a session (or a kill) leaves its trace and its checkpoints
@@ -47,7 +51,7 @@
 # another campaign starting in the same OUT.
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
-OUT=/work/granpen-runs UNITS=-1 RANKS=1 COMMIT=0 STATUS=0 DATA="" SWEEPS="" TIP="1 4"
+OUT=/work/granpen-runs UNITS=-1 RANKS=1 COMMIT=0 STATUS=0 DATA="" SWEEPS="" TIP="1 4" CHECKPOINT=5000
 while [ $# -gt 0 ]; do
   case $1 in
     --out) OUT=$2; shift 2 ;;
@@ -58,6 +62,7 @@ while [ $# -gt 0 ]; do
     --data) DATA=$2; shift 2 ;;
     --sweeps) SWEEPS=$2; shift 2 ;;
     --tip) TIP=$2; shift 2 ;;
+    --checkpoint) CHECKPOINT=$2; shift 2 ;;
     *) echo "campaign.sh: unknown argument $1 (see the header of $0)" >&2; exit 2 ;;
   esac
 done
@@ -65,6 +70,7 @@ done
 CAMPAIGN=$(basename "$DATA")
 [[ $UNITS =~ ^(-1|[0-9]+)$ ]] || { echo "campaign.sh: --units $UNITS is not a whole number" >&2; exit 2; }
 [[ $RANKS =~ ^[1-9][0-9]*$ ]] || { echo "campaign.sh: --ranks $RANKS is not a whole number >= 1" >&2; exit 2; }
+[[ $CHECKPOINT =~ ^[1-9][0-9]{0,5}$ ]] || { echo "campaign.sh: --checkpoint $CHECKPOINT is not a whole number of steps >= 1" >&2; exit 2; }
 LMP=${GRANPEN_LMP:-$ROOT/build/lmp_granpen} CLI=${GRANPEN_CLI:-$ROOT/build/analysis/granpen-cli}
 [ -x "$CLI" ] || { echo "campaign.sh: no granpen-cli at $CLI (build first, or set GRANPEN_CLI)" >&2; exit 2; }
 mkdir -p "$DATA/beds"
@@ -139,7 +145,7 @@ commit() {    # MESSAGE
 budget_left() { [ "$UNITS" -lt 0 ] || [ "$ran" -lt "$UNITS" ]; }
 runner() {    # SWEEP_FILE K: the sweep runner runs planned run K alone
   local mpi=(); [ "$RANKS" -gt 1 ] && mpi=(--mpirun mpirun --ranks "$RANKS")
-  nice -n 19 "$CLI" sweep "$1" --jobs 1 --only "$2" --out "$OUT" --inputs "$INPUTS" --lmp "$LMP" "${mpi[@]}"
+  nice -n 19 "$CLI" sweep "$1" --jobs 1 --only "$2" --out "$OUT" --inputs "$INPUTS" --lmp "$LMP" --checkpoint "$CHECKPOINT" "${mpi[@]}"
 }
 # a push (the runner resumes it from its checkpoint when one is there); when LAMMPS refuses
 # the checkpoint it was resumed from (a restart this build cannot read: the log's first ERROR

@@ -45,4 +45,19 @@ out=$(status) || fail "campaign.sh --status exits $?"
 echo "$out" | grep -q "under way here: push tiny_demo/$id: no complete checkpoint: starts over" ||
   fail "two checkpoints cut short, not reported as starting over: $out"
 
+# ---- --checkpoint: refused by name when not a whole number of steps; given, it reaches the
+# sweep runner (a stand-in CLI records the runner's command line and answers the rest itself)
+for bad in 0 x 1e3 1000000; do
+  err=$(GRANPEN_CLI=$CLI "$ROOT/validation/campaign.sh" --data "$W/data/camp" --sweeps "$SWEEP" --out "$W/runs" --checkpoint "$bad" --status 2>&1); rc=$?
+  [ "$rc" = 2 ] && [[ $err == *"--checkpoint $bad is not a whole number"* ]] || fail "--checkpoint $bad: exit $rc, '$err'"
+done
+cat > "$W/cli" <<EOS
+#!/usr/bin/env bash
+case " \$* " in *" --only "*) echo "\$*" >> "$W/runner.args"; exit 1 ;; esac
+exec "$CLI" "\$@"
+EOS
+chmod +x "$W/cli"
+GRANPEN_CLI=$W/cli GRANPEN_LMP=/bin/false "$ROOT/validation/campaign.sh" --data "$W/data/camp" --sweeps "$SWEEP" --out "$W/runs" --units 1 --checkpoint 700 > "$W/run.out" 2>&1
+grep -q -- "--checkpoint 700" "$W/runner.args" 2>/dev/null || fail "--checkpoint 700 not passed to the sweep runner: $(cat "$W/runner.args" 2>/dev/null)"
+
 [ "$fails" = 0 ] && echo "campaign_status: all checks passed" || { echo "campaign_status: $fails failed"; exit 1; }
