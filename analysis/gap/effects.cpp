@@ -181,6 +181,35 @@ std::string effect_sweep_name(const Effect &e, double a) { return e.name + "_" +
 
 bool by_transform(const Effect &e, double a) { return e.transform && a <= e.transform_max; }
 
+bool has_simulated_knots(const Effect &e)
+{
+  for (double a : e.knots)
+    if (!by_transform(e, a)) return true;
+  return false;
+}
+
+const Effect *transform_part(const Effect &e)
+{
+  if (!e.transform) return nullptr;
+  if (!has_simulated_knots(e)) return &e;
+  // one copy per library effect, made once (the library is fixed), so pointers stay valid
+  static const std::vector<Effect> parts = [] {
+    std::vector<Effect> out;
+    for (const Effect &x : effect_library()) {
+      if (!x.transform || !has_simulated_knots(x)) continue;
+      Effect part = x;
+      part.knots.clear();
+      for (double a : x.knots)
+        if (by_transform(x, a)) part.knots.push_back(a);
+      out.push_back(part);
+    }
+    return out;
+  }();
+  for (const Effect &x : parts)
+    if (x.name == e.name) return &x;
+  return nullptr;
+}
+
 double reference_magnitude(const Effect &e)
 {
   return std::isfinite(e.reference) ? e.reference : e.knots.empty() ? 0.0 : e.knots[0];

@@ -55,6 +55,15 @@ double reference_magnitude(const Effect &e);
 // Whether effect e at magnitude a is realised by its transform (nothing simulated).
 bool by_transform(const Effect &e, double a);
 
+// Whether some of e's knots are simulated (not realised by its transform).
+bool has_simulated_knots(const Effect &e);
+// The part of e that costs nothing: e with only the knots its transform realises (the
+// measurement chain up to 2 ms), its name and all else kept; e itself when every knot is
+// realised so. The adaptive plan fits it first and buys the rest only when its bound says
+// the knots beyond could matter (gap_adaptive.h). Null for an effect without a transform
+// (and for one with simulated knots that is not the library's).
+const Effect *transform_part(const Effect &e);
+
 // The effects commonest in labs, whose detection limits a `none` reports first (report.md's
 // first screen): the force's calibration and the grains' density, the grains' friction and
 // packing (the calibration's numbers), the sensor's mount and the rod's surface (the rig's).

@@ -82,7 +82,7 @@ std::vector<Flat> path_coefficients(const PriorBoundInput &in)
   for (const auto &[a, j] : m) grid.push_back(a);
   std::vector<Flat> out;
   for (double a : grid) {
-    if (a == 0.0) continue;
+    if (a == 0.0 || !(a > in.beyond)) continue;
     std::size_t i = 0;    // the segment [m[i], m[i + 1]], extrapolated at the ends
     while (i + 2 < m.size() && a > m[i + 1].first) ++i;
     const double f = (a - m[i].first) / (m[i + 1].first - m[i].first);
@@ -122,8 +122,10 @@ PriorBound point_bound(const PriorBoundInput &in, const Flat &c, const std::vect
       double sv = 0, sw = 0, su = 0;
       for (std::size_t j = 0; j < c.size(); ++j) {
         const double cj = std::abs(c[j]);
+        su += cj * std::sqrt(in.knot_var[j][s][k] / V);
+        if (j < in.own.size() && in.own[j]) continue;    // the diagnosis's own signature: no tilt
         sv += cj * std::sqrt((in.knot_var[j][s][k] + in.prior_var[j][s][k]) / V);
-        sw += cj * std::sqrt(in.prior_var[j][s][k] / V), su += cj * std::sqrt(in.knot_var[j][s][k] / V);
+        sw += cj * std::sqrt(in.prior_var[j][s][k] / V);
       }
       const double t = su * su, v = sv * sv / (1 + t);
       lr -= r[i] * r[i] / (1 + t) + std::log1p(t), fixed += r[i] * r[i];
@@ -182,20 +184,21 @@ double explain_gain_needed(double w0, double n, double fraction)
   return fraction * std::max(w0 - n, GapThresholds::chi2_noise_sigmas * std::sqrt(2.0 * n));
 }
 
-std::vector<PurchaseDecision> decide_purchases(const CheapStageSeen &seen, const std::vector<PourCandidate> &candidates,
+std::vector<PurchaseDecision> decide_purchases(const CheapStageSeen &seen, const std::vector<PlanCandidate> &candidates,
                                                double lr_floor, double margin)
 {
-  std::vector<PourCandidate> order = candidates;
-  std::stable_sort(order.begin(), order.end(), [](const PourCandidate &a, const PourCandidate &b) { return a.cost < b.cost; });
+  std::vector<PlanCandidate> order = candidates;
+  std::stable_sort(order.begin(), order.end(), [](const PlanCandidate &a, const PlanCandidate &b) { return a.cost < b.cost; });
   // a physical cheap candidate that explains the gap stands unless another comes within the
   // margin of its evidence (a tie) or beyond; a scale names no cause, so its look-alikes
   // (the pour-level signatures near a uniform scale) are needed whatever it explains
   const bool stands = seen.best_explains && !seen.best_is_scale;
   const double needed = stands ? std::max(lr_floor, seen.best_evidence - margin) : lr_floor;
   std::vector<PurchaseDecision> out;
-  for (const PourCandidate &c : order) {
+  for (const PlanCandidate &c : order) {
     PurchaseDecision d;
     d.effect = c.effect;
+    d.push_only = c.push_only;
     d.cost = c.cost;
     d.cold_cost = c.cold_cost;
     d.needed = needed;
@@ -215,6 +218,14 @@ std::vector<PurchaseDecision> decide_purchases(const CheapStageSeen &seen, const
                                         : "its threshold";
     d.why = (d.simulate ? "simulated: " : "skipped: ") + along + ", " + printf_number("%.1f", d.bound) +
             (d.simulate ? ", can reach " : ", cannot reach ") + printf_number("%.1f", needed) + ", " + against;
+    if (c.pair_partner && seen.unexplained) {
+      d.simulate = true;
+      d.why = "simulated: the cheap stage's verdict is unexplained, and the pair stage may pair it with the filter (a pair "
+              "explains what neither alone does), whatever its own bound (" + printf_number("%.1f", d.bound) + " against " +
+              printf_number("%.1f", needed) + ")";
+      out.push_back(d);
+      continue;
+    }
     // the explain gate: on an unexplained verdict that stands, a candidate that cannot remove
     // a quarter of the gap's excess changes nothing, whatever its likelihood ratio reaches
     if (d.simulate && seen.unexplained_stands && c.prior) {
@@ -241,11 +252,15 @@ std::string plan_record_text(const PlanRecord &r)
                   printf_number("%.3g", r.least) + " to " + printf_number("%.3g", r.most) + " (" +
                   printf_number("%.3g", r.wall_least) + " to " + printf_number("%.3g", r.wall_most) +
                   " of wall time), counted as a cold cache runs it; where a run lands: " + r.decides + ".";
-  int skipped = 0;
-  for (const auto &d : r.decisions) skipped += !d.simulate;
-  if (!r.decisions.empty())
-    s += " Pour-level candidates: " + std::to_string(r.decisions.size() - skipped) + " simulated, " + std::to_string(skipped) +
-         " skipped.";
+  // push-only candidates are decided first, then the pour-level ones
+  for (const bool push : {true, false}) {
+    int simulated = 0, skipped = 0;
+    for (const auto &d : r.decisions)
+      if (d.push_only == push) ++(d.simulate ? simulated : skipped);
+    if (simulated + skipped > 0)
+      s += std::string(push ? " Push-only" : " Pour-level") + " candidates: " + std::to_string(simulated) + " simulated, " +
+           std::to_string(skipped) + " skipped.";
+  }
   // a candidate's cost counted cold, as the range and "this run" are; what this cache lacked beside it
   for (const auto &d : r.decisions)
     s += "\n- " + d.effect + " (" + printf_number("%.3g", d.cold_cost) + " probe pours" +

@@ -1,9 +1,12 @@
-// granpen gap, stage 2b (adaptive plan): which pour-level candidates are worth simulating,
-// given what the cheap stage saw (the baseline, the reference beds, the transforms and the
-// push-only knots, fitted), and what the diagnosis cost against its plan's range. Pure: typed
+// granpen gap, stage 2b (adaptive plan): which candidates' knots are worth simulating, given
+// what the cheap stage saw (the baseline, the reference beds and the transforms, fitted): the
+// push-only candidates first (and the measurement chain beyond its filter), then, with what
+// they bought fitted in, the pour-level ones; and what the diagnosis cost against its plan's
+// range. Pure: typed
 // inputs, a typed decision; no files, no simulation (docs/gap.md, "The plan's cost").
 //
-// A candidate not yet simulated can change the verdict only if its likelihood ratio could
+// A candidate not yet simulated (a push-only one's knots, the measurement chain's simulated
+// knots beyond its filter, a pour-level one's) can change the verdict only if its likelihood ratio could
 // reach its threshold (lambda x 15.14, lambda >= 1: 15.14 at least) and, when a cheap
 // candidate already explains the gap, come within the evidence margin of that candidate's
 // evidence. Its likelihood ratio is the squared gap it removes, so it is bounded by the
@@ -18,6 +21,7 @@
 #ifndef GRANPEN_GAP_ADAPTIVE_H
 #define GRANPEN_GAP_ADAPTIVE_H
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,6 +42,10 @@ struct CheapStageSeen {
   // runs between knots, need that of some candidate; a tie needs two that explain), whatever
   // its likelihood ratio: the explain gate of decide_purchases
   bool unexplained_stands = false;
+  // the cheap stage's verdict is unexplained (on any route): the pair stage (gap_pairs.h) may
+  // then pair the filter with a push-only partner, which changes the verdict by what the two
+  // explain together, not by what the partner explains alone
+  bool unexplained = false;
 };
 
 // The bound with a signature prior (gap_prior.h), per speed and feature: the gap y (the
@@ -52,6 +60,13 @@ struct PriorBoundInput {
   bool one_sided = false;           // no magnitude below 0 (Effect::one_sided)
   double reach = 0.25;              // the fit's extrapolation beyond the end knots (EffectData::reach)
   double scale_bound = 0;
+  // per knot: its signature is the diagnosis's own (a knot its transform realises, already
+  // fitted): exactly known, so no tilt (its prior_var is 0 and its knot_var enters only the
+  // fit's weights); empty: none is
+  std::vector<bool> own;
+  // only the path's points at magnitudes above this (the part the knots bought add: the
+  // chain beyond its filter's 2 ms; the filtered part is fitted already)
+  double beyond = -INFINITY;
 };
 // The most likelihood ratio the candidate can earn (docs/gap.md, "The bound with a prior"):
 // the largest over the points of the fit's path (each magnitude's interpolation x of the
@@ -86,19 +101,26 @@ constexpr double PRIOR_BOUND_P = 0.01;
 constexpr int PRIOR_PATH_POINTS = 400;
 PriorBound prior_bound(const PriorBoundInput &in);
 
-// A pour-level candidate before its knots are simulated.
-struct PourCandidate {
+// A candidate before its knots are simulated (push-only ones are decided first: their knots
+// are pushes into the signature beds, a pour-level candidate's pour beds of their own).
+struct PlanCandidate {
   std::string effect;
   double cost = 0;                          // probe pours of core time its knots cost (what the cache lacks)
   std::optional<double> projection2;        // the squared gap along its signature, when a direction is known
   std::optional<PriorBound> prior;          // with a signature prior: its bound (then projection2 is its bound())
   std::string no_prior;                     // why a prior given holds no direction for it ("" = none given, or one used)
   double cold_cost = 0;                     // its knots' cost as a cold cache runs them (the unit of the plan's range)
+  bool push_only = false;                   // its knots are pushes only (Effect::pour_level false)
+  // a partner the pair stage can pair with the library's filter (gap_pairs.h, pair_partner,
+  // with a pair_filter in the library): on an unexplained cheap stage it is bought whatever
+  // its own bound, since a pair explains what neither alone does (the selftest's chain_ramp)
+  bool pair_partner = false;
 };
 
 // The decision on one candidate: simulated or skipped, the bound and what it was held against.
 struct PurchaseDecision {
   std::string effect;
+  bool push_only = false;  // a push-only candidate's knots (or the chain's beyond its filter)
   bool simulate = true;
   double bound = 0;        // the most its likelihood ratio can reach on this data
   double needed = 0;       // what it would have to reach to change the verdict
@@ -117,11 +139,11 @@ struct PurchaseDecision {
 // chi2_noise_sigmas standard deviations of chi^2_n; of w0 itself when n is not known).
 double explain_gain_needed(double w0, double n, double fraction);
 
-// Per pour-level candidate, in the order they are bought (least cost first: the evidence per
+// Per candidate (the push-only ones, or the pour-level ones), in the order they are bought (least cost first: the evidence per
 // CPU-second a knot buys is its inverse noise over its cost, and the pour-level knots' noise
 // is alike, docs/gap.md), whether to simulate it. lr_floor: the least threshold a candidate
 // can have (GapThresholds::lr_chi2_1_p1e4); margin: the evidence margin of a tie.
-std::vector<PurchaseDecision> decide_purchases(const CheapStageSeen &seen, const std::vector<PourCandidate> &candidates,
+std::vector<PurchaseDecision> decide_purchases(const CheapStageSeen &seen, const std::vector<PlanCandidate> &candidates,
                                                double lr_floor, double margin);
 
 // The plan's record of a diagnosis (diagnosis.json "plan", report.md): its cost range in the

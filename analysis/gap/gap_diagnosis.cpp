@@ -87,6 +87,17 @@ double probe_grains(const std::string &inputs)
   }
 }
 
+// The parts of the effects that cost nothing (gap_adaptive.h): the transforms' knots (the
+// force scale; the measurement chain up to 2 ms), in library order. With the baseline and the
+// reference beds they are the cheap stage, fitted before anything is bought.
+std::vector<const Effect *> free_parts(const std::vector<const Effect *> &effects)
+{
+  std::vector<const Effect *> out;
+  for (const Effect *e : effects)
+    if (const Effect *part = transform_part(*e)) out.push_back(part);
+  return out;
+}
+
 // The plan before anything is simulated, printed in its one unit (probe pours of core time,
 // wall time at --jobs from it): every knot, and, for a diagnosis, its range (the cheap stage
 // alone, to every knot with the costliest confirmation, a pair's included: gap_plan.h,
@@ -101,9 +112,8 @@ bool plan_within_budget(const GapOptions &given, const Scenario &sc, const std::
   progress.say(GapProgress::INFO, "plan", "plan: " + plan_summary(all, jobs) + " (scenario " + sc.name + ")");
   PlanCost most = all;
   if (diagnosis) {
-    std::vector<const Effect *> cheap;
-    for (const Effect *e : effects)
-      if (!e->pour_level) cheap.push_back(e);
+    // the cheap stage: the baseline, the reference beds and the transforms (nothing simulated)
+    const std::vector<const Effect *> cheap = free_parts(effects);
     // from what the cache lacks (printed, --budget); the record's as a cold cache runs it, to
     // hold what this run spent counted the same way
     auto range = [&](const std::string &from) {
@@ -118,7 +128,9 @@ bool plan_within_budget(const GapOptions &given, const Scenario &sc, const std::
     r.jobs = jobs;
     r.least = cold_least.probe_pours, r.most = cold_most.probe_pours;
     r.wall_least = wall_probe_pours(cold_least, jobs), r.wall_most = wall_probe_pours(cold_most, jobs);
-    r.decides = "which pour-level candidates the cheap stage leaves able to change the verdict (each simulated unless its bound, "
+    r.decides = "which push-only candidates (the measurement chain's simulated knots beyond its filter among them), then "
+                "which pour-level candidates, the cheap stage and the push-only candidates bought leave able to change the "
+                "verdict (each simulated unless its bound, "
                 "with a signature prior the likelihood ratio its prior's knots earn along the fit's path plus the margin of "
                 "the diagnosis's own knots, without one the whole squared gap, stays below its threshold), "
                 "then whether an effect is confirmed, which, and whether its magnitude is refined, and whether the "
@@ -195,10 +207,63 @@ int run_array_task(const std::vector<SimRequest> &req, RunnerOptions runner, int
   return run_sweeps({req[t.request]}, runner) == 0 ? 0 : 1;
 }
 
+// What the stage so far saw (the effects fitted, on a record of its own: the diagnosis fits
+// its own later), for the adaptive plan's bounds.
+struct StageView {
+  CheapStageSeen seen;
+  Features f;
+  GapGrid grid;
+};
+StageView see_stage(const Scenario &sc, const MeasuredData &measured, const std::vector<const Effect *> &fitted,
+                    const std::string &cache)
+{
+  SimulatedRuns sims = load_simulations(cache, fitted);
+  RunsBySpeed real = measured.runs;    // aligned here on a copy: the diagnosis aligns its own
+  const Alignment al = align_and_bin(real, sims, sc.depth);
+  StageView v{CheapStageSeen{}, build_features(real, sims, fitted, al.grid, measured.files.size()), al.grid};
+  const FittedCandidates fit = fit_candidates(fitted, v.f, [&](const std::string &sweep) { return mean_phi0(cache, sweep); },
+                                              gap_significance(v.f, al.grid));
+  const std::vector<EffectFit> &rank = fit.evidence.ranking;
+  const VerdictDecision verdict = decide_verdict(fit.evidence);
+  // the whole squared gap in the fits' weights (no candidate fitted: not known, no bound)
+  CheapStageSeen &seen = v.seen;
+  seen.chi2_0 = rank.empty() ? INFINITY : 0.0;
+  for (const EffectFit &r : rank) seen.chi2_0 = std::max(seen.chi2_0, r.chi2_0);
+  if (!rank.empty()) seen.best = rank[0].name, seen.best_evidence = lr_evidence(rank[0]);
+  seen.best_explains = verdict.verdict == Verdict::explained || verdict.verdict == Verdict::scale_only;
+  seen.best_is_scale = verdict.verdict == Verdict::scale_only;
+  seen.unexplained_stands = fit.evidence.omnibus && verdict.verdict == Verdict::unexplained && !verdict.between_knots;
+  seen.unexplained = verdict.verdict == Verdict::unexplained;
+  return v;
+}
+
+// The candidates whose simulated knots are still to buy, each with its cost and, with a
+// signature prior, its bound before its knots (gap_prior.h); pairs: the library holds a filter
+// the pair stage can pair a push-only partner with (gap_pairs.h)
+std::vector<PlanCandidate> plan_candidates(const Scenario &sc, const std::vector<std::string> &v0s,
+                                           const std::vector<const Effect *> &which, const std::string &cache,
+                                           const StageView &view, const std::optional<SignaturePrior> &prior, double probe,
+                                           bool pairs)
+{
+  std::vector<PlanCandidate> out;
+  for (const Effect *e : which) {
+    const std::vector<SimRequest> knots = knot_requests(sc.name, v0s, *e);
+    PlanCandidate c{e->name, plan_cost(sc, knots, cache, probe).probe_pours, std::nullopt};
+    c.cold_cost = cold_cost(sc, knots, probe).probe_pours;
+    c.push_only = !e->pour_level;
+    c.pair_partner = pairs && pair_partner(*e);
+    if (prior) c.prior = candidate_prior_bound(*prior, *e, view.f, view.grid, GapThresholds::calibration_scale_bound, c.no_prior);
+    out.push_back(c);
+  }
+  return out;
+}
+
 // The signature simulations, bought adaptively (gap_adaptive.h): the cheap stage first (the
-// baseline, the reference beds, the push-only knots; the transforms cost nothing), fitted on a
-// record of its own; then each pour-level candidate whose bound can still change the verdict.
-// Returns the effects simulated, in library order; the decisions go to record.
+// baseline, the reference beds; the transforms cost nothing), fitted on a record of its own;
+// then each push-only candidate (and the chain beyond its filter) whose bound can still change
+// the verdict; then, with what those bought fitted in, each pour-level candidate likewise.
+// Returns the effects simulated, in library order (the chain as its filtered part when its
+// simulated knots were skipped); the decisions go to record.
 std::vector<const Effect *> simulate_adaptively(const Scenario &sc, const MeasuredData &measured,
                                                 const std::vector<const Effect *> &effects, const RunnerOptions &runner,
                                                 const std::optional<SignaturePrior> &prior, PlanRecord &record)
@@ -208,44 +273,37 @@ std::vector<const Effect *> simulate_adaptively(const Scenario &sc, const Measur
     if (run_requests(signature_requests(sc.name, measured.v0s, which), runner) != 0)
       throw InputError("some simulations failed: see the manifests under " + cache + " (rerun to retry them)");
   };
-  std::vector<const Effect *> cheap, pour;
-  for (const Effect *e : effects) (e->pour_level ? pour : cheap).push_back(e);
-  run(cheap);
-  if (pour.empty()) return cheap;
-  SimulatedRuns sims = load_simulations(cache, cheap);
-  RunsBySpeed real = measured.runs;    // aligned here on a copy: the diagnosis aligns its own
-  const Alignment al = align_and_bin(real, sims, sc.depth);
-  const Features f = build_features(real, sims, cheap, al.grid, measured.files.size());
-  const FittedCandidates seen_fit = fit_candidates(cheap, f, [&](const std::string &sweep) { return mean_phi0(cache, sweep); },
-                                                   gap_significance(f, al.grid));
-  const std::vector<EffectFit> &seen_rank = seen_fit.evidence.ranking;
-  const VerdictDecision seen_verdict = decide_verdict(seen_fit.evidence);
-  // the whole squared gap in the fits' weights (no cheap candidate fitted: not known, no bound)
-  CheapStageSeen seen;
-  seen.chi2_0 = seen_rank.empty() ? INFINITY : 0.0;
-  for (const EffectFit &r : seen_rank) seen.chi2_0 = std::max(seen.chi2_0, r.chi2_0);
-  if (!seen_rank.empty()) seen.best = seen_rank[0].name, seen.best_evidence = lr_evidence(seen_rank[0]);
-  seen.best_explains = seen_verdict.verdict == Verdict::explained || seen_verdict.verdict == Verdict::scale_only;
-  seen.best_is_scale = seen_verdict.verdict == Verdict::scale_only;
-  seen.unexplained_stands = seen_fit.evidence.omnibus && seen_verdict.verdict == Verdict::unexplained && !seen_verdict.between_knots;
-  std::vector<PourCandidate> candidates;
-  const double probe = probe_grains(runner.inputs);    // the bench preset, read once
-  for (const Effect *e : pour) {
-    const std::vector<SimRequest> knots = signature_requests(sc.name, measured.v0s, {e});
-    PourCandidate c{e->name, plan_cost(sc, knots, cache, probe).probe_pours, std::nullopt};
-    c.cold_cost = cold_cost(sc, knots, probe).probe_pours;
-    // with a signature prior its direction is known before its knots (gap_prior.h)
-    if (prior) c.prior = candidate_prior_bound(*prior, *e, f, al.grid, GapThresholds::calibration_scale_bound, c.no_prior);
-    candidates.push_back(c);
-  }
-  record.decisions = decide_purchases(seen, candidates, GapThresholds::lr_chi2_1_p1e4, GapThresholds::evidence_margin);
-  std::vector<const Effect *> bought, out;
-  for (const PurchaseDecision &d : record.decisions)
-    if (d.simulate) bought.push_back(find_effect(d.effect));
-  run(bought);
+  std::vector<const Effect *> fitted = free_parts(effects), push, pour, bought;
   for (const Effect *e : effects)
-    if (!e->pour_level || std::find(bought.begin(), bought.end(), e) != bought.end()) out.push_back(e);
-  return out;
+    if (has_simulated_knots(*e)) (e->pour_level ? pour : push).push_back(e);
+  run(fitted);
+  const double probe = probe_grains(runner.inputs);    // the bench preset, read once
+  const bool pairs = std::any_of(effects.begin(), effects.end(), [](const Effect *e) { return pair_filter(*e); });
+  auto decide = [&](const std::vector<const Effect *> &which, const StageView &view) {
+    for (const PurchaseDecision &d : decide_purchases(view.seen, plan_candidates(sc, measured.v0s, which, cache, view, prior, probe, pairs),
+                                                      GapThresholds::lr_chi2_1_p1e4, GapThresholds::evidence_margin)) {
+      record.decisions.push_back(d);
+      if (d.simulate) bought.push_back(find_effect(d.effect));
+    }
+  };
+  if (!push.empty()) {
+    decide(push, see_stage(sc, measured, fitted, cache));
+    run(bought);
+  }
+  // every effect as it is now fitted: bought whole, else its part that costs nothing
+  auto as_fitted = [&] {
+    std::vector<const Effect *> out;
+    for (const Effect *e : effects)
+      if (std::find(bought.begin(), bought.end(), e) != bought.end()) out.push_back(e);
+      else if (const Effect *part = transform_part(*e)) out.push_back(part);
+    return out;
+  };
+  if (!pour.empty()) {
+    const std::size_t before = bought.size();
+    decide(pour, see_stage(sc, measured, as_fitted(), cache));    // it sees the push-only candidates bought
+    run(std::vector<const Effect *>(bought.begin() + before, bought.end()));
+  }
+  return as_fitted();
 }
 
 // What the diagnosis spent, counted as a cold cache runs it: the signature simulations of

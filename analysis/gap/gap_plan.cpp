@@ -24,12 +24,19 @@ std::vector<SimRequest> signature_requests(const std::string &scenario, const st
   std::vector<SimRequest> out{baseline_request(scenario, v0, SIGNATURE_SEEDS, "baseline"),
                               baseline_request(scenario, v0, REFERENCE_SEEDS, "fresh_baseline")};
   for (const Effect *e : effects)
-    for (double a : e->knots) {
-      if (by_transform(*e, a)) continue;    // the baseline's runs, transformed
-      SimRequest r = effect_request(scenario, *e, a, v0, SIGNATURE_SEEDS, effect_sweep_name(*e, a));
-      if (!e->pour_level) r.beds_from = "baseline";
-      out.push_back(r);
-    }
+    for (SimRequest &r : knot_requests(scenario, v0, *e)) out.push_back(std::move(r));
+  return out;
+}
+
+std::vector<SimRequest> knot_requests(const std::string &scenario, const std::vector<std::string> &v0, const Effect &e)
+{
+  std::vector<SimRequest> out;
+  for (double a : e.knots) {
+    if (by_transform(e, a)) continue;    // the baseline's runs, transformed
+    SimRequest r = effect_request(scenario, e, a, v0, SIGNATURE_SEEDS, effect_sweep_name(e, a));
+    if (!e.pour_level) r.beds_from = "baseline";
+    out.push_back(r);
+  }
   return out;
 }
 

@@ -22,6 +22,9 @@ extern const std::vector<std::string> SIGNATURE_SEEDS, REFERENCE_SEEDS, CONFIRM_
 // simulated (gap_sims.h).
 std::vector<SimRequest> signature_requests(const std::string &scenario, const std::vector<std::string> &v0,
                                            const std::vector<const Effect *> &effects);
+// Effect e's simulated knots alone (signature_requests' for e, without the baseline's): what
+// the adaptive plan buys for e.
+std::vector<SimRequest> knot_requests(const std::string &scenario, const std::vector<std::string> &v0, const Effect &e);
 
 // The runs confirming effect e at magnitude a with fresh seeds, at speeds v0; a push-only
 // effect pours the fresh beds once (sweep confirm_beds, or refine_beds) and reuses them. At

@@ -39,7 +39,8 @@ const std::vector<TraceRun> &runs_at(const RunsBySpeed &by, double v, const std:
   return it->second;
 }
 
-// the knots' signatures of every pour-level effect on one grid
+// the simulated knots' signatures of every effect on one grid (a transform's knots are the
+// diagnosis's own: nothing to hold)
 PriorGrid grid_signatures(const RunsBySpeed &base, const std::map<std::string, RunsBySpeed> &knots,
                           const std::vector<const Effect *> &effects, const GapGrid &grid)
 {
@@ -48,6 +49,7 @@ PriorGrid grid_signatures(const RunsBySpeed &base, const std::map<std::string, R
   for (const Effect *e : effects) {
     std::vector<PriorKnot> ks;
     for (double a : e->knots) {
+      if (by_transform(*e, a)) continue;
       const std::string name = effect_sweep_name(*e, a);
       PriorKnot k;
       k.magnitude = a;
@@ -146,7 +148,7 @@ void write_prior(const std::string &path, const SignaturePrior &p)
   }
   const Json j{{"format", "granpen-gap-prior"}, {"version", PRIOR_FORMAT}, {"scenario", p.scenario}, {"source", p.source},
                {"seeds", p.seeds}, {"beds", p.beds}, {"speeds", p.speeds}, {"w", p.w}, {"window", p.window},
-               {"bands", p.bands}, {"what", "per grid depth, per pour-level effect and knot: the knot ensemble's binned "
+               {"bands", p.bands}, {"what", "per grid depth, per effect and simulated knot (pour-level and push-only): the knot ensemble's binned "
                                             "features minus the baseline's on the same seeds, per speed and feature "
                                             "(physical units), and its variance of the mean"},
                {"grids", grids}};
@@ -284,10 +286,28 @@ EffectData prior_effect_data(const Effect &e, const PriorSignatures &ps, const F
 std::optional<PriorBound> candidate_prior_bound(const SignaturePrior &p, const Effect &e, const Features &f,
                                                 const GapGrid &grid, double scale_bound, std::string &missing)
 {
-  const PriorSignatures ps = prior_signatures(p, e.name, grid, f.speeds);
+  PriorSignatures ps = prior_signatures(p, e.name, grid, f.speeds);
   missing = ps.missing;
   if (!missing.empty()) return std::nullopt;
   PriorBoundInput in;
+  // the knots its transform realises (the chain up to 2 ms) are the diagnosis's own, fitted
+  // already: on the path as they are, and the bound over what lies beyond them
+  const std::size_t n_prior = ps.knots.size();
+  if (e.transform && has_simulated_knots(e)) {
+    in.beyond = e.transform_max;
+    for (double a : e.knots) {
+      const auto own = f.knots.find(effect_sweep_name(e, a));
+      if (!by_transform(e, a) || own == f.knots.end()) continue;
+      PriorKnot k;
+      k.magnitude = a;
+      for (std::size_t s = 0; s < f.nspeeds(); ++s) {
+        std::vector<double> sig(f.base[s].mean.size());
+        for (std::size_t i = 0; i < sig.size(); ++i) sig[i] = own->second[s].mean[i] - f.base[s].mean[i];
+        k.signature.push_back(sig), k.variance.push_back(std::vector<double>(sig.size(), 0.0));
+      }
+      ps.knots.push_back(k);
+    }
+  }
   in.scale_bound = scale_bound;
   in.one_sided = e.one_sided;    // the path of the fit (gap_fit.h): its knots, side and reach
   in.reach = EffectData().reach;
@@ -298,7 +318,9 @@ std::optional<PriorBound> candidate_prior_bound(const SignaturePrior &p, const E
     for (std::size_t k = 0; k < B.size(); ++k) y[k] = f.target.mean[s][k] - B[k], V[k] = f.target.err[s][k] + f.fresh_err[s][k];
     in.gap.push_back(y), in.var.push_back(V), in.scale_dir.push_back(B);
   }
-  for (const PriorKnot &k : ps.knots) {
+  for (std::size_t j = 0; j < ps.knots.size(); ++j) {
+    const PriorKnot &k = ps.knots[j];
+    const bool own = j >= n_prior;
     std::vector<std::vector<double>> U, W;
     for (std::size_t s = 0; s < f.nspeeds(); ++s) {
       const auto &B = f.fresh[s].mean;
@@ -306,11 +328,12 @@ std::optional<PriorBound> candidate_prior_bound(const SignaturePrior &p, const E
       // a signature K - B on n beds each: cv2 (K^2 + B^2) / n, the noise model's
       for (std::size_t i = 0; i < B.size(); ++i) {
         const double two = f.cv2[s][i] * (std::pow(B[i] + k.signature[s][i], 2) + B[i] * B[i]);
-        u[i] = two / own_beds, w[i] = two / prior_beds;
+        u[i] = two / own_beds, w[i] = own ? 0.0 : two / prior_beds;
       }
       U.push_back(u), W.push_back(w);
     }
     in.signature.push_back(k.signature), in.knot_var.push_back(U), in.prior_var.push_back(W), in.magnitude.push_back(k.magnitude);
+    in.own.push_back(own);
   }
   PriorBound b = prior_bound(in);
   // the gap's noise share, as the candidate's own fit would take it (explained_fraction's n:
@@ -327,7 +350,9 @@ void add_prior_limits(const SignaturePrior &p, const std::vector<const Effect *>
                       std::vector<DetectionLimit> &limits)
 {
   for (const Effect *e : all_effects) {
-    if (!e->pour_level || std::find(simulated.begin(), simulated.end(), e) != simulated.end()) continue;
+    // a candidate the plan skipped, pour-level or push-only (the chain fitted on its filter's
+    // knots alone is simulated: its limit is its fit's)
+    if (std::any_of(simulated.begin(), simulated.end(), [&](const Effect *x) { return x->name == e->name; })) continue;
     const PriorSignatures ps = prior_signatures(p, e->name, grid, f.speeds);
     if (!ps.missing.empty()) continue;
     const EffectData ed = prior_effect_data(*e, ps, f, (double) p.beds);
@@ -346,12 +371,19 @@ int write_signature_prior(const GapOptions &opt, const Scenario &sc, const std::
     for (std::size_t i = 0; i < seeds.size(); ++i) prefix += (i ? "-" : "") + seeds[i];
     prefix += "_";
   }
-  std::vector<const Effect *> pour;
+  // every effect with simulated knots: the pour-level ones on beds of their own, the push-only
+  // ones (and the chain beyond its filter) pushed into the prior's baseline beds
+  std::vector<const Effect *> held;
   for (const Effect *e : choose_effects(opt.effects))
-    if (e->pour_level) pour.push_back(e);
+    if (has_simulated_knots(*e)) held.push_back(e);
   std::vector<SimRequest> req{baseline_request(sc.name, v0, seeds, prefix + "baseline")};
-  for (const Effect *e : pour)
-    for (double a : e->knots) req.push_back(effect_request(sc.name, *e, a, v0, seeds, prefix + effect_sweep_name(*e, a)));
+  for (const Effect *e : held)
+    for (double a : e->knots) {
+      if (by_transform(*e, a)) continue;
+      SimRequest r = effect_request(sc.name, *e, a, v0, seeds, prefix + effect_sweep_name(*e, a));
+      if (!e->pour_level) r.beds_from = prefix + "baseline";
+      req.push_back(r);
+    }
   if (fn)
     fn(GapProgress{GapProgress::INFO, "simulate", 0, 0,
                    format_text("the signature prior of %s: %zu sweeps on seeds %s in %s", sc.name.c_str(), req.size(),
@@ -359,16 +391,17 @@ int write_signature_prior(const GapOptions &opt, const Scenario &sc, const std::
   fs::create_directories(runner.out_root);
   if (run_requests(req, runner) != 0) return 1;
   std::map<std::string, RunsBySpeed> knots;
-  for (const Effect *e : pour)
-    for (double a : e->knots) knots[effect_sweep_name(*e, a)] = load_sweep_runs(runner.out_root, prefix + effect_sweep_name(*e, a));
-  SignaturePrior p = prior_from_runs(sc.name, seeds, load_sweep_runs(runner.out_root, prefix + "baseline"), knots, pour, sc.depth);
+  for (const Effect *e : held)
+    for (double a : e->knots)
+      if (!by_transform(*e, a)) knots[effect_sweep_name(*e, a)] = load_sweep_runs(runner.out_root, prefix + effect_sweep_name(*e, a));
+  SignaturePrior p = prior_from_runs(sc.name, seeds, load_sweep_runs(runner.out_root, prefix + "baseline"), knots, held, sc.depth);
   p.source = "granpen gap --write-prior from the cache " + runner.out_root + " (sweeps " + prefix + "baseline and " + prefix +
              "EFFECT_MAGNITUDE)";
   write_prior(opt.write_prior, p);
   if (fn)
     fn(GapProgress{GapProgress::INFO, "report", 0, 0,
-                   format_text("wrote the signature prior %s: %zu pour-level effects, %zu grid depths, seeds %s",
-                               opt.write_prior.c_str(), pour.size(), p.grids.size(), prefix.empty() ? "1 2" : prefix.c_str())});
+                   format_text("wrote the signature prior %s: %zu effects with simulated knots, %zu grid depths, seeds %s",
+                               opt.write_prior.c_str(), held.size(), p.grids.size(), prefix.empty() ? "1 2" : prefix.c_str())});
   return 0;
 }
 

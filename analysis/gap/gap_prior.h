@@ -1,7 +1,8 @@
-// granpen gap: the signature prior (docs/gap.md, "The adaptive plan"): for each pour-level
-// candidate, its knots' signatures (the knot ensemble's binned features minus the
-// baseline's, physical units, per speed and feature, with their variance of the mean) from
-// beds of their own, so that the adaptive plan (gap_adaptive.h) knows a candidate's
+// granpen gap: the signature prior (docs/gap.md, "The adaptive plan"): for each candidate
+// with simulated knots (pour-level, push-only, the chain beyond its filter), its knots'
+// signatures (the knot ensemble's binned features minus the baseline's, physical units, per
+// speed and feature, with their variance of the mean) from beds of their own (push-only
+// knots pushed into the prior's baseline beds), so that the adaptive plan (gap_adaptive.h) knows a candidate's
 // direction before its knots are simulated. Written once per scenario from a cache
 // (`granpen gap --write-prior FILE`), read by the diagnosis (inputs/priors/SCENARIO.json, or
 // --prior FILE). The features depend on the grid's depth (the windows and the bands span
@@ -49,7 +50,8 @@ struct SignaturePrior {
   std::vector<PriorGrid> grids;             // deepest first
 };
 
-// The prior from the baseline's and the knots' runs (pour-level effects), aligned here at the
+// The prior from the baseline's and the simulated knots' runs (a transform's knots are
+// skipped: the diagnosis's own), aligned here at the
 // baseline's onsets, per grid depth. Throws InputError when a sweep lacks a speed or has
 // fewer than 2 runs at one.
 SignaturePrior prior_from_runs(const std::string &scenario, const std::vector<std::string> &seeds, const RunsBySpeed &base,
@@ -80,7 +82,8 @@ PriorSignatures prior_signatures(const SignaturePrior &p, const std::string &eff
 std::optional<PriorBound> candidate_prior_bound(const SignaturePrior &p, const Effect &e, const Features &f,
                                                 const GapGrid &grid, double scale_bound, std::string &missing);
 
-// The detection limits of the pour-level candidates the plan skipped (in all_effects, not in
+// The detection limits of the candidates the plan skipped, pour-level or push-only (in
+// all_effects, no effect of that name in simulated; the chain fitted on its filter alone is
 // simulated), from the prior's signatures as their knots (referenced to f's reference beds,
 // their noise f's noise model on the prior's beds), with the threshold their null replicates
 // give: how blind the diagnosis is to what it did not simulate. Appended to limits.
@@ -88,8 +91,8 @@ void add_prior_limits(const SignaturePrior &p, const std::vector<const Effect *>
                       const std::vector<const Effect *> &simulated, const Features &f, const GapGrid &grid,
                       std::vector<DetectionLimit> &limits);
 
-// --write-prior FILE: prepares (or takes from the cache) the baseline and the pour-level
-// knots on opt.prior_seeds (the cache's own signature sweeps when they are the signature
+// --write-prior FILE: prepares (or takes from the cache) the baseline and every simulated
+// knot (pour-level, and push-only into the baseline's beds) on opt.prior_seeds (the cache's own signature sweeps when they are the signature
 // seeds, else sweeps prior_SEEDS_*), and writes the prior. Returns the exit status.
 // sc: the scenario as loaded; v0: --v0's speeds; runner: the scenario's cache.
 int write_signature_prior(const GapOptions &opt, const Scenario &sc, const std::vector<std::string> &v0,

@@ -117,7 +117,7 @@ Json parts_json(const GapParts &p)
 // the plan's record (gap_adaptive.h): its range, what this run spent, what it simulated and skipped
 Json plan_json(const PlanRecord &p)
 {
-  Json decisions = Json::array();
+  Json decisions = Json::array(), push_only = Json::array();
   for (const auto &x : p.decisions) {
     Json row{{"effect", x.effect}, {"simulated", x.simulate}, {"bound", num(x.bound)}, {"needed", num(x.needed)},
              {"cost", num(x.cost)}, {"cold_cost", num(x.cold_cost)}, {"why", x.why}};
@@ -127,12 +127,12 @@ Json plan_json(const PlanRecord &p)
                           {"margin_noise", num(x.prior->margin_noise)}};
     // the explain gate (gap_adaptive.h): the squared gap its fit can remove, and what a quarter of the gap needs
     if (x.gain_needed > 0) row["gain"] = num(x.gain), row["gain_needed"] = num(x.gain_needed);
-    decisions.push_back(row);
+    (x.push_only ? push_only : decisions).push_back(row);
   }
   return Json{{"unit", "probe pours of core time"}, {"jobs", p.jobs}, {"least", num(p.least)}, {"most", num(p.most)},
               {"spent", num(p.spent)}, {"wall_least", num(p.wall_least)}, {"wall_most", num(p.wall_most)},
               {"wall_spent", num(p.wall_spent)}, {"core_hours_spent", num(p.core_hours_spent)}, {"decides", p.decides},
-              {"pour_level", decisions}, {"confirmation", p.confirmation}};
+              {"push_only", push_only}, {"pour_level", decisions}, {"confirmation", p.confirmation}};
 }
 
 Json optional_number(const std::optional<double> &v) { return v ? num(*v) : Json(); }
@@ -503,9 +503,17 @@ std::string md_first_screen(const Diagnosis &d)
                       "%d null replicates: %d verdict(s) other than none (rate %.2f).\n",
                       q->name.c_str(), q->lr, q->lr > q->lr_threshold ? "above" : "not above", q->lr_threshold, d.nfeatures, d.chi2_0, d.p_value, GapThresholds::significance_p,
                       d.false_alarms.replicates, d.false_alarms.not_none, d.false_alarms.rate());
+  // a tie's confirmation simulates one of its candidates: its runs shrink the gap as the others
+  // would, so the line says whose runs they are and that they do not separate the tie
+  std::string with = d.tested_effect.empty() ? " (nothing added)" : " with " + d.tested_effect + " on fresh seeds";
+  if (d.verdict == Verdict::tie && !d.tested_effect.empty()) {
+    std::vector<std::string> others;
+    for (const auto &t : d.tie)
+      if (t != d.tested_effect) others.push_back(t);
+    if (!others.empty()) with += " (one of the tie: these runs cannot tell it from " + tie_names(others) + ")";
+  }
   md += format_text("- Gap G_all %.3f before, %.3f after%s; at the held-out speed %g cm/s %.3f -> %.3f.\n", d.gap_before,
-                    d.gap_after, d.tested_effect.empty() ? " (nothing added)" : (" with " + d.tested_effect + " on fresh seeds").c_str(),
-                    d.heldout_v0, d.heldout_before, d.heldout_after);
+                    d.gap_after, with.c_str(), d.heldout_v0, d.heldout_before, d.heldout_after);
   if (d.verdict == Verdict::none) {
     std::string lims;
     for (const auto &L : d.limits) {

@@ -104,7 +104,7 @@ TEST(GapAdaptive, ACandidatesCostIsSaidColdAsTheRangeIsAndWithThisCacheBeside)
   // so the line gives the cold figure first (a bench diagnosis printed "0 probe pours" beside
   // a simulated candidate whose knots are 3.6 of its 24.6 spent)
   CheapStageSeen seen{80.0, "measurement_chain", 10.0, false, false};
-  std::vector<PourCandidate> cands{{"friction", 0.0, 40.0}, {"packing", 1.25, 40.0}};
+  std::vector<PlanCandidate> cands{{"friction", 0.0, 40.0}, {"packing", 1.25, 40.0}};
   cands[0].cold_cost = 3.61, cands[1].cold_cost = 2.5;
   PlanRecord r;
   r.decisions = decide_purchases(seen, cands, FLOOR, MARGIN);
@@ -179,6 +179,99 @@ TEST(GapAdaptivePrior, ExactSignaturesBoundByTheProjection)
   noisy.prior_var = {{std::vector<double>(3, 0.0)}};
   const PriorBound nb = prior_bound(noisy);
   EXPECT_NEAR(nb.projection2 + nb.margin_noise, 25.0 - 16.5625 / 2.5625 - 3 * std::log(2.5625), 1e-9);
+}
+
+// The measurement chain's simulated knots beyond its filter (gap_adaptive.h, PriorBoundInput::
+// beyond, own): the filtered knots (1 and 2 ms here) are the diagnosis's own and fitted
+// already, so the bound is over the path beyond 2 ms alone, the segment to the prior's knot at
+// 4 ms and past it. Noiseless knots, hand-computed: a gap that is the 1 ms signature, each
+// knot's signature along an axis of its own, is orthogonal to every point beyond 2 ms (each
+// adds |x|^2 to the residual): bound 0, where the whole path's is the gap itself (100)
+TEST(GapAdaptivePrior, TheChainBeyondItsFilterIsBoundedByThePathBeyondAlone)
+{
+  const std::vector<double> none{0, 0, 0};
+  PriorBoundInput in = one_speed({10, 0, 0}, none, {{10, 0, 0}, {0, 10, 0}, {0, 0, 10}}, 0.0, 0.0);
+  in.magnitude = {1, 2, 4}, in.one_sided = true, in.own = {true, true, false};
+  EXPECT_NEAR(prior_bound(in).bound(), 100.0, 1e-9);
+  in.beyond = 2.0;
+  EXPECT_NEAR(prior_bound(in).bound(), 0.0, 1e-12);
+  // the gap half the 2 ms signature and half the 4 ms one ((0, 5, 5), 50): the path beyond 2
+  // passes through it at 3 ms, and removes all of it, to the path's grid: its points lie
+  // (magnitude_range to at most 5 ms) 5 / PRIOR_PATH_POINTS apart, so one lies within half that,
+  // delta <= 0.0031 of the 2 ms segment, of 3 ms, where it leaves 2 (10 delta)^2 <= 0.002
+  in.gap = {{0, 5, 5}};
+  EXPECT_NEAR(prior_bound(in).projection2, 50.0, 2e-3);
+  // the own knots carry no tilt: their noise (1 per feature, the prior's knot noiseless) enters
+  // the fit's weights but not the direction's margin, which is then exactly 0; taken as the
+  // prior's, the same noise tilts the path and the margin is positive
+  PriorBoundInput noisy = one_speed({0, 5, 5}, none, {{10, 0, 0}, {0, 10, 0}, {0, 0, 10}}, 0.0, 0.0);
+  noisy.magnitude = {1, 2, 4}, noisy.one_sided = true, noisy.beyond = 2.0;
+  noisy.knot_var[0] = noisy.knot_var[1] = noisy.prior_var[0] = noisy.prior_var[1] = {std::vector<double>(3, 1.0)};
+  EXPECT_GT(prior_bound(noisy).margin_direction, 0.0);
+  noisy.own = {true, true, false};
+  EXPECT_EQ(prior_bound(noisy).margin_direction, 0.0);
+}
+
+// A push-only candidate is bought like a pour-level one: skipped when its bound cannot reach
+// its threshold, simulated when it can, and said so as push-only in the record
+TEST(GapAdaptive, APushOnlyCandidateIsBoughtOnlyWhenItsBoundCanReachItsThreshold)
+{
+  CheapStageSeen seen{60.0, "force_scale", 4.0, false, false};
+  std::vector<PlanCandidate> cands{{"actuator_ramp", 4.4, 9.0}, {"rod_friction", 2.9, 30.0}};
+  for (auto &c : cands) c.push_only = true, c.cold_cost = c.cost;
+  const auto ds = decide_purchases(seen, cands, FLOOR, MARGIN);
+  EXPECT_FALSE(decision(ds, "actuator_ramp").simulate) << decision(ds, "actuator_ramp").why;
+  EXPECT_NE(decision(ds, "actuator_ramp").why.find("cannot reach 15.1, its threshold"), std::string::npos);
+  EXPECT_TRUE(decision(ds, "rod_friction").simulate) << decision(ds, "rod_friction").why;
+  EXPECT_TRUE(decision(ds, "rod_friction").push_only);
+  EXPECT_EQ(ds[0].effect, "rod_friction");    // the cheaper first
+  PlanRecord r;
+  r.decisions = ds;
+  EXPECT_NE(plan_record_text(r).find("Push-only candidates: 1 simulated, 1 skipped."), std::string::npos) << plan_record_text(r);
+  EXPECT_EQ(plan_record_text(r).find("Pour-level candidates"), std::string::npos) << plan_record_text(r);
+}
+
+// The pour-level decision sees what the push-only purchase fitted: before it, nothing cheap
+// explains and a pour-level candidate whose bound reaches the threshold is bought; once a
+// push-only candidate bought explains (the ramp, evidence 300), the same candidate must come
+// within the margin of that evidence, and its bound (100) cannot: skipped
+TEST(GapAdaptive, APourLevelDecisionSeesABoughtPushOnlyCandidateThatExplains)
+{
+  const std::vector<PlanCandidate> pour{{"packing", 4.0, 100.0}, {"friction", 3.6, 296.0}};
+  const CheapStageSeen cheap{320.0, "force_scale", 40.0, false, false};
+  for (const auto &d : decide_purchases(cheap, pour, FLOOR, MARGIN)) EXPECT_TRUE(d.simulate) << d.effect << ": " << d.why;
+  const CheapStageSeen with_ramp{320.0, "actuator_ramp", 300.0, true, false};
+  const auto ds = decide_purchases(with_ramp, pour, FLOOR, MARGIN);
+  EXPECT_FALSE(decision(ds, "packing").simulate) << decision(ds, "packing").why;
+  EXPECT_NE(decision(ds, "packing").why.find("within the evidence margin of actuator_ramp's 300.0"), std::string::npos)
+      << decision(ds, "packing").why;
+  // one that can still tie it (296 within the margin of 300) is bought
+  EXPECT_TRUE(decision(ds, "friction").simulate) << decision(ds, "friction").why;
+}
+
+// A pair partner (gap_pairs.h: a push-only effect the pair stage pairs with the filter) on a
+// cheap stage left unexplained: the explain gate would skip it (its fit alone removes 100 of
+// the 500 a quarter of the gap needs), but a pair explains what neither alone does (the
+// selftest's chain_ramp: the ramp skipped this way left the pair stage without its partner, a
+// right answer turned unexplained), so it is bought
+TEST(GapAdaptive, APairPartnerIsBoughtOnAnUnexplainedCheapStageWhateverItExplainsAlone)
+{
+  CheapStageSeen seen{2000.0, "measurement_chain", 1400.0, false, false, true, true};
+  PriorBound b;
+  b.projection2 = 900.0, b.gain = 100.0, b.w0 = 2000.0;
+  PlanCandidate ramp{"actuator_ramp", 2.4, std::nullopt};
+  ramp.prior = b, ramp.push_only = true;
+  const auto gated = decide_purchases(seen, {ramp}, FLOOR, MARGIN);
+  EXPECT_FALSE(gated[0].simulate) << gated[0].why;
+  EXPECT_DOUBLE_EQ(gated[0].gain_needed, 500.0);
+  ramp.pair_partner = true;
+  const auto bought = decide_purchases(seen, {ramp}, FLOOR, MARGIN);
+  EXPECT_TRUE(bought[0].simulate) << bought[0].why;
+  EXPECT_NE(bought[0].why.find("the pair stage may pair it with the filter"), std::string::npos) << bought[0].why;
+  // on a cheap stage that is not unexplained the partner is bought on its bound alone
+  seen.unexplained = seen.unexplained_stands = false;
+  b.projection2 = 10.0, ramp.prior = b;
+  EXPECT_FALSE(decide_purchases(seen, {ramp}, FLOOR, MARGIN)[0].simulate);
 }
 
 namespace {

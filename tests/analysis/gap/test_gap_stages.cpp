@@ -490,6 +490,35 @@ TEST(GapSims, ATransformEffectsRunsAreTheBaselinesFiltered)
   EXPECT_EQ(t.at(100)[0].F, r.F);
 }
 
+// The adaptive plan's split of an effect (effects.h, transform_part; gap_plan.h, knot_requests):
+// the measurement chain's part that costs nothing is its filter's knots (up to 2 ms), fitted in
+// the cheap stage with nothing simulated beyond the baseline's own sweeps; what the plan can
+// buy for it is its two simulated knots, pushes into the signature beds. The force scale is
+// its transform whole; an effect without a transform has no free part.
+TEST(GapPlan, TheChainSplitsIntoItsFilteredPartAndTheKnotsToBuy)
+{
+  const Effect &chain = *find_effect("measurement_chain");
+  const Effect *part = transform_part(chain);
+  ASSERT_NE(part, nullptr);
+  EXPECT_NE(part, &chain);
+  EXPECT_EQ(part->name, chain.name);
+  EXPECT_FALSE(has_simulated_knots(*part));
+  EXPECT_TRUE(has_simulated_knots(chain));
+  for (double a : part->knots) EXPECT_LE(a, chain.transform_max);
+  EXPECT_EQ(part->knots.size() + 2, chain.knots.size());    // all but 4 and 10 ms
+  const auto cheap = signature_requests("tiny", {"100"}, {part});
+  ASSERT_EQ(cheap.size(), 2u);    // the baseline on the signature beds and on the reference beds
+  const auto buy = knot_requests("tiny", {"100"}, chain);
+  ASSERT_EQ(buy.size(), 2u);
+  EXPECT_EQ(buy[0].spec.name, "measurement_chain_4");
+  EXPECT_EQ(buy[1].spec.name, "measurement_chain_10");
+  for (const auto &r : buy) EXPECT_EQ(r.beds_from, "baseline");
+  const Effect &scale = *find_effect("force_scale");
+  EXPECT_EQ(transform_part(scale), &scale);
+  EXPECT_TRUE(knot_requests("tiny", {"100"}, scale).empty());
+  EXPECT_EQ(transform_part(*find_effect("actuator_ramp")), nullptr);
+}
+
 // force_scale: the baseline's traces times (1 + a), at any magnitude; every feature is
 // homogeneous of degree one in F, so its signature at a is a / knot times the knot's:
 // the interpolation the fit makes between 0 and a knot is exact
@@ -1742,6 +1771,17 @@ TEST(GapReport, TheFirstScreenFitsATerminalAndQuotesOnlyTheDiagnosisNumbers)
   EXPECT_NE(screen.find("friction 0.0812 (reference 0.15)"), std::string::npos) << screen;
   EXPECT_EQ(screen.find("cohesion"), std::string::npos) << screen;
   EXPECT_NE(screen.find("7 more measured run(s) at 50 cm/s"), std::string::npos) << screen;
+  // a tie confirmed with one of its candidates: the runs are named as that one's and as not
+  // separating the tie (they would shrink the gap alike with the others)
+  d.verdict = Verdict::tie, d.tie = {"packing", "sidewalls", "force_scale"}, d.tested_effect = "packing";
+  TempDir tie_dir("report_first_screen_tie");
+  write_gap_report(d, tie_dir.path.string());
+  EXPECT_EQ(stray_numbers(tie_dir.path.string(), lines), std::vector<std::string>{});
+  std::ifstream in_tie(tie_dir / "report.md");
+  const std::string text_tie((std::istreambuf_iterator<char>(in_tie)), std::istreambuf_iterator<char>());
+  EXPECT_NE(text_tie.find("with packing on fresh seeds (one of the tie: these runs cannot tell it from sidewalls or force_scale)"),
+            std::string::npos) << text_tie.substr(0, 1500);
+  d.tie.clear(), d.tested_effect.clear();
   // scale_only: the force's scale in percent, and a weighed calibration next
   d.verdict = Verdict::scale_only, d.scale_effect = "packing", d.next.reset();
   ScaleFinding sf;
