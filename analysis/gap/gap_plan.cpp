@@ -28,13 +28,14 @@ std::vector<SimRequest> signature_requests(const std::string &scenario, const st
   return out;
 }
 
-std::vector<SimRequest> knot_requests(const std::string &scenario, const std::vector<std::string> &v0, const Effect &e)
+std::vector<SimRequest> knot_requests(const std::string &scenario, const std::vector<std::string> &v0, const Effect &e,
+                                      const std::vector<std::string> &seeds, const std::string &prefix)
 {
   std::vector<SimRequest> out;
   for (double a : e.knots) {
     if (by_transform(e, a)) continue;    // the baseline's runs, transformed
-    SimRequest r = effect_request(scenario, e, a, v0, SIGNATURE_SEEDS, effect_sweep_name(e, a));
-    if (!e.pour_level) r.beds_from = "baseline";
+    SimRequest r = effect_request(scenario, e, a, v0, seeds, prefix + effect_sweep_name(e, a));
+    if (!e.pour_level) r.beds_from = prefix + "baseline";
     out.push_back(r);
   }
   return out;

@@ -23,8 +23,11 @@ extern const std::vector<std::string> SIGNATURE_SEEDS, REFERENCE_SEEDS, CONFIRM_
 std::vector<SimRequest> signature_requests(const std::string &scenario, const std::vector<std::string> &v0,
                                            const std::vector<const Effect *> &effects);
 // Effect e's simulated knots alone (signature_requests' for e, without the baseline's): what
-// the adaptive plan buys for e.
-std::vector<SimRequest> knot_requests(const std::string &scenario, const std::vector<std::string> &v0, const Effect &e);
+// the adaptive plan buys for e. seeds and prefix: the beds and the sweeps' name prefix (the
+// signature prior's sweeps, gap_prior.h, are prefix + the usual names); a push-only knot
+// pushes into the beds of the sweep prefix + "baseline".
+std::vector<SimRequest> knot_requests(const std::string &scenario, const std::vector<std::string> &v0, const Effect &e,
+                                      const std::vector<std::string> &seeds = SIGNATURE_SEEDS, const std::string &prefix = "");
 
 // The runs confirming effect e at magnitude a with fresh seeds, at speeds v0; a push-only
 // effect pours the fresh beds once (sweep confirm_beds, or refine_beds) and reuses them. At

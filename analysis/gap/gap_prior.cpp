@@ -378,12 +378,7 @@ int write_signature_prior(const GapOptions &opt, const Scenario &sc, const std::
     if (has_simulated_knots(*e)) held.push_back(e);
   std::vector<SimRequest> req{baseline_request(sc.name, v0, seeds, prefix + "baseline")};
   for (const Effect *e : held)
-    for (double a : e->knots) {
-      if (by_transform(*e, a)) continue;
-      SimRequest r = effect_request(sc.name, *e, a, v0, seeds, prefix + effect_sweep_name(*e, a));
-      if (!e->pour_level) r.beds_from = prefix + "baseline";
-      req.push_back(r);
-    }
+    for (SimRequest &r : knot_requests(sc.name, v0, *e, seeds, prefix)) req.push_back(std::move(r));
   if (fn)
     fn(GapProgress{GapProgress::INFO, "simulate", 0, 0,
                    format_text("the signature prior of %s: %zu sweeps on seeds %s in %s", sc.name.c_str(), req.size(),
