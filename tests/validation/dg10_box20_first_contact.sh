@@ -11,7 +11,9 @@
 #     relative difference (half: "within the spread over beds", and a box effect half of it
 #     would already show in a few pairs);
 #  2. no single pair differs by more than the largest bed-to-bed difference.
-# No 20 cm push committed yet skips the test (exit 77); each push counts as it arrives. The
+# Beside the verdict it prints, not checked (the box may matter there), each 20 cm push's peak
+# with the 10 cm push's on its bed, and its mean drag over z = 0.8-1.2 and 1.2-1.5 cm with the
+# 10 cm beds' at its speed (docs/results.md quotes them). No 20 cm push committed yet skips the test (exit 77); each push counts as it arrives. The
 # bookkeeping (means, spreads, verdict) is first_contact_lib.sh's, shared with box_first_contact.sh.
 #   dg10_box20_first_contact.sh DG10_PEAK DG10_BOX20_PEAK
 set -euo pipefail
@@ -33,3 +35,15 @@ for v in 20 40 80 140 200; do
 done
 [ "$fc_box_n" -gt 0 ] || { echo "no 20 cm dg10 peak push committed in $WIDE: skipped (validation/box.sh dg10)"; exit 77; }
 fc_verdict "the 20 cm box"
+# deeper, where the box may matter: printed, not checked
+for v in 20 40 80 140 200; do
+  for s in 1 2 3; do
+    [ -f "$WIDE/$(id "$s" "$v")" ] || continue
+    echo "not checked: v0 $v, bed $s: peak F (dyne) at z (cm): $(fc_peak "$WIDE/$(id "$s" "$v")") in the 20 cm box, $(fc_peak "$NARROW/$(id "$s" "$v")") in the 10 cm box"
+    for w in "0.8 1.2" "1.2 1.5"; do
+      narrow=""
+      for b in 1 2 3; do narrow="$narrow $(fc_window_mean $w "$NARROW/$(id "$b" "$v")")"; done
+      echo "deeper, not checked: v0 $v, bed $s, z in [${w% *}, ${w#* }) cm: mean drag $(fc_window_mean $w "$WIDE/$(id "$s" "$v")") dyne in the 20 cm box; 10 cm beds 1 2 3:$narrow"
+    done
+  done
+done

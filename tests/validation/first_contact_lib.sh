@@ -14,6 +14,13 @@ fail() { echo "FAIL: $*"; exit 1; }
 # mean F over 0 < z <= 0.5 cm of a trace (granpen-trace v1: t,z,F after the header)
 fc_mean() { awk -F, '/^#/ || $1 == "t" { next } $2 > 0 && $2 <= 0.5 { s += $3; n++ } END { if (n == 0) exit 1; printf "%.10g\n", s / n }' "$1"; }
 
+# mean F over ZLO <= z < ZHI of a trace (fc_window_mean ZLO ZHI FILE): the deeper windows
+# the dg10 check prints beside its verdict
+fc_window_mean() { awk -F, -v lo="$1" -v hi="$2" '/^#/ || $1 == "t" { next } $2 >= lo && $2 < hi { s += $3; n++ } END { if (n == 0) exit 1; printf "%.3g\n", s / n }' "$3"; }
+
+# the largest F of a trace and its depth: "F at z"
+fc_peak() { awk -F, '/^#/ || $1 == "t" { next } n == 0 || $3 > m { m = $3; z = $2; n = 1 } END { if (n == 0) exit 1; printf "%.3g at %.2f\n", m, z }' "$1"; }
+
 fc_box_sq=0 fc_box_n=0 fc_box_max=0 fc_bed_sq=0 fc_bed_n=0 fc_bed_max=0 fc_r=0
 
 fc_bed() {
