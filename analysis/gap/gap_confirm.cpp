@@ -151,8 +151,9 @@ EffectData with_runs_as_knot(const EffectData &ed, double a, double scale, RunsB
 // interpolated signature is the simulated one: nothing to check).
 bool away_from_knots(const EffectFit &top, const EffectData &ed)
 {
+  const double same = same_magnitude_tolerance(ed);
   bool away = true;
-  for (double k : ed.knots) away = away && std::abs(top.magnitude - k) > same_magnitude_tolerance(ed);
+  for (double k : ed.knots) away = away && std::abs(top.magnitude - k) > same;
   return away;
 }
 
