@@ -49,7 +49,9 @@
 #                 from DATA (the units' cache archives in order), then stop
 #   --recheck     every committed unit diagnosed again from the restored cache (run
 #                 --restore first) with a stand-in for LAMMPS that refuses to run: its
-#                 verdict must be the committed one, nothing simulated
+#                 verdict must be the committed one, nothing simulated; writes DATA/costs.md,
+#                 each unit's cold cost as this build plans it (median and mean over the
+#                 false-alarm sets and over the cases: the figures the docs quote)
 # A new machine: --restore (then --recheck, before any run), then run as before: the campaign
 # goes on from the restored cache (beds that later units push into are poured again).
 # GRANPEN_CLI and GRANPEN_LMP name the binaries (default build/analysis/granpen-cli and
@@ -199,10 +201,43 @@ restore() {
 }
 [ "$MODE" = restore ] && { restore; exit 0; }
 
+# --recheck's cost table (DATA/costs.md): per unit the cold cost (plan.spent, probe pours of
+# core time, counted as a cold cache runs it) as the rechecking build plans it and as the
+# committed diagnosis did; the median and mean over the false-alarm sets (no effect) and over
+# the cases. The figures docs/gap-validation.md quotes: one command makes them again.
+cost_stats() {    # prints "N MEDIAN MEAN" of the numbers on stdin ("-" lines skipped)
+  grep -E '^[0-9.eE+-]+$' | grep -v '^-$' | sort -g | awk '{v[NR] = $1; s += $1}
+    END {if (NR == 0) {print 0, "-", "-"; exit}
+         m = NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2
+         printf "%d %.2f %.2f\n", NR, m, s / NR}'
+}
+cost_table() {    # COSTS_TSV
+  local f=$1 out=$DATA/costs.md kind label n med mean
+  { echo "# granpen gap: the cold cost of each committed unit (validation/gap_bench.sh --recheck)"
+    echo
+    echo "Rechecked $(date -u '+%F %H:%M') UTC with $CLI_SRC (sha1 $(sha1sum "$CLI_SRC" | cut -c1-12)), work tree at $(git -C "$ROOT" rev-parse --short HEAD 2>/dev/null || echo '?')."
+    echo "plan.spent: probe pours of core time, counted as a cold cache would run them (docs/gap.md, \"The plan's cost\")."
+    echo
+    for kind in fa case; do
+      label=$([ "$kind" = fa ] && echo "false-alarm sets (no effect)" || echo "cases (every committed case unit)")
+      read -r n med mean < <(awk -F'\t' -v k="$kind" '$2 == k {print $4}' "$f" | cost_stats)
+      echo "- $label: $n, cold cost median $med, mean $mean (this build)"
+      read -r n med mean < <(awk -F'\t' -v k="$kind" '$2 == k {print $5}' "$f" | cost_stats)
+      echo "  - as committed (each unit's own build): $n, median $med, mean $mean"
+    done
+    echo
+    echo "| unit | verdict, top effect (this build) | spent, this build | spent, as committed |"
+    echo "|---|---|---|---|"
+    awk -F'\t' '{printf "| %s | %s | %s | %s |\n", $1, $3, $4, $5}' "$f"
+  } > "$out.new" && mv "$out.new" "$out"
+  grep '^- ' "$out" | while read -r l; do say "recheck cost: ${l#- }"; done
+}
+
 if [ "$MODE" = recheck ]; then
   # LAMMPS refused: a diagnosis that needs a run it has not got fails instead of simulating
   printf '#!/bin/sh\necho "gap_bench --recheck: a run was asked for ($*)" >&2\nexit 1\n' > "$RUN/refuse_lmp"; chmod +x "$RUN/refuse_lmp"
-  bad=0 n=0
+  bad=0 n=0 costs=$RUN/recheck/costs.tsv
+  mkdir -p "$RUN/recheck"; : > "$costs"
   while read -r id kind arg; do
     committed "$id" || continue
     [ "$kind" = cache ] && continue
@@ -215,10 +250,14 @@ if [ "$MODE" = recheck ]; then
     fi
     now=$("$CLI" get "$out/diagnosis.json" verdict top_effect) was=$("$CLI" get "$DATA/$id/diagnosis.json" verdict top_effect)
     n=$((n + 1))
+    # the cold cost as this build's plan buys it, beside the committed diagnosis's
+    printf '%s\t%s\t%s\t%s\t%s\n' "$id" "$kind" "$(echo "$now" | tr '\t' ' ')" \
+      "$("$CLI" get "$out/diagnosis.json" plan.spent --missing -)" "$("$CLI" get "$DATA/$id/diagnosis.json" plan.spent --missing -)" >> "$costs"
     if [ "$now" = "$was" ]; then say "recheck $id: $(echo "$now" | tr '\t' ' '), as committed"
     else echo "gap_bench --recheck: $id: $(echo "$now" | tr '\t' ' ') now, $(echo "$was" | tr '\t' ' ') committed" >&2; bad=$((bad + 1)); fi
   done < <(units)
   say "recheck: $n unit(s) rediagnosed from the restored cache, $bad differ or failed"
+  cost_table "$costs"
   [ "$bad" = 0 ]; exit
 fi
 

@@ -9,7 +9,8 @@
 #   3. a run with every unit committed runs nothing and commits nothing;
 #   4. a new run folder restored from the committed files alone (--restore: no bed restarts)
 #      gives every unit's committed verdict again with a LAMMPS that refuses to run (--recheck);
-#   5. the false-alarm table carries the count with its exact interval.
+#   5. the false-alarm table carries the count with its exact interval; the recheck's cost table
+#      (costs.md) has each unit's cold cost, the same as its commit's.
 # usage: gap_bench_campaign.sh GRANPEN_CLI FAKE_LMP INPUTS WORK
 set -u
 CLI=$1 LMP=$2 INPUTS=$3 W=$4
@@ -66,6 +67,12 @@ find "$W/run2/cache" -name '*.restart' | grep -q . && fail "--restore made bed r
 bash "$ROOT/validation/gap_bench.sh" --scenario tiny --sets 2 --cases contact_stiffness,rolling_resistance_half --data "$DATA" \
   --run "$W/run2" --recheck > "$W/6.log" 2>&1 || { fail "--recheck: verdicts differ or a run was asked for"; cat "$W/6.log"; }
 grep -q 'recheck: 4 unit(s) rediagnosed from the restored cache, 0 differ' "$W/6.log" || fail "--recheck: $(tail -1 "$W/6.log")"
+# the recheck's cost table: the same build that committed the units plans the same cold cost
+# for each (plan.spent is counted cold, whatever the restored cache holds), to the digit
+grep -q '^- false-alarm sets (no effect): 2, cold cost median [0-9.]*, mean [0-9.]* (this build)$' "$DATA/costs.md" &&
+  grep -q '^- cases (every committed case unit): 2, ' "$DATA/costs.md" || fail "costs.md: $(grep '^- ' "$DATA/costs.md" 2>/dev/null | tr '\n' ' ')"
+awk -F'|' '/^[|] (fa|contact|rolling)/ {n++; if ($4 != $5 || $4 ~ /^ *-? *$/) bad++} END {exit !(n == 4 && bad == 0)}' "$DATA/costs.md" ||
+  fail "costs.md: a unit's cold cost differs between the recheck and its commit: $(grep '^| [fcr]' "$DATA/costs.md" | tr '\n' ' ')"
 
 # 5. the rate with its interval (2 sets: 0 of 2 -> 0 to 0.8419 = 1 - 0.025^(1/2))
 tail -1 "$DATA/false_alarms.md" | grep -Eq '^[0-2] false alarm\(s\) in 2 data sets without an effect: rate [0-9.]+, 95% interval [0-9.]+ to [0-9.]+' ||
