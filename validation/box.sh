@@ -14,10 +14,10 @@
 #
 #   dg10    the paper's box at the paper's grain size ratio: 20 cm beds of 4 x 4 copies of the
 #           three committed 5 cm dg10 tiles (data/sims/dg10/beds, linked from
-#           data/sims/dg10_box20/beds; 535392 grains, rebuilt in seconds, not a unit), in the
-#           issue's order: peak pushes 1.5 cm deep at 200 and 40 cm/s on bed 1, then 80 cm/s on
-#           bed 1 and 200, 80, 40 on beds 2 and 3, then 140 and 20 on beds 1 to 3
-#           (dg10_box20_peak{1,2,3}.sweep, one folder); the 40 cm/s flow push with dumps
+#           data/sims/dg10_box20/beds; 535392 grains, rebuilt in seconds, not a unit): peak
+#           pushes 1.5 cm deep at 200 cm/s on beds 1 to 3, then 140 and 80, then 40 and 20
+#           (dg10_box20_peak{1,2,3}.sweep, one folder: the pushes that fit one session first,
+#           since a session's machine may not outlive it); the 40 cm/s flow push with dumps
 #           (dg10_box20_flow); D = 1, 2, 3 cm at 100 cm/s to 5 cm (dg10_box20_D); D = 1 and 2 cm
 #           with a frictionless shaft (dg10_box20_shaft). 21 pushes, 9.8e11 atom-steps: about
 #           76 hours of one core at 3.6e6 atom-steps/s, units of 0.7 to 11 hours (docs/presets.md,

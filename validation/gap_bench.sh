@@ -5,6 +5,12 @@
 # not committed. Units, in order:
 #   cache      the diagnosis's cache of the scenario (granpen gap --prepare-only: the
 #              baseline, every knot, the reference beds) at --v0
+#   prior      with --prior-seeds "41 42": the bench signature prior of four beds (granpen gap
+#              --write-prior --prior-seeds "1 2 41 42": the cache's own signature sweeps and
+#              sweeps of 41 42, pooled), its runs committed as a unit's, the prior in
+#              DATA/prior/prior.json and, with the default --data, inputs/priors/SCENARIO.json
+#              (the file a diagnosis reads): its noise W is half a 2-bed prior's, and so is
+#              the part of the adaptive plan's bound that it sets (docs/gap.md)
 #   fa_NN      a false-alarm set (NN = 01 .. --sets, at least 20): the no-effect case of
 #              bench/gap_selftest.sh on measured beds of seeds 1001.. (bench/gap_false_alarms.sh's
 #              seeds: set k has 1000+4(k-1)+1 .. 1000+4k), its diagnosis, its verdict
@@ -28,7 +34,7 @@
 #
 #   validation/gap_bench.sh [--scenario bench] [--v0 "50 100 200"] [--jobs 1] [--sets 20]
 #       [--cases LIST] [--data DIR] [--run DIR] [--seed-cache DIR] [--wait-pid PID]
-#       [--units N] [--commit] [--status] [--restore] [--recheck]
+#       [--units N] [--commit] [--status] [--restore] [--recheck] [--prior-seeds "41 42"]
 #
 #   --data DIR    the committed folder (default validation/gap_bench/SCENARIO); --commit
 #                 commits it (in the git repository that holds it) after every unit
@@ -43,13 +49,17 @@
 #   --seed-cache DIR  a cache made elsewhere (granpen gap --prepare-only --cache DIR) copied
 #                 into RUN/cache when that is empty (after --wait-pid), read only
 #   --wait-pid PID    wait until process PID has ended before anything starts (a prepare)
+#   --prior-seeds SEEDS  the prior unit on these seeds besides 1 2 (after the cache; a
+#                 committed prior unit is restored and rechecked without it)
 #   --units N     stop after N units (default: all)
 #   --status      what is committed and under way, and stop
 #   --restore     a new machine: RUN/cache and each committed unit's measured traces rebuilt
 #                 from DATA (the units' cache archives in order), then stop
 #   --recheck     every committed unit diagnosed again from the restored cache (run
 #                 --restore first) with a stand-in for LAMMPS that refuses to run: its
-#                 verdict must be the committed one, nothing simulated
+#                 verdict must be the committed one, nothing simulated; writes DATA/costs.md,
+#                 each unit's cold cost as this build plans it (median and mean over the
+#                 false-alarm sets and over the cases: the figures the docs quote)
 # A new machine: --restore (then --recheck, before any run), then run as before: the campaign
 # goes on from the restored cache (beds that later units push into are poured again).
 # GRANPEN_CLI and GRANPEN_LMP name the binaries (default build/analysis/granpen-cli and
@@ -59,7 +69,7 @@ set -euo pipefail
 # the work tree (a campaign runs from its copy in RUN/bin: editing this file never reaches a run)
 ROOT=${GAP_BENCH_ROOT:-$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)}
 SCEN=bench V0="50 100 200" JOBS=1 SETS=20 CASES="" DATA="" RUN=/work/granpen-runs/gap_bench SEED_CACHE="" WAIT_PID=""
-UNITS=-1 COMMIT=0 MODE=run
+UNITS=-1 COMMIT=0 MODE=run PRIOR_SEEDS=""
 args=("$@")
 while [ $# -gt 0 ]; do
   case $1 in
@@ -77,12 +87,14 @@ while [ $# -gt 0 ]; do
     --status) MODE=status; shift ;;
     --restore) MODE=restore; shift ;;
     --recheck) MODE=recheck; shift ;;
+    --prior-seeds) PRIOR_SEEDS=$2; shift 2 ;;
     *) echo "gap_bench.sh: unknown argument $1 (see the header of $0)" >&2; exit 2 ;;
   esac
 done
 [[ $JOBS =~ ^[1-9][0-9]*$ ]] || { echo "gap_bench.sh: --jobs $JOBS is not a whole number >= 1" >&2; exit 2; }
 [[ $SETS =~ ^[0-9]+$ ]] || { echo "gap_bench.sh: --sets $SETS is not a whole number" >&2; exit 2; }
 [[ $UNITS =~ ^(-1|[0-9]+)$ ]] || { echo "gap_bench.sh: --units $UNITS is not a whole number" >&2; exit 2; }
+[[ $PRIOR_SEEDS =~ ^[0-9\ ]*$ ]] || { echo "gap_bench.sh: --prior-seeds '$PRIOR_SEEDS' is not a list of seeds" >&2; exit 2; }
 # a campaign runs from a copy of this script (bash reads a script as it goes)
 if [ "$MODE" = run ] && [ -z "${GAP_BENCH_ROOT:-}" ]; then
   mkdir -p "$RUN/bin"
@@ -95,8 +107,8 @@ if [ "$MODE" = run ] && [ -z "${GAP_BENCH_ROOT:-}" ]; then
 fi
 # niced, so that the machine's other work goes first
 n=$(nice); [ "$n" -ge 15 ] || exec nice -n $((15 - n)) bash "${BASH_SOURCE[0]}" "${args[@]}"
-FIGURE=""
-[ -n "$DATA" ] || FIGURE=$ROOT/inputs/false_alarms/$SCEN.txt
+FIGURE="" PRIOR_FILE=""
+[ -n "$DATA" ] || FIGURE=$ROOT/inputs/false_alarms/$SCEN.txt PRIOR_FILE=$ROOT/inputs/priors/$SCEN.json
 DATA=${DATA:-$ROOT/validation/gap_bench/$SCEN}
 # (--status writes nothing: a folder not there yet is read as empty)
 [ "$MODE" = status ] || mkdir -p "$DATA" "$RUN/logs" "$RUN/units" "$RUN/cache"
@@ -114,6 +126,7 @@ fi
 # the units in order: "ID KIND ARG" (ARG: a false-alarm set's seeds, with _ for spaces)
 units() {
   echo "cache cache -"
+  if [ -n "$PRIOR_SEEDS" ] || [ -f "$DATA/prior/row.md" ]; then echo "prior prior ${PRIOR_SEEDS// /_}"; fi
   local k
   for k in $(seq 1 "$SETS"); do
     printf 'fa_%02d fa %s\n' "$k" "$(seq $((1000 + (k - 1) * 4 + 1)) $((1000 + k * 4)) | tr '\n' '_' | sed 's/_$//')"
@@ -199,13 +212,46 @@ restore() {
 }
 [ "$MODE" = restore ] && { restore; exit 0; }
 
+# --recheck's cost table (DATA/costs.md): per unit the cold cost (plan.spent, probe pours of
+# core time, counted as a cold cache runs it) as the rechecking build plans it and as the
+# committed diagnosis did; the median and mean over the false-alarm sets (no effect) and over
+# the cases. The figures docs/gap-validation.md quotes: one command makes them again.
+cost_stats() {    # prints "N MEDIAN MEAN" of the numbers on stdin ("-" lines skipped)
+  grep -E '^[0-9.eE+-]+$' | grep -v '^-$' | sort -g | awk '{v[NR] = $1; s += $1}
+    END {if (NR == 0) {print 0, "-", "-"; exit}
+         m = NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2
+         printf "%d %.2f %.2f\n", NR, m, s / NR}'
+}
+cost_table() {    # COSTS_TSV
+  local f=$1 out=$DATA/costs.md kind label n med mean
+  { echo "# granpen gap: the cold cost of each committed unit (validation/gap_bench.sh --recheck)"
+    echo
+    echo "Rechecked $(date -u '+%F %H:%M') UTC with $CLI_SRC (sha1 $(sha1sum "$CLI_SRC" | cut -c1-12)), work tree at $(git -C "$ROOT" rev-parse --short HEAD 2>/dev/null || echo '?')."
+    echo "plan.spent: probe pours of core time, counted as a cold cache would run them (docs/gap.md, \"The plan's cost\")."
+    echo
+    for kind in fa case; do
+      label=$([ "$kind" = fa ] && echo "false-alarm sets (no effect)" || echo "cases (every committed case unit)")
+      read -r n med mean < <(awk -F'\t' -v k="$kind" '$2 == k {print $4}' "$f" | cost_stats)
+      echo "- $label: $n, cold cost median $med, mean $mean (this build)"
+      read -r n med mean < <(awk -F'\t' -v k="$kind" '$2 == k {print $5}' "$f" | cost_stats)
+      echo "  - as committed (each unit's own build): $n, median $med, mean $mean"
+    done
+    echo
+    echo "| unit | verdict, top effect (this build) | spent, this build | spent, as committed |"
+    echo "|---|---|---|---|"
+    awk -F'\t' '{printf "| %s | %s | %s | %s |\n", $1, $3, $4, $5}' "$f"
+  } > "$out.new" && mv "$out.new" "$out"
+  grep '^- ' "$out" | while read -r l; do say "recheck cost: ${l#- }"; done
+}
+
 if [ "$MODE" = recheck ]; then
   # LAMMPS refused: a diagnosis that needs a run it has not got fails instead of simulating
   printf '#!/bin/sh\necho "gap_bench --recheck: a run was asked for ($*)" >&2\nexit 1\n' > "$RUN/refuse_lmp"; chmod +x "$RUN/refuse_lmp"
-  bad=0 n=0
+  bad=0 n=0 costs=$RUN/recheck/costs.tsv
+  mkdir -p "$RUN/recheck"; : > "$costs"
   while read -r id kind arg; do
     committed "$id" || continue
-    [ "$kind" = cache ] && continue
+    [ "$kind" = cache ] || [ "$kind" = prior ] && continue
     real=$(unit_work "$id")/$SCEN/real_$(unit_case "$id")
     [ -d "$real" ] || { echo "gap_bench --recheck: $id: no measured traces in $real (run --restore first)" >&2; bad=$((bad + 1)); continue; }
     out=$RUN/recheck/$id; rm -rf "$out"; mkdir -p "$RUN/recheck"
@@ -215,10 +261,14 @@ if [ "$MODE" = recheck ]; then
     fi
     now=$("$CLI" get "$out/diagnosis.json" verdict top_effect) was=$("$CLI" get "$DATA/$id/diagnosis.json" verdict top_effect)
     n=$((n + 1))
+    # the cold cost as this build's plan buys it, beside the committed diagnosis's
+    printf '%s\t%s\t%s\t%s\t%s\n' "$id" "$kind" "$(echo "$now" | tr '\t' ' ')" \
+      "$("$CLI" get "$out/diagnosis.json" plan.spent --missing -)" "$("$CLI" get "$DATA/$id/diagnosis.json" plan.spent --missing -)" >> "$costs"
     if [ "$now" = "$was" ]; then say "recheck $id: $(echo "$now" | tr '\t' ' '), as committed"
     else echo "gap_bench --recheck: $id: $(echo "$now" | tr '\t' ' ') now, $(echo "$was" | tr '\t' ' ') committed" >&2; bad=$((bad + 1)); fi
   done < <(units)
   say "recheck: $n unit(s) rediagnosed from the restored cache, $bad differ or failed"
+  cost_table "$costs"
   [ "$bad" = 0 ]; exit
 fi
 
@@ -254,7 +304,7 @@ done
 
 commit() {    # MESSAGE
   if [ "$COMMIT" = 1 ]; then
-    local paths=("$DATA"); [ -f "$FIGURE" ] && paths+=("$FIGURE")
+    local paths=("$DATA"); [ -f "$FIGURE" ] && paths+=("$FIGURE"); [ -n "$PRIOR_FILE" ] && [ -f "$PRIOR_FILE" ] && paths+=("$PRIOR_FILE")
     git -C "$DATA" add -- "${paths[@]}" && git -C "$DATA" commit -q -m "gap_bench ($SCEN): $1" -- "${paths[@]}" && say "committed: $1"
   else say "$1: to be committed (git add $DATA)"; fi
 }
@@ -303,6 +353,27 @@ run_cache_unit() {
   rm -f "$RUN/current"
 }
 
+run_prior_unit() {    # SEEDS (besides the signature seeds 1 2)
+  local seeds="1 2 $1" tmp=$RUN/pack_prior
+  [ -n "$1" ] || { echo "gap_bench: the prior unit needs --prior-seeds (seeds besides 1 2)" >&2; return 1; }
+  echo "prior (since $(date -u +%H:%M))" > "$RUN/current"
+  say "unit prior: granpen gap --write-prior --prior-seeds \"$seeds\" (--jobs $JOBS; resumes what is in $CACHE)"
+  mkdir -p "$RUN/prior"
+  "$CLI" gap --write-prior "$RUN/prior/prior.json" --scenario "$SCEN" --v0 "$V0" --prior-seeds "$seeds" --jobs "$JOBS" \
+    --cache "$CACHE" --lmp "$LMP" --inputs "$INPUTS" > "$RUN/logs/prior.log" 2>&1 9>&- ||
+    { echo "gap_bench: the prior failed: $RUN/logs/prior.log" >&2; return 1; }
+  pack_cache prior || return 1
+  cp "$RUN/prior/prior.json" "$tmp/prior.json"
+  local beds; beds=$("$CLI" get "$tmp/prior.json" beds) || return 1
+  echo "| prior | $SCEN | seeds $seeds | $beds beds |" > "$tmp/row.md"
+  # the file a diagnosis reads (with the default --data), committed with the unit
+  if [ -n "$PRIOR_FILE" ]; then mkdir -p "$(dirname "$PRIOR_FILE")"; cp "$tmp/prior.json" "$PRIOR_FILE.new" && mv "$PRIOR_FILE.new" "$PRIOR_FILE"; fi
+  # and the units after it in this run read it (their decks are RUN/inputs, copied at the start)
+  mkdir -p "$INPUTS/priors" && cp "$tmp/prior.json" "$INPUTS/priors/$SCEN.json"
+  publish prior "unit prior: the signature prior of $beds beds (seeds $seeds)"
+  rm -f "$RUN/current"
+}
+
 run_selftest_unit() {    # ID SEEDS ("": the selftest's own)
   local id=$1 seeds=$2 name w; name=$(unit_case "$1") w=$(unit_work "$1")
   mkdir -p "$w/$SCEN"; ln -sfn "$CACHE" "$w/$SCEN/cache"
@@ -347,6 +418,7 @@ while read -r id kind arg; do
   # that crashed, say) is left for the next start, and the campaign goes on with the next
   case $kind in
     cache) run_cache_unit || exit 1 ;;
+    prior) run_prior_unit "${arg//_/ }" || exit 1 ;;
     fa) run_selftest_unit "$id" "${arg//_/ }" || { say "unit $id failed: going on with the next (retried at the next start)"; failed="$failed $id"; } ;;
     case) run_selftest_unit "$id" "" || { say "unit $id failed: going on with the next (retried at the next start)"; failed="$failed $id"; } ;;
   esac

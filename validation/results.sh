@@ -481,6 +481,16 @@ dg10_box20() {
     [ ! -f "$OUT/dg10/collapse_peak.json" ] ||
       put "dg10_box20.peak_over_box10 = $(peak_pairs "$o/collapse_peak.json" "$OUT/dg10/collapse_peak.json" | stats)  # granpen collapse: peak / the 10 cm box's push of the same bed and v0 (the same grains under the rod), every v0"
   else say "dg10, 20 cm box: ${#traces[@]} of 15 peak pushes in $d: skipped until all are (validation/box.sh dg10)"; fi
+  # before the slow pushes (3.6 and 7.3 core-hours each, longer than a session: docs/presets.md)
+  # the peak law of 80, 140 and 200 cm/s on three beds, in both boxes on the same traces' twins
+  local fast=() ten=()
+  for f in "$d"/dg10_mu0.3_s[123]_v{80,140,200}_g981_D2.0.csv; do [ -f "$f" ] && fast+=("$f"); done
+  if [ "${#fast[@]}" = 9 ]; then
+    say "dg10, 20 and 10 cm box: the peak law of 80, 140 and 200 cm/s on 3 beds"
+    for f in "${fast[@]}"; do ten+=("$DG10/dg10_peak/${f##*/}"); done
+    peak_law dg10_box20_v80to200 "$o/v80to200" 20 "${fast[@]}"
+    peak_law dg10_v80to200 "$OUT/dg10/v80to200" 20 "${ten[@]}"
+  else say "dg10, 20 cm box: ${#fast[@]} of 9 peak pushes at 80 to 200 cm/s in $d: their peak law skipped until all are"; fi
   id=dg10_mu0.3_s1_v40_g981_D2.0 d=$DG10BOX/dg10_box20_flow
   if [ -f "$d/$id.csv" ] && [ -f "$d/$id.flow/window.txt" ]; then
     say "dg10, 20 cm box: the flow of its 40 cm/s push"

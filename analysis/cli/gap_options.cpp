@@ -2,6 +2,7 @@
 #include "gap_options.h"
 
 #include "args.h"
+#include "gap_plan.h"    // SIGNATURE_SEEDS, REFERENCE_SEEDS
 
 #include <algorithm>
 #include <cstdlib>
@@ -91,7 +92,7 @@ granpen::cli::GapCommandOptions granpen::cli::parse_gap(int argc, char **argv)
                                                   "in the cache and write their signatures as a prior, and stop")
       ->check(file_name())->type_name("FILE");
   app.add_option("--prior-seeds", prior_seeds, "with --write-prior: the prior's beds (default \"1 2\", the cache's own\n"
-                                              "signature sweeps; others: sweeps of their own)")->type_name("LIST");
+                                              "signature sweeps; others: sweeps of their own; \"1 2 41 42\": both, pooled)")->type_name("LIST");
   app.add_flag("--list-effects", go.list_effects, "the candidate effects, their magnitudes and reference values");
   if (!cmd.parse(argc, argv, go.help)) return go;
   if (sweep_by_sweep) opt.runner.pool = false;
@@ -101,7 +102,19 @@ granpen::cli::GapCommandOptions granpen::cli::parse_gap(int argc, char **argv)
     if (seed.empty()) continue;
     if (seed.find_first_not_of("0123456789") != std::string::npos || seed.size() > 9)
       throw UsageError("--prior-seeds: '" + seed + "' is not a whole number");
+    if (std::find(opt.prior_seeds.begin(), opt.prior_seeds.end(), seed) != opt.prior_seeds.end())
+      throw UsageError("--prior-seeds: seed " + seed + " is given twice");
+    // the gap is measured against the reference beds: a prior on them would share their noise
+    if (std::find(REFERENCE_SEEDS.begin(), REFERENCE_SEEDS.end(), seed) != REFERENCE_SEEDS.end())
+      throw UsageError("--prior-seeds: seed " + seed + " is a reference bed's (the gap is measured against them)");
     opt.prior_seeds.push_back(seed);
+  }
+  {
+    const auto n = std::count_if(SIGNATURE_SEEDS.begin(), SIGNATURE_SEEDS.end(), [&](const std::string &s) {
+      return std::find(opt.prior_seeds.begin(), opt.prior_seeds.end(), s) != opt.prior_seeds.end();
+    });
+    if (n != 0 && n != (long) SIGNATURE_SEEDS.size())
+      throw UsageError("--prior-seeds: the signature seeds 1 2 (the cache's own sweeps) come both or neither");
   }
   if (go.list_effects) return go;
   const bool prepares = opt.prepare_only || !opt.slurm.empty() || !opt.write_prior.empty();

@@ -112,9 +112,8 @@ std::optional<SecondRuns> refinement(const EffectData &ed, const AfterRuns &firs
 {
   const double coef = first.uu > 0 ? first.num / first.uu : 0.0;
   if (!(std::abs(c.outcome.proj_after) >= TH::refine_projection_sigmas && (confirmed || coef > 0.0))) return std::nullopt;
-  const auto [alo, ahi] = magnitude_range(ed);
   const double a2 = refined_magnitude(ed, c.magnitude, coef);
-  if (std::abs(a2 - c.magnitude) <= TH::same_magnitude_of_range * (ahi - alo)) return std::nullopt;
+  if (std::abs(a2 - c.magnitude) <= same_magnitude_tolerance(ed)) return std::nullopt;
   SecondRuns rec{SecondRuns::Why::refine, c.magnitude, a2, c.outcome.proj_after, c.outcome.chi2_after, first.all(), confirmed,
                  !confirmed, {}};
   // the refined magnitude's prediction carries its own nuisance scale, as a fit there would
@@ -152,9 +151,9 @@ EffectData with_runs_as_knot(const EffectData &ed, double a, double scale, RunsB
 // interpolated signature is the simulated one: nothing to check).
 bool away_from_knots(const EffectFit &top, const EffectData &ed)
 {
-  const auto [lo, hi] = magnitude_range(ed);
+  const double same = same_magnitude_tolerance(ed);
   bool away = true;
-  for (double k : ed.knots) away = away && std::abs(top.magnitude - k) > TH::same_magnitude_of_range * (hi - lo);
+  for (double k : ed.knots) away = away && std::abs(top.magnitude - k) > same;
   return away;
 }
 
@@ -165,11 +164,10 @@ bool first_runs(const EffectFit &top, std::size_t hs, bool between, const Effect
                 RunsBySpeed &corr)
 {
   Confirmation &c = step.done;
-  const auto [alo, ahi] = magnitude_range(ed);
   // between knots the held-out fit rests on the interpolation that fell short: the held-out
   // speed is then judged by the runs at the magnitude fitted on every speed
   c.heldout_magnitude = between ? top.magnitude : top.loso_magnitude[hs];
-  const bool own_heldout = std::abs(c.heldout_magnitude - c.magnitude) > TH::same_magnitude_of_range * (ahi - alo);
+  const bool own_heldout = std::abs(c.heldout_magnitude - c.magnitude) > same_magnitude_tolerance(ed);
   if (!given.count("confirm")) {
     RunsNeeded need{c.effect, "confirming", {{"confirm", c.magnitude, {}, CONFIRM_SEEDS}}};
     if (own_heldout) need.sets.push_back({"heldout", c.heldout_magnitude, {deck_number(f.speeds[hs])}, CONFIRM_SEEDS});

@@ -196,6 +196,13 @@ std::pair<double, double> magnitude_range(const EffectData &e)
   return {lo, hi};
 }
 
+double same_magnitude_tolerance(const EffectData &e)
+{
+  if (e.library_span > 0.0) return GapThresholds::same_magnitude_of_range * e.library_span;
+  const auto [lo, hi] = magnitude_range(e);
+  return GapThresholds::same_magnitude_of_range * (hi - lo);
+}
+
 double refined_magnitude(const EffectData &e, double a, double c)
 {
   const auto [lo, hi] = magnitude_range(e);

@@ -48,6 +48,11 @@ struct EffectData {
   // magnitude is the scale beyond it: the two would be one parameter).
   double scale_bound = 0.0;
   bool is_scale = false;
+  // The width of the effect's magnitude range over every knot the library gives it, bought
+  // or not (gap_adaptive.h): the scale of "the same magnitude" (same_magnitude_tolerance), so
+  // that which knots a plan bought never changes whether a refinement or a held-out run is
+  // simulated. 0: this data's own magnitude_range.
+  double library_span = 0.0;
 };
 
 struct Target {
@@ -120,6 +125,10 @@ EffectFit fit_effect(const Target &t, const EffectData &e);
 // The magnitudes a fit may reach: the knots' span, extended by `reach` of the outer
 // segments (a two-sided effect simulated on one side: to the mirror of its farthest knot).
 std::pair<double, double> magnitude_range(const EffectData &e);
+
+// Two magnitudes of e closer than this are the same simulation at the knots' noise:
+// GapThresholds::same_magnitude_of_range of library_span (else of magnitude_range's width).
+double same_magnitude_tolerance(const EffectData &e);
 
 // Confirming runs at magnitude a that leave a gap c u along the effect's signature
 // u = M(a) - M(0) (c: the leftover's weighted least-squares coefficient on u) call for

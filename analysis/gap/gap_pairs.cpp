@@ -233,11 +233,9 @@ namespace {
 // the first rule of pair_passes the fit falls short of, in words ("" when none)
 std::string pair_shortfall(const PairFit &p, const EffectData &A, const EffectData &B)
 {
-  const auto [alo, ahi] = magnitude_range(A);
-  const auto [blo, bhi] = magnitude_range(B);
-  if (std::abs(p.magnitude_a) <= TH::same_magnitude_of_range * (ahi - alo))
+  if (std::abs(p.magnitude_a) <= same_magnitude_tolerance(A))
     return p.a + " fitted at " + fmt(p.magnitude_a) + ", at 0: the pair is " + p.b + " alone";
-  if (std::abs(p.magnitude_b) <= TH::same_magnitude_of_range * (bhi - blo))
+  if (std::abs(p.magnitude_b) <= same_magnitude_tolerance(B))
     return p.b + " fitted at " + fmt(p.magnitude_b) + ", at 0: the pair is " + p.a + " alone";
   if (!p.detected)
     return p.at_edge ? "a magnitude at the edge of its range"

@@ -364,39 +364,67 @@ int write_signature_prior(const GapOptions &opt, const Scenario &sc, const std::
                           const RunnerOptions &runner, const GapProgressFn &fn)
 {
   const std::vector<std::string> seeds = opt.prior_seeds.empty() ? SIGNATURE_SEEDS : opt.prior_seeds;
-  // on the signature seeds the cache's own sweeps; on others sweeps of their own beside them
-  std::string prefix;
-  if (seeds != SIGNATURE_SEEDS) {
-    prefix = "prior";
-    for (std::size_t i = 0; i < seeds.size(); ++i) prefix += (i ? "-" : "") + seeds[i];
-    prefix += "_";
+  // The signature seeds (1 2) are the cache's own sweeps, the ones a cold diagnosis simulates
+  // its knots on; other seeds, sweeps of their own beside them (prefix "prior41-42_"). Both
+  // may be given ("1 2 41 42"): the prior then pools the two groups' runs, 4 beds whose cache's
+  // own half costs nothing more (the prior's noise W halves: docs/gap.md, "The signature prior").
+  std::vector<std::string> others;
+  std::size_t own = 0;
+  for (const std::string &s : seeds)
+    if (std::find(SIGNATURE_SEEDS.begin(), SIGNATURE_SEEDS.end(), s) != SIGNATURE_SEEDS.end()) ++own;
+    else others.push_back(s);
+  if (own != 0 && own != SIGNATURE_SEEDS.size())
+    throw InputError("--prior-seeds: the signature seeds (1 2, the cache's own sweeps) come all or none");
+  std::vector<std::pair<std::vector<std::string>, std::string>> groups;    // seeds, sweep prefix
+  if (own) groups.push_back({SIGNATURE_SEEDS, ""});
+  if (!others.empty()) {
+    std::string prefix = "prior";
+    for (std::size_t i = 0; i < others.size(); ++i) prefix += (i ? "-" : "") + others[i];
+    groups.push_back({others, prefix + "_"});
   }
   // every effect with simulated knots: the pour-level ones on beds of their own, the push-only
   // ones (and the chain beyond its filter) pushed into the prior's baseline beds
   std::vector<const Effect *> held;
   for (const Effect *e : choose_effects(opt.effects))
     if (has_simulated_knots(*e)) held.push_back(e);
-  std::vector<SimRequest> req{baseline_request(sc.name, v0, seeds, prefix + "baseline")};
-  for (const Effect *e : held)
-    for (SimRequest &r : knot_requests(sc.name, v0, *e, seeds, prefix)) req.push_back(std::move(r));
+  std::vector<SimRequest> req;
+  std::string names;
+  for (const auto &[g, prefix] : groups) {
+    req.push_back(baseline_request(sc.name, v0, g, prefix + "baseline"));
+    for (const Effect *e : held)
+      for (SimRequest &r : knot_requests(sc.name, v0, *e, g, prefix)) req.push_back(std::move(r));
+    names += (names.empty() ? "" : " and ") + (prefix.empty() ? std::string("1 2 (the cache's own)") : prefix);
+  }
   if (fn)
     fn(GapProgress{GapProgress::INFO, "simulate", 0, 0,
                    format_text("the signature prior of %s: %zu sweeps on seeds %s in %s", sc.name.c_str(), req.size(),
-                               prefix.empty() ? "1 2 (the cache's own)" : prefix.c_str(), runner.out_root.c_str())});
+                               names.c_str(), runner.out_root.c_str())});
   fs::create_directories(runner.out_root);
   if (run_requests(req, runner) != 0) return 1;
+  // each group's runs, pooled per speed
+  auto pooled = [&](const std::string &sweep) {
+    RunsBySpeed out;
+    for (const auto &[g, prefix] : groups)
+      for (auto &[v, runs] : load_sweep_runs(runner.out_root, prefix + sweep))
+        for (TraceRun &r : runs) out[v].push_back(std::move(r));
+    return out;
+  };
   std::map<std::string, RunsBySpeed> knots;
   for (const Effect *e : held)
     for (double a : e->knots)
-      if (!by_transform(*e, a)) knots[effect_sweep_name(*e, a)] = load_sweep_runs(runner.out_root, prefix + effect_sweep_name(*e, a));
-  SignaturePrior p = prior_from_runs(sc.name, seeds, load_sweep_runs(runner.out_root, prefix + "baseline"), knots, held, sc.depth);
-  p.source = "granpen gap --write-prior from the cache " + runner.out_root + " (sweeps " + prefix + "baseline and " + prefix +
-             "EFFECT_MAGNITUDE)";
+      if (!by_transform(*e, a)) knots[effect_sweep_name(*e, a)] = pooled(effect_sweep_name(*e, a));
+  SignaturePrior p = prior_from_runs(sc.name, seeds, pooled("baseline"), knots, held, sc.depth);
+  std::string sweeps;
+  for (const auto &[g, prefix] : groups) sweeps += (sweeps.empty() ? "" : ", ") + prefix + "baseline and " + prefix + "EFFECT_MAGNITUDE";
+  p.source = "granpen gap --write-prior from the cache " + runner.out_root + " (sweeps " + sweeps + ")";
   write_prior(opt.write_prior, p);
-  if (fn)
+  if (fn) {
+    std::string list;
+    for (const std::string &s : seeds) list += (list.empty() ? "" : " ") + s;
     fn(GapProgress{GapProgress::INFO, "report", 0, 0,
-                   format_text("wrote the signature prior %s: %zu effects with simulated knots, %zu grid depths, seeds %s",
-                               opt.write_prior.c_str(), held.size(), p.grids.size(), prefix.empty() ? "1 2" : prefix.c_str())});
+                   format_text("wrote the signature prior %s: %zu effects with simulated knots, %zu grid depths, seeds %s (%d beds)",
+                               opt.write_prior.c_str(), held.size(), p.grids.size(), list.c_str(), p.beds)});
+  }
   return 0;
 }
 

@@ -35,7 +35,8 @@ struct GapThresholds {
   // a quarter: the ramp case of the selftest explains 0.32 from knots 1.6 and 3.2 at its true
   // 2.4 cm; below a quarter the candidate is too weak to be worth fresh beds between knots
   static constexpr double between_knots_min_explained = 0.25;
-  // 0.05 of an effect's simulated range: two magnitudes closer than that are the same
+  // 0.05 of an effect's range in the library (every knot, bought or not: EffectData::
+  // library_span, same_magnitude_tolerance): two magnitudes closer than that are the same
   // simulation at the knots' noise (a fitted magnitude at a knot, a refined magnitude that
   // barely moves, a held-out magnitude equal to the fitted one are not simulated again)
   static constexpr double same_magnitude_of_range = 0.05;

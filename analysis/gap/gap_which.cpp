@@ -47,6 +47,23 @@ std::vector<std::pair<double, std::string>> knot_sweeps(const Effect &e)
   return ks;
 }
 
+// The width of e's magnitude range over every knot the library gives e (a part of it, the
+// cheap stage's transform knots, included): magnitude_range's rule on the whole effect.
+double library_span(const Effect &e, const EffectData &ed)
+{
+  const Effect *whole = &e;
+  for (const Effect &x : effect_library())
+    if (x.name == e.name) whole = &x;
+  EffectData w;
+  w.knots = {0.0};
+  w.knots.insert(w.knots.end(), whole->knots.begin(), whole->knots.end());
+  std::sort(w.knots.begin(), w.knots.end());
+  w.one_sided = ed.one_sided;
+  w.reach = ed.reach;
+  const auto [lo, hi] = magnitude_range(w);
+  return hi - lo;
+}
+
 }    // namespace
 
 EffectData effect_data(const Effect &e, const Features &f)
@@ -83,6 +100,7 @@ EffectData effect_data(const Effect &e, const Features &f)
   // nuisance, not a cause (gap_thresholds.h, calibration_scale_bound)
   ed.scale_bound = GapThresholds::calibration_scale_bound;
   ed.is_scale = e.uniform_scale;
+  ed.library_span = library_span(e, ed);
   ed.noise_r2 = noise_residual(f.nulls, ed);
   return ed;
 }

@@ -9,7 +9,9 @@
 #   3. a run with every unit committed runs nothing and commits nothing;
 #   4. a new run folder restored from the committed files alone (--restore: no bed restarts)
 #      gives every unit's committed verdict again with a LAMMPS that refuses to run (--recheck);
-#   5. the false-alarm table carries the count with its exact interval.
+#   5. the false-alarm table carries the count with its exact interval; the recheck's cost table
+#      (costs.md) has each unit's cold cost, the same as its commit's;
+#   6. the prior unit (--prior-seeds) commits a four-bed prior whose runs a new machine restores.
 # usage: gap_bench_campaign.sh GRANPEN_CLI FAKE_LMP INPUTS WORK
 set -u
 CLI=$1 LMP=$2 INPUTS=$3 W=$4
@@ -66,11 +68,34 @@ find "$W/run2/cache" -name '*.restart' | grep -q . && fail "--restore made bed r
 bash "$ROOT/validation/gap_bench.sh" --scenario tiny --sets 2 --cases contact_stiffness,rolling_resistance_half --data "$DATA" \
   --run "$W/run2" --recheck > "$W/6.log" 2>&1 || { fail "--recheck: verdicts differ or a run was asked for"; cat "$W/6.log"; }
 grep -q 'recheck: 4 unit(s) rediagnosed from the restored cache, 0 differ' "$W/6.log" || fail "--recheck: $(tail -1 "$W/6.log")"
+# the recheck's cost table: the same build that committed the units plans the same cold cost
+# for each (plan.spent is counted cold, whatever the restored cache holds), to the digit
+grep -q '^- false-alarm sets (no effect): 2, cold cost median [0-9.]*, mean [0-9.]* (this build)$' "$DATA/costs.md" &&
+  grep -q '^- cases (every committed case unit): 2, ' "$DATA/costs.md" || fail "costs.md: $(grep '^- ' "$DATA/costs.md" 2>/dev/null | tr '\n' ' ')"
+awk -F'|' '/^[|] (fa|contact|rolling)/ {n++; if ($4 != $5 || $4 ~ /^ *-? *$/) bad++} END {exit !(n == 4 && bad == 0)}' "$DATA/costs.md" ||
+  fail "costs.md: a unit's cold cost differs between the recheck and its commit: $(grep '^| [fcr]' "$DATA/costs.md" | tr '\n' ' ')"
 
 # 5. the rate with its interval (2 sets: 0 of 2 -> 0 to 0.8419 = 1 - 0.025^(1/2))
 tail -1 "$DATA/false_alarms.md" | grep -Eq '^[0-2] false alarm\(s\) in 2 data sets without an effect: rate [0-9.]+, 95% interval [0-9.]+ to [0-9.]+' ||
   fail "the false-alarm table's last line: $(tail -1 "$DATA/false_alarms.md")"
 grep -q '^0 false alarm(s) in 2 .* interval 0.0000 to 0.8419' "$DATA/false_alarms.md" || echo "note: $(tail -1 "$DATA/false_alarms.md")"
+# 6. the prior unit (--prior-seeds "41 42"): a prior of four beds committed with its runs; from
+# the committed files alone (--restore on a new run folder) granpen gap --write-prior writes
+# the same prior again with a LAMMPS that refuses to run (the route of validation_gap_bench_prior)
+"${B[@]}" --run "$RUN" --prior-seeds "41 42" --units 1 > "$W/7.log" 2>&1 || { fail "the prior unit failed"; tail -5 "$W/7.log"; }
+[ "$(commits)" = 6 ] && [ -f "$DATA/prior/row.md" ] || fail "the prior unit: $(commits) commits, expected 6 ($(tail -1 "$W/7.log"))"
+[ "$("$CLI" get "$DATA/prior/prior.json" seeds beds 2>&1)" = "$(printf '["1","2","41","42"]\t4')" ] ||
+  fail "the prior unit's prior: $("$CLI" get "$DATA/prior/prior.json" seeds beds 2>&1)"
+tar -tJf "$DATA/prior/cache.tar.xz" 2>/dev/null | grep -q 'prior41-42_baseline/traces/.*\.csv\.done$' || fail "the prior unit's archive has no prior41-42_ runs"
+bash "$ROOT/validation/gap_bench.sh" --scenario tiny --sets 2 --cases contact_stiffness,rolling_resistance_half --data "$DATA" \
+  --run "$W/run3" --restore > "$W/8.log" 2>&1 || fail "--restore with the prior unit failed"
+printf '#!/bin/sh\necho "a run was asked for ($*)" >&2\nexit 1\n' > "$W/refuse_lmp"; chmod +x "$W/refuse_lmp"
+"$CLI" gap --write-prior "$W/prior_again.json" --scenario tiny --v0 "50 100 200" --prior-seeds "1 2 41 42" --cache "$W/run3/cache" \
+  --inputs "$INPUTS" --lmp "$W/refuse_lmp" --jobs 1 > "$W/9.log" 2>&1 || fail "the prior from the restored cache: $(tail -1 "$W/9.log")"
+KEYS=(seeds beds speeds grids)
+[ "$("$CLI" get "$DATA/prior/prior.json" "${KEYS[@]}" 2>&1)" = "$("$CLI" get "$W/prior_again.json" "${KEYS[@]}" 2>&1)" ] ||
+  fail "the prior written from the restored cache is not the committed one"
+
 cat "$W/4.log" | tail -2
 for u in cache fa_01 fa_02 contact_stiffness rolling_resistance_half; do echo "$u: $(du -sk "$DATA/$u" | cut -f1) KB"; done
 [ "$fails" = 0 ] && echo "gap_bench_campaign: all checks passed"

@@ -14,7 +14,9 @@ rm -rf "$WORK"; mkdir -p "$WORK"
 GRANPEN_CLI=$CLI GRANPEN_LMP=/bin/false "$SRC/validation/gap_bench.sh" --scenario bench --data "$SRC/validation/gap_bench/bench" \
   --run "$WORK/run" --restore
 printf '#!/bin/sh\necho "gap_bench_prior: a run was asked for ($*)" >&2\nexit 1\n' > "$WORK/refuse_lmp"; chmod +x "$WORK/refuse_lmp"
-"$CLI" gap --write-prior "$WORK/bench.json" --scenario bench --v0 "50 100 200" --cache "$WORK/run/cache" \
+# on the committed prior's own beds (1 2, or 1 2 and the prior unit's: gap_bench.sh --prior-seeds)
+seeds=$("$CLI" get "$SRC/inputs/priors/bench.json" seeds | tr -d '[]"' | tr ',' ' ')
+"$CLI" gap --write-prior "$WORK/bench.json" --scenario bench --v0 "50 100 200" --prior-seeds "$seeds" --cache "$WORK/run/cache" \
   --inputs "$SRC/inputs" --lmp "$WORK/refuse_lmp" --jobs 1 > "$WORK/prior.log" 2>&1 \
   || { echo "gap_bench_prior: writing the prior from the restored cache failed:"; tail -n 5 "$WORK/prior.log"; exit 1; }
 # every member but "source", as the program reads them (granpen get: the file's layout is the

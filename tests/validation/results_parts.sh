@@ -168,6 +168,13 @@ for k in phi_0 peak_exponent peak_exponent_ensemble peak_exponent_local peak_exp
   same "dg10_box20.$k" "$(val "dg10.$k")"
 done
 same dg10_box20.peak_over_box10 "1 +- 0 n = 15"
+# the fast speeds' peak law (80 to 200 cm/s, both boxes): the stand-ins are the 10 cm traces, so
+# the 20 cm box's lines are the 10 cm box's, and they are not the five speeds' (fewer traces)
+for k in peak_exponent peak_exponent_ensemble peak_exponent_from_2vc peak_inertial; do
+  [ -n "$(val "dg10_v80to200.$k")" ] || fail "no dg10_v80to200.$k"
+  same "dg10_box20_v80to200.$k" "$(val "dg10_v80to200.$k")"
+done
+grep -q '^dg10_v80to200.peak_exponent = .*# granpen collapse, 9 traces' "$N" || fail "the fast speeds' peak law is not of 9 traces"
 for k in lambda_vz_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove M_move M_slow; do
   same "dg10_box20.v40.$k" "$(val "mid.$k")"
 done
@@ -226,12 +233,13 @@ grep -q "^peak exponent (v_c to 10 v_c),10,$(val dg10.peak_exponent | awk '{prin
 
 # a part with one push missing adds no line and says so
 rm "$DG/dg10_flow/dg10_mu0.3_s1_v200_g981_D2.0.flow/window.txt" "$DG/dg10_D/dg10_mu0.3_s1_v100_g981_D1.0.csv"
-rm "$B20/dg10_box20_peak/dg10_mu0.3_s3_v20_g981_D2.0.csv" "$B20/dg10_box20_flow/$id.flow/window.txt" \
+rm "$B20/dg10_box20_peak/dg10_mu0.3_s3_v200_g981_D2.0.csv" "$B20/dg10_box20_flow/$id.flow/window.txt" \
   "$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D3.0.csv"
 GRANPEN_CLI=$CLI "$ROOT/validation/results.sh" --out "$OUT/res2" --dumps /nonexistent --dg10 "$DG" --stiff "$ST" --damp "$DA" \
   --dg10-box "$B20" > "$OUT/res2.log" 2>&1 || { cat "$OUT/res2.log"; fail "results.sh failed with a part missing"; }
 ! grep -q '^dg10_box20' "$OUT/res2/numbers.txt" || fail "a dg10 20 cm box part with a push missing added lines"
 grep -q "dg10, 20 cm box: 14 of 15 peak pushes" "$OUT/res2.log" || fail "no note of the 20 cm box's missing peak push"
+grep -q "dg10, 20 cm box: 8 of 9 peak pushes at 80 to 200 cm/s" "$OUT/res2.log" || fail "no note of the 20 cm box's missing fast peak push"
 grep -q "dg10, 20 cm box: its 40 cm/s flow push (with tables) not in" "$OUT/res2.log" || fail "no note of the 20 cm box's missing flow tables"
 grep -q "dg10_box20_D: the pushes of D = 3.0 cm" "$OUT/res2.log" || fail "no note of the 20 cm box's missing D push"
 ! grep -q '^dg10\.v\|^dg10\.alpha0_window\|^dg10\.alpha\.\|^dg10\.k_z_deep\|^dg10\.t_star\|^dg10\.collapse' "$OUT/res2/numbers.txt" ||

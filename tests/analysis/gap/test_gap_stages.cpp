@@ -834,6 +834,41 @@ TEST(GapWhich, TheVerdictOnAHandMadeFeatureSet)
   EXPECT_TRUE(vz.top_effect.empty());
 }
 
+// "The same magnitude" is measured against the effect's whole range in the library, not the
+// range of the knots a plan bought: the chain fitted on its filter's knots alone (0.2 to 2 ms,
+// its simulated 4 and 10 ms skipped) has the tolerance of the chain with every knot, so a
+// refinement or a held-out run is simulated exactly when it would be with all knots (before
+// this, 5% of 0.2-2 ms let a refinement move a fit of 1.05 ms to 0.93 for a truth of 1).
+// Flat features (one speed, two features, every knot the baseline): only the knots matter.
+TEST(GapPlan, TheSameMagnitudeIsMeasuredOnTheLibrarysWholeRange)
+{
+  const Effect &chain = *find_effect("measurement_chain");
+  const Effect *part = transform_part(chain);
+  ASSERT_NE(part, nullptr);
+  Features f;
+  const std::vector<double> flat(2, 100.0);
+  const Ensemble en = make_ensemble(100.0, {flat, flat});
+  f.speeds = {100.0};
+  f.base = f.fresh = f.real = {en};
+  for (double a : chain.knots) f.knots[effect_sweep_name(chain, a)] = {en};
+  f.cv2 = {std::vector<double>(2, 1e-4)};
+  f.fresh_err = {model_err(en, f.cv2[0])};
+  f.target = Target{{flat}, {f.fresh_err[0]}};
+  const EffectData whole = effect_data(chain, f), cheap = effect_data(*part, f);
+  const auto [wlo, whi] = magnitude_range(whole);
+  const auto [clo, chi] = magnitude_range(cheap);
+  ASSERT_LT(chi - clo, 0.5 * (whi - wlo));    // the part's own range is much narrower
+  EXPECT_DOUBLE_EQ(whole.library_span, whi - wlo);
+  EXPECT_DOUBLE_EQ(cheap.library_span, whole.library_span);
+  EXPECT_DOUBLE_EQ(same_magnitude_tolerance(cheap), GapThresholds::same_magnitude_of_range * (whi - wlo));
+  EXPECT_DOUBLE_EQ(same_magnitude_tolerance(cheap), same_magnitude_tolerance(whole));
+  // an effect the library does not hold: its own range
+  HandMade h(0.5);
+  const EffectData own = effect_data(h.ea, h.f);
+  const auto [lo, hi] = magnitude_range(own);
+  EXPECT_DOUBLE_EQ(same_magnitude_tolerance(own), GapThresholds::same_magnitude_of_range * (hi - lo));
+}
+
 TEST(GapConfirm, TheGapAlongTheSignatureAndTheConfirmationTest)
 {
   HandMade h(0.5);
