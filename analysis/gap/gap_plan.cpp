@@ -11,11 +11,6 @@
 
 namespace granpen {
 
-// signature beds; the reference beds the fits measure the gap against (and split for the
-// null replicates); the confirmation's beds, used by no fit
-const std::vector<std::string> SIGNATURE_SEEDS = {"1", "2"}, REFERENCE_SEEDS = {"11", "12", "13", "14"},
-                               CONFIRM_SEEDS = {"21", "22", "23", "24"}, REFINE_SEEDS = {"31", "32", "33", "34"};
-
 std::vector<SimRequest> signature_requests(const std::string &scenario, const std::vector<std::string> &v0,
                                            const std::vector<const Effect *> &effects)
 {

@@ -15,7 +15,11 @@ namespace granpen {
 // Seeds of the signature simulations (baseline and every effect knot) and of the
 // confirming runs, which must be beds no fit has seen; the refining runs' beds (the
 // magnitude corrected from the confirming runs, which it has seen).
-extern const std::vector<std::string> SIGNATURE_SEEDS, REFERENCE_SEEDS, CONFIRM_SEEDS, REFINE_SEEDS;
+// The signature beds; the reference beds the fits measure the gap against (and split for the
+// null replicates); the confirmation's beds, used by no fit. Inline: the options' parser
+// checks --prior-seeds against them without linking this layer (tests/fuzz builds it alone).
+inline const std::vector<std::string> SIGNATURE_SEEDS = {"1", "2"}, REFERENCE_SEEDS = {"11", "12", "13", "14"},
+                                      CONFIRM_SEEDS = {"21", "22", "23", "24"}, REFINE_SEEDS = {"31", "32", "33", "34"};
 
 // The baseline and every knot of the chosen effects, at the speeds v0 (the cache); knots
 // a transform realises (by_transform: the measurement chain up to 2 ms) need nothing
