@@ -1,6 +1,6 @@
 # Compare two dumps of the same atoms (sorted by id): every value must agree within
 # rtol * (largest magnitude of its column) (awk -v rtol=1e-9 -f compare_dumps.awk A B).
-# With -v expect=differ, the dumps must differ beyond rtol instead.
+# With -v expect=differ, the dumps must differ beyond rtol instead (expect=same, or unset: agree).
 FNR == 1 { file++ }
 /^ITEM: ATOMS/ { atoms[file] = 1; next }
 atoms[file] && NF > 1 {
