@@ -168,7 +168,9 @@ struct ScaleFinding {
 };
 
 // The finding for the scale candidate `scale` (its fit, at magnitude `magnitude`) against the
-// other candidates of the ranking.
+// other candidates of the ranking: besides calibration and density, each effect whose fitted
+// prediction lies within the evidence margin of the scale's (a look-alike), and each detected
+// on its own whose chi^2 within the calibration bound is at most the margin above the scale's.
 ScaleFinding scale_finding(const EffectFit &scale, double magnitude, const std::vector<EffectFit> &ranking,
                            const std::map<std::string, EffectData> &data, const std::map<std::string, const Effect *> &effects,
                            const Features &f);

@@ -717,7 +717,9 @@ std::string md_scale_only(const Diagnosis &d)
                       c.separation2 < 0 ? "-" : f3(c.separation2, "%.1f").c_str(), c.tell_apart.c_str());
   md += format_text("\nThe effects listed are those whose fitted prediction lies within the evidence margin (%g squared "
                     "standard deviations, the knots' noise subtracted) of the scale's: at this noise their signatures "
-                    "look like a uniform scale at the magnitude that would give this gap.\n\n",
+                    "look like a uniform scale at the magnitude that would give this gap; and those detected on their "
+                    "own that fit the data as well as the scale (chi^2 within the calibration bound at most the margin "
+                    "above the scale's), however far apart the two predictions stand.\n\n",
                     GapThresholds::evidence_margin);
   return md;
 }

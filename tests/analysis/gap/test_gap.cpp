@@ -636,6 +636,44 @@ TEST(GapLimits, TwoPourLevelFitsShareTheSignatureBaselinesNoise)
   EXPECT_NEAR(signature_baseline_share(A, 0.5), 0.5, 1e-12);
 }
 
+TEST(GapLimits, ScaleOnlyListsAnEffectThatFitsAsWellHoweverFarApart)
+{
+  // bench packing at -0.18 (issue 37's campaign): the scale won on evidence by 10.9 (the
+  // packing knots' noise costs likelihood), its fitted prediction 2.46 sigma from the scale's
+  // (sep^2 6.05, just beyond the look-alike margin 6), yet its chi^2 within the calibration
+  // bound 36.4 against the scale's 43.3: a scale_only verdict must list it as a cause
+  EffectData S = synthetic_effect("force_scale", {1, 1, 1, 1, 1, 1}, 0.01);
+  EffectData C = synthetic_effect("packing", {0, 0, 0, 0, 0, 5}, 0.01);
+  S.is_scale = true;
+  Features f;
+  f.speeds = {50.0, 100.0};
+  for (int s = 0; s < 2; ++s) {
+    f.target.mean.push_back(std::vector<double>(6, 100.0));
+    f.target.err.push_back(std::vector<double>(6, 0.25));
+  }
+  const std::map<std::string, EffectData> data{{"force_scale", S}, {"packing", C}};
+  EffectFit scale, packing;
+  scale.name = "force_scale", scale.is_scale = true, scale.magnitude = 1.0, scale.chi2_within_bound = 43.3;
+  packing.name = "packing", packing.magnitude = 1.0, packing.detected = true, packing.chi2_within_bound = 36.4;
+  const auto causes = [&] { return scale_finding(scale, 1.0, {scale, packing}, data, {}, f).causes; };
+  // the two predictions differ by 5 (s + 1) - (s + 1) on one feature and (s + 1) on five:
+  // far beyond the margin, so only the fit's quality can list it
+  std::vector<ScaleCause> c = causes();
+  ASSERT_EQ(c.size(), 3u);
+  EXPECT_EQ(c[2].cause, "packing");
+  EXPECT_GT(c[2].separation2, GapThresholds::evidence_margin);
+  EXPECT_NE(c[2].tell_apart.find("fits these data as well as the scale (chi^2 36.4 against 43.3"), std::string::npos)
+      << c[2].tell_apart;
+  // at the margin above the scale's chi^2 it is still as good a fit; beyond it, not a cause
+  packing.chi2_within_bound = 43.3 + GapThresholds::evidence_margin;
+  EXPECT_EQ(causes().size(), 3u);
+  packing.chi2_within_bound = 43.3 + GapThresholds::evidence_margin + 0.1;
+  EXPECT_EQ(causes().size(), 2u);
+  // nor is an effect its own likelihood ratio does not detect, however well it fits
+  packing.chi2_within_bound = 36.4, packing.detected = false;
+  EXPECT_EQ(causes().size(), 2u);
+}
+
 namespace {
 
 // An effect whose signature is a uniform scale of the baseline: 3% of it per unit magnitude
