@@ -360,6 +360,10 @@ ScaleFinding scale_finding(const EffectFit &scale, double magnitude, const std::
                         "balance",
                         std::nullopt});
   const EffectData &S = data.at(scale.name);
+  // what an effect no measured runs separate from the scale leaves to the lab
+  const std::string what_is_left = "once the calibration and the density are checked, it is what is left (or a "
+                                   "change of the rig that moves it and not a scale: another rod diameter, box width "
+                                   "or speed range)";
   for (const auto &c : ranking) {
     if (c.is_scale || c.name == scale.name || !data.count(c.name)) continue;
     const EffectData &C = data.at(c.name);
@@ -382,9 +386,7 @@ ScaleFinding scale_finding(const EffectFit &scale, double magnitude, const std::
       cause.tell_apart = "it fits these data as well as the scale (chi^2 " + printf_number("%.1f", c.chi2_within_bound) +
                          " against " + printf_number("%.1f", scale.chi2_within_bound) +
                          " within the calibration bound), its prediction " + printf_number("%.2f", std::sqrt(sep2)) +
-                         " standard deviations from the scale's: once the calibration and the density are checked, it "
-                         "is what is left (or a change of the rig that moves it and not a scale: another rod diameter, "
-                         "box width or speed range)";
+                         " standard deviations from the scale's: " + what_is_left;
       out.causes.push_back(cause);
       continue;
     }
@@ -393,9 +395,7 @@ ScaleFinding scale_finding(const EffectFit &scale, double magnitude, const std::
     cause.tell_apart = m.reaches && m.after > 0
                            ? "measured runs: " + std::to_string(m.runs) + " more at v0 = " + printf_number("%g", m.v0) +
                                  " cm/s bring its prediction and the scale's the evidence margin apart"
-                           : "no number of measured runs at these speeds: once the calibration and the density are "
-                             "checked, it is what is left (or a change of the rig that moves it and not a scale: another "
-                             "rod diameter, box width or speed range)";
+                           : "no number of measured runs at these speeds: " + what_is_left;
     cause.runs = m;
     out.causes.push_back(cause);
   }
