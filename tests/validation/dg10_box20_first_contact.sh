@@ -12,8 +12,9 @@
 #     would already show in a few pairs);
 #  2. no single pair differs by more than the largest bed-to-bed difference.
 # Beside the verdict it prints, not checked (the box may matter there), each 20 cm push's peak
-# with the 10 cm push's on its bed, and its mean drag over z = 0.8-1.2 and 1.2-1.5 cm with the
-# 10 cm beds' at its speed (docs/results.md quotes them). No 20 cm push committed yet skips the test (exit 77); each push counts as it arrives. The
+# with the 10 cm push's on its bed, its mean drag over z = 0.5-0.8, 0.8-1.2 and 1.2-1.5 cm with
+# the 10 cm beds' at its speed, and its ratio to its own tile's in 2 ms windows of time after
+# contact (docs/results.md quotes them). No 20 cm push committed yet skips the test (exit 77); each push counts as it arrives. The
 # bookkeeping (means, spreads, verdict) is first_contact_lib.sh's, shared with box_first_contact.sh.
 #   dg10_box20_first_contact.sh DG10_PEAK DG10_BOX20_PEAK
 set -euo pipefail
@@ -40,10 +41,21 @@ for v in 20 40 80 140 200; do
   for s in 1 2 3; do
     [ -f "$WIDE/$(id "$s" "$v")" ] || continue
     echo "not checked: v0 $v, bed $s: peak F (dyne) at z (cm): $(fc_peak "$WIDE/$(id "$s" "$v")") in the 20 cm box, $(fc_peak "$NARROW/$(id "$s" "$v")") in the 10 cm box"
-    for w in "0.8 1.2" "1.2 1.5"; do
+    for w in "0.5 0.8" "0.8 1.2" "1.2 1.5"; do
       narrow=""
       for b in 1 2 3; do narrow="$narrow $(fc_window_mean $w "$NARROW/$(id "$b" "$v")")"; done
       echo "deeper, not checked: v0 $v, bed $s, z in [${w% *}, ${w#* }) cm: mean drag $(fc_window_mean $w "$WIDE/$(id "$s" "$v")") dyne in the 20 cm box; 10 cm beds 1 2 3:$narrow"
     done
+    # the same pair in time after contact, t = z / v0, windows of 2 ms to the push's 1.5 cm
+    # (the last one cut there): when the boxes part, whatever the speed
+    line="" k=0
+    while :; do
+      w=$(awk -v v="$v" -v k="$k" 'BEGIN { lo = v * 2 * k / 1000; hi = v * (2 * k + 2) / 1000; if (lo >= 1.45) exit 1; if (hi > 1.5) hi = 1.5; print lo, hi, 2 * k, hi / v * 1000 }') || break
+      set -- $w
+      r=$(awk -v a="$(fc_window_mean "$1" "$2" "$WIDE/$(id "$s" "$v")")" -v c="$(fc_window_mean "$1" "$2" "$NARROW/$(id "$s" "$v")")" 'BEGIN { if (a == "" || c == "" || c == 0) print "-"; else printf "%.2f", a / c }')
+      line="$line $3-$(printf '%.3g' "$4") ms $r;"
+      k=$((k + 1))
+    done
+    echo "time, not checked: v0 $v, bed $s: 20 cm / 10 cm mean drag after contact:${line%;}"
   done
 done
