@@ -51,9 +51,9 @@ for v in 20 40 80 140 200; do
     line="" k=0
     while :; do
       w=$(awk -v v="$v" -v k="$k" 'BEGIN { lo = v * 2 * k / 1000; hi = v * (2 * k + 2) / 1000; if (lo >= 1.45) exit 1; if (hi > 1.5) hi = 1.5; print lo, hi, 2 * k, hi / v * 1000 }') || break
-      set -- $w
-      r=$(awk -v a="$(fc_window_mean "$1" "$2" "$WIDE/$(id "$s" "$v")")" -v c="$(fc_window_mean "$1" "$2" "$NARROW/$(id "$s" "$v")")" 'BEGIN { if (a == "" || c == "" || c == 0) print "-"; else printf "%.2f", a / c }')
-      line="$line $3-$(printf '%.3g' "$4") ms $r;"
+      read -r zlo zhi tlo thi <<< "$w"
+      r=$(awk -v a="$(fc_window_mean "$zlo" "$zhi" "$WIDE/$(id "$s" "$v")")" -v c="$(fc_window_mean "$zlo" "$zhi" "$NARROW/$(id "$s" "$v")")" 'BEGIN { if (a == "" || c == "" || c == 0) print "-"; else printf "%.2f", a / c }')
+      line="$line $tlo-$(printf '%.3g' "$thi") ms $r;"
       k=$((k + 1))
     done
     echo "time, not checked: v0 $v, bed $s: 20 cm / 10 cm mean drag after contact:${line%;}"

@@ -656,8 +656,9 @@ TEST(GapLimits, ScaleOnlyListsAnEffectThatFitsAsWellHoweverFarApart)
   scale.name = "force_scale", scale.is_scale = true, scale.magnitude = 1.0, scale.chi2_within_bound = 43.3;
   packing.name = "packing", packing.magnitude = 1.0, packing.detected = true, packing.chi2_within_bound = 36.4;
   const auto causes = [&] { return scale_finding(scale, 1.0, {scale, packing}, data, {}, f).causes; };
-  // the two predictions differ by 5 (s + 1) - (s + 1) on one feature and (s + 1) on five:
-  // far beyond the margin, so only the fit's quality can list it
+  // at magnitude 1 the scale moves every feature by 1 and packing only the last, by 5: the two
+  // predictions differ by 1 on five features and by 4 on the last, at errors of 0.25: far
+  // beyond the margin, so only the fit's quality can list it
   std::vector<ScaleCause> c = causes();
   ASSERT_EQ(c.size(), 3u);
   EXPECT_EQ(c[2].cause, "packing");
