@@ -523,6 +523,64 @@ dg10_box20_alpha_D() { # SWEEP KEY "D..."
 }
 if [ -d "$DG10BOX" ]; then dg10_box20; else say "dg10, 20 cm box: $DG10BOX missing, skipped"; fi
 
+# When the boxes part (docs/results.md, "When the boxes part"): two pushes over the same
+# grains in boxes of width L and a wider one give the same drag until something comes back
+# from the narrower box's cell boundary, L / 2 from the axis. granpen parting: the first of
+# two 0.5 ms windows in a row, after each push's contact, where the mean drag of the two
+# differs by 3% or more on one side. An echo (a wave there and back, L at speed c) parts them
+# at t = L / c, a time: t_part scales with L and changes little with v0. A flow front at a
+# fixed depth would part them at z / v0: t_part ~ v0^-1. Pairs: 8 / 16 and 12 / 20 cm (the
+# only bench boxes with the same grains under the rod) above v_c, 2 beds; dg10 10 / 20 cm at
+# 80 to 200 cm/s, 3 beds, once those nine pushes are in.
+parting_ms() { # NARROW WIDE JSON: t_part in ms, or "none" when they do not part
+  "$CLI" parting "$1" "$2" --json "$3" > /dev/null
+  [ "$(jget "$3" parted)" = true ] && jget "$3" t_part_ms || echo none
+}
+# least-squares slope of ln t against ln v0 with its standard error: "SLOPE +- SE n = N"
+speed_exponent() { awk '{ x = log($1); y = log($2); sx += x; sy += y; sxx += x * x; sxy += x * y; n++; X[n] = x; Y[n] = y }
+  END { if (n < 3) { print "undefined n = " n; exit }
+        b = (n * sxy - sx * sy) / (n * sxx - sx * sx); a = (sy - b * sx) / n
+        for (i = 1; i <= n; i++) r += (Y[i] - a - b * X[i]) ^ 2
+        printf "%.3g +- %.2g n = %d\n", b, sqrt(r / (n - 2) / (sxx - sx * sx / n)), n }'; }
+box_parting() {
+  local o=$OUT/box_parting pair n w v s t a b pts ratios
+  mkdir -p "$o"
+  for pair in 8:16 12:20; do
+    n=${pair%%:*} w=${pair##*:} pts=""
+    for v in 50 100 200 280; do
+      t=""
+      for s in 11 12; do
+        a=$BOX/box_bench${n}_peak/bench_mu0.3_s${s}_v${v}_g981_D2.0.csv b=$BOX/box_bench${w}_peak/bench_mu0.3_s${s}_v${v}_g981_D2.0.csv
+        [ -f "$a" ] && [ -f "$b" ] || { say "box parting: $a or $b missing: skipped"; return 0; }
+        t="$t $(parting_ms "$a" "$b" "$o/bench_${n}_${w}_s${s}_v${v}.json")"
+        pts="$pts $v ${t##* }"
+      done
+      put "bench_box${n}_${w}.t_part_ms.v$v = $(echo $t | tr ' ' '\n' | grep -v none | stats)  # granpen parting (0.5 ms windows, 3%, two in a row): ms after contact when the $n cm box's push parts from the $w cm box's on the same grains, 2 beds"
+    done
+    put "bench_box${n}_${w}.parting_speed_exponent = $(echo $pts | xargs -n 2 | grep -v none | speed_exponent)  # ln t_part against ln v0, 50 to 280 cm/s, 2 beds: a wave of fixed speed 0, one faster the harder the push below 0, a flow front at a fixed depth -1"
+  done
+  ratios=""
+  for v in 50 100 200 280; do for s in 11 12; do
+    ratios="$ratios $(awk -v a="$(jget "$o/bench_12_20_s${s}_v${v}.json" t_part_ms)" -v b="$(jget "$o/bench_8_16_s${s}_v${v}.json" t_part_ms)" 'BEGIN { print a / b }')"
+  done; done
+  put "bench_box.parting_width_ratio = $(echo $ratios | tr ' ' '\n' | stats)  # t_part(12 / 20 cm) / t_part(8 / 16 cm), same bed and v0, 50 to 280 cm/s: an echo from the narrower box's boundary gives 12 / 8 = 1.5"
+  local d=$DG10BOX/dg10_box20_peak
+  for v in 80 140 200; do for s in 1 2 3; do
+    [ -f "$d/dg10_mu0.3_s${s}_v${v}_g981_D2.0.csv" ] || { say "box parting: the dg10 20 cm push of bed $s at $v cm/s not in $d: dg10 skipped"; return 0; }
+  done; done
+  pts=""
+  for v in 80 140 200; do
+    t=""
+    for s in 1 2 3; do
+      t="$t $(parting_ms "$DG10/dg10_peak/dg10_mu0.3_s${s}_v${v}_g981_D2.0.csv" "$d/dg10_mu0.3_s${s}_v${v}_g981_D2.0.csv" "$o/dg10_10_20_s${s}_v${v}.json")"
+      pts="$pts $v ${t##* }"
+    done
+    put "dg10_box10_20.t_part_ms.v$v = $(echo $t | tr ' ' '\n' | grep -v none | stats)  # granpen parting as above: when the 10 cm box's dg10 push parts from the 20 cm box's on the same grains, 3 beds"
+  done
+  put "dg10_box10_20.parting_speed_exponent = $(echo $pts | xargs -n 2 | grep -v none | speed_exponent)  # ln t_part against ln v0, 80 to 200 cm/s, 3 beds"
+}
+if [ -d "$BOX" ] && [ -d "$DG10BOX" ]; then box_parting; else say "box parting: $BOX or $DG10BOX missing, skipped"; fi
+
 # ---------------------------------------------------------------- against D/d_g
 # The rows that differ from the paper, at D/d_g = 5 (bench), 6.67 (mid) and 10 (dg10; empty
 # until measured): scaling.csv, drawn by granpen plot scaling. Errors: the peak exponent's

@@ -23,6 +23,7 @@ int plot(int argc, char **argv);           // plot_cmd.cpp
 int gap(int argc, char **argv);            // gap_cmd.cpp
 int get(int argc, char **argv);            // get_cmd.cpp
 int gap_score(int argc, char **argv);      // gap_score_cmd.cpp
+int parting(int argc, char **argv);        // parting_cmd.cpp
 int rate(int argc, char **argv);           // rate_cmd.cpp
 
 }    // namespace cli

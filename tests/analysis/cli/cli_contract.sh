@@ -252,6 +252,18 @@ expect 2 "--effects: 'sidewalls' given twice" "$CLI" "${GAP[@]}" --scenario tiny
 sed 's/^variable D .*/variable D index 2cm/' "$INPUTS/presets/tiny.lmp" > "$W/twocm.lmp"
 expect 2 "'D' is not a number: 2cm" "$CLI" "${GAP[@]}" --scenario "$W/twocm.lmp" --prepare-only --v0 100
 
+# ---- granpen parting: named refusals, an input never overwritten, no contact named
+cp "$TRACE" "$W/part_a.csv"
+expect 2 "--window: must be a time above 0" "$CLI" parting "$TRACE" "$W/part_a.csv" --window 0
+expect 2 "--threshold: must be above 0" "$CLI" parting "$TRACE" "$W/part_a.csv" --threshold -1
+expect 2 "--sustain" "$CLI" parting "$TRACE" "$W/part_a.csv" --sustain 0
+expect 1 "--json .*part_a\.csv.*refusing to overwrite" "$CLI" parting "$TRACE" "$W/part_a.csv" --json "$W/part_a.csv"
+same "$W/part_a.csv" "$TRACE"
+awk -F, 'BEGIN { OFS = "," } /^#/ || $1 == "t" { print; next } { $3 = 0; print }' "$TRACE" > "$W/part_none.csv"
+expect 1 "part_none\.csv: no contact" "$CLI" parting "$TRACE" "$W/part_none.csv" --json "$W/part.json"
+[ -e "$W/part.json" ] && fail "parting wrote $W/part.json for a trace without contact"
+expect 1 "part_missing\.csv" "$CLI" parting "$TRACE" "$W/part_missing.csv"
+
 # ---- a library exception becomes a named error (collapse on a header with v0 = 0)
 { printf '# granpen-trace v1\n# units = cgs\n# v0 = 0\n# D = 2\n# g = 981\nt,z,F\n'
   for i in $(seq 0 20); do echo "$i,$i,$i"; done; } > "$W/v0zero.csv"

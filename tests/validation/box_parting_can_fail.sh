@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# The parting checks (box_parting.sh) fail when the boxes do not part as an echo would part
+# them: on stand-ins made of the committed bench box series.
+#  - the series as committed passes;
+#  - the 12 and 20 cm boxes replaced by the 8 and 16 cm ones (an effect that does not scale
+#    with the width) fails check 2: the 12 cm box does not part after the 8 cm box;
+#  - each narrow box's push made of its wide twin with the drag 20% higher from a fixed depth
+#    past contact on (0.4 cm in the 8 cm box, 0.6 cm in the 12 cm one: a front reaching the
+#    boundary at a depth in proportion to the width) passes checks 1 to 3 and fails check 4:
+#    its partings go as v0^-1.
+#   box_parting_can_fail.sh CLI SOURCE_DIR WORK_DIR
+set -euo pipefail
+CLI=$1 SRC=$2 WORK=$3
+HERE=$SRC/tests/validation BOX=$SRC/data/sims/box_bench
+DG10=$SRC/data/sims/dg10/dg10_peak DG10BOX=$SRC/data/sims/dg10_box20/dg10_box20_peak
+fail() { echo "FAIL: $*"; exit 1; }
+rm -rf "$WORK" && mkdir -p "$WORK"
+expect() { # RC PATTERN BOX_DIR: box_parting.sh on BOX_DIR exits RC and prints PATTERN
+  local rc=0
+  "$HERE/box_parting.sh" "$CLI" "$3" "$DG10" "$DG10BOX" "$WORK/run" > "$WORK/out" 2>&1 || rc=$?
+  [ "$rc" = "$1" ] || { cat "$WORK/out"; fail "box_parting.sh exited $rc, not $1"; }
+  grep -q -- "$2" "$WORK/out" || { cat "$WORK/out"; fail "box_parting.sh did not say '$2'"; }
+  echo "box_parting.sh $1: $(grep -- "$2" "$WORK/out" | head -1)"
+}
+expect 0 "the boxes part at a time set by the narrower box's width" "$BOX"
+
+mkdir -p "$WORK/same"
+for b in 8 16; do cp -r "$BOX/box_bench${b}_peak" "$WORK/same/"; done
+cp -r "$BOX/box_bench8_peak" "$WORK/same/box_bench12_peak"
+cp -r "$BOX/box_bench16_peak" "$WORK/same/box_bench20_peak"
+expect 1 "FAIL: v0 50, bed 11: the 12 cm box parts at" "$WORK/same"
+
+# stepped WIDE DEPTH OUT: the trace with F times 1.2 from DEPTH cm past its contact on
+stepped() { awk -F, -v d="$2" 'BEGIN { OFS = "," } /^#/ || $1 == "t" { print; next }
+  !c && $3 > 0 { c = 1; z0 = $2 } c && $2 >= z0 + d - 1e-9 { $3 = $3 * 1.2 } { print }' "$1" > "$3"; }
+mkdir -p "$WORK/depth"
+for b in 8 12 16 20; do mkdir -p "$WORK/depth/box_bench${b}_peak"; done
+for f in "$BOX"/box_bench16_peak/*.csv; do
+  cp "$f" "$WORK/depth/box_bench16_peak/"
+  stepped "$f" 0.4 "$WORK/depth/box_bench8_peak/$(basename "$f")"
+done
+for f in "$BOX"/box_bench20_peak/*.csv; do
+  cp "$f" "$WORK/depth/box_bench20_peak/"
+  stepped "$f" 0.6 "$WORK/depth/box_bench12_peak/$(basename "$f")"
+done
+# (check 4 runs after checks 1 to 3: its failure says they passed)
+expect 1 "FAIL: the 8 cm pair parts at a depth" "$WORK/depth"
+echo "box_parting_can_fail: all checks passed"
