@@ -214,6 +214,10 @@ for f in $SWEEPS; do
         rm -rf "$DATA/$name/$id.flow"; cp -r "$dir/traces/$id.flow.new" "$DATA/$name/$id.flow"
       fi
       cp "$dir/traces/$id.csv" "$DATA/$name/$id.csv"
+      # what an observe file writes beside the trace for granpen to read (observe/arrival.lmp)
+      for side in arrival.info arrival.txt; do
+        [ ! -f "$dir/traces/$id.csv.$side" ] || cp "$dir/traces/$id.csv.$side" "$DATA/$name/$id.csv.$side"
+      done
       cp "$dir/manifest.json" "$DATA/$name/manifest.json" 2>/dev/null || true
       # a finished push's checkpoints serve nothing more (its trace is in $DATA, never rerun)
       # and weigh 2 x 180 MB on a 20 cm dg10 bed

@@ -31,6 +31,7 @@ const Subcommand SUBCOMMANDS[] = {
     {"plot", granpen::cli::plot, "figures as gnuplot scripts + data, run to PNG and SVG: force, ratio, peak, kz, flow, momentum"},
     {"gap", granpen::cli::gap, "sim-to-real gap: where, which unmodelled effect, how far it shrinks"},
     {"gap-score", granpen::cli::gap_score, "score a diagnosis.json against a selftest case's truth (bench/gap_selftest.sh)"},
+    {"arrival", granpen::cli::arrival, "when the rod's disturbance reaches rings about its axis, and how fast (observe/arrival.lmp)"},
     {"parting", granpen::cli::parting, "when two pushes part: their drag ratio in windows of time after contact (the box's echo)"},
     {"rate", granpen::cli::rate, "a rate of K in N with its exact 95% interval (the false-alarm rate: validation/gap_bench.sh)"},
     {"get", granpen::cli::get, "values of a JSON output by key path (heldout.gap_before, traces[*].peak)"},

@@ -24,6 +24,7 @@ int gap(int argc, char **argv);            // gap_cmd.cpp
 int get(int argc, char **argv);            // get_cmd.cpp
 int gap_score(int argc, char **argv);      // gap_score_cmd.cpp
 int parting(int argc, char **argv);        // parting_cmd.cpp
+int arrival(int argc, char **argv);        // arrival_cmd.cpp
 int rate(int argc, char **argv);           // rate_cmd.cpp
 
 }    // namespace cli

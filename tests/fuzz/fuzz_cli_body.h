@@ -24,6 +24,7 @@
 #include "import_options.h"
 #include "momentum_options.h"
 #include "plot_options.h"
+#include "arrival_options.h"
 #include "parting_options.h"
 #include "rate_options.h"
 #include "checkpoint_options.h"
@@ -213,6 +214,7 @@ inline void check(const PartingOptions &o)
   GRANPEN_FUZZ_CHECK(!o.a.empty() && !o.b.empty() && o.window > 0 && o.window <= 10 && o.threshold > 0);
   GRANPEN_FUZZ_CHECK(o.sustain >= 1 && o.sustain <= 1000);
 }
+inline void check(const ArrivalOptions &o) { GRANPEN_FUZZ_CHECK(!o.trace.empty() && o.factor > 1 && o.factor <= 1e12); }
 inline void check(const CheckpointOptions &o) { GRANPEN_FUZZ_CHECK(!o.files.empty()); }
 inline void check_usage_error(const UsageError &e, const std::vector<std::string> &words)
 {
@@ -245,7 +247,7 @@ void parse_one(Options (*parse)(int, char **), const char *name, std::vector<std
 }
 
 const char *const SUBCOMMAND_NAMES[] = {"convert", "import", "check", "fit", "calibration", "collapse",
-                                        "sweep", "flow", "momentum", "plot", "gap", "get", "gap-score", "rate", "parting", "checkpoint"};
+                                        "sweep", "flow", "momentum", "plot", "gap", "get", "gap-score", "rate", "parting", "arrival", "checkpoint"};
 const int SUBCOMMAND_COUNT = sizeof(SUBCOMMAND_NAMES) / sizeof(SUBCOMMAND_NAMES[0]);
 
 // The words of an input: split at '\n', at most 64 (more add nothing to the parsers).
@@ -292,6 +294,7 @@ inline void cli_body(const std::string &bytes)
     case 12: parse_one(parse_gap_score, name, words); break;
     case 13: parse_one(parse_rate, name, words); break;
     case 14: parse_one(parse_parting, name, words); break;
+    case 15: parse_one(parse_arrival, name, words); break;
     default: parse_one(parse_checkpoint, name, words); break;
   }
 }

@@ -264,6 +264,14 @@ expect 1 "part_none\.csv: no contact" "$CLI" parting "$TRACE" "$W/part_none.csv"
 [ -e "$W/part.json" ] && fail "parting wrote $W/part.json for a trace without contact"
 expect 1 "part_missing\.csv" "$CLI" parting "$TRACE" "$W/part_missing.csv"
 
+# ---- granpen arrival: named refusals, the rings' files named when missing
+expect 2 "--factor: must lie above 1" "$CLI" arrival "$W/part_a.csv" --factor 1
+expect 1 "part_a\.csv\.arrival\.info: cannot open" "$CLI" arrival "$W/part_a.csv" --json "$W/arr.json"
+[ -e "$W/arr.json" ] && fail "arrival wrote $W/arr.json without its rings"
+printf 'step0 = 0\ndt = 2e-6\nradii = 1.5\nwidth = 0.5\nlayer = 1.5\n' > "$W/part_a.csv.arrival.info"
+expect 1 "--json .*part_a\.csv\.arrival\.info.*refusing to overwrite" "$CLI" arrival "$W/part_a.csv" --json "$W/part_a.csv.arrival.info"
+expect 1 "part_none\.csv: no contact" "$CLI" arrival "$W/part_none.csv"
+
 # ---- a library exception becomes a named error (collapse on a header with v0 = 0)
 { printf '# granpen-trace v1\n# units = cgs\n# v0 = 0\n# D = 2\n# g = 981\nt,z,F\n'
   for i in $(seq 0 20); do echo "$i,$i,$i"; done; } > "$W/v0zero.csv"
