@@ -564,6 +564,38 @@ box_parting() {
     ratios="$ratios $(awk -v a="$(jget "$o/bench_12_20_s${s}_v${v}.json" t_part_ms)" -v b="$(jget "$o/bench_8_16_s${s}_v${v}.json" t_part_ms)" 'BEGIN { print a / b }')"
   done; done
   put "bench_box.parting_width_ratio = $(echo $ratios | tr ' ' '\n' | stats)  # t_part(12 / 20 cm) / t_part(8 / 16 cm), same bed and v0, 50 to 280 cm/s: an echo from the narrower box's boundary gives 12 / 8 = 1.5"
+  # the speed of the echo from the parting: the 12 cm box's boundary lies 2 cm further out
+  # than the 8 cm box's, 4 cm more there and back, so (12 - 8 cm) / (t_part(12 / 20) -
+  # t_part(8 / 16)) per bed; beside it the front's speed by its arrival at rings of grains
+  # in the 16 cm box (granpen arrival, box_bench16_arrival: another route, stock computes)
+  local arr=$BOX/box_bench16_arrival sp c
+  for v in 50 100 200 280; do
+    sp=""
+    for s in 11 12; do
+      sp="$sp $(awk -v a="$(jget "$o/bench_12_20_s${s}_v${v}.json" t_part_ms)" -v b="$(jget "$o/bench_8_16_s${s}_v${v}.json" t_part_ms)" 'BEGIN { if (a > b) print 40 / (a - b) }')"
+    done
+    put "bench_box.parting_speed_m_s.v$v = $(echo $sp | tr ' ' '\n' | stats)  # 4 cm / (t_part(12 / 20 cm) - t_part(8 / 16 cm)), 2 beds (a pair that does not part later in the wider box left out)"
+    c=""
+    for s in 11 12; do
+      f=$arr/bench_mu0.3_s${s}_v${v}_g981_D2.0.csv
+      [ -f "$f" ] && [ -f "$f.arrival.txt" ] || continue
+      "$CLI" arrival "$f" --json "$o/arrival_s${s}_v${v}.json" > /dev/null
+      [ "$(jget "$o/arrival_s${s}_v${v}.json" fitted)" = true ] && c="$c $(jget "$o/arrival_s${s}_v${v}.json" speed_m_s)"
+    done
+    [ -z "$c" ] || put "bench_box16.arrival_speed_m_s.v$v = $(echo $c | tr ' ' '\n' | stats)  # granpen arrival (rings at 1.5, 2.5, 3.5 cm, the top 1.5 cm, the kinetic energy 100 x its background), 16 cm box, 2 beds"
+    # the earliest an echo could be back: twice the first front's arrival (10 x the background)
+    # at the 8 and 12 cm boxes' boundaries, 4 and 6 cm out (box_bench16_arrival_far)
+    local e4="" e6="" j
+    for s in 11 12; do
+      f=$BOX/box_bench16_arrival_far/bench_mu0.3_s${s}_v${v}_g981_D2.0.csv j=$o/arrival_far_s${s}_v${v}.json
+      [ -f "$f" ] && [ -f "$f.arrival.txt" ] || continue
+      "$CLI" arrival "$f" --factor 10 --json "$j" > /dev/null
+      [ "$(jget "$j" 'rings[1].arrived')" = true ] && e4="$e4 $(awk -v t="$(jget "$j" 'rings[1].t_after_ms')" 'BEGIN { print 2 * t }')"
+      [ "$(jget "$j" 'rings[2].arrived')" = true ] && e6="$e6 $(awk -v t="$(jget "$j" 'rings[2].t_after_ms')" 'BEGIN { print 2 * t }')"
+    done
+    [ -z "$e4" ] || put "bench_box16.echo_ms.L8.v$v = $(echo $e4 | tr ' ' '\n' | stats)  # granpen arrival --factor 10: twice the first front's arrival 4 cm out (the 8 cm box's boundary), ms after contact, 2 beds"
+    [ -z "$e6" ] || put "bench_box16.echo_ms.L12.v$v = $(echo $e6 | tr ' ' '\n' | stats)  # ... 6 cm out (the 12 cm box's boundary)"
+  done
   local d=$DG10BOX/dg10_box20_peak
   for v in 80 140 200; do for s in 1 2 3; do
     [ -f "$d/dg10_mu0.3_s${s}_v${v}_g981_D2.0.csv" ] || { say "box parting: the dg10 20 cm push of bed $s at $v cm/s not in $d: dg10 skipped"; return 0; }

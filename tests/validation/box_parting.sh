@@ -21,6 +21,11 @@
 #     beds) lies above -0.7, where a flow front reaching the boundary at a fixed depth gives
 #     -1 (t = z / v0); the windows' rounding moves the slope over the factor 5.6 in speed by
 #     at most ln(1.1 * 1.05) / ln 5.6 = 0.08.
+#  5. no sooner than an echo could be back: on each bed and at each speed, the parting's
+#     window ends no sooner than twice the time the rod's first front takes to reach the
+#     narrower box's boundary (granpen arrival --factor 10 on the 16 cm box's rings at 4 and
+#     6 cm, box_bench16_arrival_far: stock computes, another route than the drag). The
+#     window's end, not its start: the parting lies somewhere in its window.
 # And on the committed dg10 pushes in the 20 cm box (80 to 200 cm/s, three beds, against the
 # 10 cm box's on the same tiles) once all nine are in: 1 and 4 (slope above -0.7; over the
 # factor 2.5 in speed the rounding moves it by at most ln(1.13 * 1.06) / ln 2.5 = 0.2).
@@ -58,6 +63,22 @@ for p in 8 12; do
   e=$(slope < "$WORK/slope$p")
   echo "bench $p cm pair: ln t_part against ln v0, slope $e (a front at a fixed depth: -1)"
   awk -v e="$e" 'BEGIN { exit !(e > -0.7) }' || fail "the $p cm pair parts at a depth (slope $e), not at a time"
+done
+FAR=$BOX/box_bench16_arrival_far
+for v in 50 100 200 280; do
+  for s in 11 12; do
+    f=$FAR/bench_mu0.3_s${s}_v${v}_g981_D2.0.csv
+    [ -f "$f.arrival.txt" ] || fail "no arrival rings for bed $s at $v cm/s in $FAR (validation/box.sh bench)"
+    "$CLI" arrival "$f" --factor 10 --json "$WORK/far_s${s}_v$v.json" > /dev/null
+    for p in 8:1:4 12:2:6; do
+      n=${p%%:*} k=${p#*:} k=${k%%:*} r=${p##*:}
+      [ "$("$CLI" get "$WORK/far_s${s}_v$v.json" "rings[$k].arrived")" = true ] || fail "bed $s, $v cm/s: the first front never reaches $r cm"
+      echo_ms=$(awk -v t="$("$CLI" get "$WORK/far_s${s}_v$v.json" "rings[$k].t_after_ms")" 'BEGIN { print 2 * t }')
+      part=$("$CLI" get "$WORK/b${n}_$((n + 8))_s${s}_v$v.json" t_part_ms)
+      echo "v0 $v, bed $s: the $n cm box's echo back no sooner than $echo_ms ms (the front $r cm out at half that); its pair parts in $part to $(awk -v p="$part" 'BEGIN { print p + 0.5 }') ms"
+      awk -v p="$part" -v e="$echo_ms" 'BEGIN { exit !(p + 0.5 >= e) }' || fail "v0 $v, bed $s: the $n cm pair parts by $(awk -v p="$part" 'BEGIN { print p + 0.5 }') ms, before an echo could be back ($echo_ms ms)"
+    done
+  done
 done
 echo "bench: the boxes part at a time set by the narrower box's width (an echo from its boundary)"
 for v in 80 140 200; do for s in 1 2 3; do
