@@ -559,6 +559,9 @@ box_parting() {
     done
     put "bench_box${n}_${w}.parting_speed_exponent = $(echo $pts | xargs -n 2 | grep -v none | speed_exponent)  # ln t_part against ln v0, 50 to 280 cm/s, 2 beds: a wave of fixed speed 0, one faster the harder the push below 0, a flow front at a fixed depth -1"
   done
+  for pair in 8_16 12_20; do
+    "$CLI" plot parting "$o"/bench_${pair}_s1{1,2}_v{50,100,200,280}.json --out "$o/fig_$pair" > /dev/null
+  done
   ratios=""
   for v in 50 100 200 280; do for s in 11 12; do
     ratios="$ratios $(awk -v a="$(jget "$o/bench_12_20_s${s}_v${v}.json" t_part_ms)" -v b="$(jget "$o/bench_8_16_s${s}_v${v}.json" t_part_ms)" 'BEGIN { print a / b }')"
@@ -610,6 +613,7 @@ box_parting() {
     put "dg10_box10_20.t_part_ms.v$v = $(echo $t | tr ' ' '\n' | grep -v none | stats)  # granpen parting as above: when the 10 cm box's dg10 push parts from the 20 cm box's on the same grains, 3 beds"
   done
   put "dg10_box10_20.parting_speed_exponent = $(echo $pts | xargs -n 2 | grep -v none | speed_exponent)  # ln t_part against ln v0, 80 to 200 cm/s, 3 beds"
+  "$CLI" plot parting "$o"/dg10_10_20_s{1,2,3}_v{80,140,200}.json --out "$o/fig_dg10_10_20" > /dev/null
 }
 if [ -d "$BOX" ] && [ -d "$DG10BOX" ]; then box_parting; else say "box parting: $BOX or $DG10BOX missing, skipped"; fi
 

@@ -188,6 +188,7 @@ int granpen::cli::run_plot(const PlotOptions &po)
   else if (kind == "kz") fitted(inputs, run, FitKind::kz);
   else if (kind == "flow") flow_figures(inputs, run);
   else if (kind == "momentum") momentum_figures(inputs, run);
+  else if (kind == "parting") plot_parting(inputs, run);
   else plot_scaling(inputs, run);
 
   const int failed = report_figures(run);

@@ -45,6 +45,9 @@ const char *HELP =
     "                 scaling.json gives each point's distance from\n"
     "                 it in combined standard errors (an empty value: not measured, no\n"
     "                 point).                                                   -> scaling\n"
+    "  parting JSON...  granpen parting --json files: each pair's drag ratio against time\n"
+    "                 after contact, the threshold's band about 1, each parting marked\n"
+    "                 (an open circle).                                         -> parting\n"
     "--ensemble (force, ratio, peak, kz): the runs of each (v0, g, D) aligned at their force\n"
     "onsets and averaged (as granpen fit/collapse --ensemble): force draws each mean with\n"
     "its standard error over runs as a band; ratio the ensembles' F/F_z with that band; peak\n"
@@ -65,7 +68,7 @@ granpen::cli::PlotOptions granpen::cli::parse_plot(int argc, char **argv)
   figures::Options &o = po.figures;
   const std::string &kind = po.kind;
   auto &app = cmd.app;
-  app.add_option("kind", po.kind, "force, ratio, peak, kz, flow, momentum or scaling")->required();
+  app.add_option("kind", po.kind, "force, ratio, peak, kz, flow, momentum, scaling or parting")->required();
   app.add_option("inputs", po.inputs, "traces or folders (flow, momentum: the tables' folder)");
   app.add_option("--out", o.out, "output folder (required; created)")->check(file_name())->type_name("DIR");
   bool no_run = false;
@@ -92,13 +95,14 @@ granpen::cli::PlotOptions granpen::cli::parse_plot(int argc, char **argv)
   check_ensemble_options(cmd, ens);
   o.ensemble = ens.on, o.ens = ens.mean, o.boot = ens.boot;
   if (ens.on && o.each) throw UsageError("give --ensemble or --each, not both");
-  static const char *kinds[] = {"force", "ratio", "peak", "kz", "flow", "momentum", "scaling"};
+  static const char *kinds[] = {"force", "ratio", "peak", "kz", "flow", "momentum", "scaling", "parting"};
   if (std::find_if(std::begin(kinds), std::end(kinds), [&](const char *k) { return kind == k; }) == std::end(kinds))
-    throw UsageError("unknown kind '" + kind + "' (force, ratio, peak, kz, flow, momentum, scaling)");
+    throw UsageError("unknown kind '" + kind + "' (force, ratio, peak, kz, flow, momentum, scaling, parting)");
   if (o.out.empty()) throw UsageError("--out DIR is required");
   const bool tables = kind == "flow" || kind == "momentum" || kind == "scaling";
   if (po.inputs.empty())
-    throw UsageError(kind == "scaling" ? "give the table" : tables ? "give the folder of the tables" : "no trace given");
+    throw UsageError(kind == "scaling" ? "give the table" : kind == "parting" ? "give granpen parting's JSON files" : tables ? "give the folder of the tables" : "no trace given");
+  if (kind == "parting" && ens.on) throw UsageError("--ensemble is for force, ratio, peak and kz");
   if (tables && ens.on) throw UsageError("--ensemble is for force, ratio, peak and kz");
   if (tables && po.inputs.size() != 1)
     throw UsageError(kind + " takes one " + (kind == "scaling" ? "table" : "folder") + ", got " +

@@ -1,7 +1,8 @@
 // granpen analysis: the figure kinds of granpen plot, each a function from its inputs
 // (traces, or the tables of granpen flow and granpen momentum) to figures written by
 // io/plot_writer and the numbers drawn (figures_trace.cpp: force, ratio, peak, kz;
-// figures_flow.cpp: flow and momentum; figures_scaling.cpp: scaling). They draw the results
+// figures_flow.cpp: flow and momentum; figures_scaling.cpp: scaling; figures_parting.cpp:
+// parting). They draw the results
 // they are given: ratio and peak those of core/collapse_study.h, force and kz those of
 // core/fit_study.h, flow those of core/flow_table_study.h (the CLI runs the studies).
 #ifndef GRANPEN_FIGURES_H
@@ -132,6 +133,9 @@ MomentumDragTable read_momentum_drag_table(const std::string &dir, const Options
 // The figures of DIR (inputs[0]): the classes against t~, and F against mu g M with cmp.
 void plot_momentum(const std::vector<std::string> &inputs, const MomentumDragTable &t, const DragComparison &cmp, Run &run);
 void plot_scaling(const std::vector<std::string> &inputs, Run &run);
+// granpen parting's JSON files (figures_parting.cpp): each pair's ratio against time after
+// contact, the threshold's band, each parting marked.
+void plot_parting(const std::vector<std::string> &inputs, Run &run);
 
 // A power of ten for an axis of values up to maxabs: factor 10^e (e >= 3, else 1)
 // and the unit text, e.g. "10^{5} dyne".

@@ -487,6 +487,44 @@ TEST(PlotCli, ScalingAgainstTheBoxWidth)
   EXPECT_NE(neither.err.find("no axis column (D_over_dg or box_cm)"), std::string::npos) << neither.err;
 }
 
+TEST(PlotCli, PartingCurvesAreTheRatiosGranpenPartingWrote)
+{
+  const fs::path in = fresh("parting_in"), out = fresh("parting_out");
+  // two pairs as granpen parting --json writes them: one parts at 1 ms, one does not
+  write(in / "a.json",
+        "{\"window_ms\": 0.5, \"threshold\": 0.03, \"parted\": true, \"t_part_ms\": 1, \"ratio_at_part\": 1.2,\n"
+        " \"windows\": [{\"t_lo_ms\": 0, \"t_hi_ms\": 0.5, \"ratio\": 1}, {\"t_lo_ms\": 0.5, \"t_hi_ms\": 1, \"ratio\": 1.01},\n"
+        "  {\"t_lo_ms\": 1, \"t_hi_ms\": 1.5, \"ratio\": 1.2}, {\"t_lo_ms\": 1.5, \"t_hi_ms\": 2, \"ratio\": 1.4},\n"
+        "  {\"t_lo_ms\": 2, \"t_hi_ms\": 2.5, \"ratio\": null}]}\n");
+  write(in / "b.json",
+        "{\"window_ms\": 0.5, \"threshold\": 0.03, \"parted\": false,\n"
+        " \"windows\": [{\"t_lo_ms\": 0, \"t_hi_ms\": 0.5, \"ratio\": 1}, {\"t_lo_ms\": 0.5, \"t_hi_ms\": 1, \"ratio\": 0.99}]}\n");
+  const Outcome o = run_plot({"parting", (in / "a.json").string(), (in / "b.json").string(), "--out", out.string(), "--no-run"});
+  ASSERT_EQ(o.status, 0) << o.err;
+  // the first pair's curve: window centres and ratios, the window without a ratio left out
+  const auto a = block(out / "parting.dat", 0);
+  ASSERT_EQ(a.size(), 4u);
+  EXPECT_DOUBLE_EQ(a[2][0], 1.25);
+  EXPECT_DOUBLE_EQ(a[3][1], 1.4);
+  // its parting marked at the centre of its first window apart
+  const auto mark = block(out / "parting.dat", 1);
+  ASSERT_EQ(mark.size(), 1u);
+  EXPECT_DOUBLE_EQ(mark[0][0], 1.25);
+  EXPECT_DOUBLE_EQ(mark[0][1], 1.2);
+  const std::string gp = slurp(out / "parting.gp");
+  EXPECT_NE(gp.find("a: parts at 1 ms"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("b: does not part"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("3%"), std::string::npos) << "the threshold's band in the key";
+  // a file of another threshold, and one that is not granpen parting's, are named
+  write(in / "c.json", "{\"window_ms\": 0.5, \"threshold\": 0.05, \"parted\": false, \"windows\": []}\n");
+  write(in / "d.json", "{\"rows\": []}\n");
+  const Outcome bad = run_plot({"parting", (in / "a.json").string(), (in / "c.json").string(), (in / "d.json").string(),
+                                "--out", fresh("parting_bad").string(), "--no-run"});
+  EXPECT_EQ(bad.status, 1);
+  EXPECT_NE(bad.err.find("c.json: threshold 0.05, not the 0.03 of the files before it"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("d.json: no 'windows' (not granpen parting --json output)"), std::string::npos) << bad.err;
+}
+
 // ---------------------------------------------------------------- bad inputs
 
 TEST(PlotCli, UsageErrors)
