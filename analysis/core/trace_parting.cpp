@@ -29,7 +29,9 @@ WindowSums window_sums(const std::vector<double> &t, const std::vector<double> &
   WindowSums s;
   for (std::size_t i = c; i < t.size(); ++i) {
     const double k = std::floor((t[i] - t[c]) / w + 1e-6);
-    if (!(k >= 0) || k > 1e8) break;    // a bounded table: 1e8 windows is far past any push
+    // a window past an empty one ends the comparison (parting_time): stop there, so the table
+    // never holds more windows than the trace has samples, whatever the window's width
+    if (!(k >= 0) || k > double(s.sum.size())) break;
     const std::size_t j = std::size_t(k);
     if (j >= s.sum.size()) {
       s.sum.resize(j + 1, 0.0);

@@ -134,6 +134,18 @@ TEST(TraceParting, EachTraceIsReadFromItsOwnContact)
   EXPECT_LT(p.largest_before, 1e-6);
 }
 
+TEST(TraceParting, AWindowFinerThanTheSamplesEndsAtTheFirstGap)
+{
+  // windows of 1e-9 s on samples 1e-4 s apart: window 0 holds the contact sample, window 1
+  // nothing, and there the comparison ends (a table as long as the samples, at most)
+  const Push a = push();
+  PartingSettings fine;
+  fine.window = 1e-9;
+  const Parting p = part(a, a, fine);
+  EXPECT_EQ(p.windows.size(), 1u);
+  EXPECT_FALSE(p.parted);
+}
+
 TEST(TraceParting, NoContactGivesNoWindows)
 {
   Push a = push();
