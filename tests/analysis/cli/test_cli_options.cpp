@@ -208,7 +208,7 @@ TEST(CliOptions, KnownAnswers)
                 .compare(0, 14, "--thresholds: "), 0);
   EXPECT_EQ(usage_error(parse_collapse, {"t.csv", "--csv", ""}), "--csv needs a name");
   EXPECT_EQ(usage_error(parse_plot, {"bars", "t.csv", "--out", "p"}),
-            "unknown kind 'bars' (force, ratio, peak, kz, flow, momentum, scaling)");
+            "unknown kind 'bars' (force, ratio, peak, kz, flow, momentum, scaling, parting)");
 
   const PlotOptions help = parse_words(parse_plot, {"--help"});
   EXPECT_TRUE(help.help_requested());
