@@ -29,7 +29,8 @@
 # And on the committed dg10 pushes in the 20 cm box (80 to 200 cm/s, three beds, against the
 # 10 cm box's on the same tiles) once all nine are in: 1 and 4 (slope above -0.7; over the
 # factor 2.5 in speed the rounding moves it by at most ln(1.13 * 1.06) / ln 2.5 = 0.2).
-# Printed beside: each pair's t_part, its depth, and the wave speed L / t_part it implies.
+# Printed beside: each pair's t_part, its depth, and the wave speed L / t_part it implies;
+# and the dg10 pushes at 40 and 20 cm/s as they are committed, not checked.
 #   box_parting.sh CLI BOX_BENCH DG10_PEAK DG10_BOX20_PEAK WORK
 set -euo pipefail
 CLI=$1 BOX=$2 NARROW10=$3 WIDE20=$4 WORK=$5
@@ -96,3 +97,12 @@ e=$(slope < "$WORK/slope10")
 echo "dg10 10 / 20 cm: ln t_part against ln v0, slope $e (a front at a fixed depth: -1)"
 awk -v e="$e" 'BEGIN { exit !(e > -0.7) }' || fail "dg10: the boxes part at a depth (slope $e), not at a time"
 echo "dg10: the boxes part at a time, as the bench boxes"
+# the slow pushes as they arrive (40 and 20 cm/s): printed beside, not checked
+for v in 40 20; do
+  for s in 1 2 3; do
+    id=dg10_mu0.3_s${s}_v${v}_g981_D2.0.csv
+    [ -f "$WIDE20/$id" ] || continue
+    "$CLI" parting "$NARROW10/$id" "$WIDE20/$id" --json "$WORK/dg10_s${s}_v$v.json" > /dev/null
+    echo "not checked: dg10 v0 $v, bed $s: $("$CLI" parting "$NARROW10/$id" "$WIDE20/$id" | tail -1)"
+  done
+done
