@@ -146,6 +146,7 @@ struct AxisScale {
 AxisScale axis_scale(double maxabs, const std::string &unit);
 
 std::string fmt(const char *f, double v);    // printf one number
+std::string literal_text(const std::string &s);    // drawn as written: enhanced-text specials escaped
 Json num(const char *f, double v);           // a JSON number rounded as printf's f would (json_rounded)
 std::string sci(double v);                   // 2.94×10^{4} (enhanced text); plain below 1e4
 // labelled tics of a log axis over [lo, hi] at 1, 2, 5 x 10^e (only 10^e when that

@@ -24,17 +24,6 @@ double number_at(const Json &j, const char *key, const std::string &path)
   return j[key].get<double>();
 }
 
-// text drawn as written: gnuplot's enhanced-text specials escaped (a file's stem)
-std::string literal(const std::string &s)
-{
-  std::string out;
-  for (char c : s) {
-    if (c && std::string("_^@&~{}").find(c) != std::string::npos) out += '\\';
-    out += c;
-  }
-  return out;
-}
-
 }    // namespace
 
 void plot_parting(const std::vector<std::string> &inputs, Run &run)
@@ -61,7 +50,7 @@ void plot_parting(const std::vector<std::string> &inputs, Run &run)
       }
       const bool parted = j.contains("parted") && j["parted"].is_boolean() && j["parted"].get<bool>();
       const std::string stem = std::filesystem::path(path).stem().string();
-      s.title = literal(stem) + (parted ? ": parts at " + fmt("%g", number_at(j, "t_part_ms", path)) + " ms" : ": does not part");
+      s.title = literal_text(stem) + (parted ? ": parts at " + fmt("%g", number_at(j, "t_part_ms", path)) + " ms" : ": does not part");
       s.style = "linespoints", s.colour = plot_colour(int(i)), s.point_type = 7, s.point_size = 0.7, s.line_width = 1.5;
       row = {{"file", path}, {"parted", parted}, {"t_part_ms", parted ? num("%.6g", number_at(j, "t_part_ms", path)) : Json(nullptr)}};
       if (parted) {

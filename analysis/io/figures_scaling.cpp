@@ -31,17 +31,6 @@ struct Quantity {
   double paper = NAN, paper_error = 0.0;
 };
 
-// text drawn as written: gnuplot's enhanced-text specials escaped (a quantity's name)
-std::string literal_text(const std::string &s)
-{
-  std::string out;
-  for (char c : s) {
-    if (c && std::string("_^@&~{}").find(c) != std::string::npos) out += '\\';
-    out += c;
-  }
-  return out;
-}
-
 // a number rounded as printf's f would, null when not finite (not measured, no paper value)
 Json num_or_null(const char *f, double v) { return std::isfinite(v) ? num(f, v) : Json(nullptr); }
 
@@ -89,6 +78,16 @@ std::vector<Quantity> quantities_of(const CsvTable &t, const Axis &axis, Run &ru
 }
 
 }    // namespace
+
+std::string literal_text(const std::string &s)
+{
+  std::string out;
+  for (char c : s) {
+    if (c && std::string("_^@&~{}").find(c) != std::string::npos) out += '\\';
+    out += c;
+  }
+  return out;
+}
 
 void plot_scaling(const std::vector<std::string> &inputs, Run &run)
 {
