@@ -9,6 +9,7 @@
 #include "json_writer.h"
 #include "subcommand.h"
 #include "subcommands.h"
+#include "trace_parting.h"
 #include "trace_reader.h"
 #include "wave_arrival.h"
 
@@ -33,7 +34,7 @@ std::string front_line(const granpen::WaveArrival &w)
   if (!w.fitted || !std::isfinite(w.speed))
     return "no front: " + std::to_string(w.arrived) + " of " + std::to_string(w.stations.size()) +
            " rings reached, arrival times not increasing with r";
-  std::string se = std::isfinite(w.slowness_se) ? " +- " + json_number("%.2g", w.speed * w.slowness_se / w.slowness * 1e-2) : "";
+  std::string se = std::isfinite(w.speed_se) ? " +- " + json_number("%.2g", w.speed_se * 1e-2) : "";
   return "front at " + json_number("%.3g", w.speed * 1e-2) + se + " m/s over " + std::to_string(w.arrived) + " rings";
 }
 
@@ -49,7 +50,7 @@ Json arrival_json(const granpen::WaveArrival &w, const granpen::ArrivalTable &a,
   j["fitted"] = w.fitted && std::isfinite(w.speed);
   if (w.fitted && std::isfinite(w.speed)) {
     j["speed_m_s"] = json_rounded("%.6g", w.speed * 1e-2);
-    if (std::isfinite(w.slowness_se)) j["speed_se_m_s"] = json_rounded("%.6g", w.speed * w.slowness_se / w.slowness * 1e-2);
+    if (std::isfinite(w.speed_se)) j["speed_se_m_s"] = json_rounded("%.6g", w.speed_se * 1e-2);
     j["t_axis_after_ms"] = json_rounded("%.6g", (w.t_axis - contact) * 1e3);
   }
   Json rings = Json::array();
@@ -73,9 +74,7 @@ int granpen::cli::run_arrival(const ArrivalOptions &o)
     refuse_overwriting_inputs(o.json, "--json", {o.trace, o.trace + ".arrival.info", o.trace + ".arrival.txt"});
   const Trace tr = to_cgs(read_trace(o.trace));
   require_t(tr, "granpen arrival");
-  double contact = NAN;
-  for (std::size_t i = 0; i < tr.F.size() && std::isnan(contact); ++i)
-    if (tr.F[i] > 0) contact = tr.t[i];
+  const double contact = contact_time(tr.t, tr.F);
   if (std::isnan(contact)) throw InputError(o.trace + ": no contact (F is never above 0): granpen arrival times from contact");
   const ArrivalTable a = read_arrival_table(o.trace, tr.v0, tr.D, tr.g);
   ArrivalSettings s;

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 namespace {
 
@@ -79,12 +80,10 @@ int granpen::cli::run_parting(const PartingOptions &o)
   k.window = o.window;
   k.threshold = o.threshold;
   k.sustain = int(o.sustain);
-  for (const Trace *t : {&a, &b}) {
-    bool touches = false;
-    for (double f : t->F) touches = touches || f > 0;
-    if (!touches) throw InputError(t->path + ": no contact (F is never above 0): granpen parting reads time after contact");
-  }
   const Parting p = parting_time(a.t, a.F, b.t, b.z, b.F, k);
+  for (const auto &[trace, contact] : {std::pair<const Trace *, double>{&a, p.contact_a}, {&b, p.contact_b}})
+    if (std::isnan(contact))
+      throw InputError(trace->path + ": no contact (F is never above 0): granpen parting reads time after contact");
   std::string text = "# granpen parting: A / B mean drag in windows of " + ms(o.window) + " ms after each trace's contact\n";
   text += "# A: " + o.a + " (contact at t = " + json_number("%.6g", p.contact_a) + " s)\n";
   text += "# B: " + o.b + " (contact at t = " + json_number("%.6g", p.contact_b) + " s)\n";

@@ -62,6 +62,12 @@ bool apart(const PartingWindow &w, double threshold, double side)
 
 }    // namespace
 
+double contact_time(const std::vector<double> &t, const std::vector<double> &F)
+{
+  const std::size_t i = first_contact(F);
+  return i < F.size() ? t.at(i) : std::numeric_limits<double>::quiet_NaN();
+}
+
 Parting parting_time(const std::vector<double> &t_a, const std::vector<double> &F_a, const std::vector<double> &t_b,
                      const std::vector<double> &z_b, const std::vector<double> &F_b, const PartingSettings &settings)
 {
@@ -75,9 +81,9 @@ Parting parting_time(const std::vector<double> &t_a, const std::vector<double> &
 
   Parting p;
   const std::size_t ca = first_contact(F_a), cb = first_contact(F_b);
+  if (ca < F_a.size()) p.contact_a = t_a[ca];
+  if (cb < F_b.size()) p.contact_b = t_b[cb];
   if (ca == F_a.size() || cb == F_b.size()) return p;
-  p.contact_a = t_a[ca];
-  p.contact_b = t_b[cb];
   const WindowSums a = window_sums(t_a, F_a, ca, settings.window), b = window_sums(t_b, F_b, cb, settings.window);
   for (std::size_t k = 0; k < std::min(a.sum.size(), b.sum.size()); ++k) {
     if (a.count[k] == 0 || b.count[k] == 0) break;    // a gap in either trace ends the comparison

@@ -39,9 +39,13 @@ struct Parting {
   double largest_before = 0;       // largest |ratio - 1| before the parting (over all when none)
 };
 
+// A trace's contact: the time of its first sample with F > 0; NaN when F is never above 0
+// (granpen parting and granpen arrival both read time after it).
+double contact_time(const std::vector<double> &t, const std::vector<double> &F);
+
 // The parting of traces A (t_a, F_a) and B (t_b, z_b, F_b). t and F of a trace the same
-// length, t increasing. Without a contact in either trace (F never positive) the contacts
-// are NaN and there are no windows. Throws std::invalid_argument for window <= 0 or not
+// length, t increasing. A trace without a contact (F never positive) has a NaN contact, and
+// then there are no windows. Throws std::invalid_argument for window <= 0 or not
 // finite, threshold <= 0 or not finite, sustain < 1, or arrays of different lengths.
 Parting parting_time(const std::vector<double> &t_a, const std::vector<double> &F_a, const std::vector<double> &t_b,
                      const std::vector<double> &z_b, const std::vector<double> &F_b,

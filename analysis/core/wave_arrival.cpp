@@ -57,6 +57,7 @@ WaveArrival wave_arrival(const std::vector<double> &t, const std::vector<std::ve
     for (const auto &s : w.stations)
       if (s.arrived) res += std::pow(s.t - w.t_axis - w.slowness * s.r, 2);
     w.slowness_se = std::sqrt(res / (n - 2) / sxx);
+    w.speed_se = w.speed * w.slowness_se / w.slowness;
   }
   return w;
 }

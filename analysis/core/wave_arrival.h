@@ -35,6 +35,7 @@ struct WaveArrival {
   double slowness = NAN;         // s/cm, the fit's slope
   double slowness_se = NAN;      // its standard error (NaN with only 2 stations)
   double speed = NAN;            // cm/s: 1 / slowness (NaN when not positive)
+  double speed_se = NAN;         // its standard error, speed x slowness_se / slowness
   double t_axis = NAN;           // the fit's arrival at r = 0
 };
 

@@ -82,10 +82,8 @@ void plot_parting(const std::vector<std::string> &inputs, Run &run)
   b.lo = 1 - threshold, b.hi = 1 + threshold;
   b.title = "within ±" + fmt("%g", 100 * threshold) + "%";
   p.hbands.push_back(b);
-  PlotGuide one;
+  PlotGuide one;    // the line A / B = 1, the library's grey dashes, no key entry
   one.expression = "1";
-  one.title = "";
-  one.colour = "#404040";
   p.guides.push_back(one);
   p.xlabel = "time after contact (ms)";
   p.ylabel = "drag A / B, mean per window";

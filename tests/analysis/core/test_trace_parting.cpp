@@ -153,6 +153,10 @@ TEST(TraceParting, NoContactGivesNoWindows)
   for (double &f : a.F) f = 0;
   const Parting p = part(a, b);
   EXPECT_TRUE(std::isnan(p.contact_a));
+  // B's contact is still read: the caller names the trace that never touches
+  EXPECT_DOUBLE_EQ(p.contact_b, granpen::contact_time(b.t, b.F));
+  EXPECT_NEAR(p.contact_b, 5e-3, 1e-9);
+  EXPECT_TRUE(std::isnan(granpen::contact_time(a.t, a.F)));
   EXPECT_TRUE(p.windows.empty());
   EXPECT_FALSE(p.parted);
 }

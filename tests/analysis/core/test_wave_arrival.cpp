@@ -63,6 +63,7 @@ TEST(WaveArrival, AFrontAtKnownSpeedIsReadToTheSampling)
   // the front leaves the rod's edge at contact: the fit's r = 0 lies 1 cm before it
   EXPECT_NEAR(w.t_axis, CONTACT - 1 / speed, SAMPLE);
   EXPECT_TRUE(std::isfinite(w.slowness_se));
+  EXPECT_NEAR(w.speed_se, w.speed * w.slowness_se / w.slowness, 1e-9 * w.speed);
 }
 
 TEST(WaveArrival, AJumpBelowTheFactorIsNoArrival)
