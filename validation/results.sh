@@ -562,9 +562,12 @@ box_parting() {
   for pair in 8_16 12_20; do
     "$CLI" plot parting "$o"/bench_${pair}_s1{1,2}_v{50,100,200,280}.json --out "$o/fig_$pair" > /dev/null
   done
+  # each bed and speed's two partings, read once: their ratio here, their difference below
+  local -A t8 t12
   ratios=""
   for v in 50 100 200 280; do for s in 11 12; do
-    ratios="$ratios $(awk -v a="$(jget "$o/bench_12_20_s${s}_v${v}.json" t_part_ms)" -v b="$(jget "$o/bench_8_16_s${s}_v${v}.json" t_part_ms)" 'BEGIN { print a / b }')"
+    t8[$s.$v]=$(jget "$o/bench_8_16_s${s}_v${v}.json" t_part_ms) t12[$s.$v]=$(jget "$o/bench_12_20_s${s}_v${v}.json" t_part_ms)
+    ratios="$ratios $(awk -v a="${t12[$s.$v]}" -v b="${t8[$s.$v]}" 'BEGIN { print a / b }')"
   done; done
   put "bench_box.parting_width_ratio = $(echo $ratios | tr ' ' '\n' | stats)  # t_part(12 / 20 cm) / t_part(8 / 16 cm), same bed and v0, 50 to 280 cm/s: an echo from the narrower box's boundary gives 12 / 8 = 1.5"
   # the speed of the echo from the parting: the 12 cm box's boundary lies 2 cm further out
@@ -575,7 +578,7 @@ box_parting() {
   for v in 50 100 200 280; do
     sp=""
     for s in 11 12; do
-      sp="$sp $(awk -v a="$(jget "$o/bench_12_20_s${s}_v${v}.json" t_part_ms)" -v b="$(jget "$o/bench_8_16_s${s}_v${v}.json" t_part_ms)" 'BEGIN { if (a > b) print 40 / (a - b) }')"
+      sp="$sp $(awk -v a="${t12[$s.$v]}" -v b="${t8[$s.$v]}" 'BEGIN { if (a > b) print 40 / (a - b) }')"
     done
     put "bench_box.parting_speed_m_s.v$v = $(echo $sp | tr ' ' '\n' | stats)  # 4 cm / (t_part(12 / 20 cm) - t_part(8 / 16 cm)), 2 beds (a pair that does not part later in the wider box left out)"
     c=""
