@@ -459,6 +459,12 @@ box_alpha_D() { # SWEEP KEY
   done
   local q; q=$(quad_ratio "$key.alpha0_window.v28.D1" "$key.alpha0_window.v28.D2")
   [ -n "$q" ] && put "$key.alpha_D1_over_D2 = $(printf '%.4g +- %.2g' $q)  # the two above, the beds' spreads in quadrature"
+  # an edge term at the tip's rim, F = mu rho_g g z (A D^2 + B D), i.e. alpha = A + B / D:
+  # through the 1 and 2 cm rods it puts the 3 cm rod at alpha(3) / alpha(2) = 4/3 - r/3
+  # (r = alpha(1) / alpha(2), its error over 3), against the measured ratio
+  [ -n "$q" ] && [ -n "$(nval "$key.alpha0_window.v28.D3")" ] || return 0
+  put "$key.alpha_D3_over_D2 = $(printf '%.4g +- %.2g' $(quad_ratio "$key.alpha0_window.v28.D3" "$key.alpha0_window.v28.D2"))  # the beds' spreads in quadrature"
+  put "$key.alpha_D3_over_D2_edge = $(awk -v r="${q% *}" -v e="${q#* }" 'BEGIN { printf "%.4g +- %.2g", 4 / 3 - r / 3, e / 3 }')  # alpha = A + B / D through D = 1 and 2 cm: 4/3 - alpha_D1_over_D2 / 3"
   return 0
 }
 if [ -d "$BOX" ]; then box_bench; else say "box series: $BOX missing, skipped"; fi
@@ -619,6 +625,48 @@ box_parting() {
   "$CLI" plot parting "$o"/dg10_10_20_s{1,2,3}_v{80,140,200}.json --out "$o/fig_dg10_10_20" > /dev/null
 }
 if [ -d "$BOX" ] && [ -d "$DG10BOX" ]; then box_parting; else say "box parting: $BOX or $DG10BOX missing, skipped"; fi
+
+# alpha against D over the same depth in D (docs/results.md, "... nor the depth over D"): a
+# window z >= 2 cm is 2 D deep for the 1 cm rod and 1 D for the 2 cm rod, so a depth term that
+# grows with z / D would favour the thin rod. Here each rod is fitted over z = D to 2 D
+# (granpen fit --zmin D --zmax 2D, alpha through the origin): the 1 cm rod over 1 to 2 cm, the
+# 2 cm rod over 2 to 4 cm. Where the excess is the depth over D, the ratio falls to 1.
+# Per setting: alpha per D (mean +- sd over beds, or the fit's error for one bed) and the
+# ratio with the errors in quadrature. KEY OUTDIR TRACE... (traces of D = 1 and 2 cm only)
+alpha_same_depth_in_D() {
+  local key=$1 o=$2 f D one=() two=() n1 n2; shift 2
+  for f in "$@"; do [ -f "$f" ] || { say "$key: ${f#$ROOT/} not there: same depth in D skipped"; return 0; }; done
+  for f in "$@"; do case ${f##*_D} in 1.0.csv) one+=("$f") ;; 2.0.csv) two+=("$f") ;; esac; done
+  [ "${#one[@]}" -gt 0 ] && [ "${#two[@]}" = "${#one[@]}" ] || { say "$key: same depth in D needs as many 1 as 2 cm pushes: skipped"; return 0; }
+  mkdir -p "$o"
+  "$CLI" fit "${one[@]}" --zmin 1 --zmax 2 --csv "$o/fit_zD1to2_D1.csv" > /dev/null
+  "$CLI" fit "${two[@]}" --zmin 2 --zmax 4 --csv "$o/fit_zD1to2_D2.csv" > /dev/null
+  for D in 1 2; do
+    if [ "${#one[@]}" = 1 ]; then
+      put "$key.alpha0_zD1to2.D$D = $(awk -F, 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next } { printf "%.4g +- %.2g n = 1\n", $i["alpha0"], $i["alpha0_se"] }' "$o/fit_zD1to2_D$D.csv")  # granpen fit --zmin $D --zmax $((2 * D)): z from D to 2 D, alpha through the origin; the fit's error"
+    else
+      put "$key.alpha0_zD1to2.D$D = $(col "$o/fit_zD1to2_D$D.csv" alpha0 | stats)  # granpen fit --zmin $D --zmax $((2 * D)): z from D to 2 D, alpha through the origin; sd over the beds"
+    fi
+  done
+  local q; q=$(quad_ratio "$key.alpha0_zD1to2.D1" "$key.alpha0_zD1to2.D2")
+  [ -n "$q" ] && put "$key.alpha_D1_over_D2_zD1to2 = $(printf '%.4g +- %.2g' $q)  # the two above, errors in quadrature: the thin rod's excess at the same depth in D"
+  return 0
+}
+same_depth_in_D() {
+  say "alpha against D over the same depth in D (z = D to 2 D)"
+  alpha_same_depth_in_D bench "$OUT/bench/same_depth_in_D" "$BENCH"/bench_mu0.3_s[12]_v28_g981_D[12].0.csv
+  alpha_same_depth_in_D mid "$OUT/mid/same_depth_in_D" "$MID"/mid_mu0.3_s[12]_v90_g981_D[12].0.csv
+  alpha_same_depth_in_D dg10 "$OUT/dg10/same_depth_in_D" "$DG10/dg10_D/dg10_mu0.3_s1_v100_g981_D1.0.csv" "$DG10/dg10_flow/dg10_mu0.3_s1_v100_g981_D2.0.csv"
+  local b
+  for b in 8 20; do
+    alpha_same_depth_in_D "bench_box$b" "$OUT/box_bench${b}_D/same_depth_in_D" "$BOX/box_bench${b}_D"/bench_mu0.3_s1[12]_v28_g981_D[12].0.csv
+    alpha_same_depth_in_D "bench_box${b}_shaft" "$OUT/box_bench${b}_shaft/same_depth_in_D" "$BOX/box_bench${b}_shaft"/bench_mu0.3_s1[12]_v28_g981_D[12].0.csv
+  done
+  # the 20 cm dg10 box once its D part (1, 2 and 3 cm) is committed, as dg10_box20_alpha_D
+  [ ! -f "$DG10BOX/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D3.0.csv" ] ||
+    alpha_same_depth_in_D dg10_box20 "$OUT/dg10_box20_D/same_depth_in_D" "$DG10BOX/dg10_box20_D"/dg10_mu0.3_s1_v100_g981_D[12].0.csv
+}
+same_depth_in_D
 
 # ---------------------------------------------------------------- against D/d_g
 # The rows that differ from the paper, at D/d_g = 5 (bench), 6.67 (mid) and 10 (dg10; empty

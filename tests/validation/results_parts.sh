@@ -190,6 +190,13 @@ same dg10_box20.alpha_D1_over_D2 "$(awk -v a="$(fit_col "$B20/dg10_box20_D/dg10_
   -v b="$(fit_col "$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D2.0.csv" alpha0 --zmin 3)" \
   -v eb="$(fit_col "$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D2.0.csv" alpha0_se --zmin 3)" \
   'BEGIN { r = a / b; printf "%.4g +- %.2g\n", r, r * sqrt((ea / a) ^ 2 + (eb / b) ^ 2) }')"
+# ... and over the same depth in D (z = D to 2 D): the 1 cm push over 1 to 2 cm, the 2 cm push
+# over 2 to 4 cm, the fits' errors in quadrature
+d1=$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D1.0.csv d2=$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D2.0.csv
+same dg10_box20.alpha_D1_over_D2_zD1to2 "$(awk -v a="$(fit_col "$d1" alpha0 --zmin 1 --zmax 2)" -v ea="$(fit_col "$d1" alpha0_se --zmin 1 --zmax 2)" \
+  -v b="$(fit_col "$d2" alpha0 --zmin 2 --zmax 4)" -v eb="$(fit_col "$d2" alpha0_se --zmin 2 --zmax 4)" \
+  'BEGIN { a = sprintf("%.4g", a); b = sprintf("%.4g", b); ea = sprintf("%.2g", ea); eb = sprintf("%.2g", eb)
+           r = a / b; printf "%.4g +- %.2g\n", r, r * sqrt((ea / a) ^ 2 + (eb / b) ^ 2) }')"
 ! grep -q '^dg10_box20_shaft\.' "$N" || fail "the shaft part without its pushes added lines"
 grep -q "dg10_box20_shaft: the pushes of D = 1.0 2.0 cm" "$OUT/res.log" || fail "no note of the shaft's missing pushes"
 # the flow rows of each dg10 speed: the mid push's, from the same tables
