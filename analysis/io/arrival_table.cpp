@@ -89,10 +89,15 @@ ArrivalTable read_arrival_table(const std::string &trace_path, double v0, double
   if (!read_text_file(a.table_path, text)) throw InputError(a.table_path + ": cannot open (observe/arrival.lmp writes it beside the trace)");
   AveTimeSpec spec;
   spec.v0 = v0, spec.D = D, spec.g = g, spec.dt = dt, spec.step0 = step0;
+  auto column_name = [](std::size_t ring, int c) { return "c_arr_" + std::to_string(ring + 1) + "[" + std::to_string(c) + "]"; };
+  std::vector<std::string> wanted;
+  for (std::size_t k = 0; k < a.radii.size(); ++k)
+    for (int c : {1, 2}) wanted.push_back(column_name(k, c));
+  const AveTimeTable table = parse_ave_time_table(text, a.table_path, wanted);    // once, for every ring
   for (std::size_t k = 0; k < a.radii.size(); ++k)
     for (int c : {1, 2}) {
-      spec.column = "c_arr_" + std::to_string(k + 1) + "[" + std::to_string(c) + "]";
-      const Trace col = parse_ave_time(text, a.table_path, spec);
+      spec.column = column_name(k, c);
+      const Trace col = ave_time_trace(table, spec);
       if (k == 0 && c == 1) {
         a.t = col.t;
         if (a.t.front() < 0) throw InputError(a.info_path + ": step0 lies after the table's first row: not this push's");

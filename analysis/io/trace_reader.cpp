@@ -319,17 +319,20 @@ TraceSummary scan_trace(const std::string &path)
   return s;
 }
 
-Trace parse_ave_time(const std::string &text, const std::string &name, const AveTimeSpec &spec)
+namespace {
+void check_ave_time_spec(const std::string &name, const AveTimeSpec &spec)
 {
   if (spec.units != "cgs" && spec.units != "si") throw InputError(name + ": unknown unit system '" + spec.units + "'");
   for (double v : {spec.v0, spec.D, spec.g, spec.dt})
     if (!(v > 0.0) || !std::isfinite(v)) throw InputError(name + ": v0, D, g and dt must be given, positive and finite");
-  Trace tr;
-  tr.path = name;
-  tr.units = spec.units;
-  tr.v0 = spec.v0;
-  tr.D = spec.D;
-  tr.g = spec.g;
+}
+}    // namespace
+
+AveTimeTable parse_ave_time_table(const std::string &text, const std::string &name,
+                                  const std::vector<std::string> &wanted)
+{
+  AveTimeTable table;
+  table.name = name;
   std::istringstream in(text);
   std::string line;
   int lineno = 0;
@@ -347,18 +350,23 @@ Trace parse_ave_time(const std::string &text, const std::string &name, const Ave
       fail_at(name, lineno, "fix ave/time in vector mode (blocks of rows) is not a force trace: use scalar mode");
   }
   if (names.empty()) fail_at(name, lineno, "no value columns on the '# TimeStep' line");
-  std::size_t col = 0;
-  if (!spec.column.empty()) {
-    col = names.size();
-    for (std::size_t i = 0; i < names.size(); ++i)
-      if (names[i] == spec.column) col = i;
-    if (col == names.size()) {
-      std::string known;
-      for (const auto &n : names) known += " " + n;
-      fail_at(name, lineno, "no column '" + spec.column + "' (columns:" + known + ")");
+  std::vector<std::size_t> kept;    // file column of each wanted one
+  for (const std::string &w : wanted) {
+    std::size_t col = 0;
+    if (!w.empty()) {
+      col = std::find(names.begin(), names.end(), w) - names.begin();
+      if (col == names.size()) {
+        std::string known;
+        for (const auto &n : names) known += " " + n;
+        fail_at(name, lineno, "no column '" + w + "' (columns:" + known + ")");
+      }
     }
+    kept.push_back(col);
+    table.asked.push_back(w);
+    table.names.push_back(names[col]);
   }
-  std::vector<double> steps;
+  table.columns.resize(kept.size());
+  std::vector<double> &steps = table.steps;
   while (std::getline(in, line)) {
     ++lineno;
     const std::string s = trim(line);
@@ -369,13 +377,33 @@ Trace parse_ave_time(const std::string &text, const std::string &name, const Ave
     const double step = to_number(fields[0], name, lineno, "TimeStep");
     if (!steps.empty() && !(step > steps.back())) fail_at(name, lineno, "TimeStep does not increase");
     steps.push_back(step);
-    tr.F.push_back(spec.sign * to_number(fields[col + 1], name, lineno, "column " + names[col] + " value"));
+    for (std::size_t c = 0; c < kept.size(); ++c)
+      table.columns[c].push_back(to_number(fields[kept[c] + 1], name, lineno, "column " + names[kept[c]] + " value"));
   }
   if (steps.size() < 10) fail_at(name, lineno, "only " + std::to_string(steps.size()) + " data rows, at least 10 needed");
+  return table;
+}
+
+Trace ave_time_trace(const AveTimeTable &table, const AveTimeSpec &spec)
+{
+  const std::string &name = table.name;
+  check_ave_time_spec(name, spec);
+  // the column asked for under the same name ("" too: the file's first value column)
+  const std::size_t col = std::find(table.asked.begin(), table.asked.end(), spec.column) - table.asked.begin();
+  if (col >= table.asked.size())
+    throw InputError(name + ": column '" + spec.column + "' was not read from the table (a caller's error)");
+  Trace tr;
+  tr.path = name;
+  tr.units = spec.units;
+  tr.v0 = spec.v0;
+  tr.D = spec.D;
+  tr.g = spec.g;
+  const std::vector<double> &steps = table.steps;
   const double step0 = std::isnan(spec.step0) ? steps[0] - (steps[1] - steps[0]) : spec.step0;
-  for (double st : steps) {
-    tr.t.push_back((st - step0) * spec.dt);
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    tr.t.push_back((steps[i] - step0) * spec.dt);
     tr.z.push_back(spec.z0 + spec.v0 * tr.t.back());
+    tr.F.push_back(spec.sign * table.columns[col][i]);
   }
   tr.columns = {"t", "z", "F"};
   auto num = [](double v) {
@@ -385,8 +413,14 @@ Trace parse_ave_time(const std::string &text, const std::string &name, const Ave
     return o.str();
   };
   tr.keys = {{"units", spec.units}, {"v0", num(spec.v0)}, {"D", num(spec.D)}, {"g", num(spec.g)},
-             {"source", "fix ave/time " + name + " column " + names[col]}};
+             {"source", "fix ave/time " + name + " column " + table.names[col]}};
   return tr;
+}
+
+Trace parse_ave_time(const std::string &text, const std::string &name, const AveTimeSpec &spec)
+{
+  check_ave_time_spec(name, spec);    // a bad option is named before a bad file
+  return ave_time_trace(parse_ave_time_table(text, name, {spec.column}), spec);
 }
 
 Trace read_ave_time(const std::string &path, const AveTimeSpec &spec)

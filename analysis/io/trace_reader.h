@@ -84,6 +84,23 @@ struct AveTimeSpec {
 Trace parse_ave_time(const std::string &text, const std::string &name, const AveTimeSpec &spec);
 Trace read_ave_time(const std::string &path, const AveTimeSpec &spec);
 
+// The same file read once for several of its columns (a table of many quantities: the
+// arrival rings' kinetic energy and pressure): each row's step and the values of the
+// columns asked for ("" = the first value column), kept and no others, so that memory
+// follows what is asked, not the file's width. ave_time_trace then makes a trace of any
+// kept column without reading the text again; parse_ave_time is the two in one.
+// Rejections as parse_ave_time's (a column asked for and absent: the "# TimeStep" line).
+struct AveTimeTable {
+  std::string name;                            // the file, for messages
+  std::vector<std::string> asked;              // the columns asked for ("" as given)
+  std::vector<std::string> names;              // ... their names in the file
+  std::vector<double> steps;                   // increasing
+  std::vector<std::vector<double>> columns;    // columns[c][row], c as names
+};
+AveTimeTable parse_ave_time_table(const std::string &text, const std::string &name,
+                                  const std::vector<std::string> &wanted);
+Trace ave_time_trace(const AveTimeTable &table, const AveTimeSpec &spec);
+
 // The same trace in cgs (cm, g, s, dyne); a cgs trace comes back unchanged.
 Trace to_cgs(const Trace &trace);
 

@@ -365,3 +365,58 @@ TEST(TraceIO, UntimedTraceOnlyWhenTheHeaderSaysSo)
   expect_rejected(good_header() + "z,F\n" + zf.str(), "bad\\.csv:10: column line must name t, z and F");
   expect_rejected(good_header() + "# t_from = none\nt,z,F\n" + rows(12), "bad\\.csv:11: header t_from = none, but the column line names t");
 }
+
+namespace {
+
+// fix ave/time output with three value columns over 12 rows: column c of row i is c * 100 + i
+std::string ave_time_text()
+{
+  std::ostringstream o;
+  o << "# Time-averaged data for fix arr\n# TimeStep c_a[1] c_a[2] c_b\n";
+  for (int i = 0; i < 12; ++i) o << 1000 + 10 * i << " " << 100 + i << " " << 200 + i << " " << 300 + i << "\n";
+  return o.str();
+}
+
+AveTimeSpec ave_spec(const std::string &column)
+{
+  AveTimeSpec spec;
+  spec.column = column, spec.v0 = 100, spec.D = 2, spec.g = 981, spec.dt = 1e-6, spec.step0 = 1000;
+  return spec;
+}
+
+}    // namespace
+
+// Two routes: the table read once and each column taken from it equals parse_ave_time of
+// that column alone, value for value (the same parse, so exactly); and the table keeps only
+// the columns asked for, in the order asked
+TEST(TraceIO, AveTimeTableReadOnceAgreesWithEachColumnAlone)
+{
+  const std::string text = ave_time_text();
+  const AveTimeTable table = parse_ave_time_table(text, "arr.txt", {"c_b", "c_a[1]", ""});
+  ASSERT_EQ(table.names, (std::vector<std::string>{"c_b", "c_a[1]", "c_a[1]"}));
+  ASSERT_EQ(table.steps.size(), 12u);
+  for (const std::string column : {"c_b", "c_a[1]", ""}) {
+    const Trace once = ave_time_trace(table, ave_spec(column));
+    const Trace alone = parse_ave_time(text, "arr.txt", ave_spec(column));
+    EXPECT_EQ(once.t, alone.t) << column;
+    EXPECT_EQ(once.z, alone.z) << column;
+    EXPECT_EQ(once.F, alone.F) << column;
+  }
+  const Trace b = ave_time_trace(table, ave_spec("c_b"));
+  EXPECT_EQ(b.F.front(), 300.0);
+  EXPECT_EQ(b.F.back(), 311.0);
+  EXPECT_DOUBLE_EQ(b.t.back(), 110 * 1e-6);    // (1110 - step0) dt
+}
+
+TEST(TraceIO, AveTimeTableNamesAColumnNotThere)
+{
+  try {
+    parse_ave_time_table(ave_time_text(), "arr.txt", {"c_a[1]", "c_c"});
+    FAIL() << "accepted a column the file lacks";
+  } catch (InputError &e) {
+    EXPECT_NE(std::string(e.what()).find("arr.txt:2: no column 'c_c' (columns: c_a[1] c_a[2] c_b)"), std::string::npos) << e.what();
+  }
+  // a trace of a column the table did not keep is the caller's error, named
+  const AveTimeTable table = parse_ave_time_table(ave_time_text(), "arr.txt", {"c_a[1]"});
+  EXPECT_THROW(ave_time_trace(table, ave_spec("c_b")), InputError);
+}
