@@ -76,6 +76,14 @@ stats() { awk '{ s += $1; ss += $1 * $1; n++ }
         m = s / n; sd = n > 1 ? sqrt((ss - n * m * m) / (n - 1)) : 0
         printf "%.4g +- %.2g n = %d\n", m, sd, n }'; }
 
+# least-squares slope of ln Y against ln X over lines "X Y" (e.g. t_part against v0), with its
+# standard error: "SLOPE +- SE n = N"
+speed_exponent() { awk '{ x = log($1); y = log($2); sx += x; sy += y; sxx += x * x; sxy += x * y; n++; X[n] = x; Y[n] = y }
+  END { if (n < 3) { print "undefined n = " n; exit }
+        b = (n * sxy - sx * sy) / (n * sxx - sx * sx); a = (sy - b * sx) / n
+        for (i = 1; i <= n; i++) r += (Y[i] - a - b * X[i]) ^ 2
+        printf "%.3g +- %.2g n = %d\n", b, sqrt(r / (n - 2) / (sxx - sx * sx / n)), n }'; }
+
 # the value at key path KEY of a granpen JSON output: jget FILE KEY
 jget() { "$CLI" get "$1" "$2"; }
 
@@ -440,6 +448,48 @@ box_bench() {
   done
   for b in 8 20; do box_alpha_D "box_bench${b}_D" "bench_box$b"; done
   for b in 8 20; do box_alpha_D "box_bench${b}_shaft" "bench_box${b}_shaft"; done
+  box_wide_rod
+}
+# the 4 cm rod in the 20 cm box (box_bench20_D4, the same beds and speed as box_bench20_D):
+# alpha over z >= 2 cm as the others, and over z = 2 to 3 cm (the bed is 5.7 cm deep: at 4 cm
+# the tip is 0.43 D above the floor), each over the 2 cm rod's in the same window; against
+# the edge term's alpha(4) / alpha(2) = 3/2 - r/2 (alpha = A + B / D through D = 1 and 2 cm)
+box_wide_rod() {
+  local d=$BOX/box_bench20_D4 o=$OUT/box_bench20_D4 n q w
+  n=$( (ls "$d"/bench_mu0.3_s1[12]_v28_g981_D4.0.csv 2>/dev/null || true) | wc -l)
+  [ "$n" = 2 ] || { say "box_bench20_D4: $n of 2 pushes in $d: skipped until both are (validation/box.sh bench)"; return 0; }
+  [ -n "$(nval bench_box20.alpha_D1_over_D2)" ] || { say "box_bench20_D4: waits for box_bench20_D: skipped"; return 0; }
+  say "box_bench20_D4: the 4 cm rod's alpha (granpen fit --zmin 2)"
+  mkdir -p "$o"
+  "$CLI" fit "$d"/bench_mu0.3_s1[12]_v28_g981_D4.0.csv --zmin 2 --csv "$o/fit_z2.csv" > "$o/fit_z2.txt"
+  put "bench_box20.alpha0_window.v28.D4 = $(col "$o/fit_z2.csv" alpha0 | stats)  # granpen fit --zmin 2: k_z0 / (mu rho_g g D^2), 2 beds"
+  q=$(quad_ratio bench_box20.alpha0_window.v28.D4 bench_box20.alpha0_window.v28.D2)
+  put "bench_box20.alpha_D4_over_D2 = $(printf '%.4g +- %.2g' $q)  # the beds' spreads in quadrature"
+  q=$(quad_ratio bench_box20.alpha0_window.v28.D1 bench_box20.alpha0_window.v28.D2)
+  put "bench_box20.alpha_D4_over_D2_edge = $(awk -v r="${q% *}" -v e="${q#* }" 'BEGIN { printf "%.4g +- %.2g", 3 / 2 - r / 2, e / 2 }')  # alpha = A + B / D through D = 1 and 2 cm: 3/2 - alpha_D1_over_D2 / 2"
+  # away from the floor: both rods over z = 2 to 3 cm
+  "$CLI" fit "$d"/bench_mu0.3_s1[12]_v28_g981_D4.0.csv --zmin 2 --zmax 3 --csv "$o/fit_z2to3.csv" > /dev/null
+  "$CLI" fit "$BOX"/box_bench20_D/bench_mu0.3_s1[12]_v28_g981_D2.0.csv --zmin 2 --zmax 3 --csv "$o/fit_z2to3_D2.csv" > /dev/null
+  for w in D4:fit_z2to3 D2:fit_z2to3_D2; do
+    put "bench_box20.alpha0_z2to3.v28.${w%%:*} = $(col "$o/${w##*:}.csv" alpha0 | stats)  # granpen fit --zmin 2 --zmax 3, 2 beds"
+  done
+  q=$(quad_ratio bench_box20.alpha0_z2to3.v28.D4 bench_box20.alpha0_z2to3.v28.D2)
+  put "bench_box20.alpha_D4_over_D2_z2to3 = $(printf '%.4g +- %.2g' $q)  # the two above, the beds' spreads in quadrature"
+  # how F_z grows with D over the four rods: the slope of ln(alpha D^2) on ln D, every push
+  # (4 diameters x 2 beds), with its standard error (the paper's F_z ~ D^2: 2); and without
+  # the 1 cm rod
+  d_exponent() { cat "$OUT/box_bench20_D/fit_z2.csv" <(tail -n +2 "$o/fit_z2.csv") | awk -F, -v min="$1" '
+      NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next } $i["D"] >= min { print $i["D"], $i["alpha0"] * $i["D"] ^ 2 }' | speed_exponent; }
+  put "bench_box20.depth_term_D_exponent = $(d_exponent 1)  # granpen fit --zmin 2: ln(alpha0 D^2) on ln D, D = 1 to 4 cm, 2 beds"
+  put "bench_box20.depth_term_D_exponent_D2to4 = $(d_exponent 2)  # the same without the 1 cm rod"
+  # the rim term's length B / A of alpha = A + B / D: through the 1 and 2 cm rods' means
+  # (2 (r - 1) / (2 - r)), and by least squares of alpha on 1 / D over the 2 to 4 cm pushes
+  put "bench_box20.rim_B_over_A_D1to2 = $(awk -v r="$(nval bench_box20.alpha_D1_over_D2)" 'BEGIN { printf "%.3g", 2 * (r - 1) / (2 - r) }')  # cm, alpha = A + B / D through the 1 and 2 cm rods"
+  put "bench_box20.rim_B_over_A_D2to4 = $(cat "$OUT/box_bench20_D/fit_z2.csv" <(tail -n +2 "$o/fit_z2.csv") | awk -F, '
+      NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next }
+      $i["D"] >= 2 { x = 1 / $i["D"]; y = $i["alpha0"]; sx += x; sy += y; sxx += x * x; sxy += x * y; n++ }
+      END { b = (n * sxy - sx * sy) / (n * sxx - sx * sx); a = (sy - b * sx) / n; printf "%.3g", b / a }')  # cm, least squares of alpha on 1 / D, the 2 to 4 cm pushes"
+  return 0
 }
 # alpha against D in one box (DIR under $BOX, its 2 beds x 3 or 2 diameters at 28 cm/s): the
 # depth term through the origin over z >= 2 cm (the bench row's window) per D, mean over the
@@ -542,12 +592,6 @@ parting_ms() { # NARROW WIDE JSON: t_part in ms, or "none" when they do not part
   "$CLI" parting "$1" "$2" --json "$3" > /dev/null
   [ "$(jget "$3" parted)" = true ] && jget "$3" t_part_ms || echo none
 }
-# least-squares slope of ln t against ln v0 with its standard error: "SLOPE +- SE n = N"
-speed_exponent() { awk '{ x = log($1); y = log($2); sx += x; sy += y; sxx += x * x; sxy += x * y; n++; X[n] = x; Y[n] = y }
-  END { if (n < 3) { print "undefined n = " n; exit }
-        b = (n * sxy - sx * sy) / (n * sxx - sx * sx); a = (sy - b * sx) / n
-        for (i = 1; i <= n; i++) r += (Y[i] - a - b * X[i]) ^ 2
-        printf "%.3g +- %.2g n = %d\n", b, sqrt(r / (n - 2) / (sxx - sx * sx / n)), n }'; }
 box_parting() {
   local o=$OUT/box_parting pair n w v s t a b pts ratios
   mkdir -p "$o"
