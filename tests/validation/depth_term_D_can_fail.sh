@@ -12,13 +12,8 @@ CLI=$1 SRC=$2 WORK=$3
 HERE=$SRC/tests/validation B=$SRC/data/sims/box_bench
 fail() { echo "FAIL: $*"; exit 1; }
 rm -rf "$WORK" && mkdir -p "$WORK"
-expect() { # RC PATTERN ROOT
-  local rc=0
-  "$HERE/depth_term_D.sh" "$CLI" "$3" "$WORK/run" > "$WORK/out" 2>&1 || rc=$?
-  [ "$rc" = "$1" ] || { cat "$WORK/out"; fail "depth_term_D.sh exited $rc, not $1"; }
-  grep -q -- "$2" "$WORK/out" || { cat "$WORK/out"; fail "depth_term_D.sh did not say '$2'"; }
-  echo "depth_term_D.sh $1: $(grep -- "$2" "$WORK/out" | head -1)"
-}
+. "$HERE/can_fail_lib.sh"
+expect() { expect_exit depth_term_D.sh "$1" "$2" "$HERE/depth_term_D.sh" "$CLI" "$3" "$WORK/run"; }    # RC PATTERN ROOT
 expect 0 "depth_term_D: F_z grows slower than D^2" "$SRC"
 
 # scaled SRC D FACTOR OUT: SRC with header D and F times FACTOR

@@ -12,13 +12,8 @@ CLI=$1 SRC=$2 WORK=$3
 HERE=$SRC/tests/validation S=$SRC/data/sims
 fail() { echo "FAIL: $*"; exit 1; }
 rm -rf "$WORK" && mkdir -p "$WORK"
-expect() { # RC PATTERN ROOT
-  local rc=0
-  "$HERE/same_depth_in_D.sh" "$CLI" "$3" "$WORK/run" > "$WORK/out" 2>&1 || rc=$?
-  [ "$rc" = "$1" ] || { cat "$WORK/out"; fail "same_depth_in_D.sh exited $rc, not $1"; }
-  grep -q -- "$2" "$WORK/out" || { cat "$WORK/out"; fail "same_depth_in_D.sh did not say '$2'"; }
-  echo "same_depth_in_D.sh $1: $(grep -- "$2" "$WORK/out" | head -1)"
-}
+. "$HERE/can_fail_lib.sh"
+expect() { expect_exit same_depth_in_D.sh "$1" "$2" "$HERE/same_depth_in_D.sh" "$CLI" "$3" "$WORK/run"; }    # RC PATTERN ROOT
 expect 0 "in 5 of 5 settings" "$SRC"
 
 # the 1 cm push of F = D^3 f(z / D) made of a 2 cm push: scaled TWO OUT
