@@ -76,9 +76,9 @@ stats() { awk '{ s += $1; ss += $1 * $1; n++ }
         m = s / n; sd = n > 1 ? sqrt((ss - n * m * m) / (n - 1)) : 0
         printf "%.4g +- %.2g n = %d\n", m, sd, n }'; }
 
-# least-squares slope of ln Y against ln X over lines "X Y" (e.g. t_part against v0), with its
+# least-squares slope of ln Y against ln X over lines "X Y" (t_part against v0, F against D), with its
 # standard error: "SLOPE +- SE n = N"
-speed_exponent() { awk '{ x = log($1); y = log($2); sx += x; sy += y; sxx += x * x; sxy += x * y; n++; X[n] = x; Y[n] = y }
+log_slope() { awk '{ x = log($1); y = log($2); sx += x; sy += y; sxx += x * x; sxy += x * y; n++; X[n] = x; Y[n] = y }
   END { if (n < 3) { print "undefined n = " n; exit }
         b = (n * sxy - sx * sy) / (n * sxx - sx * sx); a = (sy - b * sx) / n
         for (i = 1; i <= n; i++) r += (Y[i] - a - b * X[i]) ^ 2
@@ -453,7 +453,7 @@ box_bench() {
 # the 4 cm rod in the 20 cm box (box_bench20_D4, the same beds and speed as box_bench20_D):
 # alpha over z >= 2 cm as the others, and over z = 2 to 3 cm (the bed is 5.7 cm deep: at 4 cm
 # the tip is 0.43 D above the floor), each over the 2 cm rod's in the same window; against
-# the edge term's alpha(4) / alpha(2) = 3/2 - r/2 (alpha = A + B / D through D = 1 and 2 cm)
+# the rim term's alpha(4) / alpha(2) = 3/2 - r/2 (alpha = A + B / D through D = 1 and 2 cm)
 box_wide_rod() {
   local d=$BOX/box_bench20_D4 o=$OUT/box_bench20_D4 n q w
   n=$( (ls "$d"/bench_mu0.3_s1[12]_v28_g981_D4.0.csv 2>/dev/null || true) | wc -l)
@@ -466,7 +466,7 @@ box_wide_rod() {
   q=$(quad_ratio bench_box20.alpha0_window.v28.D4 bench_box20.alpha0_window.v28.D2)
   put "bench_box20.alpha_D4_over_D2 = $(printf '%.4g +- %.2g' $q)  # the beds' spreads in quadrature"
   q=$(quad_ratio bench_box20.alpha0_window.v28.D1 bench_box20.alpha0_window.v28.D2)
-  put "bench_box20.alpha_D4_over_D2_edge = $(awk -v r="${q% *}" -v e="${q#* }" 'BEGIN { printf "%.4g +- %.2g", 3 / 2 - r / 2, e / 2 }')  # alpha = A + B / D through D = 1 and 2 cm: 3/2 - alpha_D1_over_D2 / 2"
+  put "bench_box20.alpha_D4_over_D2_rim = $(awk -v r="${q% *}" -v e="${q#* }" 'BEGIN { printf "%.4g +- %.2g", 3 / 2 - r / 2, e / 2 }')  # alpha = A + B / D through D = 1 and 2 cm: 3/2 - alpha_D1_over_D2 / 2"
   # away from the floor: both rods over z = 2 to 3 cm
   "$CLI" fit "$d"/bench_mu0.3_s1[12]_v28_g981_D4.0.csv --zmin 2 --zmax 3 --csv "$o/fit_z2to3.csv" > /dev/null
   "$CLI" fit "$BOX"/box_bench20_D/bench_mu0.3_s1[12]_v28_g981_D2.0.csv --zmin 2 --zmax 3 --csv "$o/fit_z2to3_D2.csv" > /dev/null
@@ -479,7 +479,7 @@ box_wide_rod() {
   # (4 diameters x 2 beds), with its standard error (the paper's F_z ~ D^2: 2); and without
   # the 1 cm rod
   d_exponent() { cat "$OUT/box_bench20_D/fit_z2.csv" <(tail -n +2 "$o/fit_z2.csv") | awk -F, -v min="$1" '
-      NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next } $i["D"] >= min { print $i["D"], $i["alpha0"] * $i["D"] ^ 2 }' | speed_exponent; }
+      NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next } $i["D"] >= min { print $i["D"], $i["alpha0"] * $i["D"] ^ 2 }' | log_slope; }
   put "bench_box20.depth_term_D_exponent = $(d_exponent 1)  # granpen fit --zmin 2: ln(alpha0 D^2) on ln D, D = 1 to 4 cm, 2 beds"
   put "bench_box20.depth_term_D_exponent_D2to4 = $(d_exponent 2)  # the same without the 1 cm rod"
   # the rim term's length B / A of alpha = A + B / D: through the 1 and 2 cm rods' means
@@ -509,12 +509,12 @@ box_alpha_D() { # SWEEP KEY
   done
   local q; q=$(quad_ratio "$key.alpha0_window.v28.D1" "$key.alpha0_window.v28.D2")
   [ -n "$q" ] && put "$key.alpha_D1_over_D2 = $(printf '%.4g +- %.2g' $q)  # the two above, the beds' spreads in quadrature"
-  # an edge term at the tip's rim, F = mu rho_g g z (A D^2 + B D), i.e. alpha = A + B / D:
+  # a term at the tip's rim, F = mu rho_g g z (A D^2 + B D), i.e. alpha = A + B / D:
   # through the 1 and 2 cm rods it puts the 3 cm rod at alpha(3) / alpha(2) = 4/3 - r/3
   # (r = alpha(1) / alpha(2), its error over 3), against the measured ratio
   [ -n "$q" ] && [ -n "$(nval "$key.alpha0_window.v28.D3")" ] || return 0
   put "$key.alpha_D3_over_D2 = $(printf '%.4g +- %.2g' $(quad_ratio "$key.alpha0_window.v28.D3" "$key.alpha0_window.v28.D2"))  # the beds' spreads in quadrature"
-  put "$key.alpha_D3_over_D2_edge = $(awk -v r="${q% *}" -v e="${q#* }" 'BEGIN { printf "%.4g +- %.2g", 4 / 3 - r / 3, e / 3 }')  # alpha = A + B / D through D = 1 and 2 cm: 4/3 - alpha_D1_over_D2 / 3"
+  put "$key.alpha_D3_over_D2_rim = $(awk -v r="${q% *}" -v e="${q#* }" 'BEGIN { printf "%.4g +- %.2g", 4 / 3 - r / 3, e / 3 }')  # alpha = A + B / D through D = 1 and 2 cm: 4/3 - alpha_D1_over_D2 / 3"
   return 0
 }
 if [ -d "$BOX" ]; then box_bench; else say "box series: $BOX missing, skipped"; fi
@@ -607,7 +607,7 @@ box_parting() {
       done
       put "bench_box${n}_${w}.t_part_ms.v$v = $(echo $t | tr ' ' '\n' | grep -v none | stats)  # granpen parting (0.5 ms windows, 3%, two in a row): ms after contact when the $n cm box's push parts from the $w cm box's on the same grains, 2 beds"
     done
-    put "bench_box${n}_${w}.parting_speed_exponent = $(echo $pts | xargs -n 2 | grep -v none | speed_exponent)  # ln t_part against ln v0, 50 to 280 cm/s, 2 beds: a wave of fixed speed 0, one faster the harder the push below 0, a flow front at a fixed depth -1"
+    put "bench_box${n}_${w}.parting_speed_exponent = $(echo $pts | xargs -n 2 | grep -v none | log_slope)  # ln t_part against ln v0, 50 to 280 cm/s, 2 beds: a wave of fixed speed 0, one faster the harder the push below 0, a flow front at a fixed depth -1"
   done
   for pair in 8_16 12_20; do
     "$CLI" plot parting "$o"/bench_${pair}_s1{1,2}_v{50,100,200,280}.json --out "$o/fig_$pair" > /dev/null
@@ -665,7 +665,7 @@ box_parting() {
     done
     put "dg10_box10_20.t_part_ms.v$v = $(echo $t | tr ' ' '\n' | grep -v none | stats)  # granpen parting as above: when the 10 cm box's dg10 push parts from the 20 cm box's on the same grains, 3 beds"
   done
-  put "dg10_box10_20.parting_speed_exponent = $(echo $pts | xargs -n 2 | grep -v none | speed_exponent)  # ln t_part against ln v0, 80 to 200 cm/s, 3 beds"
+  put "dg10_box10_20.parting_speed_exponent = $(echo $pts | xargs -n 2 | grep -v none | log_slope)  # ln t_part against ln v0, 80 to 200 cm/s, 3 beds"
   "$CLI" plot parting "$o"/dg10_10_20_s{1,2,3}_v{80,140,200}.json --out "$o/fig_dg10_10_20" > /dev/null
 }
 if [ -d "$BOX" ] && [ -d "$DG10BOX" ]; then box_parting; else say "box parting: $BOX or $DG10BOX missing, skipped"; fi
@@ -678,7 +678,7 @@ if [ -d "$BOX" ] && [ -d "$DG10BOX" ]; then box_parting; else say "box parting: 
 # Per setting: alpha per D (mean +- sd over beds, or the fit's error for one bed) and the
 # ratio with the errors in quadrature. KEY OUTDIR TRACE... (traces of D = 1 and 2 cm only)
 alpha_same_depth_in_D() {
-  local key=$1 o=$2 f D one=() two=() n1 n2; shift 2
+  local key=$1 o=$2 f D one=() two=(); shift 2
   for f in "$@"; do [ -f "$f" ] || { say "$key: ${f#$ROOT/} not there: same depth in D skipped"; return 0; }; done
   for f in "$@"; do case ${f##*_D} in 1.0.csv) one+=("$f") ;; 2.0.csv) two+=("$f") ;; esac; done
   [ "${#one[@]}" -gt 0 ] && [ "${#two[@]}" = "${#one[@]}" ] || { say "$key: same depth in D needs as many 1 as 2 cm pushes: skipped"; return 0; }
