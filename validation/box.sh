@@ -15,7 +15,9 @@
 #           above v_c, two beds, with observe/arrival.lmp; 3e9 atom-steps, minutes), and
 #           the same with the rings at 2, 4 and 6 cm (box_bench16_arrival_far). Then a 4 cm
 #           rod in the 20 cm box (box_bench20_D4: 28 cm/s, 4 cm, two beds; about 1 core-hour),
-#           the test of an edge term at the tip's rim (docs/results.md, "What is left").
+#           the test of a term at the tip's rim (docs/results.md, "How F_z grows with D"); and
+#           the 20 cm box's flow push with rods of 1 and 4 cm (box_bench20_flow_D: lambda_vz
+#           against D; two pushes with dumps, about half a core-hour).
 #
 #   dg10    the paper's box at the paper's grain size ratio: 20 cm beds of 4 x 4 copies of the
 #           three committed 5 cm dg10 tiles (data/sims/dg10/beds, linked from
@@ -43,7 +45,7 @@ case $series in
     sweeps=""
     for kind in peak flow; do for b in 8 20 12 16; do sweeps="$sweeps $S/box_bench${b}_$kind.sweep"; done; done
     for b in 8 20; do sweeps="$sweeps $S/box_bench${b}_D.sweep $S/box_bench${b}_shaft.sweep"; done
-    sweeps="$sweeps $S/box_bench16_arrival.sweep $S/box_bench16_arrival_far.sweep $S/box_bench20_D4.sweep"
+    sweeps="$sweeps $S/box_bench16_arrival.sweep $S/box_bench16_arrival_far.sweep $S/box_bench20_D4.sweep $S/box_bench20_flow_D.sweep"
     exec "$ROOT/validation/campaign.sh" --data "$ROOT/data/sims/box_bench" --sweeps "${sweeps# }" --tip "1 3" "$@" ;;
   dg10)
     sweeps=""
