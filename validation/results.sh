@@ -449,6 +449,30 @@ box_bench() {
   for b in 8 20; do box_alpha_D "box_bench${b}_D" "bench_box$b"; done
   for b in 8 20; do box_alpha_D "box_bench${b}_shaft" "bench_box${b}_shaft"; done
   box_wide_rod
+  box_flow_D
+}
+# lambda_vz against D: the 20 cm box's 50 cm/s flow push (bed 11) with rods of 1, 2 and 4 cm
+# (box_bench20_flow_D beside box_bench20_flow): lambda / D per rod, lambda in cm, and the
+# slope of ln lambda on ln D (1: the decay follows D, as lambda / D constant says; 0: a length
+# of its own)
+box_flow_D() {
+  local f D id lines=""
+  for D in 1.0 4.0; do
+    f=$BOX/box_bench20_flow_D/bench_mu0.3_s11_v50_g981_D$D
+    [ -f "$f.csv" ] && [ -f "$f.flow/window.txt" ] ||
+      { say "box_bench20_flow_D: the $D cm rod's flow push (with tables) not in $BOX/box_bench20_flow_D: skipped"; return 0; }
+  done
+  [ -n "$(nval bench_box20.v50.lambda_vz_D)" ] || { say "box_bench20_flow_D: waits for box_bench20_flow: skipped"; return 0; }
+  say "box_bench20_flow_D: lambda_vz against D (granpen flow tables)"
+  for D in 1.0 2.0 4.0; do
+    id=bench_mu0.3_s11_v50_g981_D$D
+    case $D in 2.0) f=$BOX/box_bench20_flow/$id ;; *) f=$BOX/box_bench20_flow_D/$id ;; esac
+    [ "$D" = 2.0 ] || put "bench_box20.v50.D${D%.0}.lambda_vz_D = $(lambda_D "$f.flow/flow/flow.json")  # granpen flow, the tip $(awk '{print $2 " to " $3}' "$f.flow/window.txt") cm deep"
+    put "bench_box20.v50.D${D%.0}.lambda_vz = $(jget "$f.flow/flow/flow.json" profile_below.lambda_vz.lambda) +- $(jget "$f.flow/flow/flow.json" profile_below.lambda_vz.lambda_se)  # cm, the same fit"
+    lines="$lines${D%.0} $(jget "$f.flow/flow/flow.json" profile_below.lambda_vz.lambda)
+"
+  done
+  put "bench_box20.v50.lambda_vz_D_exponent = $(printf '%s' "$lines" | log_slope)  # ln lambda on ln D, D = 1, 2, 4 cm: 1 if the decay follows D, 0 if it is a length of its own"
 }
 # the 4 cm rod in the 20 cm box (box_bench20_D4, the same beds and speed as box_bench20_D):
 # alpha over z >= 2 cm as the others, and over z = 2 to 3 cm (the bed is 5.7 cm deep: at 4 cm
