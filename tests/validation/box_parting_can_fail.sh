@@ -18,13 +18,9 @@ HERE=$SRC/tests/validation BOX=$SRC/data/sims/box_bench
 DG10=$SRC/data/sims/dg10/dg10_peak DG10BOX=$SRC/data/sims/dg10_box20/dg10_box20_peak
 fail() { echo "FAIL: $*"; exit 1; }
 rm -rf "$WORK" && mkdir -p "$WORK"
-expect() { # RC PATTERN BOX_DIR: box_parting.sh on BOX_DIR exits RC and prints PATTERN
-  local rc=0
-  "$HERE/box_parting.sh" "$CLI" "$3" "$DG10" "$DG10BOX" "$WORK/run" > "$WORK/out" 2>&1 || rc=$?
-  [ "$rc" = "$1" ] || { cat "$WORK/out"; fail "box_parting.sh exited $rc, not $1"; }
-  grep -q -- "$2" "$WORK/out" || { cat "$WORK/out"; fail "box_parting.sh did not say '$2'"; }
-  echo "box_parting.sh $1: $(grep -- "$2" "$WORK/out" | head -1)"
-}
+. "$HERE/can_fail_lib.sh"
+# expect RC PATTERN BOX_DIR: box_parting.sh on BOX_DIR exits RC and prints PATTERN
+expect() { expect_exit box_parting.sh "$1" "$2" "$HERE/box_parting.sh" "$CLI" "$3" "$DG10" "$DG10BOX" "$WORK/run"; }
 expect 0 "the boxes part at a time set by the narrower box's width" "$BOX"
 
 mkdir -p "$WORK/same"

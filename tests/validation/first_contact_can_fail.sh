@@ -16,14 +16,9 @@ fail() { echo "FAIL: $*"; exit 1; }
 rm -rf "$WORK" && mkdir -p "$WORK"
 # scaled TRACE K OUT: the trace with its F column times K (header and t, z untouched)
 scaled() { awk -F, -v k="$2" 'BEGIN { OFS = "," } /^#/ || $1 == "t" { print; next } { $3 = $3 * k; print }' "$1" > "$3"; }
+. "$HERE/can_fail_lib.sh"
 # expect RC PATTERN SCRIPT ARGS...: the script exits RC and prints PATTERN
-expect() {
-  local rc=0 want=$1 pattern=$2; shift 2
-  "$@" > "$WORK/out" 2>&1 || rc=$?
-  [ "$rc" = "$want" ] || { cat "$WORK/out"; fail "$(basename "$1") exited $rc, not $want"; }
-  grep -q -- "$pattern" "$WORK/out" || { cat "$WORK/out"; fail "$(basename "$1") did not say '$pattern'"; }
-  echo "$(basename "$1") $want: $(grep -- "$pattern" "$WORK/out" | head -1)"
-}
+expect() { expect_exit "$(basename "$3")" "$@"; }
 
 DG10=$SRC/data/sims/dg10/dg10_peak
 expect 0 "does not depend on the box" "$HERE/dg10_box20_first_contact.sh" "$DG10" "$DG10"
