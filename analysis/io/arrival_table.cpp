@@ -87,23 +87,19 @@ ArrivalTable read_arrival_table(const std::string &trace_path, double v0, double
   if (!ec && bytes > kMaxArrivalTableBytes) throw InputError(a.table_path + ": larger than 256 MiB: not a push's arrival table");
   std::string text;
   if (!read_text_file(a.table_path, text)) throw InputError(a.table_path + ": cannot open (observe/arrival.lmp writes it beside the trace)");
-  AveTimeSpec spec;
-  spec.v0 = v0, spec.D = D, spec.g = g, spec.dt = dt, spec.step0 = step0;
-  auto column_name = [](std::size_t ring, int c) { return "c_arr_" + std::to_string(ring + 1) + "[" + std::to_string(c) + "]"; };
+  // the table read once for every ring's two columns, in the order (ring, 1), (ring, 2)
   std::vector<std::string> wanted;
   for (std::size_t k = 0; k < a.radii.size(); ++k)
-    for (int c : {1, 2}) wanted.push_back(column_name(k, c));
-  const AveTimeTable table = parse_ave_time_table(text, a.table_path, wanted);    // once, for every ring
-  for (std::size_t k = 0; k < a.radii.size(); ++k)
-    for (int c : {1, 2}) {
-      spec.column = column_name(k, c);
-      const Trace col = ave_time_trace(table, spec);
-      if (k == 0 && c == 1) {
-        a.t = col.t;
-        if (a.t.front() < 0) throw InputError(a.info_path + ": step0 lies after the table's first row: not this push's");
-      }
-      (c == 1 ? a.ke : a.pv).push_back(col.F);
-    }
+    for (int c : {1, 2}) wanted.push_back("c_arr_" + std::to_string(k + 1) + "[" + std::to_string(c) + "]");
+  const AveTimeTable table = parse_ave_time_table(text, a.table_path, wanted);
+  AveTimeSpec spec;    // for the time axis, (step - step0) dt, once
+  spec.v0 = v0, spec.D = D, spec.g = g, spec.dt = dt, spec.step0 = step0, spec.column = wanted.front();
+  a.t = ave_time_trace(table, spec).t;
+  if (a.t.front() < 0) throw InputError(a.info_path + ": step0 lies after the table's first row: not this push's");
+  for (std::size_t k = 0; k < a.radii.size(); ++k) {
+    a.ke.push_back(table.columns[2 * k]);
+    a.pv.push_back(table.columns[2 * k + 1]);
+  }
   return a;
 }
 

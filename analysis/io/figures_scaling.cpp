@@ -79,16 +79,6 @@ std::vector<Quantity> quantities_of(const CsvTable &t, const Axis &axis, Run &ru
 
 }    // namespace
 
-std::string literal_text(const std::string &s)
-{
-  std::string out;
-  for (char c : s) {
-    if (c && std::string("_^@&~{}").find(c) != std::string::npos) out += '\\';
-    out += c;
-  }
-  return out;
-}
-
 void plot_scaling(const std::vector<std::string> &inputs, Run &run)
 {
   CsvTable t;

@@ -58,6 +58,17 @@ std::string log_tics(const char *axis, double lo, double hi, bool plain)
   return t + ")\nset m" + axis + "tics 10\n";
 }
 
+// text drawn as written: gnuplot's enhanced-text specials escaped (a file's stem, a name)
+std::string literal_text(const std::string &s)
+{
+  std::string out;
+  for (char c : s) {
+    if (c && std::string("_^@&~{}").find(c) != std::string::npos) out += '\\';
+    out += c;
+  }
+  return out;
+}
+
 // a number as 2.94×10^{4} (plain below 1e4)
 std::string sci(double v)
 {
