@@ -502,14 +502,16 @@ box_wide_rod() {
   # how F_z grows with D over the four rods: the slope of ln(alpha D^2) on ln D, every push
   # (4 diameters x 2 beds), with its standard error (the paper's F_z ~ D^2: 2); and without
   # the 1 cm rod
-  d_exponent() { cat "$OUT/box_bench20_D/fit_z2.csv" <(tail -n +2 "$o/fit_z2.csv") | awk -F, -v min="$1" '
+  # every push's fit, D = 1 to 4 cm: box_bench20_D's table and the 4 cm rods' rows
+  local fits; fits=$(cat "$OUT/box_bench20_D/fit_z2.csv" <(tail -n +2 "$o/fit_z2.csv"))
+  d_exponent() { printf '%s\n' "$fits" | awk -F, -v min="$1" '
       NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next } $i["D"] >= min { print $i["D"], $i["alpha0"] * $i["D"] ^ 2 }' | log_slope; }
   put "bench_box20.depth_term_D_exponent = $(d_exponent 1)  # granpen fit --zmin 2: ln(alpha0 D^2) on ln D, D = 1 to 4 cm, 2 beds"
   put "bench_box20.depth_term_D_exponent_D2to4 = $(d_exponent 2)  # the same without the 1 cm rod"
   # the rim term's length B / A of alpha = A + B / D: through the 1 and 2 cm rods' means
   # (2 (r - 1) / (2 - r)), and by least squares of alpha on 1 / D over the 2 to 4 cm pushes
   put "bench_box20.rim_B_over_A_D1to2 = $(awk -v r="$(nval bench_box20.alpha_D1_over_D2)" 'BEGIN { printf "%.3g", 2 * (r - 1) / (2 - r) }')  # cm, alpha = A + B / D through the 1 and 2 cm rods"
-  put "bench_box20.rim_B_over_A_D2to4 = $(cat "$OUT/box_bench20_D/fit_z2.csv" <(tail -n +2 "$o/fit_z2.csv") | awk -F, '
+  put "bench_box20.rim_B_over_A_D2to4 = $(printf '%s\n' "$fits" | awk -F, '
       NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next }
       $i["D"] >= 2 { x = 1 / $i["D"]; y = $i["alpha0"]; sx += x; sy += y; sxx += x * x; sxy += x * y; n++ }
       END { b = (n * sxy - sx * sy) / (n * sxx - sx * sx); a = (sy - b * sx) / n; printf "%.3g", b / a }')  # cm, least squares of alpha on 1 / D, the 2 to 4 cm pushes"
@@ -711,7 +713,7 @@ alpha_same_depth_in_D() {
   "$CLI" fit "${two[@]}" --zmin 2 --zmax 4 --csv "$o/fit_zD1to2_D2.csv" > /dev/null
   for D in 1 2; do
     if [ "${#one[@]}" = 1 ]; then
-      put "$key.alpha0_zD1to2.D$D = $(awk -F, 'NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next } { printf "%.4g +- %.2g n = 1\n", $i["alpha0"], $i["alpha0_se"] }' "$o/fit_zD1to2_D$D.csv")  # granpen fit --zmin $D --zmax $((2 * D)): z from D to 2 D, alpha through the origin; the fit's error"
+      put "$key.alpha0_zD1to2.D$D = $(one_alpha0 "$o/fit_zD1to2_D$D.csv" "$(col "$o/fit_zD1to2_D$D.csv" v0)" "$D")  # granpen fit --zmin $D --zmax $((2 * D)): z from D to 2 D, alpha through the origin; the fit's error"
     else
       put "$key.alpha0_zD1to2.D$D = $(col "$o/fit_zD1to2_D$D.csv" alpha0 | stats)  # granpen fit --zmin $D --zmax $((2 * D)): z from D to 2 D, alpha through the origin; sd over the beds"
     fi
