@@ -93,6 +93,12 @@ ensemble_peak() {
     awk -F'\t' '{ printf "%.4g +- %.2g (fit; 95%% over runs: %.2g)\n", $1, $2, $3 }'
 }
 
+# when two pushes on the same grains part (granpen parting)
+parting_ms() { # NARROW WIDE JSON: t_part in ms, or "none" when they do not part
+  "$CLI" parting "$1" "$2" --json "$3" > /dev/null
+  [ "$(jget "$3" parted)" = true ] && jget "$3" t_part_ms || echo none
+}
+
 # "FILE V0 PEAK" per trace of granpen collapse's JSON (tab-separated)
 trace_peaks() { "$CLI" get "$1" 'traces[*].file' 'traces[*].v0' 'traces[*].peak'; }
 
@@ -573,6 +579,7 @@ dg10_box20() {
     peak_law dg10_box20_v80to200 "$o/v80to200" 20 "${fast[@]}"
     peak_law dg10_v80to200 "$OUT/dg10/v80to200" 20 "${ten[@]}"
   else say "dg10, 20 cm box: ${#fast[@]} of 9 peak pushes at 80 to 200 cm/s in $d: their peak law skipped until all are"; fi
+  dg10_box20_slow "$d" "$o/slow"
   id=dg10_mu0.3_s1_v40_g981_D2.0 d=$DG10BOX/dg10_box20_flow
   if [ -f "$d/$id.csv" ] && [ -f "$d/$id.flow/window.txt" ]; then
     say "dg10, 20 cm box: the flow of its 40 cm/s push"
@@ -582,6 +589,33 @@ dg10_box20() {
   dg10_box20_alpha_D dg10_box20_D dg10_box20 "1.0 2.0 3.0"
   dg10_box20_alpha_D dg10_box20_shaft dg10_box20_shaft "1.0 2.0"
 }
+# The slow end of the 20 cm box's peak sweep, push by push as each is committed (the whole
+# law waits for all 15): at 40 and 20 cm/s the peak may come after the boxes part (at 20 cm/s
+# the 10 cm push's largest force below 0.7 R comes some 29 ms after contact, the parting at 80
+# to 200 cm/s 4 to 5 ms), so each 20 cm push's peak is read over its 10 cm twin's (the same
+# bed's grains under the rod), beside how far the 10 cm box's own three beds spread at that
+# speed: a box effect is a ratio outside that spread.
+dg10_box20_slow() { # PEAK_DIR OUT
+  local d=$1 o=$2 v s f wide=() narrow=() t
+  mkdir -p "$o"
+  for v in 40 20; do
+    wide=() narrow=() t=""
+    for s in 1 2 3; do
+      f=dg10_mu0.3_s${s}_v${v}_g981_D2.0.csv
+      [ -f "$d/$f" ] || continue
+      wide+=("$d/$f") narrow+=("$DG10/dg10_peak/$f")
+      t="$t $(parting_ms "$DG10/dg10_peak/$f" "$d/$f" "$o/parting_s${s}_v$v.json")"
+    done
+    [ "${#wide[@]}" -gt 0 ] || { say "dg10, 20 cm box: no push at $v cm/s committed in $d: its slow-end lines skipped"; continue; }
+    say "dg10, 20 cm box: the peak at $v cm/s on ${#wide[@]} bed(s) over the 10 cm box's"
+    "$CLI" collapse "${wide[@]}" --alpha 35 --tbin 0.25 --json "$o/collapse_v$v.json" > /dev/null
+    "$CLI" collapse "$DG10/dg10_peak"/dg10_mu0.3_s[123]_v${v}_g981_D2.0.csv --alpha 35 --tbin 0.25 --json "$o/collapse_box10_v$v.json" > /dev/null
+    put "dg10_box20.peak_over_box10.v$v = $(peak_pairs "$o/collapse_v$v.json" "$o/collapse_box10_v$v.json" | stats)  # granpen collapse: the 20 cm push's peak (largest force below 0.7 R) / the 10 cm push's of the same bed, the beds committed so far"
+    put "dg10.peak_over_bed_mean.v$v = $(trace_peaks "$o/collapse_box10_v$v.json" | awk '{ p[NR] = $3; s += $3 } END { for (i = 1; i <= NR; i++) print p[i] / (s / NR) }' | stats)  # the 10 cm box's three beds' peaks over their mean at this speed: the spread a box effect must leave"
+    put "dg10_box10_20.t_part_ms.v$v = $(echo $t | tr ' ' '\n' | grep -v none | stats)  # granpen parting: when the 10 cm box's push parts from the 20 cm box's on the same grains, ms after contact, the beds committed so far"
+  done
+}
+
 # alpha against D in the 20 cm box (DIR under $DG10BOX: bed 1, 100 cm/s, the diameters given),
 # over z >= 3 cm as dg10_D: alpha through the origin, the two terms of F = a z + b z^2, and
 # alpha(1 cm) / alpha(2 cm) with the fits' errors in quadrature
@@ -614,10 +648,6 @@ if [ -d "$DG10BOX" ]; then dg10_box20; else say "dg10, 20 cm box: $DG10BOX missi
 # fixed depth would part them at z / v0: t_part ~ v0^-1. Pairs: 8 / 16 and 12 / 20 cm (the
 # only bench boxes with the same grains under the rod) above v_c, 2 beds; dg10 10 / 20 cm at
 # 80 to 200 cm/s, 3 beds, once those nine pushes are in.
-parting_ms() { # NARROW WIDE JSON: t_part in ms, or "none" when they do not part
-  "$CLI" parting "$1" "$2" --json "$3" > /dev/null
-  [ "$(jget "$3" parted)" = true ] && jget "$3" t_part_ms || echo none
-}
 box_parting() {
   local o=$OUT/box_parting pair n w v s t a b pts ratios
   mkdir -p "$o"
