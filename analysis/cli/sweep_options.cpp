@@ -12,6 +12,7 @@ namespace {
 const char *HELP =
     "usage: granpen sweep SPEC [--jobs N] [--out DIR] [--checkpoint STEPS] [--mpirun PROG --ranks N]\n"
     "                          [--only K] [--slurm FILE] [--plan] [--lmp PATH] [--inputs DIR]\n"
+    "                          [--progress SECONDS]\n"
     "Runs the pours and pushes a sweep file asks for: each distinct bed (preset, mu, seed) is\n"
     "poured once, every push (v0, g, D) branches from its saved bed, up to N runs at once\n"
     "(default: the number of cores). Output in DIR/NAME (default runs/NAME): beds/, traces/\n"
@@ -19,7 +20,9 @@ const char *HELP =
     "phi_0, z_s, status). Rerunning skips finished runs and resumes interrupted pushes from\n"
     "their checkpoints (every STEPS steps, default 5000). --slurm writes a job-array script\n"
     "for a cluster instead of running; --only K runs planned run K alone (what each array task\n"
-    "does); --plan lists the planned runs. Sweep file format: analysis/sweep/sweep_spec.h,\n"
+    "does); --plan lists the planned runs. A progress line every SECONDS (default 5): runs done,\n"
+    "each running push's depth and, once it has moved, its own time left at its rate, and an\n"
+    "ETA. Sweep file format: analysis/sweep/sweep_spec.h,\n"
     "example: inputs/sweeps/v0_bench.sweep. lmp_granpen and inputs/ come from the environment\n"
     "that ./granpen sets (GRANPEN_LMP, GRANPEN_INPUTS) unless given.\n"
     "Exit status: 0 when every run is done (or the script or plan is written), 1 when a run\n"
@@ -53,6 +56,10 @@ granpen::cli::SweepOptions granpen::cli::parse_sweep_command(int argc, char **ar
   app.add_option("--lmp", opt.lmp, "lmp_granpen (default $GRANPEN_LMP)")->check(file_name())->type_name("PATH");
   app.add_option("--inputs", opt.inputs, "the decks' folder (default $GRANPEN_INPUTS)")->check(file_name())->type_name("DIR");
   app.add_flag("--plan", o.plan_only, "list the planned runs");
+  int progress = 5;
+  app.add_option("--progress", progress, "a progress line every SECONDS, 1 to 86400 (default 5)")
+      ->check(whole_number(1, 86400))->type_name("SECONDS");
   cmd.parse(argc, argv, o.help);
+  opt.progress_seconds = progress;
   return o;
 }

@@ -16,8 +16,8 @@ namespace granpen {
 namespace cli {
 
 // granpen sweep SPEC. Checks: spec not empty; runner.jobs, checkpoint, ranks >= 1;
-// runner.only_index -1 (all runs) or >= 0; runner.out_root not empty; slurm empty or a
-// name. Defaults from the environment: GRANPEN_LMP, GRANPEN_INPUTS, GRANPEN_RUNS.
+// runner.only_index -1 (all runs) or >= 0; runner.progress_seconds 1 to 86400;
+// runner.out_root not empty; slurm empty or a name. Defaults from the environment: GRANPEN_LMP, GRANPEN_INPUTS, GRANPEN_RUNS.
 struct SweepOptions : ParsedCommand {
   std::string spec;
   RunnerOptions runner;

@@ -9,6 +9,7 @@
 #include "sweep_spec.h"
 
 #include <chrono>
+#include <cmath>
 #include <map>
 #include <string>
 #include <sys/types.h>
@@ -33,6 +34,8 @@ struct Job {
   Clock::time_point start;
   double wall = 0.0;
   double target_depth = 0.0;
+  double z_seen = NAN;               // a running push's depth when this runner first read it
+  Clock::time_point z_seen_at;       // ... and when (its own rate: push_seconds_left)
   int lock_fd = -1;                  // the run's lock while this runner holds it
 };
 

@@ -46,6 +46,16 @@ std::string format_duration(double s)
   return buf;
 }
 
+double push_seconds_left(double z_then, double z_now, double elapsed, double target_depth)
+{
+  if (!std::isfinite(z_then) || !std::isfinite(z_now) || !std::isfinite(elapsed) || !std::isfinite(target_depth))
+    return NAN;
+  if (!(target_depth > 0.0)) return NAN;    // the deck's own depth: not known here
+  if (z_now >= target_depth) return 0.0;
+  if (!(z_now > z_then) || !(elapsed > 0.0)) return NAN;
+  return (target_depth - z_now) * elapsed / (z_now - z_then);
+}
+
 namespace {
 
 using namespace sweep_run;
@@ -258,31 +268,42 @@ void Pool::report_progress()
 {
   last_report = Clock::now();
   int done = 0, failed = 0, total = (int) order.size();
-  double sum_pour = 0, sum_push = 0;
+  double sum_pour = 0, sum_push = 0, own_left = 0;
   int n_pour = 0, n_push = 0, left_pour = 0, left_push = 0;
   std::string now;
   for (const auto &[s, k] : order) {
-    const Job &j = sweeps[s].jobs[k];
+    Job &j = sweeps[s].jobs[k];
     const bool pour = j.run.kind == PlannedRun::POUR, linked = links.count({s, k}) > 0;
     if (finished(j)) ++done;
     if (j.status == "failed") ++failed;
     if (j.status == "done" && !linked) (pour ? (sum_pour += j.wall, ++n_pour) : (sum_push += j.wall, ++n_push));
-    if ((j.status == "pending" && !linked) || j.status == "running") (pour ? ++left_pour : ++left_push);
+    double own = NAN;    // a running push's own seconds left, from its rate since first seen
     if (j.status == "running") {
       char b[200];
       const std::string id = sweeps[s].label + j.run.id;
       double z = pour ? NAN : last_depth(j.trace);
       const std::string ps = pour ? pour_status(j.log) : "";
-      if (std::isfinite(z)) std::snprintf(b, sizeof(b), " %s z=%.2f", id.c_str(), z);
+      if (std::isfinite(z)) {
+        // a resumed push may first show rows past its checkpoint, which it then writes again
+        if (!std::isfinite(j.z_seen) || z < j.z_seen) j.z_seen = z, j.z_seen_at = Clock::now();
+        own = push_seconds_left(j.z_seen, z, seconds_since(j.z_seen_at), j.target_depth);
+        if (std::isfinite(own))
+          std::snprintf(b, sizeof(b), " %s z=%.2f of %.2f (%s left)", id.c_str(), z, j.target_depth,
+                        format_duration(own).c_str());
+        else std::snprintf(b, sizeof(b), " %s z=%.2f", id.c_str(), z);
+      }
       else if (!ps.empty()) std::snprintf(b, sizeof(b), " %s (%s)", id.c_str(), ps.c_str());
       else std::snprintf(b, sizeof(b), " %s %s", id.c_str(), format_duration(seconds_since(j.start)).c_str());
       now += b;
     }
+    if (std::isfinite(own)) own_left += own;
+    else if ((j.status == "pending" && !linked) || j.status == "running") (pour ? ++left_pour : ++left_push);
   }
-  // ETA from the mean time of the finished runs of each kind
+  // ETA: a running push's own rate where it has one, the mean time of the finished runs of
+  // each kind for the rest
   double eta = NAN;
   if ((n_pour || !left_pour) && (n_push || !left_push))
-    eta = ((n_pour ? sum_pour / n_pour : 0) * left_pour + (n_push ? sum_push / n_push : 0) * left_push) /
+    eta = ((n_pour ? sum_pour / n_pour : 0) * left_pour + (n_push ? sum_push / n_push : 0) * left_push + own_left) /
         std::max(1, opt.jobs);
   std::printf("  [%s] %d/%d done, %d failed; running:%s; ETA %s\n", format_duration(seconds_since(t0)).c_str(), done,
               total, failed, now.c_str(), format_duration(eta).c_str());

@@ -32,6 +32,12 @@ int run_sweep(const SweepSpec &spec, const RunnerOptions &opt);
 // A wall time for progress lines: "45s", "30m07s", "2.5h"; "?" when negative or not finite.
 std::string format_duration(double seconds);
 
+// Seconds left of a push first seen at depth z_then and, `elapsed` seconds later, at z_now
+// (cm), if it goes on at that rate to target_depth: a long push's own ETA, before any run
+// has finished to give a mean. NaN until it has gone deeper, without a target (the deck's
+// default depth) or when an input is not finite; 0 at or past the target.
+double push_seconds_left(double z_then, double z_now, double elapsed, double target_depth);
+
 // A sweep of a pool; beds_from names another sweep (same presets, mu and seeds) in
 // out_root whose beds it reuses (hard links) instead of pouring its own.
 struct SweepTask {

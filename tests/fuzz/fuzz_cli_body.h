@@ -121,6 +121,7 @@ inline void check(const SweepOptions &o)
   GRANPEN_FUZZ_CHECK(!o.spec.empty() && !r.out_root.empty());
   GRANPEN_FUZZ_CHECK(r.jobs >= 1 && r.checkpoint >= 1 && r.ranks >= 1);
   GRANPEN_FUZZ_CHECK(r.only_index == -1 || r.only_index >= 0);
+  GRANPEN_FUZZ_CHECK(r.progress_seconds >= 1 && r.progress_seconds <= 86400);
 }
 inline void check(const FlowOptions &o)
 {

@@ -63,8 +63,11 @@
 // signature no single library effect has, though packing at +0.1 (k down as much, P by 1%)
 // comes within 2 to 3 standard deviations of it in tiny with eight beds a side
 // (docs/gap-validation.md, "2026-11-27").
+// GRANPEN_FAKE_LMP_PUSH_SECONDS S: a push writes its rows over about S seconds of wall time,
+// flushed row by row, as a long LAMMPS push does (the sweep runner's progress lines).
 #include "lmp_command_line.h"
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -72,6 +75,7 @@
 #include <map>
 #include <random>
 #include <string>
+#include <thread>
 
 // The synthetic world's cost, for bench/gap_cost.sh --synthetic only (off unless
 // GRANPEN_FAKE_LMP_WORK is set): a run does a fixed amount of arithmetic, as a LAMMPS run
@@ -195,9 +199,15 @@ int main(int argc, char **argv)
   std::ofstream T(var["trace"]);
   T << "# granpen-trace v1\n# units = cgs\n# v0 = " << v0 << "\n# D = " << num("D", 2.0) << "\n# g = 981\n# d_g = 0.4\n"
     << "# rho_g = " << num("rho_g", 3.0) << "\n# run = " << seed << "\n# source = fake_lmp\nt,z,F\n";
+  const char *pace = std::getenv("GRANPEN_FAKE_LMP_PUSH_SECONDS");
+  const double row_seconds = pace ? std::atof(pace) * v0 * dt / (depth + 0.5) : 0.0;
   for (int i = 0;; ++i) {
     const double t = i * dt, z = -0.5 + v0 * t;
     if (z > depth + 1e-9) break;
+    if (row_seconds > 0) {
+      T.flush();
+      std::this_thread::sleep_for(std::chrono::duration<double>(row_seconds));
+    }
     double F = 0;
     if (z > 0) {
       double b = 1;

@@ -1,4 +1,5 @@
-// Sweep files: parsing, the plan, the resume decision, and hostile input in every field.
+// Sweep files: parsing, the plan, the resume decision, hostile input in every field, and
+// the progress lines' durations and a push's own ETA.
 #include "json_text.h"
 #include "sweep_runner.h"
 #include "sweep_spec.h"
@@ -6,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <regex>
 #include <string>
 
@@ -157,4 +159,21 @@ TEST(FormatDuration, RoundsBeforeSplitting)
   EXPECT_EQ(format_duration(7199.4), "119m59s");
   EXPECT_EQ(format_duration(9000.0), "2.5h");
   EXPECT_EQ(format_duration(-1.0), "?");
+}
+
+// A long push's own ETA: the rate since it was first seen, carried to the target. Exact
+// arithmetic cases (0.1 cm in 600 s, 0.9 cm to go: 5400 s), so any slip in the rate or the
+// distance left fails; and the cases where no rate exists yet give no number, not 0 or inf.
+TEST(PushSecondsLeft, ItsOwnRateToTheTarget)
+{
+  EXPECT_DOUBLE_EQ(push_seconds_left(0.5, 0.6, 600.0, 1.5), 5400.0);
+  EXPECT_DOUBLE_EQ(push_seconds_left(0.0, 0.75, 30.0, 1.5), 30.0);
+  EXPECT_EQ(push_seconds_left(0.5, 1.5, 600.0, 1.5), 0.0);     // at the target
+  EXPECT_EQ(push_seconds_left(0.5, 1.6, 600.0, 1.5), 0.0);     // past it (the last row overshoots)
+  EXPECT_TRUE(std::isnan(push_seconds_left(0.6, 0.6, 600.0, 1.5)));     // not moved yet
+  EXPECT_TRUE(std::isnan(push_seconds_left(0.6, 0.5, 600.0, 1.5)));     // rows written again after a resume
+  EXPECT_TRUE(std::isnan(push_seconds_left(0.5, 0.6, 0.0, 1.5)));       // no time between the readings
+  EXPECT_TRUE(std::isnan(push_seconds_left(0.5, 0.6, 600.0, 0.0)));     // the deck's default depth
+  EXPECT_TRUE(std::isnan(push_seconds_left(NAN, 0.6, 600.0, 1.5)));
+  EXPECT_TRUE(std::isnan(push_seconds_left(0.5, 0.6, INFINITY, 1.5)));
 }
