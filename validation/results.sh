@@ -260,6 +260,13 @@ flow_numbers() {
   local key=$1 dir=$2 fj=$2/flow/flow.json mj=$2/momentum/momentum.json steps
   steps=$(awk '{print $1 " (tip " $2 " to " $3 " cm deep)"}' "$dir/window.txt")
   put "$key.lambda_vz_D = $(lambda_D "$fj")  # granpen flow --steps $steps"
+  # the same fit over each window of R below the face (granpen plot flow's panel (c)): how far
+  # any part of the profile is from the paper's 0.98 D, whatever range a reading fits
+  local pf; pf=$(mktemp -d)
+  "$CLI" plot flow "$dir/flow" --out "$pf" > /dev/null
+  put "$key.lambda_vz_local_D = $("$CLI" get "$pf/flow.json" numbers.profile.local.lambda_over_D_min numbers.profile.local.lambda_over_D_max numbers.profile.local.z_at_max numbers.profile.local.not_fitted |
+    awk -F'\t' '{ printf "%.3g to %.3g (largest in the window centred %.2g cm below the face; windows not fitted: %d)\n", $1, $2, -$3, $4 }')  # granpen plot flow: lambda / D of the weighted exponential fit over each window of R of the profile below the face"
+  rm -rf "$pf"
   put "$key.edge_phi_0 = $(jget "$fj" edge.fit.phi_0) +- $(jget "$fj" edge.fit.phi_0_se)  # phi = phi_0 + b I at the rod edge"
   put "$key.edge_slope = $(jget "$fj" edge.fit.slope) +- $(jget "$fj" edge.fit.slope_se)"
   put "$key.phi_below_far = $(awk -F, 'NR == 2 { printf "%.4g\n", $4 }' "$dir/flow/flow_profile_below.csv")  # phi on the axis below the rod, the bin farthest below the tip (about 4 cm)"

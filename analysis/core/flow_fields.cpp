@@ -217,6 +217,31 @@ ExpFit fit_exponential(const std::vector<double> &z, const std::vector<double> &
   return f;
 }
 
+std::vector<LocalExpFit> local_exponential_fits(const std::vector<double> &z, const std::vector<double> &v,
+                                                const std::vector<double> &se, double width)
+{
+  std::vector<LocalExpFit> out;
+  if (z.size() != v.size() || (!se.empty() && se.size() != v.size()) || !(width > 0.0) || !std::isfinite(width))
+    return out;
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < z.size(); ++i)
+    if (std::isfinite(z[i])) order.push_back(i);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return z[a] < z[b]; });
+  if (order.empty()) return out;
+  const double ztop = z[order.back()], tol = 1e-9 * std::max(1.0, width);    // printed bin centres
+  for (std::size_t a = 0; a < order.size(); ++a) {
+    const double lo = z[order[a]];
+    if (lo + width > ztop + tol) break;
+    std::vector<double> wz, wv, ws;
+    for (std::size_t b = a; b < order.size() && z[order[b]] <= lo + width + tol; ++b) {
+      wz.push_back(z[order[b]]), wv.push_back(v[order[b]]);
+      if (!se.empty()) ws.push_back(se[order[b]]);
+    }
+    out.push_back({lo, lo + width, fit_exponential(wz, wv, ws)});
+  }
+  return out;
+}
+
 EdgeAverage edge_average(const FlowFields &f, double R, double wr, double wz)
 {
   EdgeAverage e;

@@ -24,7 +24,8 @@
      in bins of z - zref: the profile below the rod face (r < D/3, tip frame),
      the near-shaft strip (lab frame, z from the bed surface), the annulus
      r = 2-3 cm of the "Temporal Flows" section (one bin).
-   - fit_exponential: v(z) = A exp(z / lambda) (weighted fit of ln|v|).
+   - fit_exponential: v(z) = A exp(z / lambda) (weighted fit of ln|v|); over windows of
+     the profile, local_exponential_fits.
    - edge_average: the mean phi and I of the bins at the rod's bottom edge.
 ------------------------------------------------------------------------- */
 
@@ -129,6 +130,19 @@ struct ExpFit {
 };
 ExpFit fit_exponential(const std::vector<double> &z, const std::vector<double> &v,
                        const std::vector<double> &se = {});
+
+// ---- the local decay length of a profile: fit_exponential over each window z_i <= z <= z_i +
+// width (cm) that starts at a point and lies within the profile (z_i + width at most the
+// largest z), every window's fit in order of z_i (one that does not hold keeps its note: too
+// few usable points, or no decay there). One exponential gives one lambda in every window; a
+// curved profile shows at what distance from the face it decays slower or faster than a
+// single fit over all of it says.
+struct LocalExpFit {
+  double z_lo = 0.0, z_hi = 0.0;    // the window, z_i to z_i + width
+  ExpFit fit;                       // of its points
+};
+std::vector<LocalExpFit> local_exponential_fits(const std::vector<double> &z, const std::vector<double> &v,
+                                                const std::vector<double> &se, double width);
 
 // ---- the rod's bottom edge: mass-weighted means over the bins whose centres satisfy
 // |r - R| <= wr and |z| <= wz (tip frame).

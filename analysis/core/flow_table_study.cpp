@@ -28,6 +28,7 @@ const char *flow_table_stage_name(FlowTableStage s)
 {
   switch (s) {
     case FlowTableStage::profile: return "profile";
+    case FlowTableStage::local: return "local";
     case FlowTableStage::edge: return "edge";
   }
   return "?";
@@ -52,6 +53,11 @@ FlowTableStudy run_flow_table_study(const FlowTableColumns &c, const FlowTablePr
     if (progress) progress(FlowTableStage::profile);
     s.profile = fit_exponential(c.z, c.vz, c.vz_se);
     s.profile_done = true;
+    if (c.local_width > 0.0) {
+      if (progress) progress(FlowTableStage::local);
+      s.local = local_exponential_fits(c.z, c.vz, c.vz_se, c.local_width);
+      s.local_done = true;
+    }
   }
   if (c.has_edge) {
     if (progress) progress(FlowTableStage::edge);

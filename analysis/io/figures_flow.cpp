@@ -258,7 +258,57 @@ void tell(const FlowFitTable &t, Run &run)
   run.problems.insert(run.problems.end(), t.problems.begin(), t.problems.end());
 }
 
-void flow_profile(const FlowFitTables &tables, const ExpFit &fit, Run &run)
+// panel (c) of the profile figure and its JSON: the local decay length lambda / D of each
+// window of the profile (flow table study, stage 2), against the window's middle, beside the
+// single fit's and the paper's 0.98 +- 0.15
+SeriesPanel local_panel(const std::vector<LocalExpFit> &local, const ExpFit &fit, double D, double width, Json &out)
+{
+  SeriesPanel c;
+  c.title = "(c) local decay length, windows of " + fmt("%.2g", width) + " cm";
+  c.xlabel = "z − z_{tip} (cm; the window's middle)";
+  c.ylabel = "λ / D";
+  c.key = "top left Left reverse";
+  PlotHBand paper;
+  paper.lo = 0.98 - 0.15, paper.hi = 0.98 + 0.15, paper.title = "paper: 0.98 ± 0.15";
+  c.hbands.push_back(paper);
+  PlotSeries pts;
+  pts.style = "points", pts.title = "λ / D of each window ± standard error", pts.colour = plot_colour(0);
+  Json windows = Json::array();
+  double lo = INFINITY, hi = -INFINITY, at_hi = NAN;
+  int not_decaying = 0;
+  for (const LocalExpFit &w : local) {
+    Json j = {{"z_lo", num("%.6g", w.z_lo)}, {"z_hi", num("%.6g", w.z_hi)}, {"ok", w.fit.ok}};
+    if (w.fit.ok) {
+      const double r = w.fit.lambda / D;
+      j["lambda"] = num("%.6g", w.fit.lambda), j["lambda_se"] = num("%.6g", w.fit.lambda_se);
+      j["lambda_over_D"] = num("%.6g", r), j["n"] = w.fit.n;
+      pts.x.push_back(0.5 * (w.z_lo + w.z_hi)), pts.y.push_back(r), pts.y_err.push_back(w.fit.lambda_se / D);
+      lo = std::min(lo, r);
+      if (r > hi) hi = r, at_hi = 0.5 * (w.z_lo + w.z_hi);
+    } else {
+      j["note"] = w.fit.note;
+      ++not_decaying;
+    }
+    windows.push_back(j);
+  }
+  c.series.push_back(pts);
+  if (fit.ok) {
+    PlotGuide all;
+    all.expression = fmt("%.6g", fit.lambda / D), all.title = "the single fit: " + fmt("%.2f", fit.lambda / D);
+    c.guides.push_back(all);
+  }
+  c.ymin = 0.0;
+  c.ymax = std::max(1.3, std::isfinite(hi) ? 1.15 * hi : 0.0);
+  if (!local.empty())    // the z axis of panels (a) and (b), whole cm
+    c.xmin = std::floor(local.front().z_lo), c.xmax = std::ceil(local.back().z_hi);
+  out = {{"width", num("%.6g", width)}, {"windows", windows}, {"not_fitted", not_decaying}};
+  if (!pts.x.empty())
+    out["lambda_over_D_min"] = num("%.6g", lo), out["lambda_over_D_max"] = num("%.6g", hi),
+    out["z_at_max"] = num("%.6g", at_hi);
+  return c;
+}
+
+void flow_profile(const FlowFitTables &tables, const ExpFit &fit, const std::vector<LocalExpFit> &local, Run &run)
 {
   tell(tables.profile, run);
   if (!tables.profile.read) return;
@@ -308,11 +358,18 @@ void flow_profile(const FlowFitTables &tables, const ExpFit &fit, Run &run)
     run.notes.push_back(path + ": no exponential fit: " + fit.note);
     title += " (no exponential fit: " + fit.note + ")";
   }
+  std::vector<SeriesPanel> panels = {a, b};
+  if (tables.columns.local_width > 0.0) {
+    Json lj;
+    panels.push_back(local_panel(local, fit, D, tables.columns.local_width, lj));
+    profile["local"] = lj;
+  }
   run.make_series("flow_profile",
                   title,
                   "granpen plot flow: v_z and phi below the rod face (" + path +
-                  "), |v_z| on a log axis with the weighted\nexponential fit of the library (fit_exponential, as granpen flow).",
-                  1300, 560, {a, b});
+                  "), |v_z| on a log axis with the weighted\nexponential fit of the library (fit_exponential, as granpen flow)" +
+                      (panels.size() > 2 ? "; (c) the same fit over each window of D/2 (local_exponential_fits)." : "."),
+                  panels.size() > 2 ? 1900 : 1300, 560, panels);
   run.numbers["profile"] = profile;
 }
 
@@ -636,6 +693,7 @@ FlowFitTables read_flow_fit_tables(const std::string &dir, const Options &o)
     out.profile.read = c.has_profile = true;
     out.profile.path = t.path;
     out.profile.D = rod_diameter(dir, t, said);
+    c.local_width = 0.5 * out.profile.D;    // the local decay length over windows of R
     for (double &s : c.vz_se)    // an unknown standard error: drawn and weighted as 0
       if (!std::isfinite(s)) s = 0.0;
   }
@@ -655,7 +713,7 @@ void plot_flow(const std::vector<std::string> &inputs, const FlowFitTables &t, c
   if (!folder_ok(inputs, run)) return;
   const std::string &dir = inputs[0];
   flow_heatmaps(dir, run);
-  flow_profile(t, st.profile, run);
+  flow_profile(t, st.profile, st.local, run);
   flow_phi_I(t, st.edge, run);
   flow_strip(dir, run);
   flow_annulus(dir, run);

@@ -26,7 +26,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 
-KERNELS='fit_trace|fit_ensemble|fit_exponential|linear_fit|linear_fit_origin|dominant_wavelength|ensemble_mean|average_ensembles|collapse|collapse_ensembles|peak_law_of_means|ensemble_depth_term|calibration_table|run_collapse_study|collapse_depth_terms|collapse_ensemble_means|peaks_of_traces|peaks_of_ensembles|run_fit_study|fit_study_trace|fit_ensemble_runs|run_flow_table_study|fit_edge_line|run_calibration_study|fit_calibration_push|compare_drag'
+KERNELS='fit_trace|fit_ensemble|fit_exponential|linear_fit|linear_fit_origin|dominant_wavelength|ensemble_mean|average_ensembles|collapse|collapse_ensembles|peak_law_of_means|ensemble_depth_term|calibration_table|run_collapse_study|collapse_depth_terms|collapse_ensemble_means|peaks_of_traces|peaks_of_ensembles|run_fit_study|fit_study_trace|fit_ensemble_runs|run_flow_table_study|fit_edge_line|local_exponential_fits|run_calibration_study|fit_calibration_push|compare_drag'
 # a call: the name (not part of a longer one, nor a member) and its opening parenthesis
 CALL="(^|[^A-Za-z0-9_.>])($KERNELS) *\\("
 

@@ -131,7 +131,7 @@ for b in 8 16 20; do
   done
 done
 same bench_box16.peak_over_box8 "1 +- 0 n = 10"
-for k in lambda_vz_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove M_move M_slow; do
+for k in lambda_vz_D lambda_vz_local_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove M_move M_slow; do
   same "bench_box20.v50.$k" "$(val "mid.$k")"
 done
 # alpha against D in the 20 cm box: the bench's own lines for D = 1 and 2 (the same traces,
@@ -196,7 +196,7 @@ for k in peak_exponent peak_exponent_ensemble peak_exponent_from_2vc peak_inerti
   same "dg10_box20_v80to200.$k" "$(val "dg10_v80to200.$k")"
 done
 grep -q '^dg10_v80to200.peak_exponent = .*# granpen collapse, 9 traces' "$N" || fail "the fast speeds' peak law is not of 9 traces"
-for k in lambda_vz_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove M_move M_slow; do
+for k in lambda_vz_D lambda_vz_local_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove M_move M_slow; do
   same "dg10_box20.v40.$k" "$(val "mid.$k")"
 done
 for D in 1 2 3; do
@@ -222,7 +222,7 @@ same dg10_box20.alpha_D1_over_D2_zD1to2 "$(awk -v a="$(fit_col "$d1" alpha0 --zm
 grep -q "dg10_box20_shaft: the pushes of D = 1.0 2.0 cm" "$OUT/res.log" || fail "no note of the shaft's missing pushes"
 # the flow rows of each dg10 speed: the mid push's, from the same tables
 for v in 40 100 200; do
-  for k in lambda_vz_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove M_move M_slow; do
+  for k in lambda_vz_D lambda_vz_local_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove M_move M_slow; do
     same "dg10.v$v.$k" "$(val "mid.$k")"
   done
 done

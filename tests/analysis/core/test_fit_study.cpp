@@ -172,6 +172,18 @@ TEST(FlowTableStudy, ProfileAndEdgeKnownAnswer)
   const EdgeLine one = fit_edge_line({0.1, 0.1, 0.1 + 1e-12}, {0.5, 0.4, 0.45});
   EXPECT_FALSE(one.ok);
   EXPECT_EQ(one.I.size(), 3u);
+  // stage 2 with windows of 1 cm: one exponential, one lambda in every window (4 points each)
+  c.local_width = 0.9;
+  seen.clear();
+  const FlowTableStudy l = run_flow_table_study(c, [&](FlowTableStage x) { seen.push_back(flow_table_stage_name(x)); });
+  EXPECT_EQ(seen, (std::vector<std::string>{"profile", "local", "edge"}));
+  ASSERT_TRUE(l.local_done);
+  ASSERT_EQ(l.local.size(), 9u);    // starts -4.0 ... -1.6: z_lo + 0.9 <= -0.7
+  for (const auto &w : l.local) {
+    ASSERT_TRUE(w.fit.ok) << w.fit.note;
+    EXPECT_NEAR(w.fit.lambda, lambda, 1e-9 * lambda);
+  }
+  EXPECT_FALSE(s.local_done);    // width 0: not run
   // a table not read: its stage does not run
   FlowTableColumns none;
   const FlowTableStudy n = run_flow_table_study(none);

@@ -286,6 +286,56 @@ TEST(FlowProfile, ExponentialProfileBelowTheRodRecoversLambda)
   EXPECT_FALSE(fit_exponential({-2, -1, 0}, {3, 2, 1}).ok);
 }
 
+// The local decay length: a profile of two exponentials, e-folding every 1.2 cm within 1 cm
+// of the face and every 0.6 cm beyond (continuous at z = -1), sampled every 0.2 cm. Exact
+// points: each window wholly on one side gives that side's lambda to rounding, a window across
+// the kink lies between the two, windows are those of the points that fit whole, and a window
+// with a rising part keeps its note instead of being dropped.
+TEST(FlowProfile, LocalFitsFollowTheProfilesOwnDecay)
+{
+  const double near = 1.2, far = 0.6, A = 40.0;
+  std::vector<double> z, v, se;
+  for (int k = 0; k < 25; ++k) {    // z = -4.9 ... -0.1, given deepest last (the fits sort)
+    const double zz = -0.1 - 0.2 * k;
+    z.push_back(zz);
+    v.push_back(-A * (zz > -1.0 ? std::exp(zz / near) : std::exp(-1.0 / near) * std::exp((zz + 1.0) / far)));
+    se.push_back(0.0);
+  }
+  const double width = 0.8;    // 5 points a window
+  const auto w = local_exponential_fits(z, v, se, width);
+  ASSERT_EQ(w.size(), 21u);    // starts z = -4.9 ... -0.9: z_lo + 0.8 <= -0.1
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    ASSERT_TRUE(w[i].fit.ok) << w[i].fit.note;
+    EXPECT_NEAR(w[i].z_hi - w[i].z_lo, width, 1e-12);
+    EXPECT_EQ(w[i].fit.n, 5u);
+    if (i > 0) EXPECT_GT(w[i].z_lo, w[i - 1].z_lo);
+    if (w[i].z_hi <= -1.0 + 1e-9) EXPECT_NEAR(w[i].fit.lambda, far, 1e-9 * far) << w[i].z_lo;
+    else if (w[i].z_lo >= -1.0 - 1e-9) EXPECT_NEAR(w[i].fit.lambda, near, 1e-9 * near) << w[i].z_lo;
+    else {
+      EXPECT_GT(w[i].fit.lambda, far) << w[i].z_lo;
+      EXPECT_LT(w[i].fit.lambda, near) << w[i].z_lo;
+    }
+  }
+  EXPECT_NEAR(w.front().z_lo, -4.9, 1e-12);
+  EXPECT_NEAR(w.back().z_lo, -0.9, 1e-12);
+  // the single fit over all of it is one number between the two
+  const ExpFit all = fit_exponential(z, v, se);
+  ASSERT_TRUE(all.ok);
+  EXPECT_GT(all.lambda, far);
+  EXPECT_LT(all.lambda, near);
+  // a rise near the face: its windows stay, not fitted, with the fit's note
+  std::vector<double> up = v;
+  up[2] = -20.0, up[1] = -10.0, up[0] = -5.0;    // z = -0.5, -0.3, -0.1: |v| falls towards the face
+  const auto u = local_exponential_fits(z, up, se, 0.4);
+  ASSERT_FALSE(u.empty());
+  EXPECT_FALSE(u.back().fit.ok);    // z -0.5 to -0.1: rising towards the face
+  EXPECT_NE(u.back().fit.note.find("do not decay"), std::string::npos) << u.back().fit.note;
+  // no window: a width wider than the profile, or none at all
+  EXPECT_TRUE(local_exponential_fits(z, v, se, 5.0).empty());
+  EXPECT_TRUE(local_exponential_fits(z, v, se, 0.0).empty());
+  EXPECT_TRUE(local_exponential_fits(z, v, {1.0}, 0.8).empty());    // se of another length
+}
+
 TEST(FlowProfile, SliceMeansAndStandardError)
 {
   // two grains of equal mass in one bin with v_z 1 and 3: mean 2, var 1, se = 1
