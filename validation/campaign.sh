@@ -143,9 +143,12 @@ commit() {    # MESSAGE
   git -C "$ROOT" add "$DATA" && git -C "$ROOT" commit -q -m "$CAMPAIGN: $1" -- "$DATA" && echo "campaign.sh: committed: $1"
 }
 budget_left() { [ "$UNITS" -lt 0 ] || [ "$ran" -lt "$UNITS" ]; }
-runner() {    # SWEEP_FILE K: the sweep runner runs planned run K alone
+# SWEEP_FILE K: the sweep runner runs planned run K alone; a progress line a minute (a unit
+# is hours: the push's depth and its own time left, not a line every 5 s in the log)
+runner() {
   local mpi=(); [ "$RANKS" -gt 1 ] && mpi=(--mpirun mpirun --ranks "$RANKS")
-  nice -n 19 "$CLI" sweep "$1" --jobs 1 --only "$2" --out "$OUT" --inputs "$INPUTS" --lmp "$LMP" --checkpoint "$CHECKPOINT" "${mpi[@]}"
+  nice -n 19 "$CLI" sweep "$1" --jobs 1 --only "$2" --out "$OUT" --inputs "$INPUTS" --lmp "$LMP" --checkpoint "$CHECKPOINT" \
+    --progress 60 "${mpi[@]}"
 }
 # a push (the runner resumes it from its checkpoint when one is there); when LAMMPS refuses
 # the checkpoint it was resumed from (a restart this build cannot read: the log's first ERROR
