@@ -99,6 +99,9 @@ parting_ms() { # NARROW WIDE JSON: t_part in ms, or "none" when they do not part
   [ "$(jget "$3" parted)" = true ] && jget "$3" t_part_ms || echo none
 }
 
+# each number on stdin over their mean
+over_mean() { awk '{ p[NR] = $1; s += $1 } END { for (i = 1; i <= NR; i++) print p[i] / (s / NR) }'; }
+
 # the mean drag of a granpen trace (t,z,F rows) over 0 < z <= ZMAX: mean_drag_below TRACE ZMAX
 mean_drag_below() { awk -F, -v zmax="$2" '!/^#/ && $1 != "t" && $2 > 0 && $2 <= zmax { s += $3; n++ } END { if (n) printf "%.10g\n", s / n }' "$1"; }
 
@@ -606,14 +609,14 @@ dg10_box20() {
 # bed's grains under the rod), beside how far the 10 cm box's own three beds spread at that
 # speed: a box effect is a ratio outside that spread.
 dg10_box20_slow() { # PEAK_DIR OUT
-  local d=$1 o=$2 v s f wide=() narrow=() t m
+  local d=$1 o=$2 v s f wide=() t m
   mkdir -p "$o"
   for v in 40 20; do
-    wide=() narrow=() t="" m=""
+    wide=() t="" m=""
     for s in 1 2 3; do
       f=dg10_mu0.3_s${s}_v${v}_g981_D2.0.csv
       [ -f "$d/$f" ] || continue
-      wide+=("$d/$f") narrow+=("$DG10/dg10_peak/$f")
+      wide+=("$d/$f")
       t="$t $(parting_ms "$DG10/dg10_peak/$f" "$d/$f" "$o/parting_s${s}_v$v.json")"
       m="$m $(awk -v a="$(mean_drag_below "$d/$f" 0.7)" -v b="$(mean_drag_below "$DG10/dg10_peak/$f" 0.7)" 'BEGIN { print a / b }')"
     done
@@ -622,9 +625,9 @@ dg10_box20_slow() { # PEAK_DIR OUT
     "$CLI" collapse "${wide[@]}" --alpha 35 --tbin 0.25 --json "$o/collapse_v$v.json" > /dev/null
     "$CLI" collapse "$DG10/dg10_peak"/dg10_mu0.3_s[123]_v${v}_g981_D2.0.csv --alpha 35 --tbin 0.25 --json "$o/collapse_box10_v$v.json" > /dev/null
     put "dg10_box20.peak_over_box10.v$v = $(peak_pairs "$o/collapse_v$v.json" "$o/collapse_box10_v$v.json" | stats)  # granpen collapse: the 20 cm push's peak (largest force below 0.7 R) / the 10 cm push's of the same bed, the beds committed so far"
-    put "dg10.peak_over_bed_mean.v$v = $(trace_peaks "$o/collapse_box10_v$v.json" | awk '{ p[NR] = $3; s += $3 } END { for (i = 1; i <= NR; i++) print p[i] / (s / NR) }' | stats)  # the 10 cm box's three beds' peaks over their mean at this speed: the spread a box effect must leave"
+    put "dg10.peak_over_bed_mean.v$v = $(trace_peaks "$o/collapse_box10_v$v.json" | awk '{ print $3 }' | over_mean | stats)  # the 10 cm box's three beds' peaks over their mean at this speed: the spread a box effect must leave"
     put "dg10_box20.mean_below_07R_over_box10.v$v = $(echo $m | tr ' ' '\n' | stats)  # the mean drag over 0 < z <= 0.7 cm (0.7 R, the peak's window), the 20 cm push over its 10 cm twin: the box in the force itself, not in its largest sample"
-    put "dg10.mean_below_07R_over_bed_mean.v$v = $(for s in 1 2 3; do mean_drag_below "$DG10/dg10_peak/dg10_mu0.3_s${s}_v${v}_g981_D2.0.csv" 0.7; done | awk '{ p[NR] = $1; s += $1 } END { for (i = 1; i <= NR; i++) print p[i] / (s / NR) }' | stats)  # ... the 10 cm box's three beds' means over their mean: the spread a box effect must leave"
+    put "dg10.mean_below_07R_over_bed_mean.v$v = $(for s in 1 2 3; do mean_drag_below "$DG10/dg10_peak/dg10_mu0.3_s${s}_v${v}_g981_D2.0.csv" 0.7; done | over_mean | stats)  # ... the 10 cm box's three beds' means over their mean: the spread a box effect must leave"
     put "dg10_box10_20.t_part_ms.v$v = $(echo $t | tr ' ' '\n' | grep -v none | stats)  # granpen parting: when the 10 cm box's push parts from the 20 cm box's on the same grains, ms after contact, the beds committed so far"
   done
 }
