@@ -44,7 +44,7 @@ struct FlowTableStudy {
   ExpFit profile;
   bool local_done = false;      // stage 2 ran (has_profile, local_width > 0)
   std::vector<LocalExpFit> local;
-  bool edge_done = false;       // stage 2 ran (has_edge)
+  bool edge_done = false;       // stage 3 ran (has_edge)
   EdgeLine edge;
 };
 

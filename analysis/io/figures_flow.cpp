@@ -275,7 +275,7 @@ SeriesPanel local_panel(const std::vector<LocalExpFit> &local, const ExpFit &fit
   pts.style = "points", pts.title = "λ / D of each window ± standard error", pts.colour = plot_colour(0);
   Json windows = Json::array();
   double lo = INFINITY, hi = -INFINITY, at_hi = NAN;
-  int not_decaying = 0;
+  int not_fitted = 0;
   for (const LocalExpFit &w : local) {
     Json j = {{"z_lo", num("%.6g", w.z_lo)}, {"z_hi", num("%.6g", w.z_hi)}, {"ok", w.fit.ok}};
     if (w.fit.ok) {
@@ -287,7 +287,7 @@ SeriesPanel local_panel(const std::vector<LocalExpFit> &local, const ExpFit &fit
       if (r > hi) hi = r, at_hi = 0.5 * (w.z_lo + w.z_hi);
     } else {
       j["note"] = w.fit.note;
-      ++not_decaying;
+      ++not_fitted;
     }
     windows.push_back(j);
   }
@@ -301,7 +301,7 @@ SeriesPanel local_panel(const std::vector<LocalExpFit> &local, const ExpFit &fit
   c.ymax = std::max(1.3, std::isfinite(hi) ? 1.15 * hi : 0.0);
   if (!local.empty())    // the z axis of panels (a) and (b), whole cm
     c.xmin = std::floor(local.front().z_lo), c.xmax = std::ceil(local.back().z_hi);
-  out = {{"width", num("%.6g", width)}, {"windows", windows}, {"not_fitted", not_decaying}};
+  out = {{"width", num("%.6g", width)}, {"windows", windows}, {"not_fitted", not_fitted}};
   if (!pts.x.empty())
     out["lambda_over_D_min"] = num("%.6g", lo), out["lambda_over_D_max"] = num("%.6g", hi),
     out["z_at_max"] = num("%.6g", at_hi);
