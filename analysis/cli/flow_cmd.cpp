@@ -9,6 +9,7 @@
 #include "flow_study.h"
 #include "flow_tables.h"
 #include "json_text.h"
+#include "paper_values.h"
 #include "rod_frame.h"
 #include "subcommands.h"
 #include "text_util.h"
@@ -157,13 +158,14 @@ void print_summary(const FlowStudyParams &p, const FlowSummary &s, const std::ve
               how.z_s_source.c_str(), p.v0, how.v0_source.c_str(), p.g, how.g_source.c_str());
   std::printf("  fields: %d x %d bins (dr %.4g, dz %.4g; z %g..%g from the tip), phi: %s, stress: %s\n", grid.nr, grid.nz,
               grid.dr, grid.dz, grid.zlo, grid.zhi, how.voronoi.c_str(), how.stress.c_str());
-  std::printf("  below the rod (r < %.3g): lambda_vz = %s (paper: 0.98 D +- 0.15)\n", p.profile_radius,
-              fit_text(s.lambda_vz, p.D).c_str());
+  std::printf("  below the rod (r < %.3g): lambda_vz = %s (paper: %.2f D +- %.2f)\n", p.profile_radius,
+              fit_text(s.lambda_vz, p.D).c_str(), paper::lambda_vz_over_D, paper::lambda_vz_over_D_error);
   std::printf("  below the rod: lambda_gammadot = %s\n", fit_text(s.lambda_gammadot, p.D).c_str());
   const LinearFit &e = s.edge_fit;
   if (s.edge_ok)
-    std::printf("  rod edge: phi = %.4g +- %.2g + (%.4g +- %.2g) I over %zu frames (paper: 0.57 - 0.35 I)\n", e.a,
-                e.se_a, e.b, e.se_b, e.n);
+    std::printf("  rod edge: phi = %.4g +- %.2g + (%.4g +- %.2g) I over %zu frames (paper: %.2f %c %.2f I)\n", e.a,
+                e.se_a, e.b, e.se_b, e.n, paper::edge_phi_0, paper::edge_phi_slope < 0 ? '-' : '+',
+                std::fabs(paper::edge_phi_slope));
   else
     std::printf("  rod edge: %zu frames, phi(I) fit undefined (%s)\n", s.edge_I.size(), s.edge_note.c_str());
   std::printf("  strip %g-%g from the shaft: %zu bins; annulus r %g-%g: %zu frames\n", p.strip1, p.strip2,

@@ -10,6 +10,7 @@
 #include "json_path.h"
 #include "json_text.h"
 #include "momentum_classes.h"
+#include "paper_values.h"
 #include "errors.h"
 
 #include <algorithm>
@@ -258,9 +259,21 @@ void tell(const FlowFitTable &t, Run &run)
   run.problems.insert(run.problems.end(), t.problems.begin(), t.problems.end());
 }
 
+// the paper's lambda_vz / D as "0.98 ± 0.15", the unit after each number
+std::string paper_lambda_text(const std::string &unit)
+{
+  return fmt("%.2f", paper::lambda_vz_over_D) + unit + " ± " + fmt("%.2f", paper::lambda_vz_over_D_error);
+}
+
+// "φ = a − b I" with FORMAT for the two numbers
+std::string phi_of_I_text(double a, double b, const char *format)
+{
+  return "φ = " + fmt(format, a) + (b < 0 ? " − " : " + ") + fmt(format, std::fabs(b)) + " I";
+}
+
 // panel (c) of the profile figure and its JSON: the local decay length lambda / D of each
 // window of the profile (flow table study, stage 2), against the window's middle, beside the
-// single fit's and the paper's 0.98 +- 0.15
+// single fit's and the paper's band (paper_values.h)
 SeriesPanel local_panel(const std::vector<LocalExpFit> &local, const ExpFit &fit, double D, double width, Json &out)
 {
   SeriesPanel c;
@@ -268,9 +281,11 @@ SeriesPanel local_panel(const std::vector<LocalExpFit> &local, const ExpFit &fit
   c.xlabel = "z − z_{tip} (cm; the window's middle)";
   c.ylabel = "λ / D";
   c.key = "top left Left reverse";
-  PlotHBand paper;
-  paper.lo = 0.98 - 0.15, paper.hi = 0.98 + 0.15, paper.title = "paper: 0.98 ± 0.15";
-  c.hbands.push_back(paper);
+  PlotHBand papers;
+  papers.lo = paper::lambda_vz_over_D - paper::lambda_vz_over_D_error;
+  papers.hi = paper::lambda_vz_over_D + paper::lambda_vz_over_D_error;
+  papers.title = "paper: " + paper_lambda_text("");
+  c.hbands.push_back(papers);
   PlotSeries pts;
   pts.style = "points", pts.title = "λ / D of each window ± standard error", pts.colour = plot_colour(0);
   Json windows = Json::array();
@@ -351,7 +366,7 @@ void flow_profile(const FlowFitTables &tables, const ExpFit &fit, const std::vec
       line.x.push_back(x), line.y.push_back(std::fabs(fit.A) * std::exp(x / fit.lambda));
     }
     a.series.push_back(line);
-    title += ": λ_{vz} = " + fmt("%.3g", fit.lambda) + " cm = " + fmt("%.2f", fit.lambda / D) + " D (paper: 0.98 D ± 0.15)";
+    title += ": λ_{vz} = " + fmt("%.3g", fit.lambda) + " cm = " + fmt("%.2f", fit.lambda / D) + " D (paper: " + paper_lambda_text(" D") + ")";
     profile = {{"fit_ok", true}, {"A", num("%.6g", fit.A)}, {"lambda", num("%.6g", fit.lambda)},
                {"lambda_se", num("%.6g", fit.lambda_se)}, {"lambda_over_D", num("%.6g", fit.lambda / D)}, {"n", fit.n}};
   } else {
@@ -389,18 +404,18 @@ void flow_phi_I(const FlowFitTables &tables, const EdgeLine &e, Run &run)
   const std::vector<double> &x = e.I;
   s.x = e.I, s.y = e.phi;
   p.series.push_back(s);
-  PlotGuide paper;
-  paper.expression = "0.57 - 0.35*x";
-  paper.title = "paper: φ = 0.57 − 0.35 I";
-  paper.colour = "#d62728";
-  p.guides.push_back(paper);
+  PlotGuide papers;
+  papers.expression = gp_number(paper::edge_phi_0) + " + " + gp_number(paper::edge_phi_slope) + "*x";
+  papers.title = "paper: " + phi_of_I_text(paper::edge_phi_0, paper::edge_phi_slope, "%.2f");
+  papers.colour = "#d62728";
+  p.guides.push_back(papers);
   Json edge = {{"n", x.size()}};
   std::string title = "Packing fraction against inertial number at the rod edge";
   if (e.ok) {
     const LinearFit &lf = e.fit;
     PlotGuide g;
     g.expression = gp_number(lf.a) + " + " + gp_number(lf.b) + "*x";
-    g.title = "fit: φ = " + fmt("%.3f", lf.a) + (lf.b < 0 ? " − " : " + ") + fmt("%.3f", std::fabs(lf.b)) + " I";
+    g.title = "fit: " + phi_of_I_text(lf.a, lf.b, "%.3f");
     g.colour = "#000000", g.dash = 1;
     p.guides.push_back(g);
     edge.update({{"fit_ok", true}, {"intercept", num("%.6g", lf.a)}, {"intercept_se", num("%.6g", lf.se_a)},
@@ -457,14 +472,15 @@ void flow_surface(const std::string &dir, Run &run)
   p.ylabel = "v_z of the surface grains (cm/s; > 0 up)";
   p.key = "bottom left";
   // one label when the two lines nearly coincide (they would overprint)
-  const bool near = std::isfinite(cross) && std::abs(cross - 1.0) < 0.25;
-  PlotVLine paper;
-  paper.x = 1, paper.label = near ? "" : "t̃ = 1 (paper)";
-  p.vlines.push_back(paper);
+  const double t_paper = paper::surface_crossing_t_tilde;
+  const bool near = std::isfinite(cross) && std::abs(cross - t_paper) < 0.25;
+  PlotVLine papers;
+  papers.x = t_paper, papers.label = near ? "" : "t̃ = " + fmt("%g", t_paper) + " (paper)";
+  p.vlines.push_back(papers);
   if (std::isfinite(cross)) {
     PlotVLine c;
     c.x = cross, c.colour = "#b03030", c.dash = 2;
-    c.label = "  up → down at t̃ = " + fmt("%.2f", cross) + (near ? " (paper: 1)" : "");
+    c.label = "  up → down at t̃ = " + fmt("%.2f", cross) + (near ? " (paper: " + fmt("%g", t_paper) + ")" : "");
     p.vlines.push_back(c);
   }
   PlotGuide zero;

@@ -2,6 +2,7 @@
 #include "flow_tables.h"
 
 #include "json_text.h"
+#include "paper_values.h"
 
 #include <cmath>
 #include <sstream>
@@ -106,14 +107,14 @@ Json flow_json(const FlowStudyParams &p, const FlowSummary &s, const std::vector
   j["parameters"] = parameters_json(p, how);
   j["fields"] = {{"phi", phi_vor ? "voronoi" : "none (0)"}, {"have_stress", s.fields.have_stress}, {"bins", p.grid.bins()}};
   j["profile_below"] = {{"phi", s.below_voronoi ? "voronoi" : "centre"}, {"lambda_vz", fit_json(s.lambda_vz, p.D)},
-                        {"lambda_gammadot", fit_json(s.lambda_gammadot, p.D)}, {"paper_lambda_vz_D", 0.98}};
+                        {"lambda_gammadot", fit_json(s.lambda_gammadot, p.D)}, {"paper_lambda_vz_D", paper::lambda_vz_over_D}};
   j["edge"] = {{"points", s.edge_I.size()}, {"phi", phi_vor ? "voronoi" : "centre"},
                {"fit", {{"ok", s.edge_ok}, {"phi_0", js(e.a)}, {"phi_0_se", js(e.se_a)}, {"slope", js(e.b)},
                         {"slope_se", js(e.se_b)}, {"rms", js(e.rms)}, {"n", e.n}, {"note", s.edge_note}}},
-               {"paper", {{"phi_0", 0.57}, {"slope", -0.35}}}};
+               {"paper", {{"phi_0", paper::edge_phi_0}, {"slope", paper::edge_phi_slope}}}};
   j["strip"] = {{"bins", s.strip.size()}, {"z", "height above the bed surface"}};
   j["surface"] = {{"frames", s.surface_t.size()}, {"crossing_t_tilde", js_or_null(s.surface_crossing)},
-                  {"paper_t_tilde", 1}};
+                  {"paper_t_tilde", paper::surface_crossing_t_tilde}};
   j["annulus"] = {{"frames", s.annulus_frames}, {"phi", phi_vor ? "voronoi" : "centre"}};
   j["frames"] = Json::array();
   for (const auto &r : frames) j["frames"].push_back(frame_json(r, phi_vor));

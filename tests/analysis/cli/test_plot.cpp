@@ -376,6 +376,13 @@ TEST(PlotCli, FlowAndMomentumFitsAreTheLibrarys)
   EXPECT_NEAR(json_value(json, "slope"), edge.b, 1e-5);
   EXPECT_NEAR(json_value(json, "intercept"), edge.a, 1e-5);
   EXPECT_NEAR(json_value(json, "slope"), -0.35, 0.02);
+  // the paper's values beside the fits (core/paper_values.h), as the paper states them
+  // (../shared/papers/README.md, "flow below rod" and "rheology")
+  const std::string profile_gp = slurp(out / "flow_profile.gp"), phi_gp = slurp(out / "flow_phi_I.gp");
+  EXPECT_NE(profile_gp.find("paper: 0.98 ± 0.15"), std::string::npos) << "panel (c)'s band";
+  EXPECT_NE(profile_gp.find("(paper: 0.98 D ± 0.15)"), std::string::npos) << "the fit's title";
+  EXPECT_NE(phi_gp.find("paper: φ = 0.57 − 0.35 I"), std::string::npos);
+  EXPECT_NE(phi_gp.find("0.57 + -0.35*x"), std::string::npos) << "the paper's line drawn";
   // the heatmap grid: 8 x 12 bins, the rod's bins empty (NaN)
   const auto b = block(out / "flow_heatmaps.dat", 0);
   ASSERT_EQ(b.size(), 96u);
