@@ -804,8 +804,13 @@ row() {
     "d phi / d I at r = R") label="dφ/dI at r = R (90 and 100 cm/s)" ;;
     "phi at the face / far below") label="φ at the face / far below (90 and 100 cm/s)" ;;
     "drag / (mu g M)") label="drag / (μ g M) (90 and 100 cm/s)" ;;
+    # the box figure's rows (no commas: CSV)
+    "lambda_vz / D (bench at 50 and dg10 at 40 cm/s)") label="λ_{vz} / D (bench at 50 and dg10 at 40 cm/s)" ;;
+    "drag / (mu g M) (bench at 50 and dg10 at 40 cm/s)") label="drag / (μ g M) (bench at 50 and dg10 at 40 cm/s)" ;;
+    "alpha(D = 1 cm) / alpha(D = 2 cm) (bench at 28 and dg10 at 100 cm/s)") label="α(D = 1 cm) / α(D = 2 cm) (bench at 28 and dg10 at 100 cm/s)" ;;
+    "... the same with the shaft frictionless") label="α(D = 1 cm) / α(D = 2 cm) with the shaft frictionless" ;;
   esac
-  printf '%s,%s,%s,%s,%s,%s,%s,%s\n' "$1" "$2" "$3" "$4" "$5" "$6" "$unit" "$label"
+  printf '%s,%s,%s,%s,%s,%s,%s,%s%s\n' "$1" "$2" "$3" "$4" "$5" "$6" "$unit" "$label" "${ROW_SERIES+,$ROW_SERIES}"
 }
 # KEY's value and error as a row; empty when not measured; SCALE divides the error
 row_of() { # QUANTITY RATIO KEY PAPER PAPER_ERROR [ERROR_DIVISOR]
@@ -849,22 +854,44 @@ ratio_of() { # QUANTITY RATIO KEY1 KEY2 PAPER PAPER_ERROR
 "$CLI" plot scaling "$OUT/scaling.csv" --out "$OUT/scaling" > /dev/null
 
 # ---------------------------------------------------------------- against the box width
-# The four rows the box series is to settle (bench grains, D/d_g = 5; empty until a box is
-# in): box.csv, drawn by granpen plot scaling against box_cm. Errors as in scaling.csv; the
-# peak over the push of the same bed and speed in the box 8 cm narrower carries its spread
-# over pairs.
+# The four rows the box series is to settle, one series per grain size: bench grains (D/d_g =
+# 5) in boxes of 8 to 20 cm, dg10 grains (the paper's, D/d_g = 10) in the 10 and the 20 cm box
+# (a row without a value is a run still to come: no point yet). box.csv, drawn by granpen plot
+# scaling against box_cm. Errors as in scaling.csv; the peak over the push of the same bed and
+# speed in the narrower box (bench: 8 cm narrower, dg10: 10 cm) carries its spread over pairs.
+# Each grain size is read at its own speeds (the quantity's name says which).
 if ls "$BOX"/box_bench*_peak/*.csv > /dev/null 2>&1; then
   say "against the box width: box.csv (granpen plot scaling)"
   {
     echo "# paper_box_cm = 20"
-    echo "quantity,box_cm,value,error,paper,paper_error,unit,label"
-    for b in 8 12 16 20; do row_of "peak exponent (v_c to 10 v_c)" "$b" "bench_box$b.peak_exponent" 2 "" 1.96; done
-    for b in 8 12 16 20; do row_of "peak exponent above v_c (ensemble means)" "$b" "bench_box$b.peak_exponent_ensemble_from_2vc" 2 ""; done
-    for b in 16 20; do row_of "peak over the box 8 cm narrower (same bed and v0)" "$b" "bench_box$b.peak_over_box$((b - 8))" 1 ""; done
-    for b in 8 12 16 20; do row_of "lambda_vz / D at 50 cm/s" "$b" "bench_box$b.v50.lambda_vz_D" 0.98 0.15; done
-    for b in 8 12 16 20; do row_of "drag / (mu g M) at 50 cm/s" "$b" "bench_box$b.v50.drag_over_mu_g_Mmove" 1 ""; done
-    for b in 8 20; do row_of "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s" "$b" "bench_box$b.alpha_D1_over_D2" 1 ""; done
-    for b in 8 20; do row_of "alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s (frictionless shaft)" "$b" "bench_box${b}_shaft.alpha_D1_over_D2" 1 ""; done
+    echo "quantity,box_cm,value,error,paper,paper_error,unit,label,series"
+    # a row of each grain size's series (the last column)
+    bench_grains() { ROW_SERIES="bench grains at D/d_g = 5" "$@"; }
+    dg10_grains() { ROW_SERIES="dg10 grains at D/d_g = 10" "$@"; }
+    q="peak exponent (v_c to 10 v_c)"
+    for b in 8 12 16 20; do bench_grains row_of "$q" "$b" "bench_box$b.peak_exponent" 2 "" 1.96; done
+    dg10_grains row_of "$q" 10 dg10.peak_exponent 2 "" 1.96; dg10_grains row_of "$q" 20 dg10_box20.peak_exponent 2 "" 1.96
+    q="peak exponent above v_c (ensemble means)"
+    for b in 8 12 16 20; do bench_grains row_of "$q" "$b" "bench_box$b.peak_exponent_ensemble_from_2vc" 2 ""; done
+    dg10_grains row_of "$q" 10 dg10.peak_exponent_ensemble_from_2vc 2 ""; dg10_grains row_of "$q" 20 dg10_box20.peak_exponent_ensemble_from_2vc 2 ""
+    # the speeds the 20 cm box has on all three beds so far (its slow end comes last)
+    q="peak exponent at 80 to 200 cm/s (ensemble means)"
+    dg10_grains row_of "$q" 10 dg10_v80to200.peak_exponent_ensemble_from_2vc 2 ""; dg10_grains row_of "$q" 20 dg10_box20_v80to200.peak_exponent_ensemble_from_2vc 2 ""
+    q="peak over the narrower box's (same bed and v0)"
+    for b in 16 20; do bench_grains row_of "$q" "$b" "bench_box$b.peak_over_box$((b - 8))" 1 ""; done
+    dg10_grains row_of "$q" 20 dg10_box20.peak_over_box10 1 ""
+    q="lambda_vz / D (bench at 50 and dg10 at 40 cm/s)"
+    for b in 8 12 16 20; do bench_grains row_of "$q" "$b" "bench_box$b.v50.lambda_vz_D" 0.98 0.15; done
+    dg10_grains row_of "$q" 10 dg10.v40.lambda_vz_D 0.98 0.15; dg10_grains row_of "$q" 20 dg10_box20.v40.lambda_vz_D 0.98 0.15
+    q="drag / (mu g M) (bench at 50 and dg10 at 40 cm/s)"
+    for b in 8 12 16 20; do bench_grains row_of "$q" "$b" "bench_box$b.v50.drag_over_mu_g_Mmove" 1 ""; done
+    dg10_grains row_of "$q" 10 dg10.v40.drag_over_mu_g_Mmove 1 ""; dg10_grains row_of "$q" 20 dg10_box20.v40.drag_over_mu_g_Mmove 1 ""
+    q="alpha(D = 1 cm) / alpha(D = 2 cm) (bench at 28 and dg10 at 100 cm/s)"
+    for b in 8 20; do bench_grains row_of "$q" "$b" "bench_box$b.alpha_D1_over_D2" 1 ""; done
+    dg10_grains ratio_of "$q" 10 dg10.alpha0_window.v100.D1 dg10.alpha0_window.v100.D2 1 ""; dg10_grains row_of "$q" 20 dg10_box20.alpha_D1_over_D2 1 ""
+    q="... the same with the shaft frictionless"
+    for b in 8 20; do bench_grains row_of "$q" "$b" "bench_box${b}_shaft.alpha_D1_over_D2" 1 ""; done
+    dg10_grains row_of "$q" 20 dg10_box20_shaft.alpha_D1_over_D2 1 ""
   } > "$OUT/box.csv.partial" && mv "$OUT/box.csv.partial" "$OUT/box.csv"
   "$CLI" plot scaling "$OUT/box.csv" --out "$OUT/box" > /dev/null
 fi

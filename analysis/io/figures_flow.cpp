@@ -405,7 +405,8 @@ void flow_phi_I(const FlowFitTables &tables, const EdgeLine &e, Run &run)
   s.x = e.I, s.y = e.phi;
   p.series.push_back(s);
   PlotGuide papers;
-  papers.expression = gp_number(paper::edge_phi_0) + " + " + gp_number(paper::edge_phi_slope) + "*x";
+  papers.expression = gp_number(paper::edge_phi_0) + (paper::edge_phi_slope < 0 ? " - " : " + ") +
+                      gp_number(std::fabs(paper::edge_phi_slope)) + "*x";
   papers.title = "paper: " + phi_of_I_text(paper::edge_phi_0, paper::edge_phi_slope, "%.2f");
   papers.colour = "#d62728";
   p.guides.push_back(papers);

@@ -24,19 +24,40 @@ struct Axis {
 };
 constexpr Axis kAxes[] = {{"D_over_dg", "D/d_g"}, {"box_cm", "box width (cm)"}};
 
+// one series of a quantity (the table's column series: e.g. the grains the boxes were filled
+// with), its measured points in the table's order
+struct Line {
+  std::size_t series = 0;    // index into the table's series, in order of first appearance
+  std::vector<double> ratio, value, error;
+};
+
 struct Quantity {
   std::string name, label, unit;
-  std::vector<double> ratio, value, error;
+  std::vector<Line> lines;              // in order of first appearance within the quantity
   std::vector<double> ratios_listed;    // every row's D/d_g, measured or not (the x range)
   double paper = NAN, paper_error = 0.0;
+  bool measured() const
+  {
+    return std::any_of(lines.begin(), lines.end(), [](const Line &l) { return !l.ratio.empty(); });
+  }
 };
+
+// How each series is drawn, in order: red is the paper's, so it is not among them; the
+// words name the look in the figure's title, which is the legend
+struct SeriesLook {
+  int colour, point_type;
+  const char *words;
+};
+constexpr SeriesLook kLooks[] = {{0, 7, "blue circles"},     {2, 5, "green squares"}, {3, 9, "orange triangles"},
+                                 {4, 13, "purple diamonds"}, {5, 11, "brown triangles"}};
+constexpr std::size_t kMaxSeries = sizeof kLooks / sizeof kLooks[0];
 
 // a number rounded as printf's f would, null when not finite (not measured, no paper value)
 Json num_or_null(const char *f, double v) { return std::isfinite(v) ? num(f, v) : Json(nullptr); }
 
 // the quantities of the table in the order of their first row; a problem of the run (named
 // file:line) for a row that contradicts an earlier one's paper value
-std::vector<Quantity> quantities_of(const CsvTable &t, const Axis &axis, Run &run)
+std::vector<Quantity> quantities_of(const CsvTable &t, const Axis &axis, std::vector<std::string> &series, Run &run)
 {
   const auto names = t.text("quantity");
   const auto ratio = t.numbers(axis.column, false), value = t.numbers("value"), error = t.numbers("error");
@@ -44,6 +65,7 @@ std::vector<Quantity> quantities_of(const CsvTable &t, const Axis &axis, Run &ru
   const auto paper_err = t.has("paper_error") ? t.numbers("paper_error") : std::vector<double>(names.size(), NAN);
   const auto unit = t.has("unit") ? t.text("unit") : std::vector<std::string>(names.size());
   const auto label = t.has("label") ? t.text("label") : std::vector<std::string>(names.size());
+  const auto series_of = t.has("series") ? t.text("series") : std::vector<std::string>(names.size());
   std::vector<Quantity> q;
   std::map<std::string, std::size_t> at;
   for (std::size_t i = 0; i < names.size(); ++i) {
@@ -59,8 +81,19 @@ std::vector<Quantity> quantities_of(const CsvTable &t, const Axis &axis, Run &ru
     auto it = at.find(names[i]);
     if (it == at.end()) {
       it = at.emplace(names[i], q.size()).first;
-      q.push_back(Quantity{names[i], label[i].empty() ? literal_text(names[i]) : label[i], unit[i], {}, {}, {}, {}, NAN, 0.0});
+      q.push_back(Quantity{names[i], label[i].empty() ? literal_text(names[i]) : label[i], unit[i], {}, {}, NAN, 0.0});
     }
+    // the row's series: a new name takes the next look, up to as many as there are looks
+    auto named = std::find(series.begin(), series.end(), series_of[i]);
+    if (named == series.end()) {
+      if (series.size() == kMaxSeries) {
+        run.problems.push_back(where + ": series \"" + series_of[i] + "\" is one more than the " + std::to_string(kMaxSeries) +
+                               " a figure can tell apart");
+        continue;
+      }
+      named = series.insert(series.end(), series_of[i]);
+    }
+    const std::size_t k = (std::size_t) (named - series.begin());
     Quantity &x = q[it->second];
     if (std::isfinite(paper[i])) {
       if (std::isfinite(x.paper) && x.paper != paper[i])
@@ -70,9 +103,11 @@ std::vector<Quantity> quantities_of(const CsvTable &t, const Axis &axis, Run &ru
       if (std::isfinite(paper_err[i])) x.paper_error = std::fabs(paper_err[i]);
     }
     x.ratios_listed.push_back(ratio[i]);
+    auto line = std::find_if(x.lines.begin(), x.lines.end(), [&](const Line &l) { return l.series == k; });
+    if (line == x.lines.end()) line = x.lines.insert(x.lines.end(), Line{k, {}, {}, {}});
     if (!std::isfinite(value[i])) continue;    // a ratio not measured (yet): no point
-    x.ratio.push_back(ratio[i]), x.value.push_back(value[i]);
-    x.error.push_back(std::isfinite(error[i]) ? std::fabs(error[i]) : 0.0);
+    line->ratio.push_back(ratio[i]), line->value.push_back(value[i]);
+    line->error.push_back(std::isfinite(error[i]) ? std::fabs(error[i]) : 0.0);
   }
   return q;
 }
@@ -83,6 +118,7 @@ void plot_scaling(const std::vector<std::string> &inputs, Run &run)
 {
   CsvTable t;
   std::vector<Quantity> qs;
+  std::vector<std::string> series;    // the table's series in order of first appearance
   Axis axis = kAxes[0];
   try {
     t = read_csv_table(inputs[0], {"quantity", "value", "error"});
@@ -98,7 +134,7 @@ void plot_scaling(const std::vector<std::string> &inputs, Run &run)
       run.problems.push_back(inputs[0] + ": no rows");
       return;
     }
-    qs = quantities_of(t, axis, run);
+    qs = quantities_of(t, axis, series, run);
   } catch (InputError &e) {
     run.problems.push_back(e.what());
     return;
@@ -117,27 +153,39 @@ void plot_scaling(const std::vector<std::string> &inputs, Run &run)
   double rmin = std::isfinite(paper_ratio) ? paper_ratio : INFINITY, rmax = std::isfinite(paper_ratio) ? paper_ratio : -INFINITY;
   for (const auto &q : qs)
     for (double r : q.ratios_listed) rmin = std::min(rmin, r), rmax = std::max(rmax, r);
+  const bool named_series = t.has("series");
+  // with more than one series, each drawn a little aside (1.2% of the x range apart), so that
+  // two series measured in the same box do not hide each other's bars; JSON keeps the true x
+  const double dodge = series.size() > 1 ? 0.012 * (std::ceil(rmax + 0.5) - std::floor(rmin - 0.5)) : 0.0;
   for (const auto &q : qs) {
-    if (q.ratio.empty()) {
+    if (!q.measured()) {
       run.notes.push_back(q.name + ": no measured value in " + t.path + ": its panel left out");
       continue;
     }
-    // points in order of D/d_g, joined, so that the trend reads left to right
-    std::vector<std::size_t> o(q.ratio.size());
-    for (std::size_t i = 0; i < o.size(); ++i) o[i] = i;
-    std::sort(o.begin(), o.end(), [&](std::size_t a, std::size_t b) { return q.ratio[a] < q.ratio[b]; });
-    PlotSeries s;
-    s.style = "linespoints", s.title = "granpen", s.colour = plot_colour(0), s.point_type = 7;
-    Json pts = Json::array();
-    for (std::size_t i : o) {
-      s.x.push_back(q.ratio[i]), s.y.push_back(q.value[i]), s.y_err.push_back(q.error[i]);
-      // distance from the paper's value in combined standard errors (NaN without one)
-      const double sig = std::sqrt(q.error[i] * q.error[i] + q.paper_error * q.paper_error);
-      const double z = std::isfinite(q.paper) && sig > 0 ? (q.value[i] - q.paper) / sig : NAN;
-      pts.push_back({{axis.column, num("%.6g", q.ratio[i])}, {"value", num("%.6g", q.value[i])},
-                     {"error", num("%.6g", q.error[i])}, {"sigmas_from_paper", num_or_null("%.4g", z)}});
-    }
     SeriesPanel p;
+    Json pts = Json::array();
+    for (const Line &l : q.lines) {
+      if (l.ratio.empty()) continue;    // this series not measured for this quantity (yet)
+      // points in order of D/d_g, joined, so that the trend reads left to right
+      std::vector<std::size_t> o(l.ratio.size());
+      for (std::size_t i = 0; i < o.size(); ++i) o[i] = i;
+      std::sort(o.begin(), o.end(), [&](std::size_t a, std::size_t b) { return l.ratio[a] < l.ratio[b]; });
+      PlotSeries s;
+      s.style = "linespoints", s.title = named_series ? series[l.series] : "granpen";
+      s.colour = plot_colour(kLooks[l.series].colour), s.point_type = kLooks[l.series].point_type;
+      for (std::size_t i : o) {
+        const double aside = dodge * ((double) l.series - 0.5 * (double) (series.size() - 1));
+        s.x.push_back(l.ratio[i] + aside), s.y.push_back(l.value[i]), s.y_err.push_back(l.error[i]);
+        // distance from the paper's value in combined standard errors (NaN without one)
+        const double sig = std::sqrt(l.error[i] * l.error[i] + q.paper_error * q.paper_error);
+        const double z = std::isfinite(q.paper) && sig > 0 ? (l.value[i] - q.paper) / sig : NAN;
+        Json pt = {{axis.column, num("%.6g", l.ratio[i])}, {"value", num("%.6g", l.value[i])},
+                   {"error", num("%.6g", l.error[i])}, {"sigmas_from_paper", num_or_null("%.4g", z)}};
+        if (named_series) pt["series"] = series[l.series];
+        pts.push_back(pt);
+      }
+      p.series.push_back(s);
+    }
     // the paper's value in the title rather than a legend, which would cover points or the line
     p.title = q.label + (std::isfinite(q.paper) ? "   (paper: " + fmt("%g", q.paper) +
                                                       (q.paper_error > 0 ? " ± " + fmt("%g", q.paper_error) : "") + ")"
@@ -149,11 +197,11 @@ void plot_scaling(const std::vector<std::string> &inputs, Run &run)
     p.key = "off";
     // a margin of half a unit of D/d_g either side, so that no point sits on the frame
     p.xmin = std::floor(rmin - 0.5), p.xmax = std::ceil(rmax + 0.5);
-    p.series.push_back(s);
     // a y range holding the points, their bars and the paper's value (and band) with a margin
     // of 8%, so that the paper's line never lies on the frame
     double ylo = INFINITY, yhi = -INFINITY;
-    for (std::size_t i = 0; i < s.y.size(); ++i) ylo = std::min(ylo, s.y[i] - s.y_err[i]), yhi = std::max(yhi, s.y[i] + s.y_err[i]);
+    for (const PlotSeries &s : p.series)
+      for (std::size_t i = 0; i < s.y.size(); ++i) ylo = std::min(ylo, s.y[i] - s.y_err[i]), yhi = std::max(yhi, s.y[i] + s.y_err[i]);
     if (std::isfinite(q.paper)) ylo = std::min(ylo, q.paper - q.paper_error), yhi = std::max(yhi, q.paper + q.paper_error);
     const double pad = yhi > ylo ? 0.08 * (yhi - ylo) : 0.1 * std::max(std::fabs(yhi), 1e-12);
     p.ymin = ylo - pad, p.ymax = yhi + pad;
@@ -191,11 +239,23 @@ void plot_scaling(const std::vector<std::string> &inputs, Run &run)
   const bool by_ratio = std::string(axis.column) == "D_over_dg";
   const std::string axis_words = by_ratio ? "the grain size ratio D/d_g" : "the box width";
   const std::string paper_axis = by_ratio ? "D/d_g" : "box";
-  f.title = "Against " + axis_words + ": granpen (blue, ± its error), the paper's value (red; shaded: its error)" +
+  // the legend is the title: one key per panel would repeat it and cover points
+  std::string granpen = "granpen (blue, ± its error)";
+  if (named_series) {
+    granpen = "granpen ± its error: ";
+    for (std::size_t k = 0; k < series.size(); ++k)
+      granpen += (k ? ", " : "") + (series[k].empty() ? std::string("(no series)") : literal_text(series[k])) + " (" +
+                 kLooks[k].words + ")";
+    granpen += ";\n";
+  } else {
+    granpen += ", ";
+  }
+  f.title = "Against " + axis_words + ": " + granpen + "the paper's value (red; shaded: its error)" +
             std::string(std::isfinite(paper_ratio) ? ", the paper's " + paper_axis + " (dotted)" : "");
   f.about = "granpen plot scaling: each quantity of " + t.path + " against " + (by_ratio ? "D/d_g" : "the box width") +
             " with its error bars, and the paper's value (a red line, with its band when it has an error)" +
-            (std::isfinite(paper_ratio) ? "; the dotted line: the paper's own " + paper_axis + "." : ".");
+            (std::isfinite(paper_ratio) ? "; the dotted line: the paper's own " + paper_axis + "." : ".") +
+            (dodge > 0 ? " Each series is drawn " + fmt("%.2g", dodge) + " aside of the next in x, so that bars at one x stay apart." : "");
   f.columns = panels.size() > 1 ? 2 : 1;
   const int rows = (int) ((panels.size() + f.columns - 1) / f.columns);
   f.width = f.columns == 1 ? 800 : 1300, f.height = 120 + 380 * rows;

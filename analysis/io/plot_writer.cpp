@@ -400,7 +400,11 @@ PlotFiles series_figure(const SeriesFigure &fig_in)
   // figure title (centred on the figure, not on a panel of fixed aspect)
   const bool multi = fig.panels.size() > 1 || unplaced != (int) fig.panels.size() || fig.grid_width < 1.0 ||
                      !fig.title.empty();
-  const double top = (multi && !fig.title.empty()) ? 0.94 : 1.0;
+  // the title's room: 6% of the figure for its first line, and about 24 px (a line at 14 pt)
+  // for each further one, so that they do not reach the top panels' titles
+  const int more_lines = (int) std::count(fig.title.begin(), fig.title.end(), '\n');
+  const double title_room = 0.06 + 24.0 * more_lines / std::max(fig.height, 1);
+  const double top = (multi && !fig.title.empty()) ? 1.0 - title_room : 1.0;
   if (multi) fold_key_column(fig.panels, fig, top - 0.04, f.notes);
 
   std::ostringstream b;

@@ -150,16 +150,19 @@ done
 same bench_box20.alpha_D1_over_D2 "$(awk -v a="$(val bench_box20.alpha0_window.v28.D1 | awk '{print $1}')" -v ea="$(val bench_box20.alpha0_window.v28.D1 | awk '{print $3}')" \
   -v b="$(val bench_box20.alpha0_window.v28.D2 | awk '{print $1}')" -v eb="$(val bench_box20.alpha0_window.v28.D2 | awk '{print $3}')" \
   'BEGIN { r = a / b; printf "%.4g +- %.2g\n", r, r * sqrt((ea / a) ^ 2 + (eb / b) ^ 2) }')"
-grep -q "^alpha(D = 1 cm) / alpha(D = 2 cm) at 28 cm/s,20,$(val bench_box20.alpha_D1_over_D2 | awk '{print $1}')," "$OUT/res/box.csv" ||
+grep -q "^alpha(D = 1 cm) / alpha(D = 2 cm) (bench at 28 and dg10 at 100 cm/s),20,$(val bench_box20.alpha_D1_over_D2 | awk '{print $1}'),.*,bench grains at D/d_g = 5$" "$OUT/res/box.csv" ||
   fail "box.csv lacks the 20 cm box's alpha ratio"
 ! grep -q '^bench_box12\.\|^bench_box16\.v50\|^bench_box20\.peak_over\|^bench_box8\.v50\|^bench_box8.peak_over\|^bench_box8\.alpha\|^bench_box8_shaft\|^bench_box20_shaft' "$N" || fail "an incomplete box part added lines"
 grep -q "box_bench8_D: 0 of 6 pushes" "$OUT/res.log" || fail "no note of the 8 cm box's missing D pushes"
 grep -q "box 12 cm: 0 of 10 peak pushes" "$OUT/res.log" || fail "no note of the 12 cm box's missing pushes"
 # the box table holds the 16 cm box's paired peaks, the 20 cm box's flow, and its figure was made
-grep -q "^peak over the box 8 cm narrower (same bed and v0),16,1,0," "$OUT/res/box.csv" || fail "box.csv lacks the 16 cm box's paired peaks: $(cat "$OUT/res/box.csv")"
-grep -q "^peak over the box 8 cm narrower (same bed and v0),20,," "$OUT/res/box.csv" || fail "box.csv has a 20 cm paired peak without the 12 cm box"
-grep -q "^lambda_vz / D at 50 cm/s,20,$(val mid.lambda_vz_D | awk '{print $1}')," "$OUT/res/box.csv" || fail "box.csv lacks the 20 cm box's lambda_vz"
+grep -q "^peak over the narrower box's (same bed and v0),16,1,0,.*,bench grains at D/d_g = 5$" "$OUT/res/box.csv" || fail "box.csv lacks the 16 cm box's paired peaks: $(cat "$OUT/res/box.csv")"
+grep -q "^peak over the narrower box's (same bed and v0),20,,.*,bench grains at D/d_g = 5$" "$OUT/res/box.csv" || fail "box.csv has a 20 cm paired peak without the 12 cm box"
+grep -q "^lambda_vz / D (bench at 50 and dg10 at 40 cm/s),20,$(val mid.lambda_vz_D | awk '{print $1}'),.*,bench grains at D/d_g = 5$" "$OUT/res/box.csv" || fail "box.csv lacks the 20 cm box's lambda_vz"
 [ -s "$OUT/res/box/scaling.gp" ] || fail "no box figure"
+# every row of box.csv has the header's nine fields, the last its series (the grain size)
+awk -F, 'NR > 2 && (NF != 9 || ($9 != "bench grains at D/d_g = 5" && $9 != "dg10 grains at D/d_g = 10")) { print; bad = 1 } END { exit bad }' "$OUT/res/box.csv" ||
+  fail "a box.csv row without nine fields or a known series"
 # dg10 in the 20 cm box: its peak law is dg10's own (the same traces through peak_law), each
 # peak over its 10 cm twin's that of the push itself, its flow rows the mid push's; alpha
 # against D from granpen fit on the files directly; the shaft part adds no line
@@ -218,6 +221,18 @@ same dg10_box20.alpha_D1_over_D2_zD1to2 "$(awk -v a="$(fit_col "$d1" alpha0 --zm
   -v b="$(fit_col "$d2" alpha0 --zmin 2 --zmax 4)" -v eb="$(fit_col "$d2" alpha0_se --zmin 2 --zmax 4)" \
   'BEGIN { a = sprintf("%.4g", a); b = sprintf("%.4g", b); ea = sprintf("%.2g", ea); eb = sprintf("%.2g", eb)
            r = a / b; printf "%.4g +- %.2g\n", r, r * sqrt((ea / a) ^ 2 + (eb / b) ^ 2) }')"
+# the box figure's dg10 series: the 10 cm box's row and the 20 cm box's, each the key's value
+dg10_row() { # QUANTITY BOX KEY: the row of the dg10 series holds KEY's value (empty when KEY is not in numbers.txt)
+  grep -q "^$1,$2,$(val "$3" | awk '{print $1}'),.*,dg10 grains at D/d_g = 10$" "$OUT/res/box.csv" || fail "box.csv: no dg10 row $1 at $2 cm with $3's value"
+}
+dg10_row "peak exponent (v_c to 10 v_c)" 10 dg10.peak_exponent
+dg10_row "peak exponent (v_c to 10 v_c)" 20 dg10_box20.peak_exponent
+dg10_row "peak exponent at 80 to 200 cm/s (ensemble means)" 20 dg10_box20_v80to200.peak_exponent_ensemble_from_2vc
+dg10_row "peak over the narrower box's (same bed and v0)" 20 dg10_box20.peak_over_box10
+dg10_row "lambda_vz / D (bench at 50 and dg10 at 40 cm/s)" 20 dg10_box20.v40.lambda_vz_D
+dg10_row "drag / (mu g M) (bench at 50 and dg10 at 40 cm/s)" 10 dg10.v40.drag_over_mu_g_Mmove
+dg10_row "alpha(D = 1 cm) / alpha(D = 2 cm) (bench at 28 and dg10 at 100 cm/s)" 20 dg10_box20.alpha_D1_over_D2
+dg10_row "... the same with the shaft frictionless" 20 dg10_box20_shaft.alpha_D1_over_D2
 ! grep -q '^dg10_box20_shaft\.' "$N" || fail "the shaft part without its pushes added lines"
 grep -q "dg10_box20_shaft: the pushes of D = 1.0 2.0 cm" "$OUT/res.log" || fail "no note of the shaft's missing pushes"
 # the flow rows of each dg10 speed: the mid push's, from the same tables

@@ -382,7 +382,7 @@ TEST(PlotCli, FlowAndMomentumFitsAreTheLibrarys)
   EXPECT_NE(profile_gp.find("paper: 0.98 ± 0.15"), std::string::npos) << "panel (c)'s band";
   EXPECT_NE(profile_gp.find("(paper: 0.98 D ± 0.15)"), std::string::npos) << "the fit's title";
   EXPECT_NE(phi_gp.find("paper: φ = 0.57 − 0.35 I"), std::string::npos);
-  EXPECT_NE(phi_gp.find("0.57 + -0.35*x"), std::string::npos) << "the paper's line drawn";
+  EXPECT_NE(phi_gp.find("0.57 - 0.35*x"), std::string::npos) << "the paper's line drawn";
   // the heatmap grid: 8 x 12 bins, the rod's bins empty (NaN)
   const auto b = block(out / "flow_heatmaps.dat", 0);
   ASSERT_EQ(b.size(), 96u);
@@ -492,6 +492,56 @@ TEST(PlotCli, ScalingAgainstTheBoxWidth)
   const Outcome neither = run_plot({"scaling", (in / "neither.csv").string(), "--out", fresh("scaling_neither").string(), "--no-run"});
   EXPECT_EQ(neither.status, 1);
   EXPECT_NE(neither.err.find("no axis column (D_over_dg or box_cm)"), std::string::npos) << neither.err;
+}
+
+// a column series (e.g. the grains a box was filled with): one line per series and quantity,
+// each series its own colour and marker (never the paper's red) named in the title, which is
+// the legend; drawn a little aside in x where two series share a box; JSON keeps the true x
+TEST(PlotCli, ScalingSeriesOneLineEachNamedInTheTitle)
+{
+  const fs::path in = fresh("scaling_series_in"), out = fresh("scaling_series_out");
+  write(in / "box.csv",
+        "# paper_box_cm = 20\n"
+        "quantity,box_cm,value,error,paper,paper_error,series\n"
+        "peak exponent,20,1.44,0.07,2,0,bench grains\n"
+        "peak exponent,8,1.34,0.06,2,0,bench grains\n"
+        "peak exponent,10,1.47,0.05,2,0,dg10 grains\n"
+        "peak exponent,20,,,2,0,dg10 grains\n"
+        "lambda,8,0.45,0.02,0.98,0.15,bench grains\n"
+        "lambda,20,,,0.98,0.15,dg10 grains\n");
+  const Outcome o = run_plot({"scaling", (in / "box.csv").string(), "--out", out.string(), "--no-run"});
+  ASSERT_EQ(o.status, 0) << o.err;
+  // x range [7, 21]: the series 1.2% of 14 apart, each half of it either side of its box
+  const double half = 0.5 * 0.012 * 14;
+  const auto bench = block(out / "scaling.dat", 0), dg10 = block(out / "scaling.dat", 1);
+  ASSERT_EQ(bench.size(), 2u);
+  EXPECT_NEAR(bench[0][0], 8 - half, 1e-9);    // in order of the box, drawn aside to the left
+  EXPECT_NEAR(bench[1][0], 20 - half, 1e-9);
+  EXPECT_EQ(bench[1][1], 1.44);
+  ASSERT_EQ(dg10.size(), 1u) << "dg10's 20 cm row has no value yet: no point";
+  EXPECT_NEAR(dg10[0][0], 10 + half, 1e-9);
+  // lambda: bench's point alone (dg10 not measured): the third block, one point
+  const auto lambda = block(out / "scaling.dat", 2);
+  ASSERT_EQ(lambda.size(), 1u);
+  EXPECT_NEAR(lambda[0][0], 8 - half, 1e-9);
+  const std::string j = slurp(out / "scaling.json");
+  EXPECT_NE(j.find("{\"box_cm\": 10, \"value\": 1.47, \"error\": 0.05, \"sigmas_from_paper\": -10.6, \"series\": \"dg10 grains\"}"),
+            std::string::npos) << j;
+  const std::string gp = slurp(out / "scaling.gp");
+  EXPECT_NE(gp.find("bench grains (blue circles), dg10 grains (green squares)"), std::string::npos) << gp;
+  EXPECT_NE(gp.find("#1f77b4"), std::string::npos);
+  EXPECT_NE(gp.find("#2ca02c"), std::string::npos);
+  // no per-panel key (the title is the legend): both panels unset theirs
+  const std::size_t k1 = gp.find("unset key");
+  EXPECT_NE(k1, std::string::npos) << gp;
+  EXPECT_NE(gp.find("unset key", k1 + 1), std::string::npos) << gp;
+  // more series than looks: refused by file and line
+  std::string many = "quantity,box_cm,value,error,series\n";
+  for (int k = 0; k < 6; ++k) many += "q," + std::to_string(8 + k) + ",1,0.1,s" + std::to_string(k) + "\n";
+  write(in / "many.csv", many);
+  const Outcome m = run_plot({"scaling", (in / "many.csv").string(), "--out", fresh("scaling_many").string(), "--no-run"});
+  EXPECT_EQ(m.status, 1);
+  EXPECT_NE(m.err.find("many.csv:7: series \"s5\" is one more than the 5"), std::string::npos) << m.err;
 }
 
 TEST(PlotCli, PartingCurvesAreTheRatiosGranpenPartingWrote)
