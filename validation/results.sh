@@ -62,7 +62,7 @@ in_tree() {
 }
 case $CLI in */*) case $CLI in /*) ;; *) CLI=$PWD/$CLI ;; esac ;; esac
 OUT=$(in_tree "$OUT") BENCH=$(in_tree "$BENCH") MID=$(in_tree "$MID") DUMPS=$(in_tree "$DUMPS")
-DG10=$(in_tree "$DG10") STIFF=$(in_tree "$STIFF") DAMP=$(in_tree "$DAMP") BOX=$(in_tree "$BOX")
+DG10=$(in_tree "$DG10") STIFF=$(in_tree "$STIFF") DAMP=$(in_tree "$DAMP") BOX=$(in_tree "$BOX") DG10BOX=$(in_tree "$DG10BOX")
 cd "$ROOT"
 mkdir -p "$OUT"
 NUM=$OUT/numbers.txt.partial
