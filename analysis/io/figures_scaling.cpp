@@ -153,10 +153,12 @@ void plot_scaling(const std::vector<std::string> &inputs, Run &run)
   double rmin = std::isfinite(paper_ratio) ? paper_ratio : INFINITY, rmax = std::isfinite(paper_ratio) ? paper_ratio : -INFINITY;
   for (const auto &q : qs)
     for (double r : q.ratios_listed) rmin = std::min(rmin, r), rmax = std::max(rmax, r);
+  // a margin of half a unit of D/d_g either side, so that no point sits on the frame
+  const double xmin = std::floor(rmin - 0.5), xmax = std::ceil(rmax + 0.5);
   const bool named_series = t.has("series");
   // with more than one series, each drawn a little aside (1.2% of the x range apart), so that
   // two series measured in the same box do not hide each other's bars; JSON keeps the true x
-  const double dodge = series.size() > 1 ? 0.012 * (std::ceil(rmax + 0.5) - std::floor(rmin - 0.5)) : 0.0;
+  const double dodge = series.size() > 1 ? 0.012 * (xmax - xmin) : 0.0;
   for (const auto &q : qs) {
     if (!q.measured()) {
       run.notes.push_back(q.name + ": no measured value in " + t.path + ": its panel left out");
@@ -173,8 +175,8 @@ void plot_scaling(const std::vector<std::string> &inputs, Run &run)
       PlotSeries s;
       s.style = "linespoints", s.title = named_series ? series[l.series] : "granpen";
       s.colour = plot_colour(kLooks[l.series].colour), s.point_type = kLooks[l.series].point_type;
+      const double aside = dodge * ((double) l.series - 0.5 * (double) (series.size() - 1));
       for (std::size_t i : o) {
-        const double aside = dodge * ((double) l.series - 0.5 * (double) (series.size() - 1));
         s.x.push_back(l.ratio[i] + aside), s.y.push_back(l.value[i]), s.y_err.push_back(l.error[i]);
         // distance from the paper's value in combined standard errors (NaN without one)
         const double sig = std::sqrt(l.error[i] * l.error[i] + q.paper_error * q.paper_error);
@@ -195,8 +197,7 @@ void plot_scaling(const std::vector<std::string> &inputs, Run &run)
     const std::string y_name = q.label.size() <= 36 ? q.label : q.unit.empty() ? "value" : "";
     p.ylabel = q.unit.empty() ? y_name : (y_name.empty() ? q.unit : y_name + " (" + q.unit + ")");
     p.key = "off";
-    // a margin of half a unit of D/d_g either side, so that no point sits on the frame
-    p.xmin = std::floor(rmin - 0.5), p.xmax = std::ceil(rmax + 0.5);
+    p.xmin = xmin, p.xmax = xmax;
     // a y range holding the points, their bars and the paper's value (and band) with a margin
     // of 8%, so that the paper's line never lies on the frame
     double ylo = INFINITY, yhi = -INFINITY;
