@@ -25,9 +25,10 @@
 #           pushes 1.5 cm deep at 200 cm/s on beds 1 to 3, then 140 and 80, then 40 and 20 on
 #           bed 1, then 40 on beds 2 and 3 (dg10_box20_peak{1,2,3,4}.sweep, one folder: the
 #           pushes that fit one session first, since a session's machine may not outlive it);
-#           the 40 cm/s flow push with dumps (dg10_box20_flow); D = 1, 2, 3 cm at 100 cm/s to
-#           5 cm (dg10_box20_D); D = 1 and 2 cm with a frictionless shaft (dg10_box20_shaft);
-#           last 20 cm/s on beds 2 and 3 (dg10_box20_peak5: the issue's "if the first show a
+#           D = 1, 2, 3 cm at 100 cm/s to 5 cm (dg10_box20_D); D = 1 and 2 cm with a
+#           frictionless shaft (dg10_box20_shaft); the 40 cm/s flow push with dumps
+#           (dg10_box20_flow: 5.5 hours at 2 ranks, after the 2.2-hour pushes at 100 cm/s,
+#           which a session finishes alone); last 20 cm/s on beds 2 and 3 (dg10_box20_peak5: the issue's "if the first show a
 #           change", which bed 1's 20 cm/s push answers). 21 pushes, 9.8e11 atom-steps: about
 #           76 hours of one core at 3.6e6 atom-steps/s, units of 0.7 to 11 hours (docs/presets.md,
 #           "The paper's box"): a push cut by the end of a session resumes from its last
@@ -51,7 +52,7 @@ case $series in
     exec "$ROOT/validation/campaign.sh" --data "$ROOT/data/sims/box_bench" --sweeps "${sweeps# }" --tip "1 3" "$@" ;;
   dg10)
     sweeps=""
-    for part in peak1 peak2 peak3 peak4 flow D shaft peak5; do sweeps="$sweeps $S/dg10_box20_$part.sweep"; done
+    for part in peak1 peak2 peak3 peak4 D shaft flow peak5; do sweeps="$sweeps $S/dg10_box20_$part.sweep"; done
     # the flow analysis as the 10 cm box's (validation/dg10.sh: the tip 1 to 4 cm deep)
     exec "$ROOT/validation/campaign.sh" --data "$ROOT/data/sims/dg10_box20" --sweeps "${sweeps# }" --tip "1 4" --checkpoint 1000 "$@" ;;
   *) echo "box.sh: no series '$series' (bench, dg10)" >&2; exit 2 ;;
