@@ -27,7 +27,8 @@
 #                flow push and tables are
 #   --dg10-box DIR  the committed units of validation/box.sh dg10 (default
 #                data/sims/dg10_box20; scale name dg10_box20): its peak part once its 15
-#                pushes are there, its flow rows once its 40 cm/s push and tables are, alpha
+#                pushes are there (the 9 of 80 to 200 cm/s and the 12 above v_c, 40 to
+#                200 cm/s, each once they are), its flow rows once its 40 cm/s push and tables are, alpha
 #                against D once its 3 (and the frictionless shaft's 2) pushes are
 #   --out DIR    where numbers.txt, scaling.csv and the figures go (default docs/results)
 #
@@ -592,6 +593,18 @@ dg10_box20() {
     peak_law dg10_box20_v80to200 "$o/v80to200" 20 "${fast[@]}"
     peak_law dg10_v80to200 "$OUT/dg10/v80to200" 20 "${ten[@]}"
   else say "dg10, 20 cm box: ${#fast[@]} of 9 peak pushes at 80 to 200 cm/s in $d: their peak law skipped until all are"; fi
+  # every speed above v_c (40 to 200 cm/s) on three beds: the traces of the 10 cm box's row
+  # "above v_c" (dg10.*_from_2vc), in both boxes, before the 20 cm/s pushes of beds 2 and 3
+  # (the campaign's last part, 7.3 core-hours each); with each peak over its 10 cm twin's
+  local above=() ten_above=()
+  for f in "$d"/dg10_mu0.3_s[123]_v{40,80,140,200}_g981_D2.0.csv; do [ -f "$f" ] && above+=("$f"); done
+  if [ "${#above[@]}" = 12 ]; then
+    say "dg10, 20 and 10 cm box: the peak law above v_c, 40 to 200 cm/s on 3 beds"
+    for f in "${above[@]}"; do ten_above+=("$DG10/dg10_peak/${f##*/}"); done
+    peak_law dg10_box20_v40to200 "$o/v40to200" 20 "${above[@]}"
+    peak_law dg10_v40to200 "$OUT/dg10/v40to200" 20 "${ten_above[@]}"
+    put "dg10_box20_v40to200.peak_over_box10 = $(peak_pairs "$o/v40to200/collapse_peak.json" "$OUT/dg10/v40to200/collapse_peak.json" | stats)  # granpen collapse: peak / the 10 cm box's push of the same bed and v0, 40 to 200 cm/s"
+  else say "dg10, 20 cm box: ${#above[@]} of 12 peak pushes at 40 to 200 cm/s in $d: their peak law skipped until all are"; fi
   dg10_box20_slow "$d" "$o/slow"
   id=dg10_mu0.3_s1_v40_g981_D2.0 d=$DG10BOX/dg10_box20_flow
   if [ -f "$d/$id.csv" ] && [ -f "$d/$id.flow/window.txt" ]; then
@@ -873,13 +886,16 @@ if ls "$BOX"/box_bench*_peak/*.csv > /dev/null 2>&1; then
     dg10_grains row_of "$q" 10 dg10.peak_exponent 2 "" 1.96; dg10_grains row_of "$q" 20 dg10_box20.peak_exponent 2 "" 1.96
     q="peak exponent above v_c (ensemble means)"
     for b in 8 12 16 20; do bench_grains row_of "$q" "$b" "bench_box$b.peak_exponent_ensemble_from_2vc" 2 ""; done
-    dg10_grains row_of "$q" 10 dg10.peak_exponent_ensemble_from_2vc 2 ""; dg10_grains row_of "$q" 20 dg10_box20.peak_exponent_ensemble_from_2vc 2 ""
+    # the 20 cm box's from its 12 pushes above v_c, the same traces' twins as the 10 cm box's
+    # (its key from all 15 pushes is the same number, once the 20 cm/s pushes are in)
+    dg10_grains row_of "$q" 10 dg10.peak_exponent_ensemble_from_2vc 2 ""; dg10_grains row_of "$q" 20 dg10_box20_v40to200.peak_exponent_ensemble_from_2vc 2 ""
     # the speeds the 20 cm box has on all three beds so far (its slow end comes last)
     q="peak exponent at 80 to 200 cm/s (ensemble means)"
     dg10_grains row_of "$q" 10 dg10_v80to200.peak_exponent_ensemble_from_2vc 2 ""; dg10_grains row_of "$q" 20 dg10_box20_v80to200.peak_exponent_ensemble_from_2vc 2 ""
     q="peak over the narrower box's (same bed and v0)"
     for b in 16 20; do bench_grains row_of "$q" "$b" "bench_box$b.peak_over_box$((b - 8))" 1 ""; done
-    dg10_grains row_of "$q" 20 dg10_box20.peak_over_box10 1 ""
+    # dg10 above v_c, where the largest force within 0.7 R is an impact peak (peak_above_vc)
+    dg10_grains row_of "$q" 20 dg10_box20_v40to200.peak_over_box10 1 ""
     q="lambda_vz / D (bench at 50 and dg10 at 40 cm/s)"
     for b in 8 12 16 20; do bench_grains row_of "$q" "$b" "bench_box$b.v50.lambda_vz_D" 0.98 0.15; done
     dg10_grains row_of "$q" 10 dg10.v40.lambda_vz_D 0.98 0.15; dg10_grains row_of "$q" 20 dg10_box20.v40.lambda_vz_D 0.98 0.15

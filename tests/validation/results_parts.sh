@@ -199,6 +199,16 @@ for k in peak_exponent peak_exponent_ensemble peak_exponent_from_2vc peak_inerti
   same "dg10_box20_v80to200.$k" "$(val "dg10_v80to200.$k")"
 done
 grep -q '^dg10_v80to200.peak_exponent = .*# granpen collapse, 9 traces' "$N" || fail "the fast speeds' peak law is not of 9 traces"
+# every speed above v_c (40 to 200 cm/s): the 20 cm box's lines the 10 cm box's (the same
+# stand-ins), and the 10 cm box's above-v_c lines from these 12 traces are its lines from all
+# 15 (peak_above_vc leaves the 20 cm/s traces out): two routes to one number
+for k in peak_exponent_from_2vc peak_exponent_ensemble_from_2vc peak_inertial peak_crossover_speed peak_z; do
+  [ -n "$(val "dg10_v40to200.$k")" ] || fail "no dg10_v40to200.$k"
+  same "dg10_box20_v40to200.$k" "$(val "dg10_v40to200.$k")"
+  same "dg10_v40to200.$k" "$(val "dg10.$k")"
+done
+grep -q '^dg10_v40to200.peak_exponent = .*# granpen collapse, 12 traces' "$N" || fail "the peak law above v_c is not of 12 traces"
+same dg10_box20_v40to200.peak_over_box10 "1 +- 0 n = 12"
 for k in lambda_vz_D lambda_vz_local_D edge_phi_0 edge_slope phi_below_far phi_below_face surface_flux_sign_change_t drag_over_mu_g_Mmove M_move M_slow; do
   same "dg10_box20.v40.$k" "$(val "mid.$k")"
 done
@@ -228,7 +238,9 @@ dg10_row() { # QUANTITY BOX KEY: the row of the dg10 series holds KEY's value (e
 dg10_row "peak exponent (v_c to 10 v_c)" 10 dg10.peak_exponent
 dg10_row "peak exponent (v_c to 10 v_c)" 20 dg10_box20.peak_exponent
 dg10_row "peak exponent at 80 to 200 cm/s (ensemble means)" 20 dg10_box20_v80to200.peak_exponent_ensemble_from_2vc
-dg10_row "peak over the narrower box's (same bed and v0)" 20 dg10_box20.peak_over_box10
+dg10_row "peak exponent above v_c (ensemble means)" 10 dg10.peak_exponent_ensemble_from_2vc
+dg10_row "peak exponent above v_c (ensemble means)" 20 dg10_box20_v40to200.peak_exponent_ensemble_from_2vc
+dg10_row "peak over the narrower box's (same bed and v0)" 20 dg10_box20_v40to200.peak_over_box10
 dg10_row "lambda_vz / D (bench at 50 and dg10 at 40 cm/s)" 20 dg10_box20.v40.lambda_vz_D
 dg10_row "drag / (mu g M) (bench at 50 and dg10 at 40 cm/s)" 10 dg10.v40.drag_over_mu_g_Mmove
 dg10_row "alpha(D = 1 cm) / alpha(D = 2 cm) (bench at 28 and dg10 at 100 cm/s)" 20 dg10_box20.alpha_D1_over_D2
@@ -292,6 +304,7 @@ same_in dg10_box20.mean_below_07R_over_box10.v20 "1 +- 0 n = 2"
 grep -q "dg10, 20 cm box: no push at 40 cm/s committed in" "$OUT/res2.log" || fail "no note of the 20 cm box's missing 40 cm/s pushes"
 grep -q "dg10, 20 cm box: 10 of 15 peak pushes" "$OUT/res2.log" || fail "no note of the 20 cm box's missing peak push"
 grep -q "dg10, 20 cm box: 8 of 9 peak pushes at 80 to 200 cm/s" "$OUT/res2.log" || fail "no note of the 20 cm box's missing fast peak push"
+grep -q "dg10, 20 cm box: 8 of 12 peak pushes at 40 to 200 cm/s" "$OUT/res2.log" || fail "no note of the 20 cm box's missing pushes above v_c"
 grep -q "dg10, 20 cm box: its 40 cm/s flow push (with tables) not in" "$OUT/res2.log" || fail "no note of the 20 cm box's missing flow tables"
 grep -q "dg10_box20_D: the pushes of D = 3.0 cm" "$OUT/res2.log" || fail "no note of the 20 cm box's missing D push"
 ! grep -q '^dg10\.v\|^dg10\.alpha0_window\|^dg10\.alpha\.\|^dg10\.k_z_deep\|^dg10\.t_star\|^dg10\.collapse' "$OUT/res2/numbers.txt" ||
