@@ -86,6 +86,7 @@ do for [fmt in formats] {
   set label 1 "paper" at first 20, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
   set samples 400
   plot data index 5 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "bench grains at D/d_g = 5", \
+       data index 6 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#2ca02c" pt 5 ps 1.2 title "dg10 grains at D/d_g = 10", \
        1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
 
   # ---- panel 5: λ_{vz} / D (bench at 50 and dg10 at 40 cm/s)   (paper: 0.98 ± 0.15)
@@ -105,8 +106,8 @@ do for [fmt in formats] {
   set label 1 "paper" at first 20, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
   set samples 400
   plot keyentry with filledcurves fillcolor rgb "#d62728" fillstyle transparent solid 0.36 noborder title "paper: 0.98 ± 0.15", \
-       data index 6 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "bench grains at D/d_g = 5", \
-       data index 7 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#2ca02c" pt 5 ps 1.2 title "dg10 grains at D/d_g = 10", \
+       data index 7 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "bench grains at D/d_g = 5", \
+       data index 8 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#2ca02c" pt 5 ps 1.2 title "dg10 grains at D/d_g = 10", \
        0.98 with lines lw 1.5 dt 2 lc rgb "#d62728" notitle
 
   # ---- panel 6: drag / (μ g M) (bench at 50 and dg10 at 40 cm/s)   (paper: 1)
@@ -124,8 +125,8 @@ do for [fmt in formats] {
   set arrow 1 from first 20, graph 0 to first 20, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
   set label 1 "paper" at first 20, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
   set samples 400
-  plot data index 8 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "bench grains at D/d_g = 5", \
-       data index 9 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#2ca02c" pt 5 ps 1.2 title "dg10 grains at D/d_g = 10", \
+  plot data index 9 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "bench grains at D/d_g = 5", \
+       data index 10 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#2ca02c" pt 5 ps 1.2 title "dg10 grains at D/d_g = 10", \
        1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
 
   # ---- panel 7: α(D = 1 cm) / α(D = 2 cm) (bench at 28 and dg10 at 100 cm/s)   (paper: 1)
@@ -143,8 +144,8 @@ do for [fmt in formats] {
   set arrow 1 from first 20, graph 0 to first 20, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
   set label 1 "paper" at first 20, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
   set samples 400
-  plot data index 10 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "bench grains at D/d_g = 5", \
-       data index 11 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#2ca02c" pt 5 ps 1.2 title "dg10 grains at D/d_g = 10", \
+  plot data index 11 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "bench grains at D/d_g = 5", \
+       data index 12 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#2ca02c" pt 5 ps 1.2 title "dg10 grains at D/d_g = 10", \
        1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
 
   # ---- panel 8: α(D = 1 cm) / α(D = 2 cm) with the shaft frictionless   (paper: 1)
@@ -162,7 +163,7 @@ do for [fmt in formats] {
   set arrow 1 from first 20, graph 0 to first 20, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
   set label 1 "paper" at first 20, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
   set samples 400
-  plot data index 12 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "bench grains at D/d_g = 5", \
+  plot data index 13 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "bench grains at D/d_g = 5", \
        1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
   unset multiplot
   unset multiplot
