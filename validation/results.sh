@@ -28,8 +28,8 @@
 #   --dg10-box DIR  the committed units of validation/box.sh dg10 (default
 #                data/sims/dg10_box20; scale name dg10_box20): its peak part once its 15
 #                pushes are there (the 9 of 80 to 200 cm/s and the 12 above v_c, 40 to
-#                200 cm/s, each once they are), its flow rows once its 40 cm/s push and tables are, alpha
-#                against D once its 3 (and the frictionless shaft's 2) pushes are
+#                200 cm/s, each once they are), its flow rows once its 40 cm/s push and
+#                tables are, alpha against D once its 3 (and the frictionless shaft's 2) pushes are
 #   --out DIR    where numbers.txt, scaling.csv and the figures go (default docs/results)
 #
 # numbers.txt: one line per measured quantity, "KEY = VALUE [+- ERROR] [n = N]  # how".
