@@ -27,7 +27,7 @@
 #           pushes that fit one session first, since a session's machine may not outlive it);
 #           D = 1, 2, 3 cm at 100 cm/s to 5 cm (dg10_box20_D); D = 1 and 2 cm with a
 #           frictionless shaft (dg10_box20_shaft); the 40 cm/s flow push with dumps
-#           (dg10_box20_flow: 5.5 hours at 2 ranks, after the 2.2-hour pushes at 100 cm/s,
+#           (dg10_box20_flow: 5.5 hours at 2 ranks, after the 2.2- to 2.6-hour pushes at 100 cm/s,
 #           which a session finishes alone); last 20 cm/s on beds 2 and 3 (dg10_box20_peak5:
 #           the issue's "if the first show a change", which bed 1's 20 cm/s push answers). 21 pushes, 9.8e11 atom-steps: about
 #           76 hours of one core at 3.6e6 atom-steps/s, units of 0.7 to 11 hours (docs/presets.md,
