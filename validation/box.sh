@@ -27,9 +27,10 @@
 #           pushes that fit one session first, since a session's machine may not outlive it);
 #           D = 1, 2, 3 cm at 100 cm/s to 5 cm (dg10_box20_D); D = 1 and 2 cm with a
 #           frictionless shaft (dg10_box20_shaft); the 40 cm/s flow push with dumps
-#           (dg10_box20_flow: 5.5 hours at 2 ranks, after the 2.2- to 2.6-hour pushes at 100 cm/s,
-#           which a session finishes alone); last 20 cm/s on beds 2 and 3 (dg10_box20_peak5:
-#           the issue's "if the first show a change", which bed 1's 20 cm/s push answers). 21 pushes, 9.8e11 atom-steps: about
+#           (dg10_box20_flow: 5.5 hours at 2 ranks, after the pushes at 100 cm/s, 2.2 to 2.6
+#           hours each, which a session finishes alone); last 20 cm/s on beds 2 and 3
+#           (dg10_box20_peak5: the issue's "if the first show a change", which bed 1's 20 cm/s
+#           push answers). 21 pushes, 9.8e11 atom-steps: about
 #           76 hours of one core at 3.6e6 atom-steps/s, units of 0.7 to 11 hours (docs/presets.md,
 #           "The paper's box"): a push cut by the end of a session resumes from its last
 #           checkpoint (every 1000 steps, in the run folder, not committed) when the next run of
