@@ -612,6 +612,7 @@ dg10_box20() {
     flow_numbers dg10_box20.v40 "$d/$id.flow"
     plot_flow "$d/$id.flow" "$o/flow_v40"
   else say "dg10, 20 cm box: its 40 cm/s flow push (with tables) not in $d: skipped"; fi
+  dg10_box20_D_twins
   dg10_box20_alpha_D dg10_box20_D dg10_box20 "1.0 2.0 3.0"
   dg10_box20_alpha_D dg10_box20_shaft dg10_box20_shaft "1.0 2.0"
 }
@@ -643,6 +644,34 @@ dg10_box20_slow() { # PEAK_DIR OUT
     put "dg10.mean_below_07R_over_bed_mean.v$v = $(for s in 1 2 3; do mean_drag_below "$DG10/dg10_peak/dg10_mu0.3_s${s}_v${v}_g981_D2.0.csv" 0.7; done | over_mean | stats)  # ... the 10 cm box's three beds' means over their mean: the spread a box effect must leave"
     put "dg10_box10_20.t_part_ms.v$v = $(echo $t | tr ' ' '\n' | grep -v none | stats)  # granpen parting: when the 10 cm box's push parts from the 20 cm box's on the same grains, ms after contact, the beds committed so far"
   done
+}
+
+# Each diameter's 100 cm/s push in the 20 cm box over its 10 cm twin (bed 1: the same grains
+# under the rod), push by push as each is committed, before the D part is whole: alpha through
+# the origin over z >= 3 cm and over 1 cm windows of depth, each 20 cm over 10 cm with the fits'
+# errors in quadrature, and when the two pushes part. The 10 cm twins: dg10_D's 1 cm push and
+# dg10_flow's 2 cm push at 100 cm/s. alpha(1 cm) / alpha(2 cm) is "the box" only if a wider box
+# moves the two diameters' alpha apart; these lines say how far each moves.
+dg10_box20_D_twins() {
+  local d=$DG10BOX/dg10_box20_D o=$OUT/dg10_box20_D/box10 D f ten w r
+  for D in 1 2; do
+    f=dg10_mu0.3_s1_v100_g981_D$D.0.csv
+    if [ "$D" = 1 ]; then ten=$DG10/dg10_D/$f; else ten=$DG10/dg10_flow/$f; fi
+    [ -f "$d/$f" ] || { say "dg10, 20 cm box: its $D cm push at 100 cm/s not in $d: its lines over the 10 cm twin skipped"; continue; }
+    [ -f "$ten" ] || { say "dg10, 20 cm box: the $D cm push's 10 cm twin $ten missing: skipped"; continue; }
+    mkdir -p "$o"
+    say "dg10, 20 cm box: the $D cm push at 100 cm/s over its 10 cm twin (granpen fit, parting)"
+    for w in 3:5 1:2 2:3 3:4 4:5; do
+      "$CLI" fit "$d/$f" --zmin "${w%%:*}" --zmax "${w##*:}" --csv "$o/fit_D${D}_z${w/:/-}_box20.csv" > /dev/null
+      "$CLI" fit "$ten" --zmin "${w%%:*}" --zmax "${w##*:}" --csv "$o/fit_D${D}_z${w/:/-}_box10.csv" > /dev/null
+      r=$(paste <(one_alpha0 "$o/fit_D${D}_z${w/:/-}_box20.csv" 100 "$D") <(one_alpha0 "$o/fit_D${D}_z${w/:/-}_box10.csv" 100 "$D") |
+        awk '$1 + 0 > 0 && $7 + 0 > 0 { r = $1 / $7; printf "%.4g +- %.2g (%.4g over %.4g)", r, r * sqrt(($3 / $1) ^ 2 + ($9 / $7) ^ 2), $1, $7 }')
+      put "dg10_box20.alpha0_over_box10.v100.D$D.z${w/:/-} = ${r:-undefined}  # granpen fit --zmin ${w%%:*} --zmax ${w##*:}, bed 1: alpha through the origin, the 20 cm push over its 10 cm twin (the fits' errors in quadrature)"
+    done
+    put "dg10_box10_20.t_part_ms.v100.D$D = $(parting_ms "$ten" "$d/$f" "$o/dg10_10_20_D${D}_v100.json")  # granpen parting: ms after contact when the $D cm push in the 10 cm box parts from its 20 cm twin (the 10 cm box's 50 ms push)"
+    "$CLI" plot parting "$o/dg10_10_20_D${D}_v100.json" --out "$o/fig_parting_D$D" > /dev/null
+  done
+  return 0
 }
 
 # alpha against D in the 20 cm box (DIR under $DG10BOX: bed 1, 100 cm/s, the diameters given),

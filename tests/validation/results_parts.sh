@@ -231,6 +231,20 @@ same dg10_box20.alpha_D1_over_D2_zD1to2 "$(awk -v a="$(fit_col "$d1" alpha0 --zm
   -v b="$(fit_col "$d2" alpha0 --zmin 2 --zmax 4)" -v eb="$(fit_col "$d2" alpha0_se --zmin 2 --zmax 4)" \
   'BEGIN { a = sprintf("%.4g", a); b = sprintf("%.4g", b); ea = sprintf("%.2g", ea); eb = sprintf("%.2g", eb)
            r = a / b; printf "%.4g +- %.2g\n", r, r * sqrt((ea / a) ^ 2 + (eb / b) ^ 2) }')"
+# each diameter's push over its 10 cm twin: the stand-ins are the twins' own files (the 1 cm
+# push dg10_D's, the 2 cm push dg10_flow's 100 cm/s push), so every ratio is 1 with the fit's
+# relative error times sqrt 2, each alpha granpen fit's on the file directly (rounded as
+# printed), and no pair parts
+for D in 1 2; do
+  f=$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D$D.0.csv
+  for w in 3:5 1:2 2:3 3:4 4:5; do
+    same "dg10_box20.alpha0_over_box10.v100.D$D.z${w/:/-}" "$(awk -v a="$(fit_col "$f" alpha0 --zmin "${w%%:*}" --zmax "${w##*:}")" \
+      -v e="$(fit_col "$f" alpha0_se --zmin "${w%%:*}" --zmax "${w##*:}")" \
+      'BEGIN { a = sprintf("%.4g", a); e = sprintf("%.2g", e); printf "%.4g +- %.2g (%.4g over %.4g)\n", 1, sqrt(2) * e / a, a, a }')"
+  done
+  same "dg10_box10_20.t_part_ms.v100.D$D" none
+  [ -s "$OUT/res/dg10_box20_D/box10/fig_parting_D$D/parting.png" ] || fail "no parting figure of the $D cm push"
+done
 # the box figure's dg10 series: the 10 cm box's row and the 20 cm box's, each the key's value
 dg10_row() { # QUANTITY BOX KEY: the row of the dg10 series holds KEY's value (empty when KEY is not in numbers.txt)
   grep -q "^$1,$2,$(val "$3" | awk '{print $1}'),.*,dg10 grains at D/d_g = 10$" "$OUT/res/box.csv" || fail "box.csv: no dg10 row $1 at $2 cm with $3's value"
@@ -294,8 +308,14 @@ rm "$B20/dg10_box20_peak/dg10_mu0.3_s3_v200_g981_D2.0.csv" "$B20/dg10_box20_flow
   "$B20/dg10_box20_peak/dg10_mu0.3_s3_v40_g981_D2.0.csv"
 GRANPEN_CLI=$CLI "$ROOT/validation/results.sh" --out "$OUT/res2" --dumps /nonexistent --dg10 "$DG" --stiff "$ST" --damp "$DA" \
   --dg10-box "$B20" > "$OUT/res2.log" 2>&1 || { cat "$OUT/res2.log"; fail "results.sh failed with a part missing"; }
-! grep '^dg10_box20' "$OUT/res2/numbers.txt" | grep -q -v '^dg10_box20.\(peak_over_box10\|mean_below_07R_over_box10\).v20 ' ||
+! grep '^dg10_box20' "$OUT/res2/numbers.txt" | grep -q -v '^dg10_box20.\(peak_over_box10\|mean_below_07R_over_box10\).v20 \|^dg10_box20.alpha0_over_box10.v100.D2.' ||
   fail "a dg10 20 cm box part with a push missing added lines"
+# the D pushes over their 10 cm twins push by push: the 2 cm one's lines with the 3 cm push
+# missing, none of the 1 cm one's with its 10 cm twin missing (a note instead)
+[ "$(grep -c '^dg10_box20.alpha0_over_box10.v100.D2.z' "$OUT/res2/numbers.txt")" = 5 ] || fail "the 2 cm push over its twin not read with the 3 cm push missing"
+grep -q '^dg10_box10_20.t_part_ms.v100.D2 = none ' "$OUT/res2/numbers.txt" || fail "the 2 cm push's parting not read with the 3 cm push missing"
+! grep -q '^dg10_box20.alpha0_over_box10.v100.D1\|^dg10_box10_20.t_part_ms.v100.D1' "$OUT/res2/numbers.txt" || fail "the 1 cm push read over a missing twin"
+grep -q "dg10, 20 cm box: the 1 cm push's 10 cm twin .* missing: skipped" "$OUT/res2.log" || fail "no note of the 1 cm push's missing twin"
 # ... but the slow end goes push by push: 20 cm/s on the two beds still there, 40 cm/s on none
 same_in() { [ "$(awk -v k="$1" '$1 == k { sub(/  #.*/, ""); sub(/^[^=]*= /, ""); print; exit }' "$OUT/res2/numbers.txt")" = "$2" ] ||
   fail "with pushes missing: $1 is not '$2'"; }
