@@ -676,17 +676,22 @@ dg10_box20_D_twins() {
 
 # alpha against D in the 20 cm box (DIR under $DG10BOX: bed 1, 100 cm/s, the diameters given),
 # over z >= 3 cm as dg10_D: alpha through the origin, the two terms of F = a z + b z^2, and
-# alpha(1 cm) / alpha(2 cm) with the fits' errors in quadrature
+# alpha(1 cm) / alpha(2 cm) with the fits' errors in quadrature. Push by push, as each is
+# committed (a 20 cm push is 2 to 3 hours here): each diameter's lines once its push is in, the
+# ratio once the 1 and 2 cm pushes are (the row "alpha against D" is that ratio; the 3 cm push
+# adds its own point)
 dg10_box20_alpha_D() { # SWEEP KEY "D..."
-  local d=$DG10BOX/$1 key=$2 o=$OUT/$1 D traces=() missing=""
+  local d=$DG10BOX/$1 key=$2 o=$OUT/$1 D traces=() here="" missing=""
   for D in $3; do
-    [ -f "$d/dg10_mu0.3_s1_v100_g981_D$D.csv" ] && traces+=("$d/dg10_mu0.3_s1_v100_g981_D$D.csv") || missing="$missing $D"
+    if [ -f "$d/dg10_mu0.3_s1_v100_g981_D$D.csv" ]; then traces+=("$d/dg10_mu0.3_s1_v100_g981_D$D.csv") here="$here $D"
+    else missing="$missing $D"; fi
   done
-  [ -z "$missing" ] || { say "$1: the pushes of D =$missing cm at 100 cm/s not all in $d: skipped until all are (validation/box.sh dg10)"; return 0; }
-  say "$1: alpha against D (granpen fit --zmin 3)"
+  [ -z "$missing" ] || say "$1: the pushes of D =$missing cm at 100 cm/s not in $d: their lines wait for them (validation/box.sh dg10)"
+  [ "${#traces[@]}" -gt 0 ] || return 0
+  say "$1: alpha against D (granpen fit --zmin 3), D =$here cm"
   mkdir -p "$o"
   "$CLI" fit "${traces[@]}" --zmin 3 --csv "$o/fit_z3.csv" > "$o/fit_z3.txt"
-  for D in $3; do
+  for D in $here; do
     put "$key.alpha0_window.v100.D${D%.0} = $(one_alpha0 "$o/fit_z3.csv" 100 "$D")  # granpen fit --zmin 3: k_z0 / (mu rho_g g D^2), bed 1; the fit's standard error"
     put "$key.alpha_a.v100.D${D%.0} = $(one_fit "$o/fit_z3.csv" alpha_a 100 "$D")  # granpen fit --zmin 3, F = a z + b z^2: a / (mu rho_g g D^2)"
     put "$key.beta_b.v100.D${D%.0} = $(one_fit "$o/fit_z3.csv" beta_b 100 "$D")  # ... b / (mu rho_g g D): the shaft-like term"
@@ -820,9 +825,8 @@ same_depth_in_D() {
     alpha_same_depth_in_D "bench_box$b" "$OUT/box_bench${b}_D/same_depth_in_D" "$BOX/box_bench${b}_D"/bench_mu0.3_s1[12]_v28_g981_D[12].0.csv
     alpha_same_depth_in_D "bench_box${b}_shaft" "$OUT/box_bench${b}_shaft/same_depth_in_D" "$BOX/box_bench${b}_shaft"/bench_mu0.3_s1[12]_v28_g981_D[12].0.csv
   done
-  # the 20 cm dg10 box once its D part (1, 2 and 3 cm) is committed, as dg10_box20_alpha_D
-  [ ! -f "$DG10BOX/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D3.0.csv" ] ||
-    alpha_same_depth_in_D dg10_box20 "$OUT/dg10_box20_D/same_depth_in_D" "$DG10BOX/dg10_box20_D"/dg10_mu0.3_s1_v100_g981_D[12].0.csv
+  # the 20 cm dg10 box once its 1 and 2 cm pushes are committed, as dg10_box20_alpha_D
+  alpha_same_depth_in_D dg10_box20 "$OUT/dg10_box20_D/same_depth_in_D" "$DG10BOX/dg10_box20_D"/dg10_mu0.3_s1_v100_g981_D{1,2}.0.csv
 }
 same_depth_in_D
 

@@ -308,8 +308,20 @@ rm "$B20/dg10_box20_peak/dg10_mu0.3_s3_v200_g981_D2.0.csv" "$B20/dg10_box20_flow
   "$B20/dg10_box20_peak/dg10_mu0.3_s3_v40_g981_D2.0.csv"
 GRANPEN_CLI=$CLI "$ROOT/validation/results.sh" --out "$OUT/res2" --dumps /nonexistent --dg10 "$DG" --stiff "$ST" --damp "$DA" \
   --dg10-box "$B20" > "$OUT/res2.log" 2>&1 || { cat "$OUT/res2.log"; fail "results.sh failed with a part missing"; }
-! grep '^dg10_box20' "$OUT/res2/numbers.txt" | grep -q -v '^dg10_box20.\(peak_over_box10\|mean_below_07R_over_box10\).v20 \|^dg10_box20.alpha0_over_box10.v100.D2.' ||
+! grep '^dg10_box20' "$OUT/res2/numbers.txt" | grep -q -v '^dg10_box20.\(peak_over_box10\|mean_below_07R_over_box10\).v20 \|^dg10_box20.alpha0_over_box10.v100.D2.\|^dg10_box20\.\(alpha0_window\|alpha_a\|beta_b\|alpha0_zD1to2\)\.\(v100\.\)\?D[12] \|^dg10_box20\.alpha_D1_over_D2\(_zD1to2\)\? ' ||
   fail "a dg10 20 cm box part with a push missing added lines"
+# alpha against D push by push: with the 3 cm push missing, the 1 and 2 cm pushes' lines and
+# their ratio (the row itself, also over the same depth in D) are those of the whole part
+# (the same files, each fitted alone), and the 3 cm push adds none
+for k in alpha0_window.v100.D1 alpha0_window.v100.D2 alpha_a.v100.D1 alpha_a.v100.D2 beta_b.v100.D1 beta_b.v100.D2 \
+  alpha_D1_over_D2 alpha0_zD1to2.D1 alpha0_zD1to2.D2 alpha_D1_over_D2_zD1to2; do
+  [ -n "$(val "dg10_box20.$k")" ] || fail "no dg10_box20.$k with all three pushes"
+  [ "$(awk -v k="dg10_box20.$k" '$1 == k { sub(/  #.*/, ""); sub(/^[^=]*= /, ""); print; exit }' "$OUT/res2/numbers.txt")" = "$(val "dg10_box20.$k")" ] ||
+    fail "with the 3 cm push missing, dg10_box20.$k is not the whole part's"
+done
+! grep -q '^dg10_box20\.[a-z_0-9]*\.v100\.D3 ' "$OUT/res2/numbers.txt" || fail "the missing 3 cm push added lines"
+grep -q "^alpha(D = 1 cm) / alpha(D = 2 cm) (bench at 28 and dg10 at 100 cm/s),20,$(val dg10_box20.alpha_D1_over_D2 | awk '{print $1}'),.*,dg10 grains at D/d_g = 10$" "$OUT/res2/box.csv" ||
+  fail "box.csv: no dg10 20 cm row of alpha(1 cm) / alpha(2 cm) with the 3 cm push missing"
 # the D pushes over their 10 cm twins push by push: the 2 cm one's lines with the 3 cm push
 # missing, none of the 1 cm one's with its 10 cm twin missing (a note instead)
 [ "$(grep -c '^dg10_box20.alpha0_over_box10.v100.D2.z' "$OUT/res2/numbers.txt")" = 5 ] || fail "the 2 cm push over its twin not read with the 3 cm push missing"
