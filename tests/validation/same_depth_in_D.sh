@@ -5,8 +5,8 @@
 # deep for the 1 cm rod and 1 D for the 2 cm one. Over the same depth in D, z = D to 2 D
 # (1 to 2 cm for the 1 cm rod, 2 to 4 cm for the 2 cm rod), a depth term that depends on
 # z / D alone (F = D^3 f(z / D)) gives the two rods the same alpha. The committed pushes must
-# show, in each of five independent settings (bench, mid and dg10 grains in their 8 to 10 cm
-# boxes; bench grains in the 8 and 20 cm box series):
+# show, in each of six independent settings (bench, mid and dg10 grains in their 8 to 10 cm
+# boxes; dg10 grains in the 20 cm box; bench grains in the 8 and 20 cm box series):
 #  1. two routes agree: alpha through the origin, sum(F z) / sum(z^2) / (mu rho_g g D^2) over
 #     the window's rows, computed here with awk from the trace's header and rows, equals
 #     granpen fit --zmin D --zmax 2D's alpha0 to 1e-6 relative (both sum the same rows in
@@ -69,6 +69,7 @@ setting() { # NAME TRACE... (as many of D = 1 as of D = 2 cm, the same beds)
 setting bench "$S"/validation_bench/bench_mu0.3_s{1,2}_v28_g981_D{1,2}.0.csv
 setting mid "$S"/validation_mid/mid_mu0.3_s{1,2}_v90_g981_D{1,2}.0.csv
 setting dg10 "$S"/dg10/dg10_D/dg10_mu0.3_s1_v100_g981_D1.0.csv "$S"/dg10/dg10_flow/dg10_mu0.3_s1_v100_g981_D2.0.csv
+setting "dg10, 20 cm box" "$S"/dg10_box20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D{1,2}.0.csv
 for b in 8 20; do setting "bench, ${b} cm box" "$S"/box_bench/box_bench${b}_D/bench_mu0.3_s1{1,2}_v28_g981_D{1,2}.0.csv; done
 [ "$checked" -gt 0 ] || { echo "same_depth_in_D: no setting committed: skipped"; exit 77; }
 echo "same_depth_in_D: the thin rod's excess stays at the same depth in D in $checked of $checked settings"

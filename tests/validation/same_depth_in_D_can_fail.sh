@@ -14,7 +14,7 @@ fail() { echo "FAIL: $*"; exit 1; }
 rm -rf "$WORK" && mkdir -p "$WORK"
 . "$HERE/can_fail_lib.sh"
 expect() { expect_exit same_depth_in_D.sh "$1" "$2" "$HERE/same_depth_in_D.sh" "$CLI" "$3" "$WORK/run"; }    # RC PATTERN ROOT
-expect 0 "in 5 of 5 settings" "$SRC"
+expect 0 "in 6 of 6 settings" "$SRC"
 
 # the 1 cm push of F = D^3 f(z / D) made of a 2 cm push: scaled TWO OUT
 scaled() { awk -F, 'BEGIN { OFS = "," } /^# D = / { print "# D = 1"; next } /^#/ { print; next }
@@ -36,6 +36,7 @@ vb=validation_bench/bench_mu0.3 vm=validation_mid/mid_mu0.3
 stand_in bench "${vb}_s1_v28_g981_D2.0.csv:${vb}_s1_v28_g981_D1.0.csv" "${vb}_s2_v28_g981_D2.0.csv:${vb}_s2_v28_g981_D1.0.csv"
 stand_in mid "${vm}_s1_v90_g981_D2.0.csv:${vm}_s1_v90_g981_D1.0.csv" "${vm}_s2_v90_g981_D2.0.csv:${vm}_s2_v90_g981_D1.0.csv"
 stand_in dg10 "dg10/dg10_flow/dg10_mu0.3_s1_v100_g981_D2.0.csv:dg10/dg10_D/dg10_mu0.3_s1_v100_g981_D1.0.csv"
+stand_in "dg10, 20 cm box" "dg10_box20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D2.0.csv:dg10_box20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D1.0.csv"
 for b in 8 20; do
   p=box_bench/box_bench${b}_D/bench_mu0.3
   stand_in "bench, $b cm box" "${p}_s11_v28_g981_D2.0.csv:${p}_s11_v28_g981_D1.0.csv" "${p}_s12_v28_g981_D2.0.csv:${p}_s12_v28_g981_D1.0.csv"
