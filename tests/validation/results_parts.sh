@@ -306,6 +306,9 @@ rm "$B20/dg10_box20_peak/dg10_mu0.3_s3_v200_g981_D2.0.csv" "$B20/dg10_box20_flow
   "$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D3.0.csv" "$B20/dg10_box20_peak/dg10_mu0.3_s2_v20_g981_D2.0.csv" \
   "$B20/dg10_box20_peak/dg10_mu0.3_s1_v40_g981_D2.0.csv" "$B20/dg10_box20_peak/dg10_mu0.3_s2_v40_g981_D2.0.csv" \
   "$B20/dg10_box20_peak/dg10_mu0.3_s3_v40_g981_D2.0.csv"
+# KEY is VALUE in the run with pushes missing
+same_in() { [ "$(awk -v k="$1" '$1 == k { sub(/  #.*/, ""); sub(/^[^=]*= /, ""); print; exit }' "$OUT/res2/numbers.txt")" = "$2" ] ||
+  fail "with pushes missing: $1 is not '$2'"; }
 GRANPEN_CLI=$CLI "$ROOT/validation/results.sh" --out "$OUT/res2" --dumps /nonexistent --dg10 "$DG" --stiff "$ST" --damp "$DA" \
   --dg10-box "$B20" > "$OUT/res2.log" 2>&1 || { cat "$OUT/res2.log"; fail "results.sh failed with a part missing"; }
 ! grep '^dg10_box20' "$OUT/res2/numbers.txt" | grep -q -v '^dg10_box20.\(peak_over_box10\|mean_below_07R_over_box10\).v20 \|^dg10_box20.alpha0_over_box10.v100.D2.\|^dg10_box20\.\(alpha0_window\|alpha_a\|beta_b\|alpha0_zD1to2\)\.\(v100\.\)\?D[12] \|^dg10_box20\.alpha_D1_over_D2\(_zD1to2\)\? ' ||
@@ -316,8 +319,7 @@ GRANPEN_CLI=$CLI "$ROOT/validation/results.sh" --out "$OUT/res2" --dumps /nonexi
 for k in alpha0_window.v100.D1 alpha0_window.v100.D2 alpha_a.v100.D1 alpha_a.v100.D2 beta_b.v100.D1 beta_b.v100.D2 \
   alpha_D1_over_D2 alpha0_zD1to2.D1 alpha0_zD1to2.D2 alpha_D1_over_D2_zD1to2; do
   [ -n "$(val "dg10_box20.$k")" ] || fail "no dg10_box20.$k with all three pushes"
-  [ "$(awk -v k="dg10_box20.$k" '$1 == k { sub(/  #.*/, ""); sub(/^[^=]*= /, ""); print; exit }' "$OUT/res2/numbers.txt")" = "$(val "dg10_box20.$k")" ] ||
-    fail "with the 3 cm push missing, dg10_box20.$k is not the whole part's"
+  same_in "dg10_box20.$k" "$(val "dg10_box20.$k")"
 done
 ! grep -q '^dg10_box20\.[a-z_0-9]*\.v100\.D3 ' "$OUT/res2/numbers.txt" || fail "the missing 3 cm push added lines"
 grep -q "^alpha(D = 1 cm) / alpha(D = 2 cm) (bench at 28 and dg10 at 100 cm/s),20,$(val dg10_box20.alpha_D1_over_D2 | awk '{print $1}'),.*,dg10 grains at D/d_g = 10$" "$OUT/res2/box.csv" ||
@@ -329,8 +331,6 @@ grep -q '^dg10_box10_20.t_part_ms.v100.D2 = none ' "$OUT/res2/numbers.txt" || fa
 ! grep -q '^dg10_box20.alpha0_over_box10.v100.D1\|^dg10_box10_20.t_part_ms.v100.D1' "$OUT/res2/numbers.txt" || fail "the 1 cm push read over a missing twin"
 grep -q "dg10, 20 cm box: the 1 cm push's 10 cm twin .* missing: skipped" "$OUT/res2.log" || fail "no note of the 1 cm push's missing twin"
 # ... but the slow end goes push by push: 20 cm/s on the two beds still there, 40 cm/s on none
-same_in() { [ "$(awk -v k="$1" '$1 == k { sub(/  #.*/, ""); sub(/^[^=]*= /, ""); print; exit }' "$OUT/res2/numbers.txt")" = "$2" ] ||
-  fail "with pushes missing: $1 is not '$2'"; }
 same_in dg10_box20.peak_over_box10.v20 "1 +- 0 n = 2"
 same_in dg10_box20.mean_below_07R_over_box10.v20 "1 +- 0 n = 2"
 grep -q "dg10, 20 cm box: no push at 40 cm/s committed in" "$OUT/res2.log" || fail "no note of the 20 cm box's missing 40 cm/s pushes"
