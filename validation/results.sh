@@ -698,6 +698,20 @@ dg10_box20_alpha_D() { # SWEEP KEY "D..."
   done
   local q; q=$(quad_ratio "$key.alpha0_window.v100.D1" "$key.alpha0_window.v100.D2")
   [ -n "$q" ] && put "$key.alpha_D1_over_D2 = $(printf '%.4g +- %.2g' $q)  # the two above, the fits' errors in quadrature"
+  # the 3 cm rod against the rim term, alpha = A + B / D through the 1 and 2 cm rods, which
+  # puts it at alpha(3) / alpha(2) = 4/3 - r/3 (r = alpha(1) / alpha(2), its error over 3);
+  # F_z ~ D^2 puts it at 1
+  [ -n "$q" ] && [ -n "$(nval "$key.alpha0_window.v100.D3")" ] || return 0
+  put "$key.alpha_D3_over_D2 = $(printf '%.4g +- %.2g' $(quad_ratio "$key.alpha0_window.v100.D3" "$key.alpha0_window.v100.D2"))  # the fits' errors in quadrature"
+  put "$key.alpha_D3_over_D2_rim = $(awk -v r="${q% *}" -v e="${q#* }" 'BEGIN { printf "%.4g +- %.2g", 4 / 3 - r / 3, e / 3 }')  # alpha = A + B / D through D = 1 and 2 cm: 4/3 - alpha_D1_over_D2 / 3"
+  # how F_z grows with D over the three rods: the slope of ln(alpha D^2) on ln D (the paper's
+  # F_z ~ D^2: 2; its error on one degree of freedom), the exponent from 2 to 3 cm alone, and
+  # the rim term's length B / A by least squares of alpha on 1 / D over the three rods
+  local a1 a2 a3; a1=$(nval "$key.alpha0_window.v100.D1") a2=$(nval "$key.alpha0_window.v100.D2") a3=$(nval "$key.alpha0_window.v100.D3")
+  put "$key.depth_term_D_exponent = $(printf '1 %s\n2 %s\n3 %s\n' "$a1" "$(awk -v a="$a2" 'BEGIN { print 4 * a }')" "$(awk -v a="$a3" 'BEGIN { print 9 * a }')" | log_slope)  # ln(alpha0 D^2) on ln D, D = 1, 2, 3 cm (one push each, z >= 3 cm)"
+  put "$key.depth_term_D_exponent_D2to3 = $(awk -v a="$a2" -v b="$a3" 'BEGIN { printf "%.3g", log(9 * b / (4 * a)) / log(3 / 2) }')  # ln(F(3 cm) / F(2 cm)) / ln(3/2) at the same z"
+  put "$key.rim_B_over_A_D1to3 = $(printf '1 %s\n2 %s\n3 %s\n' "$a1" "$a2" "$a3" | awk '{ x = 1 / $1; y = $2; sx += x; sy += y; sxx += x * x; sxy += x * y; n++ }
+      END { b = (n * sxy - sx * sy) / (n * sxx - sx * sx); a = (sy - b * sx) / n; printf "%.3g", b / a }')  # cm, least squares of alpha on 1 / D, D = 1, 2, 3 cm"
   return 0
 }
 if [ -d "$DG10BOX" ]; then dg10_box20; else say "dg10, 20 cm box: $DG10BOX missing, skipped"; fi
