@@ -224,9 +224,37 @@ same dg10_box20.alpha_D1_over_D2 "$(awk -v a="$(fit_col "$B20/dg10_box20_D/dg10_
   -v b="$(fit_col "$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D2.0.csv" alpha0 --zmin 3)" \
   -v eb="$(fit_col "$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D2.0.csv" alpha0_se --zmin 3)" \
   'BEGIN { r = a / b; printf "%.4g +- %.2g\n", r, r * sqrt((ea / a) ^ 2 + (eb / b) ^ 2) }')"
+d1=$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D1.0.csv d2=$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D2.0.csv d3=$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D3.0.csv
+# the 3 cm push: its stand-in is the 2 cm push's trace with D = 3 in its header, the same force
+# at every z, so F_z(3 cm) / F_z(2 cm) = 1 is the known answer: alpha(3) / alpha(2) = 4/9 and
+# the exponent from 2 to 3 cm is 0, within the 4 digits numbers.txt keeps of each alpha (up
+# to 3.3e-4 of an alpha near 15): 5e-4 of the ratio, 2.2e-4 of 4/9 plus its own last digit,
+# so 3e-4; on the exponent 5e-4 / ln 1.5 = 1.2e-3, so 1.5e-3
+a1=$(fit_col "$d1" alpha0 --zmin 3) a2=$(fit_col "$d2" alpha0 --zmin 3) a3=$(fit_col "$d3" alpha0 --zmin 3)
+near() { awk -v a="$1" -v b="$2" -v t="$3" 'BEGIN { d = a - b; if (d < 0) d = -d; exit !(d <= t) }'; }
+r=$(val dg10_box20.alpha_D3_over_D2) e=$(val dg10_box20.depth_term_D_exponent_D2to3)
+near "${r%% *}" "$(awk 'BEGIN { print 4 / 9 }')" 3e-4 || fail "alpha(3) / alpha(2) = $r where the stand-in's force is the 2 cm push's: 4/9 expected"
+near "$e" 0 1.5e-3 || fail "the exponent from 2 to 3 cm is $e where the force does not change with D: 0 expected"
+same dg10_box20.alpha_D3_over_D2 "$(awk -v a="$a3" -v ea="$(fit_col "$d3" alpha0_se --zmin 3)" -v b="$a2" -v eb="$(fit_col "$d2" alpha0_se --zmin 3)" \
+  'BEGIN { a = sprintf("%.4g", a); b = sprintf("%.4g", b); ea = sprintf("%.2g", ea); eb = sprintf("%.2g", eb)
+           r = a / b; printf "%.4g +- %.2g\n", r, r * sqrt((ea / a) ^ 2 + (eb / b) ^ 2) }')"
+# the rim term's prediction from the 1 and 2 cm rods alone, and its length over the three
+# rods: B / A of alpha = A + B / D by the normal equations in closed form (x = 1 / D), against
+# results.sh's least squares; 3 digits kept, so a relative 5e-3
+same dg10_box20.alpha_D3_over_D2_rim "$(awk -v a="$a1" -v ea="$(fit_col "$d1" alpha0_se --zmin 3)" -v b="$a2" -v eb="$(fit_col "$d2" alpha0_se --zmin 3)" \
+  'BEGIN { a = sprintf("%.4g", a); b = sprintf("%.4g", b); ea = sprintf("%.2g", ea); eb = sprintf("%.2g", eb)
+           r = a / b; printf "%.4g +- %.2g", 4 / 3 - r / 3, r * sqrt((ea / a) ^ 2 + (eb / b) ^ 2) / 3 }')"
+ba=$(awk -v y1="$a1" -v y2="$a2" -v y3="$a3" 'BEGIN { x1 = 1; x2 = 1 / 2; x3 = 1 / 3; mx = (x1 + x2 + x3) / 3; my = (y1 + y2 + y3) / 3
+  b = ((x1 - mx) * (y1 - my) + (x2 - mx) * (y2 - my) + (x3 - mx) * (y3 - my)) / ((x1 - mx) ^ 2 + (x2 - mx) ^ 2 + (x3 - mx) ^ 2); print b / (my - b * mx) }')
+near "$(val dg10_box20.rim_B_over_A_D1to3)" "$ba" "$(awk -v b="$ba" 'BEGIN { print (b < 0 ? -b : b) * 5e-3 }')" ||
+  fail "rim B / A over the three rods = $(val dg10_box20.rim_B_over_A_D1to3), the closed form gives $ba"
+p=$(val dg10_box20.depth_term_D_exponent)
+near "${p%% *}" "$(awk -v y1="$a1" -v y2="$a2" -v y3="$a3" 'BEGIN { x1 = 0; x2 = log(2); x3 = log(3); u1 = log(y1); u2 = log(4 * y2); u3 = log(9 * y3)
+  mx = (x1 + x2 + x3) / 3; mu = (u1 + u2 + u3) / 3
+  print ((x1 - mx) * (u1 - mu) + (x2 - mx) * (u2 - mu) + (x3 - mx) * (u3 - mu)) / ((x1 - mx) ^ 2 + (x2 - mx) ^ 2 + (x3 - mx) ^ 2) }')" 5e-3 ||
+  fail "the exponent of F_z in D over the three rods = $p, not the closed form's slope"
 # ... and over the same depth in D (z = D to 2 D): the 1 cm push over 1 to 2 cm, the 2 cm push
 # over 2 to 4 cm, the fits' errors in quadrature
-d1=$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D1.0.csv d2=$B20/dg10_box20_D/dg10_mu0.3_s1_v100_g981_D2.0.csv
 same dg10_box20.alpha_D1_over_D2_zD1to2 "$(awk -v a="$(fit_col "$d1" alpha0 --zmin 1 --zmax 2)" -v ea="$(fit_col "$d1" alpha0_se --zmin 1 --zmax 2)" \
   -v b="$(fit_col "$d2" alpha0 --zmin 2 --zmax 4)" -v eb="$(fit_col "$d2" alpha0_se --zmin 2 --zmax 4)" \
   'BEGIN { a = sprintf("%.4g", a); b = sprintf("%.4g", b); ea = sprintf("%.2g", ea); eb = sprintf("%.2g", eb)
