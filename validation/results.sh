@@ -868,6 +868,7 @@ row() {
     "lambda_vz / D (bench at 50 and dg10 at 40 cm/s)") label="λ_{vz} / D (bench at 50 and dg10 at 40 cm/s)" ;;
     "drag / (mu g M) (bench at 50 and dg10 at 40 cm/s)") label="drag / (μ g M) (bench at 50 and dg10 at 40 cm/s)" ;;
     "alpha(D = 1 cm) / alpha(D = 2 cm) (bench at 28 and dg10 at 100 cm/s)") label="α(D = 1 cm) / α(D = 2 cm) (bench at 28 and dg10 at 100 cm/s)" ;;
+    "alpha(D = 3 cm) / alpha(D = 2 cm) (bench at 28 and dg10 at 100 cm/s)") label="α(3 cm) / α(2 cm) (bench at 28 and dg10 at 100 cm/s)" ;;
     "... the same with the shaft frictionless") label="α(D = 1 cm) / α(D = 2 cm) with the shaft frictionless" ;;
   esac
   printf '%s,%s,%s,%s,%s,%s,%s,%s%s\n' "$1" "$2" "$3" "$4" "$5" "$6" "$unit" "$label" "${ROW_SERIES+,$ROW_SERIES}"
@@ -952,6 +953,10 @@ if ls "$BOX"/box_bench*_peak/*.csv > /dev/null 2>&1; then
     q="alpha(D = 1 cm) / alpha(D = 2 cm) (bench at 28 and dg10 at 100 cm/s)"
     for b in 8 20; do bench_grains row_of "$q" "$b" "bench_box$b.alpha_D1_over_D2" 1 ""; done
     dg10_grains ratio_of "$q" 10 dg10.alpha0_window.v100.D1 dg10.alpha0_window.v100.D2 1 ""; dg10_grains row_of "$q" 20 dg10_box20.alpha_D1_over_D2 1 ""
+    # the rim term's test: a term A + B / D puts the 3 cm rod below the 2 cm rod's alpha, F_z ~ D^2 at 1
+    q="alpha(D = 3 cm) / alpha(D = 2 cm) (bench at 28 and dg10 at 100 cm/s)"
+    for b in 8 20; do bench_grains row_of "$q" "$b" "bench_box$b.alpha_D3_over_D2" 1 ""; done
+    dg10_grains row_of "$q" 20 dg10_box20.alpha_D3_over_D2 1 ""
     q="... the same with the shaft frictionless"
     for b in 8 20; do bench_grains row_of "$q" "$b" "bench_box${b}_shaft.alpha_D1_over_D2" 1 ""; done
     dg10_grains row_of "$q" 20 dg10_box20_shaft.alpha_D1_over_D2 1 ""

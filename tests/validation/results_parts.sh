@@ -152,6 +152,8 @@ same bench_box20.alpha_D1_over_D2 "$(awk -v a="$(val bench_box20.alpha0_window.v
   'BEGIN { r = a / b; printf "%.4g +- %.2g\n", r, r * sqrt((ea / a) ^ 2 + (eb / b) ^ 2) }')"
 grep -q "^alpha(D = 1 cm) / alpha(D = 2 cm) (bench at 28 and dg10 at 100 cm/s),20,$(val bench_box20.alpha_D1_over_D2 | awk '{print $1}'),.*,bench grains at D/d_g = 5$" "$OUT/res/box.csv" ||
   fail "box.csv lacks the 20 cm box's alpha ratio"
+grep -q "^alpha(D = 3 cm) / alpha(D = 2 cm) (bench at 28 and dg10 at 100 cm/s),20,$(val bench_box20.alpha_D3_over_D2 | awk '{print $1}'),.*,bench grains at D/d_g = 5$" "$OUT/res/box.csv" ||
+  fail "box.csv lacks the 20 cm box's alpha(3 cm) / alpha(2 cm)"
 ! grep -q '^bench_box12\.\|^bench_box16\.v50\|^bench_box20\.peak_over\|^bench_box8\.v50\|^bench_box8.peak_over\|^bench_box8\.alpha\|^bench_box8_shaft\|^bench_box20_shaft' "$N" || fail "an incomplete box part added lines"
 grep -q "box_bench8_D: 0 of 6 pushes" "$OUT/res.log" || fail "no note of the 8 cm box's missing D pushes"
 grep -q "box 12 cm: 0 of 10 peak pushes" "$OUT/res.log" || fail "no note of the 12 cm box's missing pushes"
@@ -286,6 +288,7 @@ dg10_row "peak over the narrower box's (same bed and v0)" 20 dg10_box20_v40to200
 dg10_row "lambda_vz / D (bench at 50 and dg10 at 40 cm/s)" 20 dg10_box20.v40.lambda_vz_D
 dg10_row "drag / (mu g M) (bench at 50 and dg10 at 40 cm/s)" 10 dg10.v40.drag_over_mu_g_Mmove
 dg10_row "alpha(D = 1 cm) / alpha(D = 2 cm) (bench at 28 and dg10 at 100 cm/s)" 20 dg10_box20.alpha_D1_over_D2
+dg10_row "alpha(D = 3 cm) / alpha(D = 2 cm) (bench at 28 and dg10 at 100 cm/s)" 20 dg10_box20.alpha_D3_over_D2
 dg10_row "... the same with the shaft frictionless" 20 dg10_box20_shaft.alpha_D1_over_D2
 ! grep -q '^dg10_box20_shaft\.' "$N" || fail "the shaft part without its pushes added lines"
 grep -q "dg10_box20_shaft: the pushes of D = 1.0 2.0 cm" "$OUT/res.log" || fail "no note of the shaft's missing pushes"
