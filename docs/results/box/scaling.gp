@@ -6,10 +6,10 @@ if (!exists("formats")) formats = "png svg"
 data = "scaling.dat"
 do for [fmt in formats] {
   if (fmt eq "png") {
-    set terminal pngcairo enhanced size 1300,1640 font "sans,12" background rgb "white"
+    set terminal pngcairo enhanced size 1300,2020 font "sans,12" background rgb "white"
   } else {
     if (fmt ne "svg") { print "unknown format ", fmt, " (png or svg)"; exit status 1 }
-    set terminal svg enhanced size 1300,1640 font "sans,12" background rgb "white"
+    set terminal svg enhanced size 1300,2020 font "sans,12" background rgb "white"
   }
   set output "scaling." . fmt
   reset
@@ -17,8 +17,8 @@ do for [fmt in formats] {
   set multiplot title "Against the box width: granpen ± its error: bench grains at D/d\\_g = 5 (blue circles), dg10 grains at D/d\\_g = 10 (green squares);\nthe paper's value (red; shaded: its error), the paper's box (dotted)" font ",14"
 
   # ---- panel 1: peak exponent (v\_c to 10 v\_c)   (paper: 2)
-  set origin 0,0.6940243902
-  set size 0.5,0.2313414634
+  set origin 0,0.7424950495
+  set size 0.5,0.1856237624
   set title "peak exponent (v\\_c to 10 v\\_c)   (paper: 2)"
   set xlabel "box width (cm)"
   set ylabel "peak exponent (v\\_c to 10 v\\_c)"
@@ -36,8 +36,8 @@ do for [fmt in formats] {
   # ---- panel 2: peak exponent (means above v_c)   (paper: 2)
   reset
   set encoding utf8
-  set origin 0.5,0.6940243902
-  set size 0.5,0.2313414634
+  set origin 0.5,0.7424950495
+  set size 0.5,0.1856237624
   set title "peak exponent (means above v_c)   (paper: 2)"
   set xlabel "box width (cm)"
   set ylabel "peak exponent (means above v_c)"
@@ -55,8 +55,8 @@ do for [fmt in formats] {
   # ---- panel 3: peak exponent at 80 to 200 cm/s (ensemble means)   (paper: 2)
   reset
   set encoding utf8
-  set origin 0,0.4626829268
-  set size 0.5,0.2313414634
+  set origin 0,0.5568712871
+  set size 0.5,0.1856237624
   set title "peak exponent at 80 to 200 cm/s (ensemble means)   (paper: 2)"
   set xlabel "box width (cm)"
   set ylabel "value"
@@ -73,8 +73,8 @@ do for [fmt in formats] {
   # ---- panel 4: peak over the narrower box's (same bed and v0)   (paper: 1)
   reset
   set encoding utf8
-  set origin 0.5,0.4626829268
-  set size 0.5,0.2313414634
+  set origin 0.5,0.5568712871
+  set size 0.5,0.1856237624
   set title "peak over the narrower box's (same bed and v0)   (paper: 1)"
   set xlabel "box width (cm)"
   set ylabel "value"
@@ -92,8 +92,8 @@ do for [fmt in formats] {
   # ---- panel 5: λ_{vz} / D (bench at 50 and dg10 at 40 cm/s)   (paper: 0.98 ± 0.15)
   reset
   set encoding utf8
-  set origin 0,0.2313414634
-  set size 0.5,0.2313414634
+  set origin 0,0.3712475248
+  set size 0.5,0.1856237624
   set title "λ_{vz} / D (bench at 50 and dg10 at 40 cm/s)   (paper: 0.98 ± 0.15)"
   set xlabel "box width (cm)"
   set ylabel "value"
@@ -113,8 +113,8 @@ do for [fmt in formats] {
   # ---- panel 6: drag / (μ g M) (bench at 50 and dg10 at 40 cm/s)   (paper: 1)
   reset
   set encoding utf8
-  set origin 0.5,0.2313414634
-  set size 0.5,0.2313414634
+  set origin 0.5,0.3712475248
+  set size 0.5,0.1856237624
   set title "drag / (μ g M) (bench at 50 and dg10 at 40 cm/s)   (paper: 1)"
   set xlabel "box width (cm)"
   set ylabel "value"
@@ -132,8 +132,8 @@ do for [fmt in formats] {
   # ---- panel 7: α(D = 1 cm) / α(D = 2 cm) (bench at 28 and dg10 at 100 cm/s)   (paper: 1)
   reset
   set encoding utf8
-  set origin 0,0
-  set size 0.5,0.2313414634
+  set origin 0,0.1856237624
+  set size 0.5,0.1856237624
   set title "α(D = 1 cm) / α(D = 2 cm) (bench at 28 and dg10 at 100 cm/s)   (paper: 1)"
   set xlabel "box width (cm)"
   set ylabel "value"
@@ -148,11 +148,29 @@ do for [fmt in formats] {
        data index 12 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#2ca02c" pt 5 ps 1.2 title "dg10 grains at D/d_g = 10", \
        1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
 
-  # ---- panel 8: α(D = 1 cm) / α(D = 2 cm) with the shaft frictionless   (paper: 1)
+  # ---- panel 8: α(3 cm) / α(2 cm) (bench at 28 and dg10 at 100 cm/s)   (paper: 1)
   reset
   set encoding utf8
-  set origin 0.5,0
-  set size 0.5,0.2313414634
+  set origin 0.5,0.1856237624
+  set size 0.5,0.1856237624
+  set title "α(3 cm) / α(2 cm) (bench at 28 and dg10 at 100 cm/s)   (paper: 1)"
+  set xlabel "box width (cm)"
+  set ylabel "value"
+  set grid lc rgb "#d0d0d0"
+  set xrange [7:21]
+  set yrange [0.783656:1.081544]
+  unset key
+  set arrow 1 from first 20, graph 0 to first 20, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
+  set label 1 "paper" at first 20, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
+  set samples 400
+  plot data index 13 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "bench grains at D/d_g = 5", \
+       1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
+
+  # ---- panel 9: α(D = 1 cm) / α(D = 2 cm) with the shaft frictionless   (paper: 1)
+  reset
+  set encoding utf8
+  set origin 0,0
+  set size 0.5,0.1856237624
   set title "α(D = 1 cm) / α(D = 2 cm) with the shaft frictionless   (paper: 1)"
   set xlabel "box width (cm)"
   set ylabel "value"
@@ -163,7 +181,7 @@ do for [fmt in formats] {
   set arrow 1 from first 20, graph 0 to first 20, graph 1 nohead lw 1.5 dt 3 lc rgb "#404040"
   set label 1 "paper" at first 20, graph 0.96 left offset char 0.4,0 textcolor rgb "#404040"
   set samples 400
-  plot data index 13 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "bench grains at D/d_g = 5", \
+  plot data index 14 using 1:2:3 with yerrorlines lw 2 dt 1 lc rgb "#1f77b4" pt 7 ps 1.2 title "bench grains at D/d_g = 5", \
        1 with lines lw 1.5 dt 2 lc rgb "#d62728" title "paper: 1"
   unset multiplot
   unset multiplot
