@@ -85,6 +85,11 @@ log_slope() { awk '{ x = log($1); y = log($2); sx += x; sy += y; sxx += x * x; s
         for (i = 1; i <= n; i++) r += (Y[i] - a - b * X[i]) ^ 2
         printf "%.3g +- %.2g n = %d\n", b, sqrt(r / (n - 2) / (sxx - sx * sx / n)), n }'; }
 
+# the rim term's length B / A (cm) of alpha = A + B / D, by least squares of alpha on 1 / D
+# over lines "D ALPHA"
+rim_length() { awk '{ x = 1 / $1; y = $2; sx += x; sy += y; sxx += x * x; sxy += x * y; n++ }
+  END { b = (n * sxy - sx * sy) / (n * sxx - sx * sx); a = (sy - b * sx) / n; printf "%.3g", b / a }'; }
+
 # the value at key path KEY of a granpen JSON output: jget FILE KEY
 jget() { "$CLI" get "$1" "$2"; }
 
@@ -532,9 +537,7 @@ box_wide_rod() {
   # (2 (r - 1) / (2 - r)), and by least squares of alpha on 1 / D over the 2 to 4 cm pushes
   put "bench_box20.rim_B_over_A_D1to2 = $(awk -v r="$(nval bench_box20.alpha_D1_over_D2)" 'BEGIN { printf "%.3g", 2 * (r - 1) / (2 - r) }')  # cm, alpha = A + B / D through the 1 and 2 cm rods"
   put "bench_box20.rim_B_over_A_D2to4 = $(printf '%s\n' "$fits" | awk -F, '
-      NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next }
-      $i["D"] >= 2 { x = 1 / $i["D"]; y = $i["alpha0"]; sx += x; sy += y; sxx += x * x; sxy += x * y; n++ }
-      END { b = (n * sxy - sx * sy) / (n * sxx - sx * sx); a = (sy - b * sx) / n; printf "%.3g", b / a }')  # cm, least squares of alpha on 1 / D, the 2 to 4 cm pushes"
+      NR == 1 { for (c = 1; c <= NF; c++) i[$c] = c; next } $i["D"] >= 2 { print $i["D"], $i["alpha0"] }' | rim_length)  # cm, least squares of alpha on 1 / D, the 2 to 4 cm pushes"
   return 0
 }
 # alpha against D in one box (DIR under $BOX, its 2 beds x 3 or 2 diameters at 28 cm/s): the
@@ -710,8 +713,7 @@ dg10_box20_alpha_D() { # SWEEP KEY "D..."
   local a1 a2 a3; a1=$(nval "$key.alpha0_window.v100.D1") a2=$(nval "$key.alpha0_window.v100.D2") a3=$(nval "$key.alpha0_window.v100.D3")
   put "$key.depth_term_D_exponent = $(printf '1 %s\n2 %s\n3 %s\n' "$a1" "$(awk -v a="$a2" 'BEGIN { print 4 * a }')" "$(awk -v a="$a3" 'BEGIN { print 9 * a }')" | log_slope)  # ln(alpha0 D^2) on ln D, D = 1, 2, 3 cm (one push each, z >= 3 cm)"
   put "$key.depth_term_D_exponent_D2to3 = $(awk -v a="$a2" -v b="$a3" 'BEGIN { printf "%.3g", log(9 * b / (4 * a)) / log(3 / 2) }')  # ln(F(3 cm) / F(2 cm)) / ln(3/2) at the same z"
-  put "$key.rim_B_over_A_D1to3 = $(printf '1 %s\n2 %s\n3 %s\n' "$a1" "$a2" "$a3" | awk '{ x = 1 / $1; y = $2; sx += x; sy += y; sxx += x * x; sxy += x * y; n++ }
-      END { b = (n * sxy - sx * sy) / (n * sxx - sx * sx); a = (sy - b * sx) / n; printf "%.3g", b / a }')  # cm, least squares of alpha on 1 / D, D = 1, 2, 3 cm"
+  put "$key.rim_B_over_A_D1to3 = $(printf '1 %s\n2 %s\n3 %s\n' "$a1" "$a2" "$a3" | rim_length)  # cm, least squares of alpha on 1 / D, D = 1, 2, 3 cm"
   return 0
 }
 if [ -d "$DG10BOX" ]; then dg10_box20; else say "dg10, 20 cm box: $DG10BOX missing, skipped"; fi
